@@ -1,0 +1,51 @@
+// Plain data for Bézier curves and patches (double precision, the CPU reference).
+// Conventions (control-point order, normals at degenerate points, κ): docs/conventions.md.
+#pragma once
+#include <glm/glm.hpp>
+#include <vector>
+
+namespace tessera {
+
+constexpr int kMaxDegree = 7;
+
+// A polynomial Bézier curve in 3-D (2-D curves use z = 0).
+struct BezierCurve {
+  int degree = 3;
+  std::vector<glm::dvec3> cp;  // degree + 1 points
+};
+
+// A rational Bézier curve in homogeneous form: (w·x, w·y, w·z, w), w ≥ 0.
+struct RationalBezierCurve {
+  int degree = 3;
+  std::vector<glm::dvec4> cpw;
+};
+
+// A tensor-product Bézier patch: b_ij at cp[i*(degreeV+1) + j], i along u, j along v.
+struct BezierPatch {
+  int degreeU = 3;
+  int degreeV = 3;
+  std::vector<glm::dvec3> cp;
+
+  const glm::dvec3& at(int i, int j) const { return cp[i * (degreeV + 1) + j]; }
+  glm::dvec3& at(int i, int j) { return cp[i * (degreeV + 1) + j]; }
+};
+
+// A rational tensor-product patch, homogeneous control points (w·x, w·y, w·z, w), same order.
+struct RationalBezierPatch {
+  int degreeU = 3;
+  int degreeV = 3;
+  std::vector<glm::dvec4> cpw;
+
+  const glm::dvec4& at(int i, int j) const { return cpw[i * (degreeV + 1) + j]; }
+  glm::dvec4& at(int i, int j) { return cpw[i * (degreeV + 1) + j]; }
+};
+
+// Position and partial derivatives up to third order at one (u, v).
+// Third derivatives feed the limiting normal at degenerate points.
+struct SurfaceDerivatives {
+  glm::dvec3 p, pu, pv;
+  glm::dvec3 puu, puv, pvv;
+  glm::dvec3 puuu, puuv, puvv, pvvv;
+};
+
+}  // namespace tessera

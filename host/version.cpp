@@ -1,0 +1,1 @@
+namespace tessera { const char* versionString() { return "0.1.0"; } }
