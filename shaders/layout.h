@@ -28,9 +28,9 @@ struct BicubicPatch {
   vec4 cp[16];
 };
 
-// One evaluation request: parameter (u, v) on patch `patch`.
+// One evaluation request: parameter (u, v) on patch `patchIndex`.
 struct EvalQuery {
-  uint patch;
+  uint patchIndex;
   float u;
   float v;
   uint pad;

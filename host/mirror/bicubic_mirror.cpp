@@ -1,0 +1,15 @@
+#include "mirror/bicubic_mirror.h"
+
+#include "mirror/glsl_builtins.h"
+
+namespace tessera::mirror {
+namespace glsl {
+#include "shaders/lib/shared_glsl_cpp.h"
+#include "shaders/lib/bicubic_eval.h"
+}  // namespace glsl
+
+gpu::EvalSample evalBicubicSample(const gpu::BicubicPatch& patch, float u, float v, float eps) {
+  return glsl::evalBicubicSample(patch, u, v, eps);
+}
+
+}  // namespace tessera::mirror

@@ -1,0 +1,234 @@
+#include "vk/context.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include "vk/device_select.h"
+
+namespace tessera::vk {
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+bool hasInstanceLayer(const GlobalTable& global, const char* name) {
+  uint32_t count = 0;
+  global.vkEnumerateInstanceLayerProperties(&count, nullptr);
+  std::vector<VkLayerProperties> layers(count);
+  global.vkEnumerateInstanceLayerProperties(&count, layers.data());
+  return std::any_of(layers.begin(), layers.end(),
+                     [&](const auto& l) { return std::strcmp(l.layerName, name) == 0; });
+}
+
+bool hasInstanceExtension(const GlobalTable& global, const char* layer, const char* name) {
+  uint32_t count = 0;
+  global.vkEnumerateInstanceExtensionProperties(layer, &count, nullptr);
+  std::vector<VkExtensionProperties> extensions(count);
+  global.vkEnumerateInstanceExtensionProperties(layer, &count, extensions.data());
+  return std::any_of(extensions.begin(), extensions.end(),
+                     [&](const auto& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
+
+VKAPI_ATTR VkBool32 VKAPI_CALL debugCallback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                             VkDebugUtilsMessageTypeFlagsEXT,
+                                             const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                             void* user) {
+  const char* level =
+      (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) ? "error" : "warning";
+  std::string message = std::string("Vulkan validation ") + level + ": " +
+                        (data && data->pMessage ? data->pMessage : "(no text)");
+  static_cast<Context*>(user)->reportValidationMessage(message);
+  return VK_FALSE;
+}
+
+}  // namespace
+
+Context::Context(const ContextOptions& options) {
+  on_validation_message_ = options.onValidationMessage;
+  try {
+    createInstance(options);
+    std::string selector = options.device;
+    if (selector.empty()) {
+      const char* env = std::getenv("TESSERA_DEVICE");
+      if (env) selector = env;
+    }
+    choosePhysicalDevice(selector);
+    createDevice();
+  } catch (...) {
+    release();  // what was made before the failure
+    throw;
+  }
+}
+
+Context::~Context() { release(); }
+
+void Context::release() {
+  if (device_) {
+    device_table_.vkDeviceWaitIdle(device_);
+    if (pipeline_cache_) device_table_.vkDestroyPipelineCache(device_, pipeline_cache_, nullptr);
+    if (fence_) device_table_.vkDestroyFence(device_, fence_, nullptr);
+    if (command_pool_) device_table_.vkDestroyCommandPool(device_, command_pool_, nullptr);
+    device_table_.vkDestroyDevice(device_, nullptr);
+    device_ = VK_NULL_HANDLE;
+  }
+  if (messenger_) {
+    instance_table_.vkDestroyDebugUtilsMessengerEXT(instance_, messenger_, nullptr);
+    messenger_ = VK_NULL_HANDLE;
+  }
+  if (instance_) {
+    instance_table_.vkDestroyInstance(instance_, nullptr);
+    instance_ = VK_NULL_HANDLE;
+  }
+}
+
+void Context::createInstance(const ContextOptions& options) {
+  const GlobalTable& global = globalTable();
+  std::vector<const char*> layers;
+  std::vector<const char*> extensions;
+  if (options.validation != Validation::Off) {
+    if (hasInstanceLayer(global, kValidationLayer)) {
+      layers.push_back(kValidationLayer);
+      validation_enabled_ = true;
+    } else if (options.validation == Validation::Required) {
+      throw VulkanUnavailable(std::string(kValidationLayer) +
+                              " is required but not installed: `apt-get install "
+                              "vulkan-validationlayers`");
+    }
+  }
+  bool debugUtils = validation_enabled_ &&
+                    (hasInstanceExtension(global, nullptr, VK_EXT_DEBUG_UTILS_EXTENSION_NAME) ||
+                     hasInstanceExtension(global, kValidationLayer,
+                                          VK_EXT_DEBUG_UTILS_EXTENSION_NAME));
+  if (debugUtils) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+
+  // Messages during vkCreateInstance itself reach this messenger through pNext.
+  VkDebugUtilsMessengerCreateInfoEXT messengerInfo{
+      VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+  messengerInfo.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
+                                  VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  messengerInfo.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                              VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                              VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+  messengerInfo.pfnUserCallback = debugCallback;
+  messengerInfo.pUserData = this;
+  // Synchronization validation catches missing barriers between dispatches.
+  VkValidationFeatureEnableEXT enables[] = {
+      VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+  VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+  features.enabledValidationFeatureCount = 1;
+  features.pEnabledValidationFeatures = enables;
+  features.pNext = debugUtils ? &messengerInfo : nullptr;
+
+  instance_ = vk::createInstance(global, layers, extensions,
+                                 validation_enabled_ ? static_cast<const void*>(&features) : nullptr);
+  instance_table_ = loadInstanceTable(global, instance_);
+  if (debugUtils && instance_table_.vkCreateDebugUtilsMessengerEXT)
+    VK_CHECK(instance_table_.vkCreateDebugUtilsMessengerEXT(instance_, &messengerInfo, nullptr,
+                                                            &messenger_));
+}
+
+void Context::choosePhysicalDevice(const std::string& selector) {
+  uint32_t count = 0;
+  VK_CHECK(instance_table_.vkEnumeratePhysicalDevices(instance_, &count, nullptr));
+  std::vector<VkPhysicalDevice> physical(count);
+  VK_CHECK(instance_table_.vkEnumeratePhysicalDevices(instance_, &count, physical.data()));
+  std::vector<DeviceInfo> devices;
+  for (uint32_t i = 0; i < count; ++i)
+    devices.push_back(describeDevice(instance_table_, physical[i], i));
+  size_t chosen = selectDevice(devices, selector);
+  physical_ = physical[chosen];
+  info_ = devices[chosen];
+  instance_table_.vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
+}
+
+void Context::createDevice() {
+  uint32_t familyCount = 0;
+  instance_table_.vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount, nullptr);
+  std::vector<VkQueueFamilyProperties> families(familyCount);
+  instance_table_.vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount,
+                                                           families.data());
+  // One queue for everything: prefer a family that also draws (tessera render).
+  int chosen = -1;
+  for (uint32_t i = 0; i < familyCount; ++i) {
+    VkQueueFlags flags = families[i].queueFlags;
+    if (!(flags & VK_QUEUE_COMPUTE_BIT)) continue;
+    if (chosen < 0 || ((flags & VK_QUEUE_GRAPHICS_BIT) &&
+                       !(families[chosen].queueFlags & VK_QUEUE_GRAPHICS_BIT)))
+      chosen = static_cast<int>(i);
+  }
+  if (chosen < 0) throw VulkanUnavailable("device '" + info_.name + "' has no compute queue");
+  queue_family_ = static_cast<uint32_t>(chosen);
+  queue_graphics_ = families[chosen].queueFlags & VK_QUEUE_GRAPHICS_BIT;
+  timestamp_valid_bits_ = families[chosen].timestampValidBits;
+
+  float priority = 1.0f;
+  VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  queueInfo.queueFamilyIndex = queue_family_;
+  queueInfo.queueCount = 1;
+  queueInfo.pQueuePriorities = &priority;
+  const auto& extensions = requiredDeviceExtensions();
+  VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+  info.queueCreateInfoCount = 1;
+  info.pQueueCreateInfos = &queueInfo;
+  info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
+  VK_CHECK(instance_table_.vkCreateDevice(physical_, &info, nullptr, &device_));
+  device_table_ = loadDeviceTable(instance_table_, device_);
+  if (!device_table_.vkCmdPushDescriptorSetKHR)
+    throw VulkanUnavailable("device '" + info_.name + "' lacks vkCmdPushDescriptorSetKHR");
+  device_table_.vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
+
+  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+  poolInfo.queueFamilyIndex = queue_family_;
+  VK_CHECK(device_table_.vkCreateCommandPool(device_, &poolInfo, nullptr, &command_pool_));
+  VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  VK_CHECK(device_table_.vkCreateFence(device_, &fenceInfo, nullptr, &fence_));
+  VkPipelineCacheCreateInfo cacheInfo{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
+  VK_CHECK(device_table_.vkCreatePipelineCache(device_, &cacheInfo, nullptr, &pipeline_cache_));
+}
+
+void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {
+  VK_CHECK(device_table_.vkResetCommandPool(device_, command_pool_, 0));
+  VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  allocInfo.commandPool = command_pool_;
+  allocInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  allocInfo.commandBufferCount = 1;
+  VkCommandBuffer cmd = VK_NULL_HANDLE;
+  VK_CHECK(device_table_.vkAllocateCommandBuffers(device_, &allocInfo, &cmd));
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  VK_CHECK(device_table_.vkBeginCommandBuffer(cmd, &begin));
+  record(cmd);
+  VK_CHECK(device_table_.vkEndCommandBuffer(cmd));
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &cmd;
+  VK_CHECK(device_table_.vkResetFences(device_, 1, &fence_));
+  VK_CHECK(device_table_.vkQueueSubmit(queue_, 1, &submit, fence_));
+  VK_CHECK(device_table_.vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX));
+}
+
+void Context::reportValidationMessage(const std::string& message) {
+  {
+    std::lock_guard<std::mutex> lock(messages_mutex_);
+    messages_.push_back(message);
+  }
+  if (on_validation_message_)
+    on_validation_message_(message);
+  else
+    std::fprintf(stderr, "%s\n", message.c_str());
+}
+
+std::vector<std::string> Context::validationMessages() const {
+  std::lock_guard<std::mutex> lock(messages_mutex_);
+  return messages_;
+}
+
+size_t Context::validationMessageCount() const {
+  std::lock_guard<std::mutex> lock(messages_mutex_);
+  return messages_.size();
+}
+
+}  // namespace tessera::vk

@@ -1,0 +1,112 @@
+// The Vulkan context: instance (with validation when asked), the chosen physical device, a
+// logical device with one queue, and one-time command submission. One context per thread:
+// a Context is not thread-safe, two Contexts are independent.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "vk/errors.h"
+#include "vk/loader.h"
+
+namespace tessera::vk {
+
+enum class Validation {
+  Off,          // no layers
+  IfAvailable,  // enable VK_LAYER_KHRONOS_validation when installed
+  Required,     // fail (VulkanUnavailable) when it is not installed; what the tests use
+};
+
+struct ContextOptions {
+  Validation validation = Validation::Off;
+  // Device choice: "" = automatic (discrete > integrated > virtual > CPU), else an index into
+  // the list `tessera devices` prints, or a case-insensitive part of the device name.
+  // When empty, the environment variable TESSERA_DEVICE is used if set.
+  std::string device;
+  // Called for every validation message at warning or error severity (tests fail on any).
+  // Default: print to stderr.
+  std::function<void(const std::string&)> onValidationMessage;
+};
+
+struct DeviceInfo {
+  uint32_t index = 0;  // position in vkEnumeratePhysicalDevices order
+  std::string name;
+  VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER;
+  uint32_t apiVersion = 0;
+  VkDriverId driverId = static_cast<VkDriverId>(0);
+  std::string driverName;
+  std::string driverInfo;
+  bool usable = false;         // meets Tessera's requirements
+  std::string unusableReason;  // why not, when !usable
+  uint64_t maxStorageBufferRange = 0;
+  uint32_t maxComputeWorkGroupCountX = 0;
+  float timestampPeriodNs = 0.0f;
+
+  bool isLavapipe() const { return driverId == VK_DRIVER_ID_MESA_LLVMPIPE; }
+  std::string typeName() const;
+};
+
+// Lists the physical devices (opens its own short-lived instance).
+std::vector<DeviceInfo> listDevices();
+
+class Context {
+ public:
+  explicit Context(const ContextOptions& options = {});
+  ~Context();
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+
+  const DeviceTable& vk() const { return device_table_; }
+  VkDevice device() const { return device_; }
+  VkPhysicalDevice physicalDevice() const { return physical_; }
+  VkQueue queue() const { return queue_; }
+  uint32_t queueFamily() const { return queue_family_; }
+  const DeviceInfo& info() const { return info_; }
+  const VkPhysicalDeviceMemoryProperties& memoryProperties() const { return memory_; }
+  bool validationEnabled() const { return validation_enabled_; }
+  bool timestampsSupported() const { return timestamp_valid_bits_ > 0; }
+  uint32_t timestampValidBits() const { return timestamp_valid_bits_; }
+  bool queueSupportsGraphics() const { return queue_graphics_; }
+  VkPipelineCache pipelineCache() const { return pipeline_cache_; }
+
+  // Records commands into a fresh command buffer, submits, and waits for completion.
+  void submitAndWait(const std::function<void(VkCommandBuffer)>& record);
+
+  // Validation messages (warning or error severity) seen so far.
+  std::vector<std::string> validationMessages() const;
+  size_t validationMessageCount() const;
+
+  // Called by the debug messenger; public only for the C callback.
+  void reportValidationMessage(const std::string& message);
+
+ private:
+  void createInstance(const ContextOptions& options);
+  void choosePhysicalDevice(const std::string& selector);
+  void createDevice();
+  void release();
+
+  InstanceTable instance_table_{};
+  DeviceTable device_table_{};
+  VkInstance instance_ = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+  VkPhysicalDevice physical_ = VK_NULL_HANDLE;
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkQueue queue_ = VK_NULL_HANDLE;
+  uint32_t queue_family_ = 0;
+  bool queue_graphics_ = false;
+  uint32_t timestamp_valid_bits_ = 0;
+  DeviceInfo info_;
+  VkPhysicalDeviceMemoryProperties memory_{};
+  VkCommandPool command_pool_ = VK_NULL_HANDLE;
+  VkFence fence_ = VK_NULL_HANDLE;
+  VkPipelineCache pipeline_cache_ = VK_NULL_HANDLE;
+  bool validation_enabled_ = false;
+  std::function<void(const std::string&)> on_validation_message_;
+  mutable std::mutex messages_mutex_;
+  std::vector<std::string> messages_;
+};
+
+}  // namespace tessera::vk

@@ -1,0 +1,21 @@
+// Pins the std430 layouts of shaders/layout.h on the host side: if a struct changes size or
+// a member moves, the build fails here instead of the GPU reading garbage.
+#include <cstddef>
+
+#include "shaders/layout.h"
+
+namespace tessera::gpu {
+
+static_assert(sizeof(vec4) == 16 && alignof(vec4) <= 16, "glm::vec4 must be 16 bytes");
+static_assert(sizeof(BicubicPatch) == 256, "BicubicPatch: 16 vec4");
+static_assert(sizeof(EvalQuery) == 16, "EvalQuery: 4 scalars");
+static_assert(offsetof(EvalQuery, patchIndex) == 0 && offsetof(EvalQuery, u) == 4 &&
+                  offsetof(EvalQuery, v) == 8,
+              "EvalQuery member offsets");
+static_assert(sizeof(EvalSample) == 64, "EvalSample: 4 vec4");
+static_assert(offsetof(EvalSample, du) == 16 && offsetof(EvalSample, dv) == 32 &&
+                  offsetof(EvalSample, normalKappa) == 48,
+              "EvalSample member offsets");
+static_assert(sizeof(EvalPush) == 16, "EvalPush: 4 scalars");
+
+}  // namespace tessera::gpu

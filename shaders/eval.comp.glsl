@@ -1,0 +1,21 @@
+#version 450
+// Evaluates position, Pu, Pv, unit normal and κ for a batch of (patch, u, v) queries.
+// The arithmetic lives in lib/bicubic_eval.h, shared with the fp32 mirror.
+#extension GL_GOOGLE_include_directive : require
+#include "layout.h"
+#include "lib/shared_glsl_cpp.h"
+#include "lib/bicubic_eval.h"
+#include "lib/dispatch.glsl"
+
+layout(std430, binding = 0) readonly buffer Patches { BicubicPatch patches[]; };
+layout(std430, binding = 1) readonly buffer Queries { EvalQuery queries[]; };
+layout(std430, binding = 2) writeonly buffer Samples { EvalSample samples[]; };
+
+layout(push_constant) uniform Push { EvalPush pc; };
+
+void main() {
+  uint index = linearInvocationIndex();
+  if (index >= pc.queryCount) return;
+  EvalQuery q = queries[index];
+  samples[index] = evalBicubicSample(patches[q.patchIndex], q.u, q.v, pc.degenerateEps);
+}

@@ -1,0 +1,178 @@
+// Bicubic Bézier evaluation in fp32: derivatives to third order, the unit normal with the
+// degenerate-point rule and κ, both as in docs/conventions.md.
+// Compiled twice from this one text: as GLSL in shaders/*.comp.glsl and as C++ in
+// host/mirror/bicubic_mirror.cpp. Include shared_glsl_cpp.h and layout.h first.
+#ifndef TESSERA_BICUBIC_EVAL_H
+#define TESSERA_BICUBIC_EVAL_H
+
+struct CubicBasis {
+  vec4 b0;  // Bernstein B_i,3(t)
+  vec4 b1;  // first derivative
+  vec4 b2;  // second derivative
+  vec4 b3;  // third derivative (constant)
+};
+
+struct BicubicDerivs {
+  vec3 p;
+  vec3 pu;
+  vec3 pv;
+  vec3 puu;
+  vec3 puv;
+  vec3 pvv;
+  vec3 puuu;
+  vec3 puuv;
+  vec3 puvv;
+  vec3 pvvv;
+};
+
+CubicBasis cubicBasis(float t) {
+  PRECISE float s = 1.0f - t;
+  PRECISE float ss = s * s;
+  PRECISE float tt = t * t;
+  PRECISE float ts = t * s;
+  CubicBasis r;
+  r.b0 = vec4(ss * s, 3.0f * ts * s, 3.0f * ts * t, tt * t);
+  r.b1 = vec4(-3.0f * ss, 3.0f * ss - 6.0f * ts, 6.0f * ts - 3.0f * tt, 3.0f * tt);
+  r.b2 = vec4(6.0f * s, 6.0f * t - 12.0f * s, 6.0f * s - 12.0f * t, 6.0f * t);
+  r.b3 = vec4(-6.0f, 18.0f, -18.0f, 6.0f);
+  return r;
+}
+
+// Sums along v first (one row of four control points at a time), then along u: the row
+// partial sums are shared by all ten derivatives.
+BicubicDerivs evalBicubic(IN(BicubicPatch) bp, float u, float v) {
+  CubicBasis bu = cubicBasis(u);
+  CubicBasis bv = cubicBasis(v);
+  BicubicDerivs d;
+  d.p = vec3(0.0f);
+  d.pu = vec3(0.0f);
+  d.pv = vec3(0.0f);
+  d.puu = vec3(0.0f);
+  d.puv = vec3(0.0f);
+  d.pvv = vec3(0.0f);
+  d.puuu = vec3(0.0f);
+  d.puuv = vec3(0.0f);
+  d.puvv = vec3(0.0f);
+  d.pvvv = vec3(0.0f);
+  for (int i = 0; i < 4; ++i) {
+    PRECISE vec3 r0 = vec3(0.0f);
+    PRECISE vec3 r1 = vec3(0.0f);
+    PRECISE vec3 r2 = vec3(0.0f);
+    PRECISE vec3 r3 = vec3(0.0f);
+    for (int j = 0; j < 4; ++j) {
+      vec3 q = vec3(bp.cp[i * 4 + j]);
+      r0 = r0 + bv.b0[j] * q;
+      r1 = r1 + bv.b1[j] * q;
+      r2 = r2 + bv.b2[j] * q;
+      r3 = r3 + bv.b3[j] * q;
+    }
+    PRECISE vec3 p = d.p + bu.b0[i] * r0;
+    PRECISE vec3 pu = d.pu + bu.b1[i] * r0;
+    PRECISE vec3 pv = d.pv + bu.b0[i] * r1;
+    PRECISE vec3 puu = d.puu + bu.b2[i] * r0;
+    PRECISE vec3 puv = d.puv + bu.b1[i] * r1;
+    PRECISE vec3 pvv = d.pvv + bu.b0[i] * r2;
+    PRECISE vec3 puuu = d.puuu + bu.b3[i] * r0;
+    PRECISE vec3 puuv = d.puuv + bu.b2[i] * r1;
+    PRECISE vec3 puvv = d.puvv + bu.b1[i] * r2;
+    PRECISE vec3 pvvv = d.pvvv + bu.b0[i] * r3;
+    d.p = p;
+    d.pu = pu;
+    d.pv = pv;
+    d.puu = puu;
+    d.puv = puv;
+    d.pvv = pvv;
+    d.puuu = puuu;
+    d.puuv = puuv;
+    d.puvv = puvv;
+    d.pvvv = pvvv;
+  }
+  return d;
+}
+
+// Diagonal of the control net's bounding box: the length scale L of the degeneracy test.
+float bicubicScale(IN(BicubicPatch) bp) {
+  PRECISE vec3 lo = vec3(bp.cp[0]);
+  PRECISE vec3 hi = lo;
+  for (int k = 1; k < 16; ++k) {
+    lo = min(lo, vec3(bp.cp[k]));
+    hi = max(hi, vec3(bp.cp[k]));
+  }
+  PRECISE vec3 e = hi - lo;
+  PRECISE float l = sqrt(dot(e, e));
+  return l;
+}
+
+// n / |n|, written as a product with one reciprocal so both compilers round the same way.
+vec3 scaleToUnit(vec3 n, float len) {
+  PRECISE float inv = 1.0f / len;
+  PRECISE vec3 r = n * inv;
+  return r;
+}
+
+// Unit normal; at degenerate points the limiting direction from inside the patch
+// (docs/conventions.md). `tol` is ε·L². Returns vec3(0) where no direction exists.
+vec3 bicubicNormal(IN(BicubicDerivs) d, float u, float v, float tol) {
+  PRECISE vec3 n0 = cross(d.pu, d.pv);
+  PRECISE float len0 = sqrt(dot(n0, n0));
+  if (len0 > tol) return scaleToUnit(n0, len0);
+
+  PRECISE float du = 0.5f - u;
+  PRECISE float dv = 0.5f - v;
+  PRECISE float dl = sqrt(du * du + dv * dv);
+  if (dl > 0.0f) {
+    du = du / dl;
+    dv = dv / dl;
+  } else {
+    du = 0.70710678f;
+    dv = 0.70710678f;
+  }
+  PRECISE vec3 a1 = du * d.puu + dv * d.puv;
+  PRECISE vec3 b1 = du * d.puv + dv * d.pvv;
+  PRECISE vec3 n1 = cross(a1, d.pv) + cross(d.pu, b1);
+  PRECISE float len1 = sqrt(dot(n1, n1));
+  if (len1 > tol) return scaleToUnit(n1, len1);
+
+  PRECISE float uu = du * du;
+  PRECISE float uv2 = 2.0f * du * dv;
+  PRECISE float vv = dv * dv;
+  PRECISE vec3 a2 = uu * d.puuu + uv2 * d.puuv + vv * d.puvv;
+  PRECISE vec3 b2 = uu * d.puuv + uv2 * d.puvv + vv * d.pvvv;
+  PRECISE vec3 n2 = cross(a2, d.pv) + 2.0f * cross(a1, b1) + cross(d.pu, b2);
+  PRECISE float len2 = sqrt(dot(n2, n2));
+  if (len2 > tol) return scaleToUnit(n2, len2);
+  return vec3(0.0f);
+}
+
+// κ = max |principal curvature|; 0 where the first fundamental form is singular.
+float bicubicKappa(IN(BicubicDerivs) d, vec3 n, float tol) {
+  PRECISE float e = dot(d.pu, d.pu);
+  PRECISE float f = dot(d.pu, d.pv);
+  PRECISE float g = dot(d.pv, d.pv);
+  PRECISE float l = dot(d.puu, n);
+  PRECISE float m = dot(d.puv, n);
+  PRECISE float nn = dot(d.pvv, n);
+  PRECISE float det = e * g - f * f;
+  if (!(det > tol * tol)) return 0.0f;
+  PRECISE float gaussK = (l * nn - m * m) / det;
+  PRECISE float meanH = (e * nn - 2.0f * f * m + g * l) / (2.0f * det);
+  PRECISE float disc = max(meanH * meanH - gaussK, 0.0f);
+  PRECISE float kappa = abs(meanH) + sqrt(disc);
+  return kappa;
+}
+
+EvalSample evalBicubicSample(IN(BicubicPatch) bp, float u, float v, float eps) {
+  BicubicDerivs d = evalBicubic(bp, u, v);
+  PRECISE float scale = bicubicScale(bp);
+  PRECISE float tol = eps * scale * scale;
+  vec3 n = bicubicNormal(d, u, v, tol);
+  float kappa = bicubicKappa(d, n, tol);
+  EvalSample s;
+  s.position = vec4(d.p, 1.0f);
+  s.du = vec4(d.pu, 0.0f);
+  s.dv = vec4(d.pv, 0.0f);
+  s.normalKappa = vec4(n, kappa);
+  return s;
+}
+
+#endif
