@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 namespace tessera::gpu {
 using uint = std::uint32_t;
+using vec2 = glm::vec2;
 using vec3 = glm::vec3;
 using vec4 = glm::vec4;
 using uvec4 = glm::uvec4;
@@ -49,6 +50,57 @@ struct EvalSample {
 struct EvalPush {
   uint queryCount;
   float degenerateEps;  // ε of docs/conventions.md (1e-5 in fp32)
+  uint pad0;
+  uint pad1;
+};
+
+
+// ---- Adaptive quad-tree (shaders/quadtree.comp.glsl, host/frontier.cpp) ----
+
+// Split rules of the quad-tree paper. A (uniform grid) needs no shader.
+TESSERA_CONST(uint, kSplitRuleMidpoint, 1u);    // (B) parameter midpoint
+TESSERA_CONST(uint, kSplitRuleSampledMax, 2u);  // (C) largest κ among S×S samples
+TESSERA_CONST(uint, kSplitRuleTrueMax, 3u);     // (D) κu = κv = 0 by Newton, plus the boundary
+
+// Why a node ended (NodeDecision.cause).
+TESSERA_CONST(uint, kCauseSplit, 0u);     // not a leaf: split at NodeDecision.split
+TESSERA_CONST(uint, kCauseFlat, 1u);      // every linearity and flatness test passed
+TESSERA_CONST(uint, kCauseMaxDepth, 2u);  // reached the maximum depth
+TESSERA_CONST(uint, kCauseMinSize, 3u);   // smaller than the minimum parameter size
+TESSERA_CONST(uint, kCauseUniform, 4u);   // a cell of rule (A)'s uniform grid
+
+// C and D keep the split point at least this fraction of the node's width from its edges,
+// so children never degenerate (a child is at least 10% of its parent in each direction).
+TESSERA_CONST(float, kSplitMargin, 0.1f);
+// Newton iterations of rule D per seed (fixed count: GPU and mirror run the same steps).
+TESSERA_CONST(int, kNewtonIterations, 6);
+
+// One frontier node: the rectangle [u0,u1]×[v0,v1] of patch `patchIndex` at depth `level`.
+struct QuadNode {
+  vec4 rect;  // u0, v0, u1, v1
+  uint patchIndex;
+  uint level;
+  uint pad0;
+  uint pad1;
+};
+
+// What the classifier decided for one node.
+struct NodeDecision {
+  vec4 split;       // us, vs (patch parameters), κ there, 0
+  uint cause;       // kCause*
+  float linearity;  // largest 1 − Ti·Tj over the 4 edges (0 where a tangent is missing)
+  float flatness;   // largest 1 − Ni·Nj over the 8 normal pairs (0 where a normal is missing)
+  uint pad;
+};
+
+// Push constants of quadtree.comp.glsl. The split rule and S are specialization constants.
+struct ClassifyPush {
+  float linearity;
+  float flatness;
+  float minSize;
+  float degenerateEps;
+  uint maxDepth;
+  uint nodeCount;
   uint pad0;
   uint pad1;
 };

@@ -4,8 +4,10 @@
 
 namespace tessera::mirror {
 namespace glsl {
+namespace {  // each mirror translation unit gets its own copy of the shared functions
 #include "shaders/lib/shared_glsl_cpp.h"
 #include "shaders/lib/bicubic_eval.h"
+}  // namespace
 }  // namespace glsl
 
 gpu::EvalSample evalBicubicSample(const gpu::BicubicPatch& patch, float u, float v, float eps) {

@@ -10,6 +10,7 @@
 namespace tessera::mirror::glsl {
 using namespace tessera::gpu;
 using glm::abs;
+using glm::clamp;
 using glm::cross;
 using glm::dot;
 using glm::max;

@@ -17,5 +17,14 @@ static_assert(offsetof(EvalSample, du) == 16 && offsetof(EvalSample, dv) == 32 &
                   offsetof(EvalSample, normalKappa) == 48,
               "EvalSample member offsets");
 static_assert(sizeof(EvalPush) == 16, "EvalPush: 4 scalars");
+static_assert(sizeof(QuadNode) == 32 && offsetof(QuadNode, patchIndex) == 16 &&
+                  offsetof(QuadNode, level) == 20,
+              "QuadNode layout");
+static_assert(sizeof(NodeDecision) == 32 && offsetof(NodeDecision, cause) == 16 &&
+                  offsetof(NodeDecision, linearity) == 20 && offsetof(NodeDecision, flatness) == 24,
+              "NodeDecision layout");
+static_assert(sizeof(ClassifyPush) == 32 && offsetof(ClassifyPush, maxDepth) == 16 &&
+                  offsetof(ClassifyPush, nodeCount) == 20,
+              "ClassifyPush layout");
 
 }  // namespace tessera::gpu

@@ -1,0 +1,90 @@
+// The Vulkan backend of NodeClassifier: one dispatch of shaders/quadtree.comp.glsl per level.
+// Pipelines are made once per (rule, S) and buffers grow and are kept between levels.
+#include <chrono>
+#include <cstdint>  // before the generated SPIR-V array, which uses uint32_t
+#include <map>
+#include <stdexcept>
+#include <utility>
+
+#include "quadtree.h"
+#include "quadtree_comp.h"
+#include "vk/buffer.h"
+#include "vk/pipeline.h"
+
+namespace tessera {
+namespace {
+
+class VulkanClassifier final : public NodeClassifier {
+ public:
+  explicit VulkanClassifier(vk::Context& context) : context_(context), timer_(context, 2) {}
+
+  std::string name() const override { return "vulkan:" + context_.info().name; }
+
+  void classify(const std::vector<gpu::BicubicPatch>& patches,
+                const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
+                std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) override {
+    auto start = std::chrono::steady_clock::now();
+    decisions.resize(nodes.size());
+    if (nodes.empty()) return;
+    vk::ComputePipeline& pipeline = pipelineFor(ruleConstant(options.rule), options.samples);
+    if (uploaded_count_ != patches.size())
+      throw std::logic_error("VulkanClassifier: classify() without beginTree() for these patches");
+    vk::ensureCapacity(context_, nodes_, nodes.size() * sizeof(gpu::QuadNode),
+                       vk::BufferUse::Upload);
+    vk::ensureCapacity(context_, decisions_, nodes.size() * sizeof(gpu::NodeDecision),
+                       vk::BufferUse::Readback);
+    nodes_.upload(nodes);
+    gpu::ClassifyPush push = classifyParams(options, uint32_t(nodes.size()));
+    context_.submitAndWait([&](VkCommandBuffer cmd) {
+      timer_.reset(cmd);
+      timer_.mark(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+      pipeline.dispatch(cmd, {&patches_, &nodes_, &decisions_}, &push, push.nodeCount);
+      timer_.mark(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
+      vk::computeToHostBarrier(context_, cmd);
+    });
+    decisions_.download(decisions.data(), nodes.size() * sizeof(gpu::NodeDecision));
+    auto intervals = timer_.intervalsNs();
+    if (!intervals.empty()) stats.gpuMs += intervals[0] * 1e-6;
+    stats.classifyMs +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+            .count();
+  }
+
+  void beginTree(const std::vector<gpu::BicubicPatch>& patches) override {
+    uploaded_count_ = patches.size();
+    if (patches.empty()) return;
+    vk::ensureCapacity(context_, patches_, patches.size() * sizeof(gpu::BicubicPatch),
+                       vk::BufferUse::Upload);
+    patches_.upload(patches);
+  }
+
+ private:
+  vk::ComputePipeline& pipelineFor(uint32_t rule, int samples) {
+    auto key = std::make_pair(rule, samples);
+    auto it = pipelines_.find(key);
+    if (it == pipelines_.end()) {
+      vk::ComputePipelineDesc desc{"quadtree.comp",
+                                   kSpirv_quadtree_comp,
+                                   sizeof(kSpirv_quadtree_comp),
+                                   3,
+                                   sizeof(gpu::ClassifyPush),
+                                   {{0, rule}, {1, uint32_t(samples)}}};
+      it = pipelines_.emplace(key, std::make_unique<vk::ComputePipeline>(context_, desc)).first;
+    }
+    return *it->second;
+  }
+
+  vk::Context& context_;
+  vk::GpuTimer timer_;
+  std::map<std::pair<uint32_t, int>, std::unique_ptr<vk::ComputePipeline>> pipelines_;
+  vk::Buffer patches_, nodes_, decisions_;
+  size_t uploaded_count_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<NodeClassifier> makeVulkanClassifier(vk::Context& context) {
+  return std::make_unique<VulkanClassifier>(context);
+}
+
+}  // namespace tessera

@@ -1,0 +1,254 @@
+// Quad-tree node classification in fp32 (Moriyama & Harada, "Subdivision of bicubic Bézier
+// patches by a quad-tree"): find the node's split point by rule B, C or D, evaluate the four
+// corners and the split point, run the edge-linearity and flatness tests, decide leaf or split.
+// Compiled as GLSL (shaders/quadtree.comp.glsl) and as C++ (host/mirror/quadtree_mirror.cpp)
+// from this one text. Include shared_glsl_cpp.h, layout.h and bicubic_eval.h first.
+#ifndef TESSERA_QUADTREE_CLASSIFY_H
+#define TESSERA_QUADTREE_CLASSIFY_H
+
+// Position, unit tangents along u and v (zero where the derivative vanishes, as along a
+// collapsed edge) and unit normal (zero where none exists) at one point.
+struct FrameSample {
+  vec3 tu;
+  vec3 tv;
+  vec3 n;
+  float kappa;
+};
+
+vec3 unitOrZero(vec3 v, float tol) {
+  PRECISE float len = sqrt(dot(v, v));
+  if (len > tol) return scaleToUnit(v, len);
+  return vec3(0.0f);
+}
+
+FrameSample frameAt(IN(BicubicPatch) bp, float u, float v, float scale, float eps) {
+  BicubicDerivs d = evalBicubic(bp, u, v);
+  PRECISE float tolArea = eps * scale * scale;
+  PRECISE float tolLength = eps * scale;
+  FrameSample f;
+  f.tu = unitOrZero(d.pu, tolLength);
+  f.tv = unitOrZero(d.pv, tolLength);
+  f.n = bicubicNormal(d, u, v, tolArea);
+  f.kappa = bicubicKappa(d, f.n, tolArea);
+  return f;
+}
+
+float kappaAt(IN(BicubicPatch) bp, float u, float v, float scale, float eps) {
+  BicubicDerivs d = evalBicubic(bp, u, v);
+  PRECISE float tol = eps * scale * scale;
+  vec3 n = bicubicNormal(d, u, v, tol);
+  return bicubicKappa(d, n, tol);
+}
+
+// 1 − a·b for two unit directions; 0 when either is missing: a collapsed edge or a point
+// without a normal has no direction to disagree with.
+float angleTest(vec3 a, vec3 b) {
+  if (dot(a, a) == 0.0f || dot(b, b) == 0.0f) return 0.0f;
+  PRECISE float t = 1.0f - dot(a, b);
+  return t;
+}
+
+// Node-local coordinates (s, t) ∈ [0,1]² to patch parameters.
+float lerpParam(float lo, float hi, float s) {
+  PRECISE float r = lo + (hi - lo) * s;
+  return r;
+}
+
+float kappaAtLocal(IN(BicubicPatch) bp, vec4 rect, float s, float t, float scale, float eps) {
+  return kappaAt(bp, lerpParam(rect.x, rect.z, s), lerpParam(rect.y, rect.w, t), scale, eps);
+}
+
+// Rule C: the largest κ on an S×S grid of interior points (s, t) = ((a+1)/(S+1), (b+1)/(S+1)).
+// Returns (s, t, κ); ties keep the first in scan order. Also returns the runner-up, a second
+// seed for rule D.
+void sampledMaxima(IN(BicubicPatch) bp, vec4 rect, int samples, float scale, float eps,
+                   OUT(vec3) best, OUT(vec3) second) {
+  best = vec3(0.5f, 0.5f, -1.0f);
+  second = vec3(0.5f, 0.5f, -1.0f);
+  for (int a = 0; a < samples; ++a) {
+    for (int b = 0; b < samples; ++b) {
+      PRECISE float s = float(a + 1) / float(samples + 1);
+      PRECISE float t = float(b + 1) / float(samples + 1);
+      float k = kappaAtLocal(bp, rect, s, t, scale, eps);
+      if (k > best.z) {
+        second = best;
+        best = vec3(s, t, k);
+      } else if (k > second.z) {
+        second = vec3(s, t, k);
+      }
+    }
+  }
+}
+
+// The k-th point of rule D's finite-difference stencil around the origin, in units of the
+// gradient step (k = 0..3: ±s, ±t) and of the Hessian step (k = 4..11).
+vec2 stencilOffset(int k) {
+  if (k == 0) return vec2(1.0f, 0.0f);
+  if (k == 1) return vec2(-1.0f, 0.0f);
+  if (k == 2) return vec2(0.0f, 1.0f);
+  if (k == 3) return vec2(0.0f, -1.0f);
+  if (k == 4) return vec2(1.0f, 0.0f);
+  if (k == 5) return vec2(-1.0f, 0.0f);
+  if (k == 6) return vec2(0.0f, 1.0f);
+  if (k == 7) return vec2(0.0f, -1.0f);
+  if (k == 8) return vec2(1.0f, 1.0f);
+  if (k == 9) return vec2(1.0f, -1.0f);
+  if (k == 10) return vec2(-1.0f, 1.0f);
+  return vec2(-1.0f, -1.0f);
+}
+
+// Rule D's interior search: Newton on κu = κv = 0 in node-local coordinates from `seed`,
+// gradient by central differences (step 1e-3 of the node), Hessian by a coarser stencil
+// (step 2e-2: fp32 second differences at 1e-3 would be mostly rounding noise). Where the
+// Hessian is not negative definite it takes an ascent step instead. Keeps the best point seen,
+// so a wild step can never make the result worse than the seed.
+vec3 newtonMaximum(IN(BicubicPatch) bp, vec4 rect, vec3 seed, float scale, float eps) {
+  const float hg = 1e-3f;
+  const float hh = 2e-2f;
+  vec3 best = seed;
+  PRECISE vec2 x = vec2(seed.x, seed.y);
+  for (int it = 0; it < kNewtonIterations; ++it) {
+    float k0 = kappaAtLocal(bp, rect, x.x, x.y, scale, eps);
+    float kv[12];
+    for (int k = 0; k < 12; ++k) {
+      PRECISE float h = k < 4 ? hg : hh;
+      vec2 o = stencilOffset(k);
+      PRECISE float s = x.x + h * o.x;
+      PRECISE float t = x.y + h * o.y;
+      kv[k] = kappaAtLocal(bp, rect, s, t, scale, eps);
+    }
+    PRECISE float gs = (kv[0] - kv[1]) / (2.0f * hg);
+    PRECISE float gt = (kv[2] - kv[3]) / (2.0f * hg);
+    PRECISE float hss = (kv[4] - 2.0f * k0 + kv[5]) / (hh * hh);
+    PRECISE float htt = (kv[6] - 2.0f * k0 + kv[7]) / (hh * hh);
+    PRECISE float hst = (kv[8] - kv[9] - kv[10] + kv[11]) / (4.0f * hh * hh);
+    PRECISE float det = hss * htt - hst * hst;
+    PRECISE vec2 step = vec2(0.0f);
+    if (hss < 0.0f && det > 0.0f) {
+      step = vec2(-(htt * gs - hst * gt) / det, -(hss * gt - hst * gs) / det);
+    } else {
+      PRECISE float glen = sqrt(gs * gs + gt * gt);
+      if (glen > 0.0f) step = vec2(gs, gt) * (0.05f / glen);
+    }
+    PRECISE float slen = sqrt(dot(step, step));
+    if (slen > 0.25f) step = step * (0.25f / slen);
+    x = clamp(x + step, vec2(0.0f), vec2(1.0f));
+    float kx = kappaAtLocal(bp, rect, x.x, x.y, scale, eps);
+    if (kx > best.z) best = vec3(x.x, x.y, kx);
+  }
+  return best;
+}
+
+// Rule D's boundary search: the best of S samples on each edge, refined by 1-D Newton along
+// that edge (same steps as the interior search).
+vec3 boundaryMaximum(IN(BicubicPatch) bp, vec4 rect, int samples, float scale, float eps) {
+  vec3 best = vec3(0.5f, 0.5f, -1.0f);
+  int bestEdge = 0;
+  for (int e = 0; e < 4; ++e) {
+    for (int a = 0; a < samples; ++a) {
+      PRECISE float r = float(a + 1) / float(samples + 1);
+      PRECISE float s = e == 0 ? r : (e == 1 ? 1.0f : (e == 2 ? r : 0.0f));
+      PRECISE float t = e == 0 ? 0.0f : (e == 1 ? r : (e == 2 ? 1.0f : r));
+      float k = kappaAtLocal(bp, rect, s, t, scale, eps);
+      if (k > best.z) {
+        best = vec3(s, t, k);
+        bestEdge = e;
+      }
+    }
+  }
+  const float hg = 1e-3f;
+  const float hh = 2e-2f;
+  bool alongS = bestEdge == 0 || bestEdge == 2;
+  PRECISE float x = alongS ? best.x : best.y;
+  for (int it = 0; it < kNewtonIterations; ++it) {
+    PRECISE float s0 = alongS ? x : best.x;
+    PRECISE float t0 = alongS ? best.y : x;
+    PRECISE vec2 dir = alongS ? vec2(1.0f, 0.0f) : vec2(0.0f, 1.0f);
+    float k0 = kappaAtLocal(bp, rect, s0, t0, scale, eps);
+    float kgp = kappaAtLocal(bp, rect, s0 + hg * dir.x, t0 + hg * dir.y, scale, eps);
+    float kgm = kappaAtLocal(bp, rect, s0 - hg * dir.x, t0 - hg * dir.y, scale, eps);
+    float khp = kappaAtLocal(bp, rect, s0 + hh * dir.x, t0 + hh * dir.y, scale, eps);
+    float khm = kappaAtLocal(bp, rect, s0 - hh * dir.x, t0 - hh * dir.y, scale, eps);
+    PRECISE float g = (kgp - kgm) / (2.0f * hg);
+    PRECISE float h2 = (khp - 2.0f * k0 + khm) / (hh * hh);
+    PRECISE float step = h2 < 0.0f ? -g / h2 : (g > 0.0f ? 0.05f : (g < 0.0f ? -0.05f : 0.0f));
+    step = clamp(step, -0.25f, 0.25f);
+    x = clamp(x + step, 0.0f, 1.0f);
+    PRECISE float s1 = alongS ? x : best.x;
+    PRECISE float t1 = alongS ? best.y : x;
+    float kx = kappaAtLocal(bp, rect, s1, t1, scale, eps);
+    if (kx > best.z) best = vec3(s1, t1, kx);
+  }
+  return best;
+}
+
+// The split point of a node in node-local coordinates (s, t), kept kSplitMargin away from the
+// edges. Where κ vanishes everywhere sampled (a plane, a degenerate patch) rules C and D fall
+// back to the midpoint.
+vec2 splitPointLocal(IN(BicubicPatch) bp, vec4 rect, uint rule, int samples, float scale,
+                     float eps) {
+  if (rule == kSplitRuleMidpoint) return vec2(0.5f);
+  vec3 best;
+  vec3 second;
+  sampledMaxima(bp, rect, samples, scale, eps, best, second);
+  if (rule == kSplitRuleTrueMax) {
+    vec3 a = newtonMaximum(bp, rect, best, scale, eps);
+    vec3 b = newtonMaximum(bp, rect, second, scale, eps);
+    vec3 c = boundaryMaximum(bp, rect, samples, scale, eps);
+    if (a.z > best.z) best = a;
+    if (b.z > best.z) best = b;
+    if (c.z > best.z) best = c;
+  }
+  if (!(best.z > 0.0f)) return vec2(0.5f);
+  return clamp(vec2(best.x, best.y), vec2(kSplitMargin), vec2(1.0f - kSplitMargin));
+}
+
+NodeDecision classifyNode(IN(BicubicPatch) bp, IN(QuadNode) node, uint rule, int samples,
+                          IN(ClassifyPush) params) {
+  PRECISE float scale = bicubicScale(bp);
+  float eps = params.degenerateEps;
+  vec4 r = node.rect;
+  vec2 local = splitPointLocal(bp, r, rule, samples, scale, eps);
+  float us = lerpParam(r.x, r.z, local.x);
+  float vs = lerpParam(r.y, r.w, local.y);
+
+  // Corners counter-clockwise in (u, v): c0 = (u0,v0), c1 = (u1,v0), c2 = (u1,v1), c3 = (u0,v1).
+  FrameSample c0 = frameAt(bp, r.x, r.y, scale, eps);
+  FrameSample c1 = frameAt(bp, r.z, r.y, scale, eps);
+  FrameSample c2 = frameAt(bp, r.z, r.w, scale, eps);
+  FrameSample c3 = frameAt(bp, r.x, r.w, scale, eps);
+  FrameSample sp = frameAt(bp, us, vs, scale, eps);
+
+  // Edge linearity: the edge's own tangent at both of its corners.
+  PRECISE float lin = angleTest(c0.tu, c1.tu);
+  lin = max(lin, angleTest(c1.tv, c2.tv));
+  lin = max(lin, angleTest(c3.tu, c2.tu));
+  lin = max(lin, angleTest(c0.tv, c3.tv));
+  // Flatness: adjacent corners, then every corner against the split point.
+  PRECISE float flatness = angleTest(c0.n, c1.n);
+  flatness = max(flatness, angleTest(c1.n, c2.n));
+  flatness = max(flatness, angleTest(c2.n, c3.n));
+  flatness = max(flatness, angleTest(c3.n, c0.n));
+  flatness = max(flatness, angleTest(c0.n, sp.n));
+  flatness = max(flatness, angleTest(c1.n, sp.n));
+  flatness = max(flatness, angleTest(c2.n, sp.n));
+  flatness = max(flatness, angleTest(c3.n, sp.n));
+
+  NodeDecision d;
+  d.split = vec4(us, vs, sp.kappa, 0.0f);
+  d.linearity = lin;
+  d.flatness = flatness;
+  d.pad = 0u;
+  if (lin < params.linearity && flatness < params.flatness) {
+    d.cause = kCauseFlat;
+  } else if (node.level >= params.maxDepth) {
+    d.cause = kCauseMaxDepth;
+  } else if (min(r.z - r.x, r.w - r.y) < params.minSize) {
+    d.cause = kCauseMinSize;
+  } else {
+    d.cause = kCauseSplit;
+  }
+  return d;
+}
+
+#endif
