@@ -47,6 +47,7 @@ QuadtreeResult uniformGrid(size_t patchCount, const QuadtreeOptions& o) {
         leaf.patchIndex = p;
         leaf.cause = gpu::kCauseUniform;
         leaf.path = uint64_t(i) * uint64_t(o.gridV) + uint64_t(j);
+        leaf.split = gpu::vec2(0.5f * (leaf.rect.x + leaf.rect.z), 0.5f * (leaf.rect.y + leaf.rect.w));
         result.leaves.push_back(leaf);
       }
   LevelStats stats;
@@ -134,7 +135,8 @@ QuadtreeResult buildQuadtree(const std::vector<gpu::BicubicPatch>& patches,
         cause = gpu::kCauseMinSize;
       if (cause != gpu::kCauseSplit) {
         result.leaves.push_back(
-            {n.rect, n.patchIndex, level, cause, paths[i], d.linearity, d.flatness});
+            {n.rect, n.patchIndex, level, cause, paths[i], d.linearity, d.flatness,
+             gpu::vec2(us, vs)});
         result.depth = std::max(result.depth, level);
         ++stats.leaves;
         continue;

@@ -45,6 +45,7 @@ struct QuadLeaf {
                    // v-low, 2: u-low v-high, 3: u-high v-high), for comparing trees
   float linearity;
   float flatness;
+  gpu::vec2 split;  // (us, vs) the classification chose
 };
 
 struct LevelStats {
