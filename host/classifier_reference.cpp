@@ -80,36 +80,38 @@ void sampledMaxima(const PatchContext& p, const Rect& r, int samples, dvec3& bes
 
 constexpr double kGradientStep = 1e-3, kHessianStep = 2e-2;
 
-dvec3 newtonMaximum(const PatchContext& p, const Rect& r, dvec3 seed) {
+dvec3 newtonMaximum(const PatchContext& p, const Rect& r, dvec3 seed, int samples) {
   const double hg = kGradientStep, hh = kHessianStep;
-  dvec3 best = seed;
   dvec2 x(seed.x, seed.y);
+  double kx = seed.z;
+  double radius = 0.5 / double(samples + 1);
   for (int it = 0; it < gpu::kNewtonIterations; ++it) {
-    double k0 = kappaLocal(p, r, x.x, x.y);
     double gs = (kappaLocal(p, r, x.x + hg, x.y) - kappaLocal(p, r, x.x - hg, x.y)) / (2 * hg);
     double gt = (kappaLocal(p, r, x.x, x.y + hg) - kappaLocal(p, r, x.x, x.y - hg)) / (2 * hg);
-    double hss = (kappaLocal(p, r, x.x + hh, x.y) - 2 * k0 + kappaLocal(p, r, x.x - hh, x.y)) /
+    double hss = (kappaLocal(p, r, x.x + hh, x.y) - 2 * kx + kappaLocal(p, r, x.x - hh, x.y)) /
                  (hh * hh);
-    double htt = (kappaLocal(p, r, x.x, x.y + hh) - 2 * k0 + kappaLocal(p, r, x.x, x.y - hh)) /
+    double htt = (kappaLocal(p, r, x.x, x.y + hh) - 2 * kx + kappaLocal(p, r, x.x, x.y - hh)) /
                  (hh * hh);
     double hst = (kappaLocal(p, r, x.x + hh, x.y + hh) - kappaLocal(p, r, x.x + hh, x.y - hh) -
                   kappaLocal(p, r, x.x - hh, x.y + hh) + kappaLocal(p, r, x.x - hh, x.y - hh)) /
                  (4 * hh * hh);
     double det = hss * htt - hst * hst;
-    dvec2 step(0.0);
-    if (hss < 0.0 && det > 0.0) {
+    dvec2 step(gs, gt);
+    if (hss < 0.0 && det > 0.0)
       step = dvec2(-(htt * gs - hst * gt) / det, -(hss * gt - hst * gs) / det);
-    } else {
-      double glen = std::sqrt(gs * gs + gt * gt);
-      if (glen > 0.0) step = dvec2(gs, gt) * (0.05 / glen);
-    }
     double slen = glm::length(step);
-    if (slen > 0.25) step *= 0.25 / slen;
-    x = glm::clamp(x + step, dvec2(0.0), dvec2(1.0));
-    double kx = kappaLocal(p, r, x.x, x.y);
-    if (kx > best.z) best = dvec3(x.x, x.y, kx);
+    if (slen > radius) step *= radius / slen;
+    dvec2 y = glm::clamp(x + step, dvec2(0.0), dvec2(1.0));
+    double ky = kappaLocal(p, r, y.x, y.y);
+    if (ky > kx) {
+      x = y;
+      kx = ky;
+      radius = std::min(2.0 * radius, 0.25);
+    } else {
+      radius *= 0.25;
+    }
   }
-  return best;
+  return dvec3(x.x, x.y, kx);
 }
 
 dvec3 boundaryMaximum(const PatchContext& p, const Rect& r, int samples) {
@@ -127,25 +129,29 @@ dvec3 boundaryMaximum(const PatchContext& p, const Rect& r, int samples) {
       }
     }
   const double hg = kGradientStep, hh = kHessianStep;
-  bool alongS = bestEdge == 0 || bestEdge == 2;
-  double x = alongS ? best.x : best.y;
+  dvec2 dir = (bestEdge == 0 || bestEdge == 2) ? dvec2(1, 0) : dvec2(0, 1);
+  dvec2 x(best.x, best.y);
+  double kx = best.z;
+  double radius = 0.5 / double(samples + 1);
   for (int it = 0; it < gpu::kNewtonIterations; ++it) {
-    double s0 = alongS ? x : best.x, t0 = alongS ? best.y : x;
-    dvec2 dir = alongS ? dvec2(1, 0) : dvec2(0, 1);
-    double k0 = kappaLocal(p, r, s0, t0);
-    double g = (kappaLocal(p, r, s0 + hg * dir.x, t0 + hg * dir.y) -
-                kappaLocal(p, r, s0 - hg * dir.x, t0 - hg * dir.y)) /
+    double g = (kappaLocal(p, r, x.x + hg * dir.x, x.y + hg * dir.y) -
+                kappaLocal(p, r, x.x - hg * dir.x, x.y - hg * dir.y)) /
                (2 * hg);
-    double h2 = (kappaLocal(p, r, s0 + hh * dir.x, t0 + hh * dir.y) - 2 * k0 +
-                 kappaLocal(p, r, s0 - hh * dir.x, t0 - hh * dir.y)) /
+    double h2 = (kappaLocal(p, r, x.x + hh * dir.x, x.y + hh * dir.y) - 2 * kx +
+                 kappaLocal(p, r, x.x - hh * dir.x, x.y - hh * dir.y)) /
                 (hh * hh);
-    double step = h2 < 0.0 ? -g / h2 : (g > 0.0 ? 0.05 : (g < 0.0 ? -0.05 : 0.0));
-    x = std::clamp(x + std::clamp(step, -0.25, 0.25), 0.0, 1.0);
-    double s1 = alongS ? x : best.x, t1 = alongS ? best.y : x;
-    double kx = kappaLocal(p, r, s1, t1);
-    if (kx > best.z) best = dvec3(s1, t1, kx);
+    double step = std::clamp(h2 < 0.0 ? -g / h2 : g, -radius, radius);
+    dvec2 y = glm::clamp(x + step * dir, dvec2(0.0), dvec2(1.0));
+    double ky = kappaLocal(p, r, y.x, y.y);
+    if (ky > kx) {
+      x = y;
+      kx = ky;
+      radius = std::min(2.0 * radius, 0.25);
+    } else {
+      radius *= 0.25;
+    }
   }
-  return best;
+  return dvec3(x.x, x.y, kx);
 }
 
 dvec2 splitPointLocal(const PatchContext& p, const Rect& r, SplitRule rule, int samples) {
@@ -153,7 +159,7 @@ dvec2 splitPointLocal(const PatchContext& p, const Rect& r, SplitRule rule, int 
   dvec3 best, second;
   sampledMaxima(p, r, samples, best, second);
   if (rule == SplitRule::TrueMax) {
-    for (dvec3 c : {newtonMaximum(p, r, best), newtonMaximum(p, r, second),
+    for (dvec3 c : {newtonMaximum(p, r, best, samples), newtonMaximum(p, r, second, samples),
                     boundaryMaximum(p, r, samples)})
       if (c.z > best.z) best = c;
   }

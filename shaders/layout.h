@@ -73,7 +73,7 @@ TESSERA_CONST(uint, kCauseUniform, 4u);   // a cell of rule (A)'s uniform grid
 // so children never degenerate (a child is at least 10% of its parent in each direction).
 TESSERA_CONST(float, kSplitMargin, 0.1f);
 // Newton iterations of rule D per seed (fixed count: GPU and mirror run the same steps).
-TESSERA_CONST(int, kNewtonIterations, 6);
+TESSERA_CONST(int, kNewtonIterations, 8);
 
 // One frontier node: the rectangle [u0,u1]×[v0,v1] of patch `patchIndex` at depth `level`.
 struct QuadNode {

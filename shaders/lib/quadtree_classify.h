@@ -100,15 +100,18 @@ vec2 stencilOffset(int k) {
 // Rule D's interior search: Newton on κu = κv = 0 in node-local coordinates from `seed`,
 // gradient by central differences (step 1e-3 of the node), Hessian by a coarser stencil
 // (step 2e-2: fp32 second differences at 1e-3 would be mostly rounding noise). Where the
-// Hessian is not negative definite it takes an ascent step instead. Keeps the best point seen,
-// so a wild step can never make the result worse than the seed.
-vec3 newtonMaximum(IN(BicubicPatch) bp, vec4 rect, vec3 seed, float scale, float eps) {
+// Hessian is not negative definite it steps along the gradient instead. A trust radius
+// (starting at half the sample spacing) bounds each step; a step is taken only if κ grows,
+// else the radius shrinks — so the search climbs monotonically and never leaves a sharp
+// peak the quadratic model overshoots.
+vec3 newtonMaximum(IN(BicubicPatch) bp, vec4 rect, vec3 seed, int samples, float scale,
+                   float eps) {
   const float hg = 1e-3f;
   const float hh = 2e-2f;
-  vec3 best = seed;
   PRECISE vec2 x = vec2(seed.x, seed.y);
+  PRECISE float kx = seed.z;
+  PRECISE float radius = 0.5f / float(samples + 1);
   for (int it = 0; it < kNewtonIterations; ++it) {
-    float k0 = kappaAtLocal(bp, rect, x.x, x.y, scale, eps);
     float kv[12];
     for (int k = 0; k < 12; ++k) {
       PRECISE float h = k < 4 ? hg : hh;
@@ -119,28 +122,31 @@ vec3 newtonMaximum(IN(BicubicPatch) bp, vec4 rect, vec3 seed, float scale, float
     }
     PRECISE float gs = (kv[0] - kv[1]) / (2.0f * hg);
     PRECISE float gt = (kv[2] - kv[3]) / (2.0f * hg);
-    PRECISE float hss = (kv[4] - 2.0f * k0 + kv[5]) / (hh * hh);
-    PRECISE float htt = (kv[6] - 2.0f * k0 + kv[7]) / (hh * hh);
+    PRECISE float hss = (kv[4] - 2.0f * kx + kv[5]) / (hh * hh);
+    PRECISE float htt = (kv[6] - 2.0f * kx + kv[7]) / (hh * hh);
     PRECISE float hst = (kv[8] - kv[9] - kv[10] + kv[11]) / (4.0f * hh * hh);
     PRECISE float det = hss * htt - hst * hst;
-    PRECISE vec2 step = vec2(0.0f);
+    PRECISE vec2 step = vec2(gs, gt);
     if (hss < 0.0f && det > 0.0f) {
       step = vec2(-(htt * gs - hst * gt) / det, -(hss * gt - hst * gs) / det);
-    } else {
-      PRECISE float glen = sqrt(gs * gs + gt * gt);
-      if (glen > 0.0f) step = vec2(gs, gt) * (0.05f / glen);
     }
     PRECISE float slen = sqrt(dot(step, step));
-    if (slen > 0.25f) step = step * (0.25f / slen);
-    x = clamp(x + step, vec2(0.0f), vec2(1.0f));
-    float kx = kappaAtLocal(bp, rect, x.x, x.y, scale, eps);
-    if (kx > best.z) best = vec3(x.x, x.y, kx);
+    if (slen > radius) step = step * (radius / slen);
+    PRECISE vec2 y = clamp(x + step, vec2(0.0f), vec2(1.0f));
+    float ky = kappaAtLocal(bp, rect, y.x, y.y, scale, eps);
+    if (ky > kx) {
+      x = y;
+      kx = ky;
+      radius = min(2.0f * radius, 0.25f);
+    } else {
+      radius = 0.25f * radius;
+    }
   }
-  return best;
+  return vec3(x.x, x.y, kx);
 }
 
-// Rule D's boundary search: the best of S samples on each edge, refined by 1-D Newton along
-// that edge (same steps as the interior search).
+// Rule D's boundary search: the best of S samples on each edge, refined along that edge by
+// the same trust-region Newton in one dimension.
 vec3 boundaryMaximum(IN(BicubicPatch) bp, vec4 rect, int samples, float scale, float eps) {
   vec3 best = vec3(0.5f, 0.5f, -1.0f);
   int bestEdge = 0;
@@ -159,27 +165,30 @@ vec3 boundaryMaximum(IN(BicubicPatch) bp, vec4 rect, int samples, float scale, f
   const float hg = 1e-3f;
   const float hh = 2e-2f;
   bool alongS = bestEdge == 0 || bestEdge == 2;
-  PRECISE float x = alongS ? best.x : best.y;
+  PRECISE vec2 dir = alongS ? vec2(1.0f, 0.0f) : vec2(0.0f, 1.0f);
+  PRECISE vec2 x = vec2(best.x, best.y);
+  PRECISE float kx = best.z;
+  PRECISE float radius = 0.5f / float(samples + 1);
   for (int it = 0; it < kNewtonIterations; ++it) {
-    PRECISE float s0 = alongS ? x : best.x;
-    PRECISE float t0 = alongS ? best.y : x;
-    PRECISE vec2 dir = alongS ? vec2(1.0f, 0.0f) : vec2(0.0f, 1.0f);
-    float k0 = kappaAtLocal(bp, rect, s0, t0, scale, eps);
-    float kgp = kappaAtLocal(bp, rect, s0 + hg * dir.x, t0 + hg * dir.y, scale, eps);
-    float kgm = kappaAtLocal(bp, rect, s0 - hg * dir.x, t0 - hg * dir.y, scale, eps);
-    float khp = kappaAtLocal(bp, rect, s0 + hh * dir.x, t0 + hh * dir.y, scale, eps);
-    float khm = kappaAtLocal(bp, rect, s0 - hh * dir.x, t0 - hh * dir.y, scale, eps);
+    float kgp = kappaAtLocal(bp, rect, x.x + hg * dir.x, x.y + hg * dir.y, scale, eps);
+    float kgm = kappaAtLocal(bp, rect, x.x - hg * dir.x, x.y - hg * dir.y, scale, eps);
+    float khp = kappaAtLocal(bp, rect, x.x + hh * dir.x, x.y + hh * dir.y, scale, eps);
+    float khm = kappaAtLocal(bp, rect, x.x - hh * dir.x, x.y - hh * dir.y, scale, eps);
     PRECISE float g = (kgp - kgm) / (2.0f * hg);
-    PRECISE float h2 = (khp - 2.0f * k0 + khm) / (hh * hh);
-    PRECISE float step = h2 < 0.0f ? -g / h2 : (g > 0.0f ? 0.05f : (g < 0.0f ? -0.05f : 0.0f));
-    step = clamp(step, -0.25f, 0.25f);
-    x = clamp(x + step, 0.0f, 1.0f);
-    PRECISE float s1 = alongS ? x : best.x;
-    PRECISE float t1 = alongS ? best.y : x;
-    float kx = kappaAtLocal(bp, rect, s1, t1, scale, eps);
-    if (kx > best.z) best = vec3(s1, t1, kx);
+    PRECISE float h2 = (khp - 2.0f * kx + khm) / (hh * hh);
+    PRECISE float step = h2 < 0.0f ? -g / h2 : g;
+    step = clamp(step, -radius, radius);
+    PRECISE vec2 y = clamp(x + step * dir, vec2(0.0f), vec2(1.0f));
+    float ky = kappaAtLocal(bp, rect, y.x, y.y, scale, eps);
+    if (ky > kx) {
+      x = y;
+      kx = ky;
+      radius = min(2.0f * radius, 0.25f);
+    } else {
+      radius = 0.25f * radius;
+    }
   }
-  return best;
+  return vec3(x.x, x.y, kx);
 }
 
 // The split point of a node in node-local coordinates (s, t), kept kSplitMargin away from the
@@ -192,8 +201,8 @@ vec2 splitPointLocal(IN(BicubicPatch) bp, vec4 rect, uint rule, int samples, flo
   vec3 second;
   sampledMaxima(bp, rect, samples, scale, eps, best, second);
   if (rule == kSplitRuleTrueMax) {
-    vec3 a = newtonMaximum(bp, rect, best, scale, eps);
-    vec3 b = newtonMaximum(bp, rect, second, scale, eps);
+    vec3 a = newtonMaximum(bp, rect, best, samples, scale, eps);
+    vec3 b = newtonMaximum(bp, rect, second, samples, scale, eps);
     vec3 c = boundaryMaximum(bp, rect, samples, scale, eps);
     if (a.z > best.z) best = a;
     if (b.z > best.z) best = b;
