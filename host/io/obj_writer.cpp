@@ -1,0 +1,108 @@
+// OBJ text output. Lines are assembled in a string and handed to the stream in large blocks:
+// operator<< per number is several times slower and would follow the stream's locale.
+#include "io/obj_writer.h"
+
+#include <charconv>
+#include <cstdint>
+
+#include "io/atomic_file.h"
+
+namespace tessera {
+namespace {
+
+class LineBuilder {
+ public:
+  explicit LineBuilder(std::ostream& out) : out_(out) { text_.reserve(kFlushSize + 256); }
+  void put(const char* literal) { text_ += literal; }
+  void put(char c) { text_ += c; }
+
+  // Shortest representation that parses back to exactly `value`.
+  void putFloat(float value) {
+    char digits[32];
+    auto result = std::to_chars(digits, digits + sizeof digits, value);
+    text_.append(digits, result.ptr);
+  }
+
+  void putInteger(uint64_t value) {
+    char digits[24];
+    auto result = std::to_chars(digits, digits + sizeof digits, value);
+    text_.append(digits, result.ptr);
+  }
+
+  void endLine() {
+    text_ += '\n';
+    if (text_.size() >= kFlushSize) flush();
+  }
+
+  void flush() {
+    out_.write(text_.data(), static_cast<std::streamsize>(text_.size()));
+    text_.clear();
+  }
+
+ private:
+  static constexpr size_t kFlushSize = 1 << 20;
+  std::ostream& out_;
+  std::string text_;
+};
+
+void putVec3(LineBuilder& line, const char* tag, const glm::vec3& v) {
+  line.put(tag);
+  line.put(' ');
+  line.putFloat(v.x);
+  line.put(' ');
+  line.putFloat(v.y);
+  line.put(' ');
+  line.putFloat(v.z);
+  line.endLine();
+}
+
+}  // namespace
+
+void writeObj(std::ostream& out, const TriangleMesh& mesh) {
+  mesh.validate();
+  const bool hasUvs = !mesh.uvs.empty();
+  const bool hasNormals = !mesh.normals.empty();
+
+  LineBuilder line(out);
+  line.put("# Tessera triangle mesh: ");
+  line.putInteger(mesh.vertexCount());
+  line.put(" vertices, ");
+  line.putInteger(mesh.triangleCount());
+  line.put(" triangles");
+  line.endLine();
+
+  for (const glm::vec3& p : mesh.positions) putVec3(line, "v", p);
+  for (const glm::vec2& uv : mesh.uvs) {
+    line.put("vt ");
+    line.putFloat(uv.x);
+    line.put(' ');
+    line.putFloat(uv.y);
+    line.endLine();
+  }
+  for (const glm::vec3& n : mesh.normals) putVec3(line, "vn", n);
+
+  for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+    line.put('f');
+    for (int corner = 0; corner < 3; ++corner) {
+      const uint64_t index = uint64_t(mesh.indices[3 * t + corner]) + 1;  // OBJ counts from 1
+      line.put(' ');
+      line.putInteger(index);
+      if (hasUvs || hasNormals) {
+        line.put('/');
+        if (hasUvs) line.putInteger(index);
+        if (hasNormals) {
+          line.put('/');
+          line.putInteger(index);
+        }
+      }
+    }
+    line.endLine();
+  }
+  line.flush();
+}
+
+void writeObjFile(const std::string& path, const TriangleMesh& mesh) {
+  writeFileAtomically(path, [&](std::ostream& out) { writeObj(out, mesh); });
+}
+
+}  // namespace tessera

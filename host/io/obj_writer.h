@@ -1,0 +1,25 @@
+// Wavefront OBJ output of a TriangleMesh, for viewing a tessellation in any mesh tool.
+//
+// Layout: a comment line, then "v x y z" per vertex, "vt u v" per vertex when the mesh has
+// uvs, "vn x y z" per vertex when it has normals, then one "f" line per triangle with 1-based
+// indices: "f a b c", "f a/a b/b c/c" (uvs), "f a//a b//b c//c" (normals) or "f a/a/a …"
+// (both); every attribute shares the position's index. Floats are written as the shortest
+// decimal that reads back to the same float (std::to_chars: exact round trip, independent of
+// the locale). OBJ has no per-vertex slot for patch ids, so patchIds are not written.
+#pragma once
+#include <ostream>
+#include <string>
+
+#include "mesh.h"
+
+namespace tessera {
+
+// Validate the mesh (std::invalid_argument if malformed) and write it to `out`.
+void writeObj(std::ostream& out, const TriangleMesh& mesh);
+
+// Same, into the file at `path` via writeFileAtomically: the whole file or, on any error,
+// nothing (InputError of kind Io for I/O failures). An invalid mesh throws
+// std::invalid_argument and leaves the file as it was.
+void writeObjFile(const std::string& path, const TriangleMesh& mesh);
+
+}  // namespace tessera

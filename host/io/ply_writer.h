@@ -1,0 +1,33 @@
+// Binary PLY output of a TriangleMesh: compact and exact (raw fp32), read by MeshLab,
+// Blender, Open3D and most geometry tools.
+//
+// Format: binary_little_endian 1.0 whatever the host's byte order. Header:
+//   ply
+//   format binary_little_endian 1.0
+//   comment Tessera triangle mesh
+//   element vertex <V>
+//   property float x / y / z            (three lines)
+//   property float nx / ny / nz         (three lines, only when the mesh has normals)
+//   element face <F>
+//   property list uchar uint vertex_indices
+//   end_header
+// then V vertices of 12 (or 24 with normals) bytes and F faces of 13 bytes (count 3, three
+// uint32 indices). Each header line ends in a single '\n'. uvs and patchIds are not written:
+// the standard PLY readers have no common names for them.
+#pragma once
+#include <ostream>
+#include <string>
+
+#include "mesh.h"
+
+namespace tessera {
+
+// Validate the mesh (std::invalid_argument if malformed) and write it to `out`.
+void writePly(std::ostream& out, const TriangleMesh& mesh);
+
+// Same, into the file at `path` via writeFileAtomically: the whole file or, on any error,
+// nothing (InputError of kind Io for I/O failures). An invalid mesh throws
+// std::invalid_argument and leaves the file as it was.
+void writePlyFile(const std::string& path, const TriangleMesh& mesh);
+
+}  // namespace tessera
