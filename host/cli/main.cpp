@@ -1,2 +1,20 @@
+// tessera: tessellate free-form surfaces on the GPU. See docs/cli.md.
 #include <cstdio>
-int main(int argc, char** argv) { (void)argc; (void)argv; std::puts("tessera: under construction"); return 0; }
+
+#include "cli/commands.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"tessera: adaptive tessellation of free-form surfaces on Vulkan compute"};
+  app.require_subcommand(1);
+  int exitCode = tessera::cli::kExitOk;
+  tessera::cli::addTessellateCommand(app, exitCode);
+  tessera::cli::addDevicesCommand(app, exitCode);
+  tessera::cli::addInfoCommand(app, exitCode);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    int code = app.exit(e);
+    return code == 0 ? 0 : tessera::cli::kExitUsage;
+  }
+  return exitCode;
+}

@@ -1,0 +1,141 @@
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "cli/commands.h"
+#include "io/bpt_reader.h"
+#include "io/errors.h"
+#include "io/obj_writer.h"
+#include "io/ply_writer.h"
+#include "tessellate.h"
+#include "vk/context.h"
+
+namespace tessera::cli {
+namespace {
+
+struct TessellateArgs {
+  std::string input;
+  std::string output;
+  std::string method = "B";
+  float linearity = 0.1f;
+  float flatness = 0.1f;
+  uint32_t maxDepth = 12;
+  int samples = 5;
+  int grid = 8;
+  size_t nodeBudget = size_t(1) << 24;
+  std::string backend = "auto";
+  std::string device;
+  bool quiet = false;
+};
+
+void writeMesh(const std::string& path, const TriangleMesh& mesh) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  if (ext == ".obj")
+    writeObjFile(path, mesh);
+  else if (ext == ".ply")
+    writePlyFile(path, mesh);
+  else
+    throw CLI::ValidationError("--output", "unknown output format '" + ext + "' (use .obj or .ply)");
+}
+
+int run(const TessellateArgs& a) {
+  QuadtreeOptions options;
+  options.rule = parseSplitRule(a.method);
+  options.linearity = a.linearity;
+  options.flatness = a.flatness;
+  options.maxDepth = a.maxDepth;
+  options.samples = a.samples;
+  options.gridU = options.gridV = a.grid;
+  options.nodeBudget = a.nodeBudget;
+
+  std::vector<BezierPatch> patches = readBpt(a.input);
+
+  std::unique_ptr<vk::Context> context;
+  Backend backend;
+  if (a.backend == "vulkan" || a.backend == "auto") {
+    try {
+      vk::ContextOptions vkOptions;
+      vkOptions.device = a.device;
+      context = std::make_unique<vk::Context>(vkOptions);
+      backend = makeVulkanBackend(*context);
+    } catch (const vk::VulkanUnavailable& e) {
+      if (a.backend == "vulkan") throw;
+      std::fprintf(stderr, "tessera: no Vulkan (%s); using the CPU backend\n", e.what());
+      backend = makeCpuBackend();
+    }
+  } else if (a.backend == "cpu") {
+    backend = makeCpuBackend();
+  } else {
+    throw CLI::ValidationError("--backend", "expected vulkan, cpu or auto");
+  }
+
+  Tessellation t = tessellate(patches, options, backend);
+  if (!a.output.empty()) writeMesh(a.output, t.mesh);
+  if (!a.quiet) {
+    const TessellationStats& s = t.stats;
+    std::printf("%s: %zu patches, method %c, linearity %g, flatness %g, backend %s%s%s\n",
+                a.input.c_str(), s.patches, splitRuleLetter(options.rule), a.linearity,
+                a.flatness, backend.name.c_str(), context ? " on " : "",
+                context ? context->info().name.c_str() : "");
+    std::printf("depth %u, leaves %zu, triangles %zu, vertices %zu (%zu zero-area dropped)\n",
+                s.depth, s.leaves, s.triangles, s.vertices, s.degenerateTrianglesDropped);
+    std::printf("time: tree %.1f ms, triangulation %.1f ms, vertices %.1f ms, total %.1f ms\n",
+                s.treeMs, s.triangulateMs, s.evaluateMs, s.totalMs);
+    if (!a.output.empty()) std::printf("wrote %s\n", a.output.c_str());
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+void addTessellateCommand(CLI::App& app, int& exitCode) {
+  static TessellateArgs args;
+  CLI::App* cmd = app.add_subcommand("tessellate", "Tessellate a surface file into a triangle mesh");
+  cmd->add_option("input", args.input, "input surface file (.bpt)")->required();
+  cmd->add_option("-o,--output", args.output, "output mesh (.obj or .ply, chosen by extension)");
+  cmd->add_option("-m,--method", args.method,
+                  "split rule: A uniform grid, B midpoint, C sampled κ max, D true κ max")
+      ->capture_default_str();
+  cmd->add_option("--linearity", args.linearity, "edge linearity threshold (1 - Ti·Tj)")
+      ->capture_default_str();
+  cmd->add_option("--flatness", args.flatness, "flatness threshold (1 - Ni·Nj)")
+      ->capture_default_str();
+  cmd->add_option("--max-depth", args.maxDepth, "maximum quad-tree depth")->capture_default_str();
+  cmd->add_option("--samples", args.samples, "S of rules C and D (S×S samples per node)")
+      ->capture_default_str();
+  cmd->add_option("--grid", args.grid, "N of rule A (N×N cells per patch)")->capture_default_str();
+  cmd->add_option("--node-budget", args.nodeBudget, "most quad-tree nodes before stopping")
+      ->capture_default_str();
+  cmd->add_option("--backend", args.backend, "vulkan, cpu, or auto (Vulkan if a device exists)")
+      ->capture_default_str();
+  cmd->add_option("--device", args.device, "Vulkan device index or part of its name");
+  cmd->add_flag("-q,--quiet", args.quiet, "print nothing on success");
+  cmd->callback([&exitCode] {
+    try {
+      exitCode = run(args);
+    } catch (const InputError& e) {
+      std::fprintf(stderr, "tessera: %s\n", e.what());
+      exitCode = e.kind() == InputErrorKind::Io && !args.output.empty() &&
+                         e.file() == args.output
+                     ? kExitOutput
+                     : kExitBadInput;
+    } catch (const vk::VulkanUnavailable& e) {
+      std::fprintf(stderr, "tessera: %s\n", e.what());
+      exitCode = kExitNoVulkan;
+    } catch (const TessellationLimitError& e) {
+      std::fprintf(stderr, "tessera: %s\n", e.what());
+      exitCode = kExitLimit;
+    } catch (const CLI::ValidationError& e) {
+      std::fprintf(stderr, "tessera: %s\n", e.what());
+      exitCode = kExitUsage;
+    } catch (const std::invalid_argument& e) {
+      std::fprintf(stderr, "tessera: %s\n", e.what());
+      exitCode = kExitBadInput;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "tessera: internal error: %s\n", e.what());
+      exitCode = kExitInternal;
+    }
+  });
+}
+
+}  // namespace tessera::cli

@@ -1,0 +1,22 @@
+// The subcommands of the `tessera` tool (one file each) and the exit codes they share.
+#pragma once
+#include <CLI/CLI.hpp>
+
+namespace tessera::cli {
+
+// Exit codes (docs/cli.md).
+enum ExitCode : int {
+  kExitOk = 0,
+  kExitUsage = 1,        // bad command line
+  kExitBadInput = 2,     // unreadable or invalid input file
+  kExitNoVulkan = 3,     // --backend vulkan and no usable Vulkan device
+  kExitLimit = 4,        // node budget or another resource limit reached
+  kExitOutput = 5,       // the output could not be written (nothing was left behind)
+  kExitInternal = 70,    // a bug: please report
+};
+
+void addTessellateCommand(CLI::App& app, int& exitCode);
+void addDevicesCommand(CLI::App& app, int& exitCode);
+void addInfoCommand(CLI::App& app, int& exitCode);
+
+}  // namespace tessera::cli

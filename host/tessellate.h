@@ -1,0 +1,44 @@
+// The whole job: patches → adaptive quad-tree → triangles → vertices evaluated on the
+// backend → an indexed mesh with positions, normals, (u, v) and patch ids.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "evaluator.h"
+#include "mesh.h"
+#include "patch.h"
+#include "quadtree.h"
+
+namespace tessera {
+
+// A classifier and an evaluator on the same device.
+struct Backend {
+  std::string name;
+  std::unique_ptr<NodeClassifier> classifier;
+  std::unique_ptr<PatchEvaluator> evaluator;
+};
+
+Backend makeCpuBackend();                       // fp32 mirror, all cores for the tree
+Backend makeVulkanBackend(vk::Context& context);
+
+struct TessellationStats {
+  size_t patches = 0, leaves = 0, triangles = 0, vertices = 0;
+  size_t degenerateTrianglesDropped = 0;  // zero-area triangles at collapsed edges
+  uint32_t depth = 0;
+  double treeMs = 0, triangulateMs = 0, evaluateMs = 0, totalMs = 0;
+  std::vector<LevelStats> levels;
+};
+
+struct Tessellation {
+  TriangleMesh mesh;
+  QuadtreeResult tree;
+  TessellationStats stats;
+};
+
+// Throws std::invalid_argument for a patch the backend cannot take (the GPU path takes
+// bicubic patches), TessellationLimitError when the node budget is exceeded.
+Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeOptions& options,
+                        Backend& backend);
+
+}  // namespace tessera
