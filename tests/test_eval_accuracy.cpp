@@ -72,3 +72,11 @@ TEST_CASE("GPU evaluation matches the double kernel on the teapot", "[gpu][accur
 TEST_CASE("GPU evaluation matches the double kernel on random patches", "[gpu][accuracy]") {
   checkAccuracy(test::randomBicubicPatches(100, 2024), "random patches");
 }
+
+// CAD coordinates often sit far from the origin: derivatives must not lose digits to it.
+TEST_CASE("GPU evaluation stays accurate far from the origin", "[gpu][accuracy]") {
+  auto patches = test::randomBicubicPatches(100, 77);
+  for (auto& p : patches)
+    for (auto& c : p.cp) c += glm::dvec3(1000.0, -2000.0, 500.0);
+  checkAccuracy(patches, "random patches offset by (1000, -2000, 500)");
+}

@@ -39,8 +39,11 @@ CubicBasis cubicBasis(float t) {
 }
 
 // Sums along v first (one row of four control points at a time), then along u: the row
-// partial sums are shared by all ten derivatives.
+// partial sums are shared by all ten derivatives. Control points are taken relative to the
+// first one: derivative sums cancel (Σ B'_i = 0), and cancelling coordinates far from the
+// origin would cost fp32 digits in proportion to the offset instead of the patch's size.
 BicubicDerivs evalBicubic(IN(BicubicPatch) bp, float u, float v) {
+  vec3 origin = vec3(bp.cp[0]);
   CubicBasis bu = cubicBasis(u);
   CubicBasis bv = cubicBasis(v);
   BicubicDerivs d;
@@ -60,7 +63,7 @@ BicubicDerivs evalBicubic(IN(BicubicPatch) bp, float u, float v) {
     PRECISE vec3 r2 = vec3(0.0f);
     PRECISE vec3 r3 = vec3(0.0f);
     for (int j = 0; j < 4; ++j) {
-      vec3 q = vec3(bp.cp[i * 4 + j]);
+      PRECISE vec3 q = vec3(bp.cp[i * 4 + j]) - origin;
       r0 = r0 + bv.b0[j] * q;
       r1 = r1 + bv.b1[j] * q;
       r2 = r2 + bv.b2[j] * q;
@@ -87,6 +90,8 @@ BicubicDerivs evalBicubic(IN(BicubicPatch) bp, float u, float v) {
     d.puvv = puvv;
     d.pvvv = pvvv;
   }
+  PRECISE vec3 position = d.p + origin;
+  d.p = position;
   return d;
 }
 
