@@ -15,11 +15,19 @@ struct DeviationReport {
   double meanDeviation = 0;  // over all samples
   size_t samples = 0;
   size_t worstTriangle = 0;
+  // Per patch (index = patch): largest and mean distance over its triangles' samples
+  // (0 for a patch without triangles).
+  std::vector<double> perPatchMax;
+  std::vector<double> perPatchMean;
 };
 
+struct Tessellation;
+
 // Samples every triangle at the points (i, j, k)/n with i + j + k = n (n = `subdivisions`),
-// corners included. The mesh needs uvs and patchIds, as tessellate() produces.
-DeviationReport measureDeviation(const TriangleMesh& mesh, const std::vector<BezierPatch>& patches,
-                                 int subdivisions = 4);
+// corners included, against the triangle's own patch at its corners' (u, v) there.
+// (It takes the Tessellation, not only its mesh: a vertex welded across patches keeps one
+// patch's (u, v), so the mesh alone cannot say where a triangle lies on its own patch.)
+DeviationReport measureDeviation(const Tessellation& tessellation,
+                                 const std::vector<BezierPatch>& patches, int subdivisions = 4);
 
 }  // namespace tessera

@@ -21,7 +21,7 @@ UniformResult uniformAt(const std::vector<BezierPatch>& patches, int n, Backend&
   options.rule = SplitRule::UniformGrid;
   options.gridU = options.gridV = n;
   Tessellation t = tessellate(patches, options, backend);
-  UniformResult r{t.stats.triangles, measureDeviation(t.mesh, patches).maxDeviation};
+  UniformResult r{t.stats.triangles, measureDeviation(t, patches).maxDeviation};
   cache[n] = r;
   return r;
 }
@@ -63,7 +63,7 @@ std::vector<PaperTableRow> paperTable(const std::vector<BezierPatch>& patches,
       row.depth = t.stats.depth;
       row.leaves = t.stats.leaves;
       row.triangles = t.stats.triangles;
-      row.maxDeviation = measureDeviation(t.mesh, patches).maxDeviation;
+      row.maxDeviation = measureDeviation(t, patches).maxDeviation;
       row.uniformN = smallestUniformN(patches, row.maxDeviation, backend, uniformCache);
       UniformResult u = uniformAt(patches, row.uniformN, backend, uniformCache);
       row.uniformTriangles = u.triangles;

@@ -1,6 +1,9 @@
 #include "tessellate.h"
 
+#include <array>
 #include <chrono>
+#include <cstring>
+#include <unordered_map>
 
 #include "triangulate.h"
 
@@ -9,6 +12,26 @@ namespace {
 
 double msSince(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+}
+
+// For each vertex, the first vertex with bit-identical position.
+std::vector<uint32_t> weldIdenticalPositions(const std::vector<glm::vec3>& positions) {
+  struct Hash {
+    size_t operator()(const std::array<uint32_t, 3>& k) const {
+      return (size_t(k[0]) * 73856093u) ^ (size_t(k[1]) * 19349663u) ^ (size_t(k[2]) * 83492791u);
+    }
+  };
+  std::unordered_map<std::array<uint32_t, 3>, uint32_t, Hash> first;
+  std::vector<uint32_t> remap(positions.size());
+  for (uint32_t i = 0; i < positions.size(); ++i) {
+    std::array<uint32_t, 3> key;
+    for (int c = 0; c < 3; ++c) {
+      float x = positions[i][c] == 0.0f ? 0.0f : positions[i][c];
+      std::memcpy(&key[c], &x, sizeof x);
+    }
+    remap[i] = first.emplace(key, i).first->second;
+  }
+  return remap;
 }
 
 }  // namespace
@@ -40,7 +63,7 @@ Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeO
   result.stats.treeMs = msSince(t);
 
   t = std::chrono::steady_clock::now();
-  ParamMesh param = triangulateLeaves(result.tree.leaves);
+  ParamMesh param = triangulateLeaves(result.tree.leaves, patches);
   result.stats.triangulateMs = msSince(t);
 
   t = std::chrono::steady_clock::now();
@@ -61,16 +84,24 @@ Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeO
     mesh.uvs[i] = glm::vec2(param.vertices[i].u, param.vertices[i].v);
     mesh.patchIds[i] = param.vertices[i].patchIndex;
   }
-  // A triangle with two corners at one point (a collapsed patch edge) has no area: drop it.
+  // Welding in the triangulation already dropped triangles with two corners at one vertex.
+  // Distinct vertices can still evaluate to the very same point (a fold, or points a hair
+  // apart): weld those too, so every zero-area triangle goes and its neighbours keep sharing
+  // their edges.
+  std::vector<uint32_t> remap = weldIdenticalPositions(mesh.positions);
+  result.stats.degenerateTrianglesDropped = param.droppedTriangles;
   mesh.indices.reserve(param.indices.size());
   for (size_t k = 0; k < param.indices.size(); k += 3) {
-    uint32_t a = param.indices[k], b = param.indices[k + 1], c = param.indices[k + 2];
-    const glm::vec3 &pa = mesh.positions[a], &pb = mesh.positions[b], &pc = mesh.positions[c];
-    if (pa == pb || pb == pc || pc == pa) {
+    uint32_t a = remap[param.indices[k]], b = remap[param.indices[k + 1]],
+             c = remap[param.indices[k + 2]];
+    if (a == b || b == c || c == a) {
       ++result.stats.degenerateTrianglesDropped;
       continue;
     }
     mesh.indices.insert(mesh.indices.end(), {a, b, c});
+    result.trianglePatch.push_back(param.trianglePatch[k / 3]);
+    result.cornerUv.insert(result.cornerUv.end(), param.cornerUv.begin() + k,
+                           param.cornerUv.begin() + k + 3);
   }
 
   TessellationStats& s = result.stats;

@@ -32,6 +32,10 @@ struct TessellationStats {
 
 struct Tessellation {
   TriangleMesh mesh;
+  // Per triangle of `mesh`: its patch and its corners' (u, v) on that patch (a welded vertex's
+  // own uv is from one of the patches that share it). What measureDeviation needs.
+  std::vector<uint32_t> trianglePatch;
+  std::vector<glm::vec2> cornerUv;
   QuadtreeResult tree;
   TessellationStats stats;
 };
