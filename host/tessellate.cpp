@@ -57,12 +57,22 @@ Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeO
                                   ": adaptive tessellation takes bicubic patches");
   std::vector<gpu::BicubicPatch> gpuPatches = toGpuPatches(patches);
 
-  Tessellation result;
   auto t = std::chrono::steady_clock::now();
-  result.tree = buildQuadtree(gpuPatches, options, *backend.classifier);
-  result.stats.treeMs = msSince(t);
+  QuadtreeResult tree = buildQuadtree(gpuPatches, options, *backend.classifier);
+  double treeMs = msSince(t);
+  Tessellation result = meshFromTree(patches, gpuPatches, std::move(tree), *backend.evaluator);
+  result.stats.treeMs = treeMs;
+  result.stats.totalMs = msSince(start);
+  return result;
+}
 
-  t = std::chrono::steady_clock::now();
+Tessellation meshFromTree(const std::vector<BezierPatch>& patches,
+                          const std::vector<gpu::BicubicPatch>& gpuPatches, QuadtreeResult tree,
+                          PatchEvaluator& evaluator) {
+  auto start = std::chrono::steady_clock::now();
+  Tessellation result;
+  result.tree = std::move(tree);
+  auto t = std::chrono::steady_clock::now();
   ParamMesh param = triangulateLeaves(result.tree.leaves, patches);
   result.stats.triangulateMs = msSince(t);
 
@@ -70,7 +80,7 @@ Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeO
   std::vector<gpu::EvalQuery> queries(param.vertices.size());
   for (size_t i = 0; i < queries.size(); ++i)
     queries[i] = {param.vertices[i].patchIndex, param.vertices[i].u, param.vertices[i].v, 0};
-  std::vector<gpu::EvalSample> samples = backend.evaluator->evaluate(gpuPatches, queries);
+  std::vector<gpu::EvalSample> samples = evaluator.evaluate(gpuPatches, queries);
   result.stats.evaluateMs = msSince(t);
 
   TriangleMesh& mesh = result.mesh;

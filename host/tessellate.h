@@ -45,4 +45,10 @@ struct Tessellation {
 Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeOptions& options,
                         Backend& backend);
 
+// The second half of tessellate(): a finished tree → watertight mesh, vertices evaluated by
+// `evaluator` (timings in stats.triangulateMs and stats.evaluateMs).
+Tessellation meshFromTree(const std::vector<BezierPatch>& patches,
+                          const std::vector<gpu::BicubicPatch>& gpuPatches, QuadtreeResult tree,
+                          PatchEvaluator& evaluator);
+
 }  // namespace tessera
