@@ -154,6 +154,7 @@ QuadtreeResult buildQuadtree(const std::vector<gpu::BicubicPatch>& patches,
     if (total > options.nodeBudget) throwBudgetExceeded(next, level, total, options.nodeBudget);
     stats.frontierMs = millisecondsSince(start);
     result.levels.push_back(stats);
+    if (options.onLevel) options.onLevel(stats);
     nodes.swap(next);
     paths.swap(nextPaths);
   }

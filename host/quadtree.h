@@ -5,6 +5,7 @@
 // maximum (docs/quadtree.md).
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -23,6 +24,14 @@ enum class SplitRule { UniformGrid, Midpoint, SampledMax, TrueMax };  // A, B, C
 SplitRule parseSplitRule(const std::string& name);
 char splitRuleLetter(SplitRule rule);
 
+struct LevelStats {
+  uint32_t level = 0;
+  size_t nodes = 0, splits = 0, leaves = 0;
+  double classifyMs = 0;  // the classifier: GPU dispatch + transfers, or CPU work
+  double gpuMs = 0;       // GPU time of the dispatch by timestamps (0 on CPU backends)
+  double frontierMs = 0;  // host: emitting leaves and building the next level
+};
+
 struct QuadtreeOptions {
   SplitRule rule = SplitRule::Midpoint;
   float linearity = 0.1f;          // leaf when every 1 − Ti·Tj < linearity ...
@@ -32,6 +41,8 @@ struct QuadtreeOptions {
   int samples = 5;                 // S of rules C and D
   int gridU = 8, gridV = 8;        // N×M of rule A
   size_t nodeBudget = 1u << 24;    // most nodes in the tree, all levels together
+  // Called after each level (for progress display); may be empty.
+  std::function<void(const LevelStats&)> onLevel;
 };
 
 // One leaf: the node rectangle, its depth, why it ended, the split point and test values its
@@ -48,13 +59,6 @@ struct QuadLeaf {
   gpu::vec2 split;  // (us, vs) the classification chose
 };
 
-struct LevelStats {
-  uint32_t level = 0;
-  size_t nodes = 0, splits = 0, leaves = 0;
-  double classifyMs = 0;  // the classifier: GPU dispatch + transfers, or CPU work
-  double gpuMs = 0;       // GPU time of the dispatch by timestamps (0 on CPU backends)
-  double frontierMs = 0;  // host: emitting leaves and building the next level
-};
 
 struct QuadtreeResult {
   std::vector<QuadLeaf> leaves;

@@ -9,6 +9,12 @@ packages=(
   glslang-tools spirv-tools
   libglm-dev libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev libstb-dev
 )
+# node and npm run the Khronos glTF validator in the tests (scripts/gltf-validate.sh). Debian's
+# nodejs and npm only when the commands are missing: a Node.js installed another way (its own
+# nodejs package bundles npm and conflicts with Debian's) is used as it is.
+if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+  packages+=(nodejs npm)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include "evaluator.h"
+#include "io/bpt_reader.h"
 #include "patch_samples.h"
 #include "quadtree.h"
 #include "tree_divergence.h"
@@ -52,4 +53,9 @@ TEST_CASE("fp32 and double quad-trees agree outside the ambiguity band: random p
 TEST_CASE("fp32 and double quad-trees agree outside the ambiguity band: collapsed edges",
           "[quadtree][precision]") {
   checkPrecision(test::collapsedEdgePatches(), "collapsed-edge patches");
+}
+
+TEST_CASE("fp32 and double quad-trees agree outside the ambiguity band: the teapot",
+          "[quadtree][precision]") {
+  checkPrecision(readBpt(TESSERA_SOURCE_DIR "/data/teapot.bpt"), "teapot");
 }

@@ -1,7 +1,7 @@
 #include <cstdio>
 
 #include "cli/commands.h"
-#include "io/bpt_reader.h"
+#include "io/surface_reader.h"
 #include "io/errors.h"
 
 namespace tessera::cli {
@@ -9,10 +9,10 @@ namespace tessera::cli {
 void addInfoCommand(CLI::App& app, int& exitCode) {
   CLI::App* cmd = app.add_subcommand("info", "Describe an input file (patches, degrees, bounds)");
   static std::string input;
-  cmd->add_option("input", input, "input file (.bpt)")->required();
+  cmd->add_option("input", input, "input surface file (.bpt or .grid)")->required();
   cmd->callback([&exitCode] {
     try {
-      auto patches = readBpt(input);
+      auto patches = readSurfaceFile(input);
       glm::dvec3 lo(1e300), hi(-1e300);
       for (const auto& p : patches)
         for (const auto& c : p.cp) lo = glm::min(lo, c), hi = glm::max(hi, c);

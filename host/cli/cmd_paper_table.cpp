@@ -7,16 +7,14 @@
 #include "io/bpt_reader.h"
 #include "io/errors.h"
 #include "io/grid_reader.h"
+#include "io/surface_reader.h"
 #include "paper_table.h"
 #include "vk/context.h"
 
 namespace tessera::cli {
 namespace {
 
-std::vector<BezierPatch> readSurface(const std::string& path) {
-  if (std::filesystem::path(path).extension() == ".grid") return interpolateGrid(readGrid(path));
-  return readBpt(path);
-}
+std::vector<BezierPatch> readSurface(const std::string& path) { return readSurfaceFile(path); }
 
 }  // namespace
 

@@ -1,12 +1,18 @@
+#include <unistd.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 
+#include <nlohmann/json.hpp>
+
 #include "cli/commands.h"
-#include "io/bpt_reader.h"
+#include "io/surface_reader.h"
 #include "io/errors.h"
+#include "io/gltf_writer.h"
 #include "io/obj_writer.h"
 #include "io/ply_writer.h"
+#include "io/stats_report.h"
 #include "tessellate.h"
 #include "vk/context.h"
 
@@ -26,6 +32,8 @@ struct TessellateArgs {
   std::string backend = "auto";
   std::string device;
   bool quiet = false;
+  std::string stats;  // --stats: the JSON report into this file
+  bool json = false;  // --json: the JSON report on stdout instead of the summary
 };
 
 void writeMesh(const std::string& path, const TriangleMesh& mesh) {
@@ -34,8 +42,11 @@ void writeMesh(const std::string& path, const TriangleMesh& mesh) {
     writeObjFile(path, mesh);
   else if (ext == ".ply")
     writePlyFile(path, mesh);
+  else if (ext == ".glb")
+    writeGlbFile(path, mesh);
   else
-    throw CLI::ValidationError("--output", "unknown output format '" + ext + "' (use .obj or .ply)");
+    throw CLI::ValidationError("--output",
+                               "unknown output format '" + ext + "' (use .obj, .ply or .glb)");
 }
 
 int run(const TessellateArgs& a) {
@@ -48,7 +59,13 @@ int run(const TessellateArgs& a) {
   options.gridU = options.gridV = a.grid;
   options.nodeBudget = a.nodeBudget;
 
-  std::vector<BezierPatch> patches = readBpt(a.input);
+  std::vector<BezierPatch> patches = readSurfaceFile(a.input);
+  // A one-line progress display on stderr for long runs, only on a terminal.
+  if (!a.quiet && isatty(fileno(stderr)))
+    options.onLevel = [](const LevelStats& l) {
+      std::fprintf(stderr, "\rlevel %2u: %zu nodes, %zu leaves so far...", l.level, l.nodes, l.leaves);
+      std::fflush(stderr);
+    };
 
   std::unique_ptr<vk::Context> context;
   Backend backend;
@@ -70,8 +87,22 @@ int run(const TessellateArgs& a) {
   }
 
   Tessellation t = tessellate(patches, options, backend);
+  if (options.onLevel) std::fprintf(stderr, "\r%60s\r", "");
   if (!a.output.empty()) writeMesh(a.output, t.mesh);
-  if (!a.quiet) {
+  if (!a.stats.empty() || a.json) {
+    const PatchDeviation deviation = measureDeviationPerPatch(t, patches);
+    nlohmann::json report = statsToJson(t, &deviation);
+    report["run"] = {{"input", a.input},
+                     {"output", a.output.empty() ? nlohmann::json() : nlohmann::json(a.output)},
+                     {"backend", backend.name},
+                     {"device", context ? nlohmann::json(context->info().name) : nlohmann::json()},
+                     {"options", optionsToJson(options)}};
+    if (!a.stats.empty()) writeStatsFile(a.stats, report);
+    if (a.json)
+      std::printf("%s\n",
+                  report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
+  }
+  if (!a.quiet && !a.json) {
     const TessellationStats& s = t.stats;
     std::printf("%s: %zu patches, method %c, linearity %g, flatness %g, backend %s%s%s\n",
                 a.input.c_str(), s.patches, splitRuleLetter(options.rule), a.linearity,
@@ -82,6 +113,7 @@ int run(const TessellateArgs& a) {
     std::printf("time: tree %.1f ms, triangulation %.1f ms, vertices %.1f ms, total %.1f ms\n",
                 s.treeMs, s.triangulateMs, s.evaluateMs, s.totalMs);
     if (!a.output.empty()) std::printf("wrote %s\n", a.output.c_str());
+    if (!a.stats.empty()) std::printf("wrote %s\n", a.stats.c_str());
   }
   return kExitOk;
 }
@@ -91,8 +123,9 @@ int run(const TessellateArgs& a) {
 void addTessellateCommand(CLI::App& app, int& exitCode) {
   static TessellateArgs args;
   CLI::App* cmd = app.add_subcommand("tessellate", "Tessellate a surface file into a triangle mesh");
-  cmd->add_option("input", args.input, "input surface file (.bpt)")->required();
-  cmd->add_option("-o,--output", args.output, "output mesh (.obj or .ply, chosen by extension)");
+  cmd->add_option("input", args.input, "input surface file (.bpt or .grid)")->required();
+  cmd->add_option("-o,--output", args.output,
+                  "output mesh (.obj, .ply or .glb, chosen by extension)");
   cmd->add_option("-m,--method", args.method,
                   "split rule: A uniform grid, B midpoint, C sampled κ max, D true κ max")
       ->capture_default_str();
@@ -110,13 +143,18 @@ void addTessellateCommand(CLI::App& app, int& exitCode) {
       ->capture_default_str();
   cmd->add_option("--device", args.device, "Vulkan device index or part of its name");
   cmd->add_flag("-q,--quiet", args.quiet, "print nothing on success");
+  cmd->add_option("--stats", args.stats,
+                  "write the statistics report (JSON, docs/stats_schema.md) to this file");
+  cmd->add_flag("--json", args.json,
+                "print the statistics report (JSON) to stdout instead of the summary");
   cmd->callback([&exitCode] {
     try {
       exitCode = run(args);
     } catch (const InputError& e) {
       std::fprintf(stderr, "tessera: %s\n", e.what());
-      exitCode = e.kind() == InputErrorKind::Io && !args.output.empty() &&
-                         e.file() == args.output
+      exitCode = e.kind() == InputErrorKind::Io &&
+                         ((!args.output.empty() && e.file() == args.output) ||
+                          (!args.stats.empty() && e.file() == args.stats))
                      ? kExitOutput
                      : kExitBadInput;
     } catch (const vk::VulkanUnavailable& e) {

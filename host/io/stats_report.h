@@ -1,0 +1,55 @@
+// The tessellation statistics as a JSON report (schema: docs/stats_schema.md): totals, the
+// per-level classification and timings, and per-patch depth, leaves, triangles, vertices and
+// deviation from the surface. For scripts, dashboards and regression tracking; the CLI's
+// `--stats FILE` and `--json` write it.
+#pragma once
+#include <nlohmann/json_fwd.hpp>
+
+#include <string>
+#include <vector>
+
+#include "deviation.h"
+#include "patch.h"
+#include "quadtree.h"
+#include "tessellate.h"
+
+namespace tessera {
+
+// Every report has "schema": "tessera-stats" and "schemaVersion": this; it is bumped when a
+// member changes meaning or goes away (adding members does not bump it).
+constexpr int kStatsSchemaVersion = 1;
+
+// measureDeviation (host/deviation.h) run on each patch's triangles separately. The total is
+// combined from the per-patch reports: its maxDeviation equals measureDeviation on the whole
+// mesh exactly (the same samples), its mean up to summation order. worstTriangle is an index
+// into the whole mesh's triangles in both (in the total: a triangle where the maximum is
+// reached; with ties it may differ from the whole-mesh measurement's).
+struct PatchDeviation {
+  std::vector<DeviationReport> perPatch;  // one per patch, samples == 0 for a patch without triangles
+  DeviationReport total;
+  int subdivisions = 0;
+  double ms = 0;  // time the measurement took
+};
+
+// `patches` are the ones tessellated into `tessellation`.
+PatchDeviation measureDeviationPerPatch(const Tessellation& tessellation,
+                                        const std::vector<BezierPatch>& patches,
+                                        int subdivisions = 4);
+
+// Totals, timings and per-level numbers only (no per-patch section).
+nlohmann::json statsToJson(const TessellationStats& stats);
+
+// The full report: the above plus "patches" (leaves from the tree, triangles from
+// trianglePatch, vertices from the mesh's patchIds: welded vertices count for the patch they
+// were evaluated on, so the per-patch numbers add up to the totals) and, when `deviation` is given, deviation totals and per patch (null otherwise).
+nlohmann::json statsToJson(const Tessellation& tessellation,
+                           const PatchDeviation* deviation = nullptr);
+
+// The quad-tree options as a JSON object, for the report's optional "run" section.
+nlohmann::json optionsToJson(const QuadtreeOptions& options);
+
+// Writes report.dump(2) and a newline via writeFileAtomically (InputError of kind Io on
+// failure; the file is whole or untouched).
+void writeStatsFile(const std::string& path, const nlohmann::json& report);
+
+}  // namespace tessera

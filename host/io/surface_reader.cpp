@@ -1,0 +1,20 @@
+#include "io/surface_reader.h"
+
+#include <filesystem>
+
+#include "grid_interpolation.h"
+#include "io/bpt_reader.h"
+#include "io/errors.h"
+#include "io/grid_reader.h"
+
+namespace tessera {
+
+std::vector<BezierPatch> readSurfaceFile(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  if (ext == ".bpt") return readBpt(path);
+  if (ext == ".grid") return interpolateGrid(readGrid(path));
+  throw InputError(InputErrorKind::Syntax, path, 0,
+                   "unknown surface format '" + ext + "' (expected .bpt or .grid)");
+}
+
+}  // namespace tessera
