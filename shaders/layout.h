@@ -108,6 +108,45 @@ struct ClassifyPush {
   uint pad1;
 };
 
+
+// ---- Offscreen rendering (shaders/mesh.vert.glsl, mesh.frag.glsl, host/render.cpp) ----
+
+// What colours a triangle (MeshDrawPush.colourMode).
+TESSERA_CONST(uint, kColourShaded, 0u);  // one porcelain colour
+TESSERA_CONST(uint, kColourDepth, 1u);   // sequential palette by quad-tree level, clamped
+TESSERA_CONST(uint, kColourPatch, 2u);   // categorical palette by patch id, cycling
+
+// The palettes in sRGB, as lists that both languages expand into an array
+// (GLSL: vec3[](LIST), C++: {LIST}), so that the CLI's legend shows the shader's colours.
+// Depth: ColorBrewer "Spectral" (11 classes) from blue (shallow) to red (deep), one class per
+// quad-tree level; deeper levels share the last. Patch: Tableau 10. Shaded: porcelain.
+#define TESSERA_PORCELAIN vec3(0.910, 0.886, 0.839)
+TESSERA_CONST(int, kDepthPaletteSize, 11);
+#define TESSERA_DEPTH_PALETTE                                                               \
+  vec3(0.369, 0.310, 0.635), vec3(0.196, 0.533, 0.741), vec3(0.400, 0.761, 0.647),          \
+      vec3(0.671, 0.867, 0.643), vec3(0.902, 0.961, 0.596), vec3(1.000, 1.000, 0.749),      \
+      vec3(0.996, 0.878, 0.545), vec3(0.992, 0.682, 0.380), vec3(0.957, 0.427, 0.263),      \
+      vec3(0.835, 0.243, 0.310), vec3(0.620, 0.004, 0.259)
+TESSERA_CONST(int, kPatchPaletteSize, 10);
+#define TESSERA_PATCH_PALETTE                                                               \
+  vec3(0.306, 0.475, 0.655), vec3(0.949, 0.557, 0.169), vec3(0.882, 0.341, 0.349),          \
+      vec3(0.463, 0.718, 0.698), vec3(0.349, 0.631, 0.310), vec3(0.929, 0.788, 0.282),      \
+      vec3(0.690, 0.478, 0.631), vec3(1.000, 0.616, 0.655), vec3(0.612, 0.459, 0.373),      \
+      vec3(0.729, 0.690, 0.675)
+
+// Push constants of mesh.vert.glsl and mesh.frag.glsl (one range for both stages; 112 of the
+// 128 bytes every device offers). The matrix is four vec4 columns rather than a mat4 to keep
+// to this header's vec4-and-scalars rule; the columns are glm's (column-major) order.
+struct MeshDrawPush {
+  vec4 viewProjection[4];  // clip from world, Vulkan clip space (y down, z in [0, 1])
+  vec4 eye;                // xyz camera position: two-sided shading turns normals towards it
+  vec4 light;              // xyz unit direction towards the light, w = ambient fraction
+  uint colourMode;         // kColour*
+  uint wireframe;          // 1: darken triangle edges (barycentric distance), 0: none
+  float wireWidth;         // edge line width in pixels
+  uint pad0;
+};
+
 #ifdef __cplusplus
 }  // namespace tessera::gpu
 #endif

@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
   tessera::cli::addTessellateCommand(app, exitCode);
   tessera::cli::addDevicesCommand(app, exitCode);
   tessera::cli::addInfoCommand(app, exitCode);
+  tessera::cli::addRenderCommand(app, exitCode);
   tessera::cli::addPaperTableCommand(app, exitCode);
   try {
     app.parse(argc, argv);

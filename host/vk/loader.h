@@ -98,7 +98,8 @@ namespace tessera::vk {
   X(vkCmdBindIndexBuffer)                  \
   X(vkCmdDrawIndexed)                      \
   X(vkCmdSetViewport)                      \
-  X(vkCmdSetScissor)
+  X(vkCmdSetScissor)                       \
+  X(vkCmdDraw)
 
 // Optional device functions (extensions): null when absent.
 #define TESSERA_VK_DEVICE_EXT_FUNCTIONS(X) X(vkCmdPushDescriptorSetKHR)

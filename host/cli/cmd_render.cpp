@@ -1,0 +1,257 @@
+// `tessera render`: tessellate on the GPU, draw the mesh offscreen with Vulkan, write a PNG.
+// --side-by-side draws one panel per method with one shared camera, each labelled.
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <stb_easy_font.h>
+
+#include "cli/commands.h"
+#include "io/surface_reader.h"
+#include "io/errors.h"
+#include "io/png_writer.h"
+#include "render.h"
+#include "shaders/layout.h"
+#include "tessellate.h"
+#include "vk/context.h"
+
+namespace tessera::cli {
+namespace {
+
+struct RenderArgs {
+  std::string input;
+  std::string output;
+  std::string method = "B";
+  std::string sideBySide;
+  float linearity = 0.1f;
+  float flatness = 0.1f;
+  uint32_t maxDepth = 12;
+  std::string colour = "shaded";
+  bool wireframe = false;
+  std::string size = "1024x768";
+  std::string device;
+  bool quiet = false;
+};
+
+struct Panel {
+  SplitRule rule;
+  Tessellation tessellation;
+  std::vector<uint8_t> pixels;
+};
+
+SplitRule parseMethod(const std::string& name, const char* option) {
+  try {
+    return parseSplitRule(name);
+  } catch (const std::invalid_argument&) {
+    throw CLI::ValidationError(option, "unknown method '" + name + "' (expected A, B, C or D)");
+  }
+}
+
+RenderOptions::Colour parseColour(const std::string& name) {
+  if (name == "shaded") return RenderOptions::Colour::Shaded;
+  if (name == "depth") return RenderOptions::Colour::Depth;
+  if (name == "patch") return RenderOptions::Colour::Patch;
+  throw CLI::ValidationError("--colour", "expected shaded, depth or patch, got '" + name + "'");
+}
+
+void parseSize(const std::string& text, RenderOptions& options) {
+  int w = 0, h = 0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%dx%d%c", &w, &h, &extra) != 2 || w < 1 || h < 1 ||
+      w > kMaxRenderExtent || h > kMaxRenderExtent)
+    throw CLI::ValidationError("--size", "expected WxH with each in 1.." +
+                                             std::to_string(kMaxRenderExtent) + ", got '" +
+                                             text + "'");
+  options.width = w;
+  options.height = h;
+}
+
+// One RGBA8 picture being annotated on the CPU.
+struct Canvas {
+  std::vector<uint8_t>& rgba;
+  int width, height;
+
+  void fill(int x0, int y0, int x1, int y1, std::array<uint8_t, 3> colour) {
+    for (int y = std::max(y0, 0); y < std::min(y1, height); ++y)
+      for (int x = std::max(x0, 0); x < std::min(x1, width); ++x) {
+        uint8_t* p = &rgba[(size_t(y) * width + x) * 4];
+        p[0] = colour[0], p[1] = colour[1], p[2] = colour[2], p[3] = 255;
+      }
+  }
+
+  // `text` from the top-left corner (x, y), in stb_easy_font's quads scaled by `scale`.
+  void text(int x, int y, int scale, const std::string& text) {
+    std::vector<char> chars(text.begin(), text.end());
+    chars.push_back('\0');
+    std::vector<char> quads(300 * chars.size());  // stb asks ~270 bytes per character
+    int count = stb_easy_font_print(0, 0, chars.data(), nullptr, quads.data(), int(quads.size()));
+    struct QuadVertex {
+      float x, y, z;
+      unsigned char colour[4];
+    };
+    const auto* v = reinterpret_cast<const QuadVertex*>(quads.data());
+    for (int q = 0; q < count; ++q) {
+      const QuadVertex* c = v + 4 * q;  // axis-aligned: corners 0 and 2 are opposite
+      fill(x + int(std::min(c[0].x, c[2].x) * scale), y + int(std::min(c[0].y, c[2].y) * scale),
+           x + int(std::max(c[0].x, c[2].x) * scale), y + int(std::max(c[0].y, c[2].y) * scale),
+           {30, 30, 30});
+    }
+  }
+
+  // A row of swatches with their level under them, bottom left.
+  void depthLegend(int deepest, int scale) {
+    const int box = 10 * scale, step = 14 * scale, margin = 6 * scale;
+    int y = height - margin - box - 10 * scale;
+    text(margin, y - 10 * scale, scale, "quad-tree level");
+    for (int level = 0; level <= deepest && level < gpu::kDepthPaletteSize; ++level) {
+      int x = margin + level * step;
+      fill(x - 1, y - 1, x + box + 1, y + box + 1, {30, 30, 30});
+      fill(x, y, x + box, y + box, paletteColour(RenderOptions::Colour::Depth, level));
+      bool last = level == gpu::kDepthPaletteSize - 1 && deepest > level;
+      text(x, y + box + 2 * scale, scale, std::to_string(level) + (last ? "+" : ""));
+    }
+  }
+};
+
+std::string panelLabel(const Panel& panel) {
+  const TessellationStats& s = panel.tessellation.stats;
+  std::ostringstream label;
+  label << "method " << splitRuleLetter(panel.rule) << ": " << s.leaves << " leaves, "
+        << s.triangles << " triangles, depth " << s.depth;
+  return label.str();
+}
+
+int run(const RenderArgs& a) {
+  RenderOptions options;
+  options.colour = parseColour(a.colour);
+  options.wireframe = a.wireframe;
+  parseSize(a.size, options);
+  std::vector<SplitRule> rules;
+  if (a.sideBySide.empty()) {
+    rules.push_back(parseMethod(a.method, "--method"));
+  } else {
+    std::stringstream list(a.sideBySide);
+    for (std::string item; std::getline(list, item, ',');)
+      rules.push_back(parseMethod(item, "--side-by-side"));
+    if (rules.size() < 2)
+      throw CLI::ValidationError("--side-by-side", "expected two or more methods, e.g. B,D");
+  }
+
+  std::vector<BezierPatch> patches = readSurfaceFile(a.input);
+
+  vk::ContextOptions vkOptions;
+  vkOptions.device = a.device;
+  vk::Context context(vkOptions);
+  if (!context.queueSupportsGraphics())
+    throw vk::VulkanUnavailable("device '" + context.info().name +
+                                "' cannot draw (no graphics queue); choose another with --device");
+  Backend backend = makeVulkanBackend(context);
+
+  std::vector<Panel> panels;
+  BoundingBox frame;
+  for (SplitRule rule : rules) {
+    QuadtreeOptions q;
+    q.rule = rule;
+    q.linearity = a.linearity;
+    q.flatness = a.flatness;
+    q.maxDepth = a.maxDepth;
+    panels.push_back({rule, tessellate(patches, q, backend), {}});
+    frame.add(boundingBox(panels.back().tessellation.mesh));
+  }
+  if (!frame.empty()) options.frame = frame;  // one camera for every panel
+
+  for (Panel& panel : panels) {
+    const Tessellation& t = panel.tessellation;
+    std::vector<float> values;
+    if (options.colour == RenderOptions::Colour::Depth)
+      values = triangleLevels(t);
+    else if (options.colour == RenderOptions::Colour::Patch)
+      values = trianglePatchIds(t);
+    panel.pixels = renderMesh(context, t.mesh, values, options);
+  }
+
+  // Panels left to right, a 2-pixel rule between them.
+  const int gap = panels.size() > 1 ? 2 : 0;
+  const int width = int(panels.size()) * options.width + (int(panels.size()) - 1) * gap;
+  const int height = options.height;
+  std::vector<uint8_t> picture(size_t(width) * height * 4, 200);
+  const int scale = std::max(1, (options.height + 120) / 240);  // 2 at 480 rows, 3 at 600
+  uint32_t deepest = 0;
+  for (const Panel& panel : panels) deepest = std::max(deepest, panel.tessellation.stats.depth);
+  for (size_t k = 0; k < panels.size(); ++k) {
+    int x0 = int(k) * (options.width + gap);
+    Canvas canvas{panels[k].pixels, options.width, height};
+    if (panels.size() > 1) canvas.text(6 * scale, 6 * scale, scale, panelLabel(panels[k]));
+    if (options.colour == RenderOptions::Colour::Depth) canvas.depthLegend(int(deepest), scale);
+    for (int y = 0; y < height; ++y)
+      std::copy_n(&panels[k].pixels[size_t(y) * options.width * 4], size_t(options.width) * 4,
+                  &picture[(size_t(y) * width + x0) * 4]);
+  }
+  writePngFile(a.output, picture, width, height);
+
+  if (!a.quiet) {
+    std::printf("%s: %zu patches, linearity %g, flatness %g, on %s\n", a.input.c_str(),
+                patches.size(), a.linearity, a.flatness, context.info().name.c_str());
+    for (const Panel& panel : panels) std::printf("%s\n", panelLabel(panel).c_str());
+    std::printf("wrote %s (%dx%d)\n", a.output.c_str(), width, height);
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app, int& exitCode) {
+  static RenderArgs args;
+  CLI::App* cmd = app.add_subcommand(
+      "render", "Tessellate a surface file on the GPU and draw it offscreen to a PNG (needs Vulkan)");
+  cmd->add_option("input", args.input, "input surface file (.bpt or .grid)")->required();
+  cmd->add_option("-o,--output", args.output, "output picture (.png)")->required();
+  cmd->add_option("-m,--method", args.method,
+                  "split rule: A uniform grid, B midpoint, C sampled κ max, D true κ max")
+      ->capture_default_str();
+  cmd->add_option("--side-by-side", args.sideBySide,
+                  "methods to draw next to each other with one camera, e.g. B,D (overrides --method)");
+  cmd->add_option("--linearity", args.linearity, "edge linearity threshold (1 - Ti·Tj)")
+      ->capture_default_str();
+  cmd->add_option("--flatness", args.flatness, "flatness threshold (1 - Ni·Nj)")
+      ->capture_default_str();
+  cmd->add_option("--max-depth", args.maxDepth, "maximum quad-tree depth")->capture_default_str();
+  cmd->add_option("--colour", args.colour,
+                  "shaded, depth (quad-tree level of each triangle's leaf) or patch")
+      ->capture_default_str();
+  cmd->add_flag("--wireframe", args.wireframe, "draw the triangle edges");
+  cmd->add_option("--size", args.size, "picture size WxH (per panel with --side-by-side)")
+      ->capture_default_str();
+  cmd->add_option("--device", args.device, "Vulkan device index or part of its name");
+  cmd->add_flag("-q,--quiet", args.quiet, "print nothing on success");
+  cmd->callback([&exitCode] {
+    try {
+      exitCode = run(args);
+    } catch (const InputError& e) {
+      std::fprintf(stderr, "tessera: %s\n", e.what());
+      exitCode = e.kind() == InputErrorKind::Io && e.file() == args.output ? kExitOutput
+                                                                          : kExitBadInput;
+    } catch (const vk::VulkanUnavailable& e) {
+      std::fprintf(stderr, "tessera: render needs a Vulkan device that draws: %s\n", e.what());
+      exitCode = kExitNoVulkan;
+    } catch (const TessellationLimitError& e) {
+      std::fprintf(stderr, "tessera: %s\n", e.what());
+      exitCode = kExitLimit;
+    } catch (const CLI::ValidationError& e) {
+      std::fprintf(stderr, "tessera: %s\n", e.what());
+      exitCode = kExitUsage;
+    } catch (const std::invalid_argument& e) {
+      std::fprintf(stderr, "tessera: %s\n", e.what());
+      exitCode = kExitBadInput;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "tessera: internal error: %s\n", e.what());
+      exitCode = kExitInternal;
+    }
+  });
+}
+
+}  // namespace tessera::cli
