@@ -10,6 +10,7 @@
 
 #include <stb_easy_font.h>
 
+#include "cli/cli_support.h"
 #include "cli/commands.h"
 #include "io/surface_reader.h"
 #include "io/errors.h"
@@ -229,28 +230,8 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--device", args.device, "Vulkan device index or part of its name");
   cmd->add_flag("-q,--quiet", args.quiet, "print nothing on success");
   cmd->callback([&exitCode] {
-    try {
-      exitCode = run(args);
-    } catch (const InputError& e) {
-      std::fprintf(stderr, "tessera: %s\n", e.what());
-      exitCode = e.kind() == InputErrorKind::Io && e.file() == args.output ? kExitOutput
-                                                                          : kExitBadInput;
-    } catch (const vk::VulkanUnavailable& e) {
-      std::fprintf(stderr, "tessera: render needs a Vulkan device that draws: %s\n", e.what());
-      exitCode = kExitNoVulkan;
-    } catch (const TessellationLimitError& e) {
-      std::fprintf(stderr, "tessera: %s\n", e.what());
-      exitCode = kExitLimit;
-    } catch (const CLI::ValidationError& e) {
-      std::fprintf(stderr, "tessera: %s\n", e.what());
-      exitCode = kExitUsage;
-    } catch (const std::invalid_argument& e) {
-      std::fprintf(stderr, "tessera: %s\n", e.what());
-      exitCode = kExitBadInput;
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "tessera: internal error: %s\n", e.what());
-      exitCode = kExitInternal;
-    }
+    exitCode = runReportingErrors([] { return run(args); }, {args.output},
+                                  "render needs a Vulkan device that draws");
   });
 }
 

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/cli_support.h"
 #include "cli/commands.h"
 #include "io/surface_reader.h"
 #include "io/errors.h"
@@ -67,24 +68,9 @@ int run(const TessellateArgs& a) {
       std::fflush(stderr);
     };
 
-  std::unique_ptr<vk::Context> context;
-  Backend backend;
-  if (a.backend == "vulkan" || a.backend == "auto") {
-    try {
-      vk::ContextOptions vkOptions;
-      vkOptions.device = a.device;
-      context = std::make_unique<vk::Context>(vkOptions);
-      backend = makeVulkanBackend(*context);
-    } catch (const vk::VulkanUnavailable& e) {
-      if (a.backend == "vulkan") throw;
-      std::fprintf(stderr, "tessera: no Vulkan (%s); using the CPU backend\n", e.what());
-      backend = makeCpuBackend();
-    }
-  } else if (a.backend == "cpu") {
-    backend = makeCpuBackend();
-  } else {
-    throw CLI::ValidationError("--backend", "expected vulkan, cpu or auto");
-  }
+  ChosenBackend chosen = chooseBackend(a.backend, a.device);
+  const std::unique_ptr<vk::Context>& context = chosen.context;
+  Backend& backend = chosen.backend;
 
   Tessellation t = tessellate(patches, options, backend);
   if (options.onLevel) std::fprintf(stderr, "\r%60s\r", "");
@@ -118,14 +104,9 @@ int run(const TessellateArgs& a) {
   return kExitOk;
 }
 
-}  // namespace
-
-void addTessellateCommand(CLI::App& app, int& exitCode) {
-  static TessellateArgs args;
-  CLI::App* cmd = app.add_subcommand("tessellate", "Tessellate a surface file into a triangle mesh");
-  cmd->add_option("input", args.input, "input surface file (.bpt or .grid)")->required();
-  cmd->add_option("-o,--output", args.output,
-                  "output mesh (.obj, .ply or .glb, chosen by extension)");
+// The options `tessellate` and `stats` share.
+void addTessellateOptions(CLI::App* cmd, TessellateArgs& args) {
+  cmd->add_option("input", args.input, "input surface file (.bpt, .grid or .json)")->required();
   cmd->add_option("-m,--method", args.method,
                   "split rule: A uniform grid, B midpoint, C sampled κ max, D true κ max")
       ->capture_default_str();
@@ -143,37 +124,36 @@ void addTessellateCommand(CLI::App& app, int& exitCode) {
       ->capture_default_str();
   cmd->add_option("--device", args.device, "Vulkan device index or part of its name");
   cmd->add_flag("-q,--quiet", args.quiet, "print nothing on success");
+}
+
+}  // namespace
+
+void addTessellateCommand(CLI::App& app, int& exitCode) {
+  static TessellateArgs args;
+  CLI::App* cmd = app.add_subcommand("tessellate", "Tessellate a surface file into a triangle mesh");
+  addTessellateOptions(cmd, args);
+  cmd->add_option("-o,--output", args.output,
+                  "output mesh (.obj, .ply or .glb, chosen by extension)");
   cmd->add_option("--stats", args.stats,
                   "write the statistics report (JSON, docs/stats_schema.md) to this file");
   cmd->add_flag("--json", args.json,
                 "print the statistics report (JSON) to stdout instead of the summary");
   cmd->callback([&exitCode] {
-    try {
-      exitCode = run(args);
-    } catch (const InputError& e) {
-      std::fprintf(stderr, "tessera: %s\n", e.what());
-      exitCode = e.kind() == InputErrorKind::Io &&
-                         ((!args.output.empty() && e.file() == args.output) ||
-                          (!args.stats.empty() && e.file() == args.stats))
-                     ? kExitOutput
-                     : kExitBadInput;
-    } catch (const vk::VulkanUnavailable& e) {
-      std::fprintf(stderr, "tessera: %s\n", e.what());
-      exitCode = kExitNoVulkan;
-    } catch (const TessellationLimitError& e) {
-      std::fprintf(stderr, "tessera: %s\n", e.what());
-      exitCode = kExitLimit;
-    } catch (const CLI::ValidationError& e) {
-      std::fprintf(stderr, "tessera: %s\n", e.what());
-      exitCode = kExitUsage;
-    } catch (const std::invalid_argument& e) {
-      std::fprintf(stderr, "tessera: %s\n", e.what());
-      exitCode = kExitBadInput;
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "tessera: internal error: %s\n", e.what());
-      exitCode = kExitInternal;
-    }
+    exitCode = runReportingErrors([] { return run(args); }, {args.output, args.stats});
   });
 }
+
+// `tessera stats`: tessellate and print the statistics report (JSON), writing no mesh.
+void addStatsCommand(CLI::App& app, int& exitCode) {
+  static TessellateArgs args;
+  CLI::App* cmd = app.add_subcommand(
+      "stats", "Tessellate and print statistics as JSON (depth, leaves, triangles, deviation, time)");
+  addTessellateOptions(cmd, args);
+  cmd->callback([&exitCode] {
+    args.json = true;
+    exitCode = runReportingErrors([] { return run(args); }, {});
+  });
+}
+
 
 }  // namespace tessera::cli

@@ -8,6 +8,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   int exitCode = tessera::cli::kExitOk;
   tessera::cli::addTessellateCommand(app, exitCode);
+  tessera::cli::addStatsCommand(app, exitCode);
   tessera::cli::addDevicesCommand(app, exitCode);
   tessera::cli::addInfoCommand(app, exitCode);
   tessera::cli::addRenderCommand(app, exitCode);

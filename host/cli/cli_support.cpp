@@ -1,0 +1,60 @@
+#include "cli/cli_support.h"
+
+#include <cstdio>
+
+#include "cli/commands.h"
+#include "io/errors.h"
+
+namespace tessera::cli {
+
+int runReportingErrors(const std::function<int()>& body, const std::vector<std::string>& outputs,
+                       const std::string& vulkanHint) {
+  try {
+    return body();
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "tessera: %s\n", e.what());
+    bool isOutput = false;
+    for (const std::string& o : outputs) isOutput = isOutput || (!o.empty() && e.file() == o);
+    return e.kind() == InputErrorKind::Io && isOutput ? kExitOutput : kExitBadInput;
+  } catch (const vk::VulkanUnavailable& e) {
+    std::fprintf(stderr, "tessera: %s%s%s\n", vulkanHint.c_str(), vulkanHint.empty() ? "" : ": ",
+                 e.what());
+    return kExitNoVulkan;
+  } catch (const TessellationLimitError& e) {
+    std::fprintf(stderr, "tessera: %s\n", e.what());
+    return kExitLimit;
+  } catch (const CLI::ValidationError& e) {
+    std::fprintf(stderr, "tessera: %s\n", e.what());
+    return kExitUsage;
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "tessera: %s\n", e.what());
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tessera: internal error: %s\n", e.what());
+    return kExitInternal;
+  }
+}
+
+ChosenBackend chooseBackend(const std::string& name, const std::string& device) {
+  ChosenBackend chosen;
+  if (name == "cpu") {
+    chosen.backend = makeCpuBackend();
+    return chosen;
+  }
+  if (name != "vulkan" && name != "auto")
+    throw CLI::ValidationError("--backend", "expected vulkan, cpu or auto, got '" + name + "'");
+  try {
+    vk::ContextOptions options;
+    options.device = device;
+    chosen.context = std::make_unique<vk::Context>(options);
+    chosen.backend = makeVulkanBackend(*chosen.context);
+  } catch (const vk::VulkanUnavailable& e) {
+    if (name == "vulkan") throw;
+    std::fprintf(stderr, "tessera: no Vulkan (%s); using the CPU backend\n", e.what());
+    chosen.context.reset();
+    chosen.backend = makeCpuBackend();
+  }
+  return chosen;
+}
+
+}  // namespace tessera::cli

@@ -1,0 +1,30 @@
+// What the subcommands share: turning exceptions into one message and a documented exit code,
+// and choosing the backend (--backend vulkan|cpu|auto).
+#pragma once
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tessellate.h"
+#include "vk/context.h"
+
+namespace tessera::cli {
+
+// Runs `body`; prints any exception as "tessera: <message>" on stderr and returns its exit code
+// (commands.h). An Io error on one of `outputs` is kExitOutput; `vulkanHint` prefixes a
+// VulkanUnavailable message (e.g. "render needs a Vulkan device that draws").
+int runReportingErrors(const std::function<int()>& body, const std::vector<std::string>& outputs,
+                       const std::string& vulkanHint = "");
+
+struct ChosenBackend {
+  std::unique_ptr<vk::Context> context;  // null on the CPU backend
+  Backend backend;
+  std::string deviceName() const { return context ? context->info().name : ""; }
+};
+
+// "vulkan": Vulkan or VulkanUnavailable; "cpu": the CPU; "auto": Vulkan if a usable device
+// exists, else the CPU with a notice on stderr. Anything else is a usage error.
+ChosenBackend chooseBackend(const std::string& name, const std::string& device);
+
+}  // namespace tessera::cli
