@@ -2,6 +2,7 @@
 
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <unordered_map>
 
@@ -49,12 +50,19 @@ Backend makeVulkanBackend(vk::Context& context) {
 Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeOptions& options,
                         Backend& backend) {
   auto start = std::chrono::steady_clock::now();
-  for (size_t i = 0; i < patches.size(); ++i)
-    if (patches[i].degreeU != 3 || patches[i].degreeV != 3)
+  for (size_t i = 0; i < patches.size(); ++i) {
+    if (patches[i].degreeU != 3 || patches[i].degreeV != 3 || patches[i].cp.size() != 16)
       throw std::invalid_argument("patch " + std::to_string(i) + " has degree " +
                                   std::to_string(patches[i].degreeU) + "x" +
                                   std::to_string(patches[i].degreeV) +
                                   ": adaptive tessellation takes bicubic patches");
+    // fp32 on the GPU: a coordinate beyond ~1e15 loses all precision, NaN/Inf poison a tree.
+    for (const glm::dvec3& c : patches[i].cp)
+      if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z) ||
+          std::fabs(c.x) > 1e15 || std::fabs(c.y) > 1e15 || std::fabs(c.z) > 1e15)
+        throw std::invalid_argument("patch " + std::to_string(i) +
+                                    " has a control point that is not finite or exceeds 1e15");
+  }
   std::vector<gpu::BicubicPatch> gpuPatches = toGpuPatches(patches);
 
   auto t = std::chrono::steady_clock::now();
