@@ -20,6 +20,9 @@ int runReportingErrors(const std::function<int()>& body, const std::vector<std::
     std::fprintf(stderr, "tessera: %s%s%s\n", vulkanHint.c_str(), vulkanHint.empty() ? "" : ": ",
                  e.what());
     return kExitNoVulkan;
+  } catch (const vk::VulkanError& e) {
+    std::fprintf(stderr, "tessera: the Vulkan device failed: %s (try --backend cpu)\n", e.what());
+    return kExitDevice;
   } catch (const TessellationLimitError& e) {
     std::fprintf(stderr, "tessera: %s\n", e.what());
     return kExitLimit;
@@ -55,6 +58,25 @@ ChosenBackend chooseBackend(const std::string& name, const std::string& device) 
     chosen.backend = makeCpuBackend();
   }
   return chosen;
+}
+
+}  // namespace tessera::cli
+
+namespace tessera::cli {
+
+Tessellation tessellateWithFallback(ChosenBackend& chosen, const std::string& backendName,
+                                    const std::vector<BezierPatch>& patches,
+                                    const QuadtreeOptions& options) {
+  try {
+    return tessellate(patches, options, chosen.backend);
+  } catch (const vk::VulkanError& e) {
+    if (backendName != "auto" || !chosen.context) throw;
+    std::fprintf(stderr, "tessera: the Vulkan device failed (%s); falling back to the CPU backend\n",
+                 e.what());
+    chosen.backend = makeCpuBackend();
+    chosen.context.reset();
+    return tessellate(patches, options, chosen.backend);
+  }
 }
 
 }  // namespace tessera::cli

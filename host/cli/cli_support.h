@@ -27,4 +27,11 @@ struct ChosenBackend {
 // exists, else the CPU with a notice on stderr. Anything else is a usage error.
 ChosenBackend chooseBackend(const std::string& name, const std::string& device);
 
+// Tessellates on the chosen backend. With --backend auto, a Vulkan failure during the run
+// (device lost, out of device memory) switches `chosen` to the CPU backend, says so on stderr,
+// and runs again there; otherwise the vk::VulkanError propagates.
+Tessellation tessellateWithFallback(ChosenBackend& chosen, const std::string& backendName,
+                                    const std::vector<BezierPatch>& patches,
+                                    const QuadtreeOptions& options);
+
 }  // namespace tessera::cli

@@ -69,10 +69,10 @@ int run(const TessellateArgs& a) {
     };
 
   ChosenBackend chosen = chooseBackend(a.backend, a.device);
-  const std::unique_ptr<vk::Context>& context = chosen.context;
-  Backend& backend = chosen.backend;
 
-  Tessellation t = tessellate(patches, options, backend);
+  Tessellation t = tessellateWithFallback(chosen, a.backend, patches, options);
+  const std::unique_ptr<vk::Context>& context = chosen.context;
+  const Backend& backend = chosen.backend;
   if (options.onLevel) std::fprintf(stderr, "\r%60s\r", "");
   if (!a.output.empty()) writeMesh(a.output, t.mesh);
   if (!a.stats.empty() || a.json) {

@@ -12,6 +12,7 @@ enum ExitCode : int {
   kExitNoVulkan = 3,     // --backend vulkan and no usable Vulkan device
   kExitLimit = 4,        // node budget or another resource limit reached
   kExitOutput = 5,       // the output could not be written (nothing was left behind)
+  kExitDevice = 6,       // the Vulkan device failed mid-run (device lost, out of device memory)
   kExitInternal = 70,    // a bug: please report
 };
 

@@ -6,6 +6,7 @@
 #include <mutex>
 
 #include "vk/errors.h"
+#include "vk/fault_injection.h"
 
 namespace tessera::vk {
 namespace {
@@ -61,6 +62,7 @@ InstanceTable loadInstanceTable(const GlobalTable& global, VkInstance instance) 
   if (!table.name) throw VulkanUnavailable("the Vulkan loader lacks " #name);
   TESSERA_VK_INSTANCE_FUNCTIONS(TESSERA_REQUIRE_INSTANCE)
 #undef TESSERA_REQUIRE_INSTANCE
+  injectInstanceFaults(table);
   return table;
 }
 
@@ -76,6 +78,7 @@ DeviceTable loadDeviceTable(const InstanceTable& instance, VkDevice device) {
   if (!table.name) throw VulkanUnavailable("the Vulkan device lacks " #name);
   TESSERA_VK_DEVICE_FUNCTIONS(TESSERA_REQUIRE_DEVICE)
 #undef TESSERA_REQUIRE_DEVICE
+  injectDeviceFaults(table);
   return table;
 }
 
