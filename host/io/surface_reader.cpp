@@ -6,6 +6,8 @@
 #include "io/bpt_reader.h"
 #include "io/errors.h"
 #include "io/grid_reader.h"
+#include "io/scene_reader.h"
+#include "scene_convert.h"
 
 namespace tessera {
 
@@ -13,8 +15,9 @@ std::vector<BezierPatch> readSurfaceFile(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   if (ext == ".bpt") return readBpt(path);
   if (ext == ".grid") return interpolateGrid(readGrid(path));
+  if (ext == ".json") return sceneToBicubicPatches(readScene(path));
   throw InputError(InputErrorKind::Syntax, path, 0,
-                   "unknown surface format '" + ext + "' (expected .bpt or .grid)");
+                   "unknown surface format '" + ext + "' (expected .bpt, .grid or .json)");
 }
 
 }  // namespace tessera

@@ -1,0 +1,108 @@
+#include "io/text_lines.h"
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <iterator>
+#include <system_error>
+
+namespace tessera {
+namespace {
+
+bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+}  // namespace
+
+std::string quotedToken(std::string_view token) {
+  constexpr size_t kMaxShown = 32;
+  if (token.size() <= kMaxShown) return "'" + std::string(token) + "'";
+  return "'" + std::string(token.substr(0, kMaxShown)) + "...'";
+}
+
+std::ifstream openForReading(const std::string& path, const char* kindOfFile) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(InputErrorKind::Io, path, 0, std::string("is a directory, not ") + kindOfFile);
+  errno = 0;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    const int err = errno;
+    std::string reason = "cannot open for reading";
+    if (err != 0) reason += ": " + std::generic_category().message(err);
+    throw InputError(InputErrorKind::Io, path, 0, reason);
+  }
+  return in;
+}
+
+std::string readWhole(std::istream& in, const std::string& nameForMessages) {
+  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (in.bad()) throw InputError(InputErrorKind::Io, nameForMessages, 0, "read error");
+  return text;
+}
+
+TextLines::TextLines(std::istream& in, std::string nameForMessages)
+    : in_(in), name_(std::move(nameForMessages)) {}
+
+bool TextLines::next() {
+  while (std::getline(in_, text_)) {
+    ++linesRead_;
+    tokens_.clear();
+    const std::string_view rest(text_);
+    size_t k = 0;
+    while (k < rest.size()) {
+      while (k < rest.size() && isBlank(rest[k])) ++k;
+      const size_t start = k;
+      while (k < rest.size() && !isBlank(rest[k])) ++k;
+      if (k > start) tokens_.push_back(rest.substr(start, k - start));
+    }
+    if (!tokens_.empty() && tokens_.front().front() != '#') return true;
+  }
+  // getline sets failbit at a clean end of file too; only badbit means the read broke.
+  if (in_.bad()) fail(InputErrorKind::Io, linesRead_ + 1, "read error");
+  tokens_.clear();
+  return false;
+}
+
+void TextLines::fail(InputErrorKind kind, int line, const std::string& reason) const {
+  throw InputError(kind, name_, line, reason);
+}
+
+void TextLines::fail(InputErrorKind kind, const std::string& reason) const {
+  fail(kind, linesRead_, reason);
+}
+
+// std::from_chars is locale-independent, unlike strtod and streams; it rejects a leading '+',
+// which other writers emit, so one is skipped ("+-1" stays invalid).
+double parseCoordinate(const TextLines& lines, std::string_view token, const std::string& what) {
+  std::string_view number = token;
+  if (number.size() > 1 && number[0] == '+' && number[1] != '+' && number[1] != '-')
+    number.remove_prefix(1);
+  double value = 0;
+  const auto [ptr, ec] = std::from_chars(number.data(), number.data() + number.size(), value,
+                                         std::chars_format::general);
+  if (ptr != number.data() + number.size() ||
+      (ec != std::errc() && ec != std::errc::result_out_of_range))
+    lines.fail(InputErrorKind::Syntax, quotedToken(token) + " is not a number (" + what + ")");
+  if (ec == std::errc::result_out_of_range)
+    lines.fail(InputErrorKind::Range,
+               quotedToken(token) + " is outside the range of a double (" + what + ")");
+  if (!std::isfinite(value))
+    lines.fail(InputErrorKind::NonFinite,
+               quotedToken(token) + " is not a finite number (" + what + ")");
+  if (std::fabs(value) > kMaxAbsInputCoordinate)
+    lines.fail(InputErrorKind::Range, quotedToken(token) +
+                                          " exceeds the largest accepted magnitude 1e15 (" +
+                                          what + ")");
+  return value;
+}
+
+bool parseInteger(std::string_view token, long long& value, bool& outOfRange) {
+  const char* first = token.data();
+  const char* last = first + token.size();
+  const auto [ptr, ec] = std::from_chars(first, last, value);
+  outOfRange = ec == std::errc::result_out_of_range;
+  return (ec == std::errc() || outOfRange) && ptr == last && first != last;
+}
+
+}  // namespace tessera

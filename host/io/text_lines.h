@@ -1,0 +1,71 @@
+// Building blocks for the line-oriented and whole-file readers added after .bpt and .grid
+// (OBJ meshes, JSON scenes): opening a file with a clear Io error, reading it whole, data lines
+// split into tokens with their 1-based line numbers, and locale-independent number parsing
+// with the strictness of the .bpt reader (finite, |value| ≤ 1e15, no hex floats).
+// The .bpt and .grid readers keep their own copies of the line splitter on purpose (they
+// predate this header); the rules are the same.
+#pragma once
+#include <fstream>
+#include <istream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "io/errors.h"
+
+namespace tessera {
+
+// Largest accepted |coordinate| in any input file, as in .bpt and .grid: squared lengths and
+// bounding-box diagonals computed later stay far from overflow.
+constexpr double kMaxAbsInputCoordinate = 1e15;
+
+// A token as shown in a message: quoted and cut short, so a binary file read by mistake does
+// not produce a message the size of the file.
+std::string quotedToken(std::string_view token);
+
+// Opens `path` for reading in binary mode (CRLF is handled by the parsers). A directory or an
+// unopenable file is an InputError of kind Io; `kindOfFile` completes "is a directory, not
+// <kindOfFile>", e.g. "an OBJ file".
+std::ifstream openForReading(const std::string& path, const char* kindOfFile);
+
+// All of `in` as one string; a read error (badbit) is an InputError of kind Io.
+std::string readWhole(std::istream& in, const std::string& nameForMessages);
+
+// The data lines of a text input, split at blanks (space, tab, CR, VT, FF) into tokens.
+// Blank lines and lines whose first token begins with '#' are skipped.
+class TextLines {
+ public:
+  TextLines(std::istream& in, std::string nameForMessages);
+
+  // Advances to the next data line; false at the end of the input.
+  bool next();
+  // The tokens of the line next() last returned; they stay valid until the next call.
+  const std::vector<std::string_view>& tokens() const { return tokens_; }
+  // The 1-based number of the line next() last returned.
+  int line() const { return linesRead_; }
+  // Where more input was expected once next() has returned false: the line after the last.
+  int lineAfterEnd() const { return linesRead_ + 1; }
+  const std::string& name() const { return name_; }
+
+  [[noreturn]] void fail(InputErrorKind kind, int line, const std::string& reason) const;
+  [[noreturn]] void fail(InputErrorKind kind, const std::string& reason) const;
+
+ private:
+  std::istream& in_;
+  std::string name_;
+  std::string text_;
+  std::vector<std::string_view> tokens_;
+  int linesRead_ = 0;
+};
+
+// `token` as a coordinate on the current line of `lines`: Syntax unless the whole token is a
+// decimal number (an optional leading '+' is accepted, "+-1" and hex floats are not); Range
+// when it overflows a double or exceeds kMaxAbsInputCoordinate; NonFinite for nan/inf.
+// `what` ends the message in parentheses, e.g. "y of vertex 3".
+double parseCoordinate(const TextLines& lines, std::string_view token, const std::string& what);
+
+// True when the whole of `token` is a decimal integer (optional '-'; no '+'). `outOfRange` is
+// set when it is one but does not fit a long long (value is then unspecified).
+bool parseInteger(std::string_view token, long long& value, bool& outOfRange);
+
+}  // namespace tessera
