@@ -28,7 +28,7 @@ struct TessellateArgs {
   float flatness = 0.1f;
   uint32_t maxDepth = 12;
   int samples = 5;
-  int grid = 8;
+  std::string grid = "8";  // rule A: "N" (N×N cells) or "NxM" (N along u, M along v)
   size_t nodeBudget = size_t(1) << 24;
   std::string backend = "auto";
   std::string device;
@@ -37,17 +37,46 @@ struct TessellateArgs {
   bool json = false;  // --json: the JSON report on stdout instead of the summary
 };
 
-void writeMesh(const std::string& path, const TriangleMesh& mesh) {
+// The output format by extension; checked before any work so a typo costs nothing.
+std::string meshFormat(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
+  if (ext != ".obj" && ext != ".ply" && ext != ".glb")
+    throw CLI::ValidationError("--output",
+                               "unknown output format '" + ext + "' (use .obj, .ply or .glb)");
+  return ext;
+}
+
+void writeMesh(const std::string& path, const TriangleMesh& mesh) {
+  const std::string ext = meshFormat(path);
   if (ext == ".obj")
     writeObjFile(path, mesh);
   else if (ext == ".ply")
     writePlyFile(path, mesh);
-  else if (ext == ".glb")
-    writeGlbFile(path, mesh);
   else
-    throw CLI::ValidationError("--output",
-                               "unknown output format '" + ext + "' (use .obj, .ply or .glb)");
+    writeGlbFile(path, mesh);
+}
+
+// "N" or "NxM" (also "N×M"), each 1..4096: the cells of rule A's uniform grid.
+void parseGrid(const std::string& text, int& gridU, int& gridV) {
+  const auto bad = [&] {
+    return CLI::ValidationError("--grid", "expected N or NxM with 1 ≤ N, M ≤ 4096, got '" + text + "'");
+  };
+  size_t x = text.find('x');
+  size_t sepLength = 1;
+  if (x == std::string::npos) {
+    x = text.find("×");
+    sepLength = std::string("×").size();
+  }
+  const std::string first = text.substr(0, x);
+  const std::string second = x == std::string::npos ? first : text.substr(x + sepLength);
+  const auto number = [&](const std::string& s) {
+    if (s.empty() || s.size() > 4 || s.find_first_not_of("0123456789") != std::string::npos) throw bad();
+    const int n = std::stoi(s);
+    if (n < 1 || n > 4096) throw bad();
+    return n;
+  };
+  gridU = number(first);
+  gridV = number(second);
 }
 
 int run(const TessellateArgs& a) {
@@ -57,7 +86,8 @@ int run(const TessellateArgs& a) {
   options.flatness = a.flatness;
   options.maxDepth = a.maxDepth;
   options.samples = a.samples;
-  options.gridU = options.gridV = a.grid;
+  parseGrid(a.grid, options.gridU, options.gridV);
+  if (!a.output.empty()) meshFormat(a.output);
   options.nodeBudget = a.nodeBudget;
 
   std::vector<BezierPatch> patches = readSurfaceFile(a.input);
@@ -75,8 +105,10 @@ int run(const TessellateArgs& a) {
   const Backend& backend = chosen.backend;
   if (options.onLevel) std::fprintf(stderr, "\r%60s\r", "");
   if (!a.output.empty()) writeMesh(a.output, t.mesh);
+  // The deviation from the true surface is part of every report: it is what the thresholds
+  // are for (parametric: triangle point vs the patch at the same (u, v) mix, host/deviation.h).
+  const PatchDeviation deviation = measureDeviationPerPatch(t, patches);
   if (!a.stats.empty() || a.json) {
-    const PatchDeviation deviation = measureDeviationPerPatch(t, patches);
     nlohmann::json report = statsToJson(t, &deviation);
     report["run"] = {{"input", a.input},
                      {"output", a.output.empty() ? nlohmann::json() : nlohmann::json(a.output)},
@@ -96,8 +128,12 @@ int run(const TessellateArgs& a) {
                 context ? context->info().name.c_str() : "");
     std::printf("depth %u, leaves %zu, triangles %zu, vertices %zu (%zu zero-area dropped)\n",
                 s.depth, s.leaves, s.triangles, s.vertices, s.degenerateTrianglesDropped);
-    std::printf("time: tree %.1f ms, triangulation %.1f ms, vertices %.1f ms, total %.1f ms\n",
-                s.treeMs, s.triangulateMs, s.evaluateMs, s.totalMs);
+    std::printf("max deviation %.3g (mean %.3g, parametric, %zu samples)\n",
+                deviation.total.maxDeviation, deviation.total.meanDeviation,
+                deviation.total.samples);
+    std::printf("time: tree %.1f ms, triangulation %.1f ms, vertices %.1f ms, total %.1f ms "
+                "(deviation measured in %.1f ms)\n",
+                s.treeMs, s.triangulateMs, s.evaluateMs, s.totalMs, deviation.ms);
     if (!a.output.empty()) std::printf("wrote %s\n", a.output.c_str());
     if (!a.stats.empty()) std::printf("wrote %s\n", a.stats.c_str());
   }
@@ -117,7 +153,8 @@ void addTessellateOptions(CLI::App* cmd, TessellateArgs& args) {
   cmd->add_option("--max-depth", args.maxDepth, "maximum quad-tree depth")->capture_default_str();
   cmd->add_option("--samples", args.samples, "S of rules C and D (S×S samples per node)")
       ->capture_default_str();
-  cmd->add_option("--grid", args.grid, "N of rule A (N×N cells per patch)")->capture_default_str();
+  cmd->add_option("--grid", args.grid, "rule A's cells per patch: N (N×N) or NxM (N along u)")
+      ->capture_default_str();
   cmd->add_option("--node-budget", args.nodeBudget, "most quad-tree nodes before stopping")
       ->capture_default_str();
   cmd->add_option("--backend", args.backend, "vulkan, cpu, or auto (Vulkan if a device exists)")
