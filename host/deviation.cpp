@@ -5,12 +5,18 @@
 
 #include "bezier.h"
 #include "bicubic.h"
+#include "closest_point.h"
 #include "tessellate.h"
 
 namespace tessera {
 
+const char* deviationMetricName(DeviationMetric metric) {
+  return metric == DeviationMetric::Parametric ? "parametric" : "geometric";
+}
+
 DeviationReport measureDeviation(const Tessellation& tessellation,
-                                 const std::vector<BezierPatch>& patches, int subdivisions) {
+                                 const std::vector<BezierPatch>& patches, int subdivisions,
+                                 DeviationMetric metric) {
   const TriangleMesh& mesh = tessellation.mesh;
   if (tessellation.trianglePatch.size() * 3 != mesh.indices.size() ||
       tessellation.cornerUv.size() != mesh.indices.size())
@@ -36,7 +42,9 @@ DeviationReport measureDeviation(const Tessellation& tessellation,
         glm::dvec3 truth = patch.degreeU == 3 && patch.degreeV == 3
                                ? bicubicDerivatives(patch, uv.x, uv.y).p
                                : patchPoint(patch, uv.x, uv.y);
-        double d = glm::length(p - truth);
+        double d = metric == DeviationMetric::Parametric
+                       ? glm::length(p - truth)
+                       : closestPointOnPatch(patch, p, uv).distance;
         const uint32_t patchIndex = tessellation.trianglePatch[t / 3];
         report.perPatchMax[patchIndex] = std::max(report.perPatchMax[patchIndex], d);
         report.perPatchMean[patchIndex] += d;

@@ -1,7 +1,12 @@
-// How far a tessellation is from its surface. The metric is parametric: a point inside a
-// triangle (a barycentric mix of its corners) is compared with the surface at the same mix of
-// the corners' (u, v) — what a renderer interpolating uv would see. It bounds the geometric
-// distance to the surface from above. Truth comes from the double-precision kernel.
+// How far a tessellation is from its surface, by one of two metrics (every report says which):
+// - parametric: a point inside a triangle (a barycentric mix of its corners) is compared with
+//   the surface at the same mix of the corners' (u, v) — what a renderer interpolating uv
+//   would see. It bounds the geometric distance from above, loosely where the
+//   parametrisation is uneven (collapsed edges).
+// - geometric: the distance from that point to the triangle's own patch, by a closest-point
+//   search started at the parametric guess (closest_point.h). What "deviation from the true
+//   surface" means for a mesh viewed without its uv, and what Open CASCADE's deflection bounds.
+// Truth comes from the double-precision kernel.
 #pragma once
 #include <vector>
 
@@ -9,6 +14,9 @@
 #include "patch.h"
 
 namespace tessera {
+
+enum class DeviationMetric { Parametric, Geometric };
+const char* deviationMetricName(DeviationMetric metric);  // "parametric", "geometric"
 
 struct DeviationReport {
   double maxDeviation = 0;   // largest distance seen, model units
@@ -28,6 +36,7 @@ struct Tessellation;
 // (It takes the Tessellation, not only its mesh: a vertex welded across patches keeps one
 // patch's (u, v), so the mesh alone cannot say where a triangle lies on its own patch.)
 DeviationReport measureDeviation(const Tessellation& tessellation,
-                                 const std::vector<BezierPatch>& patches, int subdivisions = 4);
+                                 const std::vector<BezierPatch>& patches, int subdivisions = 4,
+                                 DeviationMetric metric = DeviationMetric::Parametric);
 
 }  // namespace tessera

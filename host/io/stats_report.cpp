@@ -67,7 +67,7 @@ double shortestDecimal(float value) {
 
 PatchDeviation measureDeviationPerPatch(const Tessellation& t,
                                         const std::vector<BezierPatch>& patches,
-                                        int subdivisions) {
+                                        int subdivisions, DeviationMetric metric) {
   const auto start = std::chrono::steady_clock::now();
   const TriangleMesh& mesh = t.mesh;
   if (t.trianglePatch.size() != mesh.triangleCount() || t.cornerUv.size() != mesh.indices.size())
@@ -110,7 +110,7 @@ PatchDeviation measureDeviationPerPatch(const Tessellation& t,
     }
     for (uint32_t v : used) remap[v] = kUnmapped;
 
-    DeviationReport d = measureDeviation(sub, patches, subdivisions);
+    DeviationReport d = measureDeviation(sub, patches, subdivisions, metric);
     d.worstTriangle = trianglesOf[p][d.worstTriangle];
     result.perPatch[p] = d;
     sampleSum += d.meanDeviation * double(d.samples);
@@ -124,6 +124,17 @@ PatchDeviation measureDeviationPerPatch(const Tessellation& t,
   result.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                   .count();
   return result;
+}
+
+void addGeometricDeviation(nlohmann::json& report, const PatchDeviation& geometric) {
+  report["totals"]["geometricDeviation"] = deviationToJson(geometric.total);
+  nlohmann::json& patches = report["patches"];
+  if (patches.size() != geometric.perPatch.size())
+    throw std::invalid_argument("addGeometricDeviation: " + std::to_string(geometric.perPatch.size()) +
+                                " patches measured, " + std::to_string(patches.size()) + " in the report");
+  for (size_t p = 0; p < patches.size(); ++p)
+    patches[p]["geometricDeviation"] = deviationToJson(geometric.perPatch[p]);
+  report["timings"]["geometricDeviationMs"] = geometric.ms;
 }
 
 nlohmann::json statsToJson(const TessellationStats& s) {

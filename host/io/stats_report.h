@@ -34,7 +34,13 @@ struct PatchDeviation {
 // `patches` are the ones tessellated into `tessellation`.
 PatchDeviation measureDeviationPerPatch(const Tessellation& tessellation,
                                         const std::vector<BezierPatch>& patches,
-                                        int subdivisions = 4);
+                                        int subdivisions = 4,
+                                        DeviationMetric metric = DeviationMetric::Parametric);
+
+// Adds the geometric metric's numbers beside the parametric ones of a full report:
+// totals.geometricDeviation and patches[].geometricDeviation ({max, mean, samples,
+// worstTriangle}), and timings.geometricDeviationMs.
+void addGeometricDeviation(nlohmann::json& report, const PatchDeviation& geometric);
 
 // Totals, timings and per-level numbers only (no per-patch section).
 nlohmann::json statsToJson(const TessellationStats& stats);
