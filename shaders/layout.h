@@ -147,6 +147,20 @@ struct MeshDrawPush {
   uint pad0;
 };
 
+
+// ---- Loop subdivision stencils (shaders/loop_stencil.comp.glsl, host/loop_vulkan.cpp) ----
+
+// Push constants of loop_stencil.comp.glsl. One dispatch applies stencils firstStencil ..
+// firstStencil + stencilCount − 1 of a table (host/loop_stencils.h); stencil s writes row
+// sourceRows + s of the values buffer, a row being `width` floats (any per-vertex data).
+struct LoopStencilPush {
+  uint firstStencil;
+  uint stencilCount;
+  uint sourceRows;
+  uint width;
+};
+
+
 #ifdef __cplusplus
 }  // namespace tessera::gpu
 #endif
