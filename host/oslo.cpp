@@ -13,16 +13,55 @@ namespace {
 
 double ratioOrZero(double num, double den) { return den == 0.0 ? 0.0 : num / den; }
 
-// y ⊇ x as multisets, both sorted: one merge walk.
-bool containsAll(const std::vector<double>& y, const std::vector<double>& x) {
-  size_t k = 0;
+}  // namespace
+
+bool knotsContain(const std::vector<double>& y, const std::vector<double>& x) {
+  size_t k = 0;  // one merge walk
   for (double v : y) {
     if (k < x.size() && x[k] == v) ++k;
   }
   return k == x.size();
 }
 
-}  // namespace
+int osloRow(int degree, const std::vector<double>& x, const std::vector<double>& y, int j,
+            double* values) {
+  const int p = degree;
+  const int n = static_cast<int>(x.size()) - p - 1;
+  const int lastKnot = n + p;
+  const auto xi = [&](int i) { return x[static_cast<size_t>(i)]; };
+  const double yj = y[static_cast<size_t>(j)];
+  // Base case α_{i,0}(j) = 1 iff x_i ≤ y_j < x_{i+1}. Half-open: Hayashimoto et al. print
+  // ≤ on both sides, which would count a y_j that equals a knot in two intervals.
+  const int mu = static_cast<int>(std::upper_bound(x.begin(), x.end(), yj) - x.begin()) - 1;
+  // alpha[i − (mu − p)] holds α_{i,r}(j) for i ∈ [mu − r, mu].
+  std::array<double, kMaxDegree + 2> alpha{};
+  alpha[static_cast<size_t>(p)] = 1.0;
+  // Level r is the paper's order k = r + 1, whose new knot is y_{j+k-1} = y_{j+r}.
+  for (int r = 1; r <= p; ++r) {
+    const double t = y[static_cast<size_t>(j + r)];
+    for (int i = mu - r; i <= mu; ++i) {
+      const size_t slot = static_cast<size_t>(i - (mu - p));
+      // α_{i,r} needs x_i … x_{i+r+1}. Outside the vector these are B-splines that do not
+      // exist, and they only ever feed other non-existent ones (i < 0 feeds lower i; past
+      // the end feeds i' with i' + r' + 1 past the end too): 0 changes nothing real.
+      if (i < 0 || i + r + 1 > lastKnot) {
+        alpha[slot] = 0.0;
+        continue;
+      }
+      // Ascending i reads alpha[slot + 1] (level r − 1) before it is overwritten.
+      alpha[slot] = ratioOrZero(t - xi(i), xi(i + r) - xi(i)) * alpha[slot] +
+                    ratioOrZero(xi(i + r + 1) - t, xi(i + r + 1) - xi(i + 1)) * alpha[slot + 1];
+    }
+  }
+  // The nonzeros lie in [max(mu − p, 0), min(mu, n − 1)]: a window of p + 1 columns starting at
+  // mu − p clamped into [0, n − p − 1] holds them all.
+  const int first = std::clamp(mu - p, 0, n - p - 1);
+  for (int r = 0; r <= p; ++r) {
+    const int i = first + r;
+    values[r] = (i >= mu - p && i <= mu) ? alpha[static_cast<size_t>(i - (mu - p))] : 0.0;
+  }
+  return first;
+}
 
 std::vector<double> mergeKnots(const std::vector<double>& knots, std::vector<double> inserted) {
   inserted.insert(inserted.end(), knots.begin(), knots.end());
@@ -36,44 +75,17 @@ Eigen::MatrixXd osloMatrix(int degree, const std::vector<double>& x, const std::
   const int m = static_cast<int>(y.size()) - p - 1;
   validateKnots(p, n, x, "osloMatrix old knots");
   validateKnots(p, m, y, "osloMatrix new knots");
-  if (!containsAll(y, x)) {
+  if (!knotsContain(y, x)) {
     throw std::invalid_argument("osloMatrix: new knots do not contain every old knot");
   }
   if (y.front() != x.front() || y.back() != x.back()) {
     throw std::invalid_argument("osloMatrix: new knots reach outside [x_0, x_last]");
   }
-  const auto xi = [&](int i) { return x[static_cast<size_t>(i)]; };
-  const int lastKnot = n + p;
-
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(m, n);
+  std::array<double, kMaxDegree + 1> row{};
   for (int j = 0; j < m; ++j) {
-    const double yj = y[static_cast<size_t>(j)];
-    // Base case α_{i,0}(j) = 1 iff x_i ≤ y_j < x_{i+1}. Half-open: Hayashimoto et al. print
-    // ≤ on both sides, which would count a y_j that equals a knot in two intervals.
-    const int mu = static_cast<int>(std::upper_bound(x.begin(), x.end(), yj) - x.begin()) - 1;
-    // alpha[i − (mu − p)] holds α_{i,r}(j) for i ∈ [mu − r, mu].
-    std::array<double, kMaxDegree + 2> alpha{};
-    alpha[static_cast<size_t>(p)] = 1.0;
-    // Level r is the paper's order k = r + 1, whose new knot is y_{j+k-1} = y_{j+r}.
-    for (int r = 1; r <= p; ++r) {
-      const double t = y[static_cast<size_t>(j + r)];
-      for (int i = mu - r; i <= mu; ++i) {
-        const size_t slot = static_cast<size_t>(i - (mu - p));
-        // α_{i,r} needs x_i … x_{i+r+1}. Outside the vector these are B-splines that do not
-        // exist, and they only ever feed other non-existent ones (i < 0 feeds lower i; past
-        // the end feeds i' with i' + r' + 1 past the end too): 0 changes nothing real.
-        if (i < 0 || i + r + 1 > lastKnot) {
-          alpha[slot] = 0.0;
-          continue;
-        }
-        // Ascending i reads alpha[slot + 1] (level r − 1) before it is overwritten.
-        alpha[slot] = ratioOrZero(t - xi(i), xi(i + r) - xi(i)) * alpha[slot] +
-                      ratioOrZero(xi(i + r + 1) - t, xi(i + r + 1) - xi(i + 1)) * alpha[slot + 1];
-      }
-    }
-    for (int i = std::max(mu - p, 0); i <= std::min(mu, n - 1); ++i) {
-      a(j, i) = alpha[static_cast<size_t>(i - (mu - p))];
-    }
+    const int first = osloRow(p, x, y, j, row.data());
+    for (int r = 0; r <= p; ++r) a(j, first + r) = row[static_cast<size_t>(r)];
   }
   return a;
 }

@@ -24,6 +24,15 @@ std::vector<double> mergeKnots(const std::vector<double>& knots, std::vector<dou
 Eigen::MatrixXd osloMatrix(int degree, const std::vector<double>& oldKnots,
                            const std::vector<double>& newKnots);
 
+// Row j of the Oslo matrix for degree p, coarse knots x ⊂ fine knots y: writes p + 1 values
+// for columns first .. first + p (zeros where the row is shorter) and returns first. The knots
+// are not validated here (osloMatrix and osloBand in banded_oslo.h do that once).
+int osloRow(int degree, const std::vector<double>& x, const std::vector<double>& y, int j,
+            double* values);
+
+// y ⊇ x as multisets, both sorted.
+bool knotsContain(const std::vector<double>& y, const std::vector<double>& x);
+
 // M·cp for any M with M.cols() == cp.size() (A, or a pseudo-inverse of A).
 std::vector<glm::dvec3> applyToControlPoints(const Eigen::MatrixXd& m,
                                              const std::vector<glm::dvec3>& cp);
