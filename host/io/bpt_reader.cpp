@@ -12,19 +12,12 @@
 #include <system_error>
 
 #include "io/errors.h"
+#include "io/quoted_token.h"
 
 namespace tessera {
 namespace {
 
 bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-
-// A token as it appears in a message: quoted, and cut short so a binary file fed in by
-// mistake does not produce a message the size of the file.
-std::string quoted(std::string_view token) {
-  constexpr size_t kMaxShown = 32;
-  if (token.size() <= kMaxShown) return "'" + std::string(token) + "'";
-  return "'" + std::string(token.substr(0, kMaxShown)) + "...'";
-}
 
 // Hands out the lines that carry data (skipping blank and '#' lines) split into tokens,
 // and knows the line numbers for messages.
@@ -109,14 +102,14 @@ double parseCoordinate(const LineSource& src, std::string_view token, const std:
   double value = 0;
   auto [ptr, ec] = std::from_chars(first, last, value, std::chars_format::general);
   if (ptr != last || (ec != std::errc() && ec != std::errc::result_out_of_range))
-    src.fail(InputErrorKind::Syntax, quoted(token) + " is not a number (" + what + ")");
+    src.fail(InputErrorKind::Syntax, quotedToken(token) + " is not a number (" + what + ")");
   if (ec == std::errc::result_out_of_range)
     src.fail(InputErrorKind::Range,
-             quoted(token) + " is outside the range of a double (" + what + ")");
+             quotedToken(token) + " is outside the range of a double (" + what + ")");
   if (!std::isfinite(value))
-    src.fail(InputErrorKind::NonFinite, quoted(token) + " is not a finite number (" + what + ")");
+    src.fail(InputErrorKind::NonFinite, quotedToken(token) + " is not a finite number (" + what + ")");
   if (std::fabs(value) > kBptMaxAbsCoordinate)
-    src.fail(InputErrorKind::Range, quoted(token) + " exceeds the largest accepted magnitude 1e15 (" +
+    src.fail(InputErrorKind::Range, quotedToken(token) + " exceeds the largest accepted magnitude 1e15 (" +
                                         what + ")");
   return value;
 }
@@ -132,8 +125,8 @@ long long parsePatchCount(LineSource& src) {
   long long count = 0;
   bool outOfRange = false;
   if (!parseInteger(tokens[0], count, outOfRange))
-    src.fail(InputErrorKind::Syntax, quoted(tokens[0]) + " is not an integer patch count");
-  if (outOfRange) src.fail(InputErrorKind::Count, "patch count " + quoted(tokens[0]) + " is too large");
+    src.fail(InputErrorKind::Syntax, quotedToken(tokens[0]) + " is not an integer patch count");
+  if (outOfRange) src.fail(InputErrorKind::Count, "patch count " + quotedToken(tokens[0]) + " is too large");
   if (count < 1)
     src.fail(InputErrorKind::Count, "patch count must be at least 1, found " + std::to_string(count));
   return count;
@@ -144,7 +137,7 @@ int parseDegree(const LineSource& src, std::string_view token, const char* direc
   long long degree = 0;
   bool outOfRange = false;
   if (!parseInteger(token, degree, outOfRange))
-    src.fail(InputErrorKind::Syntax, quoted(token) + " is not an integer degree (" + direction +
+    src.fail(InputErrorKind::Syntax, quotedToken(token) + " is not an integer degree (" + direction +
                                          " of " + patchName + ")");
   if (outOfRange || degree < 1 || degree > kMaxDegree)
     src.fail(InputErrorKind::Degree, "degree in " + std::string(direction) + " of " + patchName +
@@ -220,7 +213,7 @@ std::vector<BezierPatch> parseBpt(std::istream& in, const std::string& nameForMe
     if (tokens.size() == 2 && isInteger(tokens[0]) && isInteger(tokens[1]))
       src.fail(InputErrorKind::Count, "more patches than " + declared);
     src.fail(InputErrorKind::Syntax,
-             "unexpected content " + quoted(tokens[0]) + " after the last of " + declared);
+             "unexpected content " + quotedToken(tokens[0]) + " after the last of " + declared);
   }
   return patches;
 }

@@ -13,19 +13,12 @@
 #include <vector>
 
 #include "io/errors.h"
+#include "io/quoted_token.h"
 
 namespace tessera {
 namespace {
 
 bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-
-// A token as shown in a message: quoted and cut short, so a binary file read by mistake does
-// not produce a message the size of the file.
-std::string quoted(std::string_view token) {
-  constexpr size_t kMaxShown = 32;
-  if (token.size() <= kMaxShown) return "'" + std::string(token) + "'";
-  return "'" + std::string(token.substr(0, kMaxShown)) + "...'";
-}
 
 // The data lines of the input (blank and '#' lines skipped), split into tokens, with their
 // 1-based line numbers.
@@ -99,9 +92,9 @@ int parseDimension(const DataLines& lines, std::string_view token, const char* w
   const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
   const bool outOfRange = ec == std::errc::result_out_of_range;
   if (ptr != digits.data() + digits.size() || (ec != std::errc() && !outOfRange))
-    lines.fail(InputErrorKind::Syntax, quoted(token) + " is not an integer (" + what + ")");
+    lines.fail(InputErrorKind::Syntax, quotedToken(token) + " is not an integer (" + what + ")");
   if (outOfRange || value > kGridMaxPoints)
-    lines.fail(InputErrorKind::Range, std::string(what) + " " + quoted(token) + " is too large");
+    lines.fail(InputErrorKind::Range, std::string(what) + " " + quotedToken(token) + " is too large");
   if (value < 2)
     lines.fail(InputErrorKind::Count,
                std::string(what) + " must be at least 2, found " + std::to_string(value));
@@ -115,14 +108,14 @@ double parseCoordinate(const DataLines& lines, std::string_view token, const std
                                          std::chars_format::general);
   if (ptr != number.data() + number.size() ||
       (ec != std::errc() && ec != std::errc::result_out_of_range))
-    lines.fail(InputErrorKind::Syntax, quoted(token) + " is not a number (" + what + ")");
+    lines.fail(InputErrorKind::Syntax, quotedToken(token) + " is not a number (" + what + ")");
   if (ec == std::errc::result_out_of_range)
     lines.fail(InputErrorKind::Range,
-               quoted(token) + " is outside the range of a double (" + what + ")");
+               quotedToken(token) + " is outside the range of a double (" + what + ")");
   if (!std::isfinite(value))
-    lines.fail(InputErrorKind::NonFinite, quoted(token) + " is not a finite number (" + what + ")");
+    lines.fail(InputErrorKind::NonFinite, quotedToken(token) + " is not a finite number (" + what + ")");
   if (std::fabs(value) > kGridMaxAbsCoordinate)
-    lines.fail(InputErrorKind::Range, quoted(token) +
+    lines.fail(InputErrorKind::Range, quotedToken(token) +
                                           " exceeds the largest accepted magnitude 1e15 (" +
                                           what + ")");
   return value;
@@ -176,7 +169,7 @@ GridData parseGrid(std::istream& in, const std::string& nameForMessages) {
     if (lines.tokens().size() == 3)
       lines.fail(InputErrorKind::Count, "more points than " + declared);
     lines.fail(InputErrorKind::Syntax,
-               "unexpected content " + quoted(lines.tokens()[0]) + " after the last of " + declared);
+               "unexpected content " + quotedToken(lines.tokens()[0]) + " after the last of " + declared);
   }
   return grid;
 }

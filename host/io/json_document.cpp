@@ -11,6 +11,7 @@
 #include <unordered_set>
 
 #include "io/errors.h"
+#include "io/quoted_token.h"
 
 namespace tessera {
 namespace {
@@ -92,7 +93,8 @@ bool isWordChar(char c) {
 
 // nlohmann's what() reads "[json.exception.parse_error.101] parse error at line L, column C:
 // <description>"; the position is ours (same byte), the description is kept, cut short, since
-// its "last read" part can be a whole runaway string.
+// its "last read" part can be a whole runaway string (and raw bytes of a binary file, shown
+// escaped).
 std::string parserDescription(const char* what) {
   std::string_view text(what);
   const size_t column = text.find("column ");
@@ -101,8 +103,8 @@ std::string parserDescription(const char* what) {
     if (colon != std::string_view::npos) text.remove_prefix(colon + 2);
   }
   constexpr size_t kMaxShown = 160;
-  if (text.size() > kMaxShown) return std::string(text.substr(0, kMaxShown)) + "...";
-  return std::string(text);
+  if (text.size() > kMaxShown) return printableText(text.substr(0, kMaxShown)) + "...";
+  return printableText(text);
 }
 
 using Json = nlohmann::json;

@@ -1,11 +1,10 @@
-// OBJ parsing, statement by statement so every error can name its line; the topology checks
-// over the parsed faces. Format and rules: obj_reader.h.
+// OBJ parsing, statement by statement so every error can name its line. Format and rules:
+// obj_reader.h; the topology checks over the parsed faces are in obj_topology.cpp.
 #include "io/obj_reader.h"
 
 #include <algorithm>
 #include <limits>
 #include <string_view>
-#include <unordered_map>
 
 #include "io/errors.h"
 #include "io/text_lines.h"
@@ -198,26 +197,6 @@ class ObjParser {
   std::vector<ForwardReference> positionRefs_, textureRefs_, normalRefs_;
 };
 
-int faceLine(const PolygonMesh& mesh, size_t face) {
-  return face < mesh.faceLines.size() ? mesh.faceLines[face] : 0;
-}
-
-// "faces 1 and 2 (lines 5 and 9)", lines left out for a mesh built in code.
-std::string facesNamed(const PolygonMesh& mesh, const std::vector<size_t>& faces) {
-  auto list = [&](auto label) {
-    std::string out;
-    for (size_t k = 0; k < faces.size(); ++k) {
-      if (k > 0) out += k + 1 == faces.size() ? " and " : ", ";
-      out += std::to_string(label(faces[k]));
-    }
-    return out;
-  };
-  std::string out = "faces " + list([](size_t f) { return f + 1; });
-  if (!mesh.faceLines.empty())
-    out += " (lines " + list([&](size_t f) { return faceLine(mesh, f); }) + ")";
-  return out;
-}
-
 }  // namespace
 
 PolygonMesh parseObj(std::istream& in, const std::string& nameForMessages) {
@@ -227,64 +206,6 @@ PolygonMesh parseObj(std::istream& in, const std::string& nameForMessages) {
 PolygonMesh readObj(const std::string& path) {
   std::ifstream in = openForReading(path, "an OBJ file");
   return parseObj(in, path);
-}
-
-void requireTriangles(const PolygonMesh& mesh, const std::string& nameForMessages) {
-  for (size_t f = 0; f < mesh.faces.size(); ++f)
-    if (mesh.faces[f].size() != 3)
-      throw InputError(InputErrorKind::Topology, nameForMessages, faceLine(mesh, f),
-                       "face " + std::to_string(f + 1) + " has " +
-                           std::to_string(mesh.faces[f].size()) +
-                           " corners; only triangles are accepted here");
-}
-
-void requireManifold(const PolygonMesh& mesh, const std::string& nameForMessages) {
-  struct EdgeUse {
-    size_t firstFace = 0, secondFace = 0;
-    int uses = 0;
-    bool firstRunsUp = false;  // the first face runs the edge from the lower vertex index
-  };
-  std::unordered_map<uint64_t, EdgeUse> edges;
-  auto fail = [&](size_t face, const std::string& reason) {
-    throw InputError(InputErrorKind::Topology, nameForMessages, faceLine(mesh, face), reason);
-  };
-  for (size_t f = 0; f < mesh.faces.size(); ++f) {
-    const std::vector<uint32_t>& face = mesh.faces[f];
-    for (size_t k = 0; k < face.size(); ++k) {
-      if (face[k] >= mesh.positions.size())
-        fail(f, "face " + std::to_string(f + 1) + " refers to vertex " +
-                    std::to_string(face[k] + 1) + ", but there are " +
-                    std::to_string(mesh.positions.size()));
-      for (size_t j = 0; j < k; ++j)
-        if (face[j] == face[k])
-          fail(f, "face " + std::to_string(f + 1) + " uses vertex " +
-                      std::to_string(face[k] + 1) + " twice: not a manifold surface");
-    }
-    for (size_t k = 0; k < face.size(); ++k) {
-      const uint32_t from = face[k];
-      const uint32_t to = face[(k + 1) % face.size()];
-      const uint32_t low = std::min(from, to), high = std::max(from, to);
-      EdgeUse& use = edges[(uint64_t(low) << 32) | high];
-      const std::string edgeName =
-          "the edge between vertices " + std::to_string(low + 1) + " and " + std::to_string(high + 1);
-      if (use.uses == 0) {
-        use.firstFace = f;
-        use.firstRunsUp = from < to;
-      } else if (use.uses == 1) {
-        use.secondFace = f;
-        // Consistently oriented neighbours run their common edge in opposite directions.
-        if ((from < to) == use.firstRunsUp)
-          fail(f, facesNamed(mesh, {use.firstFace, f}) + " both run " + edgeName +
-                      " from vertex " + std::to_string(from + 1) + " to vertex " +
-                      std::to_string(to + 1) +
-                      ": inconsistent orientation (one of them is flipped)");
-      } else {
-        fail(f, edgeName + " is shared by more than two faces: " +
-                    facesNamed(mesh, {use.firstFace, use.secondFace, f}) + "; not a manifold");
-      }
-      ++use.uses;
-    }
-  }
 }
 
 }  // namespace tessera

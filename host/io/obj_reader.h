@@ -49,9 +49,11 @@ void requireTriangles(const PolygonMesh& mesh, const std::string& nameForMessage
 // Topology error unless the faces form an oriented 2-manifold with boundary: no face uses a
 // vertex twice, no edge is shared by more than two faces (the message names the edge's
 // vertices, 1-based as in the file), and two faces sharing an edge run it in opposite
-// directions (consistent orientation; the message names both faces' lines). Holes — edges of
-// only one face — are allowed. Not checked: vertices where two fans of faces touch only at
-// the vertex ("bow ties"), and faces that intersect geometrically.
+// directions (consistent orientation; the message names both faces' lines), and the faces
+// around each vertex form one fan joined by edges (two fans touching only at the vertex, a
+// "bow tie", make the surface touch itself: the message names the vertex and a face of each
+// fan). Holes — edges of only one face — are allowed. Not checked: faces that intersect
+// geometrically.
 void requireManifold(const PolygonMesh& mesh, const std::string& nameForMessages);
 
 }  // namespace tessera

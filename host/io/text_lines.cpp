@@ -14,12 +14,6 @@ bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' ||
 
 }  // namespace
 
-std::string quotedToken(std::string_view token) {
-  constexpr size_t kMaxShown = 32;
-  if (token.size() <= kMaxShown) return "'" + std::string(token) + "'";
-  return "'" + std::string(token.substr(0, kMaxShown)) + "...'";
-}
-
 std::ifstream openForReading(const std::string& path, const char* kindOfFile) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "io/errors.h"
+#include "io/quoted_token.h"  // quotedToken for the readers
 
 namespace tessera {
 
@@ -19,9 +20,6 @@ namespace tessera {
 // bounding-box diagonals computed later stay far from overflow.
 constexpr double kMaxAbsInputCoordinate = 1e15;
 
-// A token as shown in a message: quoted and cut short, so a binary file read by mistake does
-// not produce a message the size of the file.
-std::string quotedToken(std::string_view token);
 
 // Opens `path` for reading in binary mode (CRLF is handled by the parsers). A directory or an
 // unopenable file is an InputError of kind Io; `kindOfFile` completes "is a directory, not
