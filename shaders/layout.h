@@ -161,6 +161,18 @@ struct LoopStencilPush {
 };
 
 
+
+// ---- Control-point reduction row product (shaders/reduction_apply.comp.glsl) ----
+
+// Push constants of reduction_apply.comp.glsl: a rows × cols band matrix applied to `curves`
+// curves of cols points each (vec4 per point, xyz used), giving curves × rows points.
+struct BandApplyPush {
+  uint rows;
+  uint cols;
+  uint curves;
+  uint pad0;
+};
+
 #ifdef __cplusplus
 }  // namespace tessera::gpu
 #endif
