@@ -54,6 +54,13 @@ uint32_t LoopTopology::oppositeVertex(uint32_t e, uint32_t f) const {
   return kLoopNone;
 }
 
+uint32_t LoopTopology::edgeBetween(uint32_t a, uint32_t b) const {
+  if (a < vertexCount && b < vertexCount)
+    for (uint32_t k = ringOffsets[a]; k < ringOffsets[a + 1]; ++k)
+      if (ringVertices[k] == b) return ringEdges[k];
+  return kLoopNone;
+}
+
 bool LoopTopology::closed() const {
   return std::none_of(edgeFaces.begin(), edgeFaces.end(),
                       [](const auto& faces) { return faces[1] == kLoopNone; });
@@ -155,15 +162,9 @@ LoopTopology buildLoopTopology(const LoopControlTopology& control) {
     t.ringOffsets[v + 1] = uint32_t(t.ringVertices.size());
   }
 
-  auto findEdge = [&](uint32_t a, uint32_t b) {
-    if (a < t.vertexCount && b < t.vertexCount)
-      for (uint32_t k = t.ringOffsets[a]; k < t.ringOffsets[a + 1]; ++k)
-        if (t.ringVertices[k] == b) return t.ringEdges[k];
-    return kLoopNone;
-  };
   t.edgeCrease.assign(t.edgeCount(), 0);
   for (const auto& crease : control.creases) {
-    const uint32_t e = findEdge(crease[0], crease[1]);
+    const uint32_t e = t.edgeBetween(crease[0], crease[1]);
     if (e == kLoopNone)
       throw LoopTopologyError("crease " + edgeName(crease[0], crease[1]) + " is not an edge",
                               kLoopNone);

@@ -74,6 +74,8 @@ struct LoopTopology {
   uint32_t faceValence(uint32_t v) const { return valence(v) - vertexBoundary[v]; }
   const uint32_t* ring(uint32_t v) const { return ringVertices.data() + ringOffsets[v]; }
   const uint32_t* ringEdge(uint32_t v) const { return ringEdges.data() + ringOffsets[v]; }
+  // The edge joining a and b, or kLoopNone.
+  uint32_t edgeBetween(uint32_t a, uint32_t b) const;
   // The vertex of face f that is not on edge e (e must be an edge of f).
   uint32_t oppositeVertex(uint32_t e, uint32_t f) const;
   bool closed() const;  // no boundary edge

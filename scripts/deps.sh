@@ -8,6 +8,7 @@ packages=(
   libvulkan-dev libvulkan1 mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   glslang-tools spirv-tools
   libglm-dev libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev libstb-dev
+  libosd-dev
 )
 # node and npm run the Khronos glTF validator in the tests (scripts/gltf-validate.sh). Debian's
 # nodejs and npm only when the commands are missing: a Node.js installed another way (its own
