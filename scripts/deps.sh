@@ -9,6 +9,11 @@ packages=(
   glslang-tools spirv-tools
   libglm-dev libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev libstb-dev
   libosd-dev
+  # the sanitizer and fuzz build of scripts/test.sh: clang, and libFuzzer's runtime
+  clang libclang-rt-14-dev
+  # bench/: the Open CASCADE peer (bench_occt), JSON merging and the plot of scripts/bench.sh
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
+  libocct-visualization-dev jq gnuplot-nox
 )
 # node and npm run the Khronos glTF validator in the tests (scripts/gltf-validate.sh). Debian's
 # nodejs and npm only when the commands are missing: a Node.js installed another way (its own

@@ -161,6 +161,89 @@ struct LoopStencilPush {
 };
 
 
+// ---- General Bézier patches: degree 1..7 each way, polynomial or rational ----
+// (shaders/lib/general_eval.h, eval_general.comp.glsl, quadtree_general.comp.glsl,
+// host/general_patch.h). Bicubic polynomial patches keep BicubicPatch and its shaders.
+
+// Orders (degree + 1) are at most this: every loop over a patch's control points has this
+// fixed bound, so shader and mirror run the same loops for every degree.
+TESSERA_CONST(int, kGeneralMaxOrder, 8);
+
+// A tensor-product patch whose control points live in a separate buffer of homogeneous points
+// vec4(w·x, w·y, w·z, w): b_ij at firstPoint + i*(degreeV+1) + j, i along u (conventions.md).
+struct GeneralPatch {
+  uint degreeU;     // 1..7
+  uint degreeV;     // 1..7
+  uint rational;    // 0: polynomial, every w is 1 and the quotient rule is skipped
+  uint firstPoint;  // index of b_00 in the control-point buffer
+};
+
+
+// ---- Uniform-grid evaluation (shaders/grid_eval.comp.glsl, shaders/lib/grid_eval.h,
+// host/grid_evaluator.cpp) ----
+
+// One vertex of a patch's P×P grid: 32 bytes, the unit the bandwidth cap of bench/ counts.
+struct GridVertex {
+  vec4 position;  // w = 1
+  vec4 normal;    // unit normal (conventions.md, degenerate points included), w = 0
+};
+
+// Push constants of grid_eval.comp.glsl: one invocation per (patch, row); vertex (i, j) of
+// patch p at index (p·P + i)·P + j, u = i/(P−1), v = j/(P−1).
+struct GridEvalPush {
+  uint patchCount;
+  uint pointsPerSide;   // P ≥ 2
+  float degenerateEps;  // ε of docs/conventions.md
+  uint pad0;
+};
+
+
+// ---- The fixed-function peer: Vulkan tessellation shaders (shaders/tess_peer.*.glsl,
+// host/tess_shader_peer.cpp) ----
+
+// Push constants of tess_peer.tesc/tese.glsl (80 of the guaranteed 128 bytes).
+struct TessPeerPush {
+  vec4 viewProjection[4];  // clip from world, glm column order, Vulkan clip space
+  vec4 params;             // viewport width, height (pixels), tolerance (pixels), max factor
+};
+
+
+// ---- Rational division counts (shaders/division_count.comp.glsl,
+// shaders/lib/division_count.h, host/division_gpu.cpp; docs/rational_division.md) ----
+
+// One rational Bézier patch of bidegree (degreeU, degreeV) ≤ (7, 7): its homogeneous control
+// points (w·x, w·y, w·z, w), c[i*(degreeV+1) + j], start at points[firstPoint].
+struct DivisionPatch {
+  uint firstPoint;
+  uint degreeU;
+  uint degreeV;
+  uint pad;
+};
+
+TESSERA_CONST(uint, kDivisionOk, 0u);
+TESSERA_CONST(uint, kDivisionCapped, 1u);     // a count exceeded maxPerDirection, clamped
+TESSERA_CONST(uint, kDivisionUnbounded, 2u);  // w may vanish on the patch: both counts capped
+
+// Counts N_u, N_v, the real counts before rounding up, and the bounds of ‖S_uu‖, ‖S_uv‖, ‖S_vv‖.
+struct DivisionResult {
+  uint nu;
+  uint nv;
+  uint status;  // kDivision*
+  float realU;
+  float realV;
+  float uu;
+  float uv;
+  float vv;
+};
+
+// Push constants of division_count.comp.glsl.
+struct DivisionPush {
+  float tolerance;       // TOL, in the units of the control points
+  uint maxPerDirection;  // counts are clamped to this
+  uint ratioPieces;      // q of the ρ/σ bounds (q×q pieces)
+  uint patchCount;
+};
+
 
 // ---- Control-point reduction row product (shaders/reduction_apply.comp.glsl) ----
 

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "vk/device_select.h"
+#include "vk/pipeline_cache.h"
 
 namespace tessera::vk {
 namespace {
@@ -66,7 +67,10 @@ Context::~Context() { release(); }
 void Context::release() {
   if (device_) {
     device_table_.vkDeviceWaitIdle(device_);
-    if (pipeline_cache_) device_table_.vkDestroyPipelineCache(device_, pipeline_cache_, nullptr);
+    if (pipeline_cache_) {
+      savePipelineCache();
+      device_table_.vkDestroyPipelineCache(device_, pipeline_cache_, nullptr);
+    }
     if (fence_) device_table_.vkDestroyFence(device_, fence_, nullptr);
     if (command_pool_) device_table_.vkDestroyCommandPool(device_, command_pool_, nullptr);
     device_table_.vkDestroyDevice(device_, nullptr);
@@ -173,6 +177,11 @@ void Context::createDevice() {
   info.pQueueCreateInfos = &queueInfo;
   info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
   info.ppEnabledExtensionNames = extensions.data();
+  VkPhysicalDeviceFeatures available{};
+  instance_table_.vkGetPhysicalDeviceFeatures(physical_, &available);
+  enabled_features_.tessellationShader = available.tessellationShader;
+  enabled_features_.pipelineStatisticsQuery = available.pipelineStatisticsQuery;
+  info.pEnabledFeatures = &enabled_features_;
   VK_CHECK(instance_table_.vkCreateDevice(physical_, &info, nullptr, &device_));
   device_table_ = loadDeviceTable(instance_table_, device_);
   if (!device_table_.vkCmdPushDescriptorSetKHR)
@@ -185,8 +194,30 @@ void Context::createDevice() {
   VK_CHECK(device_table_.vkCreateCommandPool(device_, &poolInfo, nullptr, &command_pool_));
   VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
   VK_CHECK(device_table_.vkCreateFence(device_, &fenceInfo, nullptr, &fence_));
+  VkPhysicalDeviceProperties properties{};
+  instance_table_.vkGetPhysicalDeviceProperties(physical_, &properties);
+  pipeline_cache_path_ = vk::pipelineCachePath(properties);
+  std::vector<char> cached = readPipelineCache(pipeline_cache_path_);
+  pipeline_cache_loaded_bytes_ = cached.size();
   VkPipelineCacheCreateInfo cacheInfo{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
+  cacheInfo.initialDataSize = cached.size();
+  cacheInfo.pInitialData = cached.empty() ? nullptr : cached.data();
   VK_CHECK(device_table_.vkCreatePipelineCache(device_, &cacheInfo, nullptr, &pipeline_cache_));
+}
+
+void Context::savePipelineCache() {
+  if (pipeline_cache_path_.empty() || !device_table_.vkGetPipelineCacheData) return;
+  size_t bytes = 0;
+  if (device_table_.vkGetPipelineCacheData(device_, pipeline_cache_, &bytes, nullptr) !=
+          VK_SUCCESS || bytes == 0)
+    return;
+  std::vector<char> data(bytes);
+  if (device_table_.vkGetPipelineCacheData(device_, pipeline_cache_, &bytes, data.data()) !=
+      VK_SUCCESS)
+    return;
+  data.resize(bytes);
+  // Only when it grew: a run that compiled nothing new leaves the file alone.
+  if (bytes > pipeline_cache_loaded_bytes_) writePipelineCache(pipeline_cache_path_, data);
 }
 
 void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {

@@ -71,6 +71,13 @@ class Context {
   uint32_t timestampValidBits() const { return timestamp_valid_bits_; }
   bool queueSupportsGraphics() const { return queue_graphics_; }
   VkPipelineCache pipelineCache() const { return pipeline_cache_; }
+  // Where the pipeline cache is loaded from and saved to on destruction ("" = none), and how
+  // many bytes were loaded (host/vk/pipeline_cache.h).
+  const std::string& pipelineCachePath() const { return pipeline_cache_path_; }
+  size_t pipelineCacheLoadedBytes() const { return pipeline_cache_loaded_bytes_; }
+  // Optional features enabled when the device has them: tessellationShader and
+  // pipelineStatisticsQuery (the tessellation-shader benchmark peer uses both).
+  const VkPhysicalDeviceFeatures& enabledFeatures() const { return enabled_features_; }
 
   // Records commands into a fresh command buffer, submits, and waits for completion.
   void submitAndWait(const std::function<void(VkCommandBuffer)>& record);
@@ -87,6 +94,7 @@ class Context {
   void choosePhysicalDevice(const std::string& selector);
   void createDevice();
   void release();
+  void savePipelineCache();
 
   InstanceTable instance_table_{};
   DeviceTable device_table_{};
@@ -103,6 +111,9 @@ class Context {
   VkCommandPool command_pool_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;
   VkPipelineCache pipeline_cache_ = VK_NULL_HANDLE;
+  std::string pipeline_cache_path_;
+  size_t pipeline_cache_loaded_bytes_ = 0;
+  VkPhysicalDeviceFeatures enabled_features_{};
   bool validation_enabled_ = false;
   std::function<void(const std::string&)> on_validation_message_;
   mutable std::mutex messages_mutex_;

@@ -99,6 +99,8 @@ namespace tessera::vk {
   X(vkCmdDrawIndexed)                      \
   X(vkCmdSetViewport)                      \
   X(vkCmdSetScissor)                       \
+  X(vkCmdBeginQuery)                       \
+  X(vkCmdEndQuery)                         \
   X(vkCmdDraw)
 
 // Optional device functions (extensions): null when absent.

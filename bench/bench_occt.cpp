@@ -1,0 +1,247 @@
+// Case 3, accuracy per triangle against Open CASCADE, on the tea set (teapot, teacup, teaspoon):
+// every Bézier patch becomes a Geom_BezierSurface face, the faces are sewn into shells
+// (BRepBuilderAPI_Sewing: an unsewn compound leaves T-junctions between faces) and meshed by
+// BRepMesh_IncrementalMesh at linear deflections 0.01 and 0.001 (angular 0.5 rad), serial and
+// parallel. Tessera (rule B by default) then runs at the largest threshold whose mesh has the same
+// or a smaller measured maximum deviation. Both meshes are measured by the same code with both
+// metrics: distance to the true surface (host/surface_distance.h, what OCCT's deflection
+// promises; the metric the settings are matched on) and parametric (host/deviation.h).
+// Usage: bench_occt [deflections=0.01,0.001] [rules=B] [--json file]   (rules e.g. BD)
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
+#include <BRepMesh_IncrementalMesh.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom_BezierSurface.hxx>
+#include <Poly_Triangulation.hxx>
+#include <Precision.hxx>
+#include <Standard_Version.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "bench_report.h"
+#include "deviation.h"
+#include "io/bpt_reader.h"
+#include "surface_distance.h"
+#include "tessellate.h"
+#include "vk/context.h"
+
+using namespace tessera;
+
+namespace {
+
+struct OcctModel {
+  TopoDS_Shape shape;
+  std::map<const Geom_Surface*, uint32_t> patchOf;  // surface → index into the patches
+};
+
+OcctModel buildShells(const std::vector<BezierPatch>& patches, const std::vector<size_t>& parts) {
+  OcctModel model;
+  BRepBuilderAPI_Sewing sewing(1e-6);
+  for (size_t p = 0; p < patches.size(); ++p) {
+    TColgp_Array2OfPnt poles(1, 4, 1, 4);
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        const glm::dvec3& c = patches[p].at(i, j);
+        poles.SetValue(i + 1, j + 1, gp_Pnt(c.x, c.y, c.z));
+      }
+    Handle(Geom_BezierSurface) surface = new Geom_BezierSurface(poles);
+    model.patchOf[surface.get()] = uint32_t(p);
+    sewing.Add(BRepBuilderAPI_MakeFace(surface, Precision::Confusion()).Face());
+  }
+  (void)parts;  // the three models are far apart: one sewing pass keeps them separate shells
+  sewing.Perform();
+  model.shape = sewing.SewedShape();
+  return model;
+}
+
+// OCCT's triangulation of every face as a Tessellation (per-triangle patch and corner uvs), so
+// that measureDeviation and measureSurfaceDistance see it exactly as they see Tessera's.
+Tessellation readTriangulation(const OcctModel& model) {
+  Tessellation t;
+  for (TopExp_Explorer e(model.shape, TopAbs_FACE); e.More(); e.Next()) {
+    const TopoDS_Face& face = TopoDS::Face(e.Current());
+    TopLoc_Location loc;
+    Handle(Poly_Triangulation) tri = BRep_Tool::Triangulation(face, loc);
+    if (tri.IsNull() || !tri->HasUVNodes()) throw std::runtime_error("OCCT: face without mesh");
+    auto found = model.patchOf.find(BRep_Tool::Surface(face).get());
+    if (found == model.patchOf.end()) throw std::runtime_error("OCCT: face of unknown surface");
+    const uint32_t base = uint32_t(t.mesh.positions.size());
+    const gp_Trsf trsf = loc.Transformation();
+    for (int i = 1; i <= tri->NbNodes(); ++i) {
+      gp_Pnt p = tri->Node(i).Transformed(trsf);
+      t.mesh.positions.emplace_back(float(p.X()), float(p.Y()), float(p.Z()));
+    }
+    for (int k = 1; k <= tri->NbTriangles(); ++k) {
+      int n[3];
+      tri->Triangle(k).Get(n[0], n[1], n[2]);
+      for (int c = 0; c < 3; ++c) {
+        t.mesh.indices.push_back(base + uint32_t(n[c] - 1));
+        gp_Pnt2d uv = tri->UVNode(n[c]);
+        t.cornerUv.emplace_back(float(uv.X()), float(uv.Y()));
+      }
+      t.trianglePatch.push_back(found->second);
+    }
+  }
+  return t;
+}
+
+struct Measured {
+  size_t triangles = 0;
+  double surfaceMax = 0, parametricMax = 0;
+};
+
+Measured measure(const Tessellation& t, const std::vector<BezierPatch>& patches) {
+  return {t.mesh.triangleCount(), measureSurfaceDistance(t, patches).maxDeviation,
+          measureDeviation(t, patches).maxDeviation};
+}
+
+nlohmann::json toJson(const Measured& m) {
+  return {{"triangles", m.triangles},
+          {"maxDistanceToSurface", m.surfaceMax},
+          {"maxParametricDeviation", m.parametricMax}};
+}
+
+// The largest threshold (linearity = flatness) whose mesh is within `target` by distance to
+// the surface: bisection in log space between thresholds that pass and fail.
+QuadtreeOptions matchDeviation(const std::vector<BezierPatch>& patches, SplitRule rule,
+                               double target, Backend& backend) {
+  QuadtreeOptions o;
+  o.rule = rule;
+  auto within = [&](double threshold) {
+    o.linearity = o.flatness = float(threshold);
+    Tessellation t = tessellate(patches, o, backend);
+    double d = measureSurfaceDistance(t, patches).maxDeviation;
+    std::fprintf(stderr, "  rule %c threshold %.3g: %zu triangles, distance %.3g (target %.3g)\n",
+                 splitRuleLetter(rule), threshold, t.mesh.triangleCount(), d, target);
+    return d <= target;
+  };
+  // Thresholds are 1 − cos of angles; the deviation is not monotone in them (a level more or
+  // less on some patch), so the best threshold that passed is kept, not the bracket's end.
+  double pass = 1e-3, fail = 0.3, best = 0;
+  for (int step = 0; step < 8; ++step) {
+    double mid = std::sqrt(pass * fail);
+    if (within(mid)) {
+      pass = best = mid;
+    } else {
+      fail = mid;
+    }
+  }
+  if (best == 0) best = pass;  // none passed: the lower end, reported with what it measures
+  o.linearity = o.flatness = float(best);
+  return o;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bench::Report report("bench_occt", argc, argv);
+  std::vector<double> deflections = {0.01, 0.001};
+  if (argc > 1) {
+    deflections.clear();
+    std::stringstream list(argv[1]);
+    for (std::string item; std::getline(list, item, ',');) deflections.push_back(std::stod(item));
+  }
+  std::vector<SplitRule> rules = {SplitRule::Midpoint};
+  if (argc > 2) {
+    rules.clear();
+    for (const char* r = argv[2]; *r; ++r)
+      if (*r != ',') rules.push_back(parseSplitRule(std::string(1, *r)));
+  }
+  std::vector<BezierPatch> patches;
+  std::vector<size_t> parts;
+  for (const char* name : {"teapot", "teacup", "teaspoon"}) {
+    auto model = readBpt(std::string(TESSERA_BENCH_DATA "/") + name + ".bpt");
+    // Side by side, 10 units apart, so no face of one touches another's.
+    for (auto& p : model) {
+      for (auto& c : p.cp) c.x += 10.0 * double(parts.size());
+      patches.push_back(p);
+    }
+    parts.push_back(model.size());
+  }
+  vk::ContextOptions options;
+  vk::Context context(options);
+  report.setDevice(context);
+  report.note("occtVersion", OCC_VERSION_COMPLETE);
+  report.note("patches", patches.size());
+  Backend vulkan = makeVulkanBackend(context);
+  Backend cpu = makeCpuBackend();
+
+  for (double deflection : deflections) {
+    OcctModel model = buildShells(patches, parts);
+    Tessellation occtMesh;
+    bench::Timing occtTime[2];
+    for (int parallel = 0; parallel < 2; ++parallel) {
+      std::vector<double> seconds;
+      for (int run = 0; run <= bench::kMinRuns; ++run) {  // run 0 warms up
+        BRepTools::Clean(model.shape);
+        auto start = std::chrono::steady_clock::now();
+        BRepMesh_IncrementalMesh mesher(model.shape, deflection, Standard_False, 0.5,
+                                        parallel ? Standard_True : Standard_False);
+        if (run > 0) seconds.push_back(bench::secondsSince(start));
+      }
+      std::sort(seconds.begin(), seconds.end());
+      occtTime[parallel] = {seconds.front(), seconds[seconds.size() / 2], int(seconds.size())};
+    }
+    occtMesh = readTriangulation(model);
+    Measured occt = measure(occtMesh, patches);
+    std::fprintf(stderr, "OCCT %g: %.3f s serial, %.3f s parallel, %zu triangles, distance %.3g\n",
+                 deflection, occtTime[0].minSeconds, occtTime[1].minSeconds, occt.triangles,
+                 occt.surfaceMax);
+
+    char title[240];
+    std::snprintf(title, sizeof title,
+                  "tea set (%zu patches), OCCT deflection %g (angular 0.5): %zu triangles, max "
+                  "distance to surface %.3g, parametric %.3g; Tessera matched on distance to "
+                  "surface",
+                  patches.size(), deflection, occt.triangles, occt.surfaceMax, occt.parametricMax);
+    char name[64];
+    std::snprintf(name, sizeof name, "OCCT %g", deflection);
+    bench::Table& table = report.table(name, "triangles", title);
+    table.rateUnit = "meshes/s";  // the ratio is then the speed-up over OCCT serial
+    const char* modes[2] = {"OCCT BRepMesh, serial", "OCCT BRepMesh, parallel (all cores)"};
+    for (int parallel = 0; parallel < 2; ++parallel) {
+      bench::Case c{modes[parallel], double(occt.triangles), occtTime[parallel]};
+      c.throughput = 1.0 / occtTime[parallel].minSeconds;  // meshes per second
+      c.extra = toJson(occt);
+      table.cases.push_back(c);
+    }
+    for (SplitRule rule : rules) {
+      QuadtreeOptions o = matchDeviation(patches, rule, occt.surfaceMax, vulkan);
+      for (Backend* backend : {&vulkan, &cpu}) {
+        Tessellation t;
+        bench::Case c{std::string("Tessera rule ") + splitRuleLetter(rule) + ", " +
+                          (backend == &vulkan ? "Vulkan" : "CPU all cores"),
+                      0};
+        c.timing = bench::timeRepeated(bench::kMinRuns, [&] { t = tessellate(patches, o, *backend); });
+        Measured m = measure(t, patches);
+        c.workSize = double(m.triangles);
+        c.throughput = 1.0 / c.timing.minSeconds;
+        c.extra = toJson(m);
+        c.extra["threshold"] = o.flatness;
+        c.extra["fewerTrianglesThanOcct"] = m.triangles < occt.triangles;
+        c.extra["speedupVsOcctParallel"] = occtTime[1].minSeconds / c.timing.minSeconds;
+        table.cases.push_back(c);
+      }
+    }
+    report.print(table);
+    std::printf("\n| mesh | triangles | max distance to surface | max parametric deviation |\n"
+                "|---|---|---|---|\n");
+    for (const bench::Case& c : table.cases)
+      std::printf("| %s | %.0f | %.3g | %.3g |\n", c.path.c_str(), c.workSize,
+                  c.extra["maxDistanceToSurface"].get<double>(),
+                  c.extra["maxParametricDeviation"].get<double>());
+  }
+  report.finish();
+  return 0;
+}

@@ -1,0 +1,25 @@
+#include "mirror/grid_mirror.h"
+
+#include "mirror/glsl_builtins.h"
+
+namespace tessera::mirror {
+namespace glsl {
+namespace {  // each mirror translation unit gets its own copy of the shared functions
+#include "shaders/lib/shared_glsl_cpp.h"
+#include "shaders/lib/bicubic_eval.h"
+#include "shaders/lib/grid_eval.h"
+}  // namespace
+}  // namespace glsl
+
+void evalGridRow(const gpu::BicubicPatch& patch, uint32_t row, uint32_t pointsPerSide, float eps,
+                 gpu::GridVertex* out) {
+  // The shader's main(), line for line.
+  float scale = glsl::bicubicScale(patch);
+  float tol = eps * scale * scale;
+  float u = glsl::gridParam(row, pointsPerSide);
+  glsl::GridRow r = glsl::gridRow(patch, u);
+  for (uint32_t j = 0; j < pointsPerSide; ++j)
+    out[j] = glsl::gridVertex(patch, r, u, glsl::gridParam(j, pointsPerSide), tol);
+}
+
+}  // namespace tessera::mirror
