@@ -6,6 +6,7 @@
 #include <string>
 
 #include "bernstein.h"
+#include "rational.h"
 
 namespace tessera {
 
@@ -26,6 +27,9 @@ void checkCurve(const BezierCurve& c, const char* where) {
 }
 
 void checkPatch(const BezierPatch& p, const char* where) {
+  if (!p.weights.empty())
+    throw std::invalid_argument(std::string(where) +
+                                ": the patch has weights; it is a rational patch (rational.h)");
   if (p.degreeU < 1 || p.degreeU > kMaxDegree || p.degreeV < 1 || p.degreeV > kMaxDegree)
     throw std::invalid_argument(std::string(where) + ": patch degree (" +
                                 std::to_string(p.degreeU) + ", " + std::to_string(p.degreeV) +
@@ -120,6 +124,7 @@ BezierCurve subCurve(const BezierCurve& curve, double t0, double t1) {
 }
 
 glm::dvec3 patchPoint(const BezierPatch& patch, double u, double v) {
+  if (!patch.weights.empty()) return rationalPatchPoint(toRationalPatch(patch), u, v);
   checkPatch(patch, "patchPoint");
   const BernsteinTriangle bu = bernsteinTriangle(patch.degreeU, u);
   const BernsteinTriangle bv = bernsteinTriangle(patch.degreeV, v);
@@ -127,6 +132,7 @@ glm::dvec3 patchPoint(const BezierPatch& patch, double u, double v) {
 }
 
 SurfaceDerivatives patchDerivatives(const BezierPatch& patch, double u, double v) {
+  if (!patch.weights.empty()) return rationalPatchDerivatives(toRationalPatch(patch), u, v);
   checkPatch(patch, "patchDerivatives");
   const BernsteinTriangle bu = bernsteinTriangle(patch.degreeU, u);
   const BernsteinTriangle bv = bernsteinTriangle(patch.degreeV, v);

@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "rational.h"
+
 namespace tessera {
 
 namespace {
@@ -86,6 +88,7 @@ SurfaceDerivatives bicubicDerivatives(const BezierPatch& patch, double u, double
         "points, got degree (" +
         std::to_string(patch.degreeU) + ", " + std::to_string(patch.degreeV) + ") with " +
         std::to_string(patch.cp.size()));
+  if (!patch.weights.empty()) return rationalPatchDerivatives(toRationalPatch(patch), u, v);
   return bicubicFromNet(patch.cp.data(), u, v);
 }
 

@@ -1,13 +1,16 @@
 // The double-precision reference backend of NodeClassifier: the algorithm of
 // shaders/lib/quadtree_classify.h (same samples, same Newton steps, same tests), written
-// again on the independent double kernel (bicubic.h, surface_normal.h, curvature.h), so that
-// it checks the shared fp32 text rather than repeating it.
+// again on the independent double kernel (bicubic.h, bezier.h, rational.h, surface_normal.h,
+// curvature.h), so that it checks the shared fp32 text rather than repeating it. Bicubic and
+// general patches (any degree, rational) alike.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 
+#include "bezier.h"
 #include "bicubic.h"
 #include "curvature.h"
+#include "rational.h"
 #include "quadtree.h"
 #include "surface_normal.h"
 
@@ -24,10 +27,36 @@ struct Frame {
   double kappa;
 };
 
+// One patch as the double kernel evaluates it, built from the fp32 values the GPU sees.
 struct PatchContext {
+  enum Kind { kBicubic, kPolynomial, kRational } kind = kBicubic;
   BicubicNet net;
-  double scale;
+  BezierPatch polynomial;
+  RationalBezierPatch rational;
+  double scale = 0;
+
+  SurfaceDerivatives derivs(double u, double v) const {
+    if (kind == kBicubic) return bicubicDerivatives(net, u, v);
+    if (kind == kPolynomial) return patchDerivatives(polynomial, u, v);
+    return rationalPatchDerivatives(rational, u, v);
+  }
 };
+
+PatchContext generalContext(const GeneralPatchSet& set, size_t index) {
+  const gpu::GeneralPatch& g = set.patches[index];
+  PatchContext c;
+  c.kind = g.rational ? PatchContext::kRational : PatchContext::kPolynomial;
+  const size_t count = size_t(g.degreeU + 1) * size_t(g.degreeV + 1);
+  c.polynomial.degreeU = c.rational.degreeU = int(g.degreeU);
+  c.polynomial.degreeV = c.rational.degreeV = int(g.degreeV);
+  for (size_t k = 0; k < count; ++k) {
+    const glm::dvec4 h(set.points.at(g.firstPoint + k));
+    c.polynomial.cp.push_back(dvec3(h));
+    c.rational.cpw.push_back(h);
+  }
+  c.scale = g.rational ? controlNetDiagonal(c.rational) : controlNetDiagonal(c.polynomial);
+  return c;
+}
 
 dvec3 unitOrZero(const dvec3& v, double tol) {
   double len = glm::length(v);
@@ -35,7 +64,7 @@ dvec3 unitOrZero(const dvec3& v, double tol) {
 }
 
 Frame frameAt(const PatchContext& p, double u, double v) {
-  SurfaceDerivatives d = bicubicDerivatives(p.net, u, v);
+  SurfaceDerivatives d = p.derivs(u, v);
   Frame f;
   f.tu = unitOrZero(d.pu, kEps * p.scale);
   f.tv = unitOrZero(d.pv, kEps * p.scale);
@@ -45,7 +74,7 @@ Frame frameAt(const PatchContext& p, double u, double v) {
 }
 
 double kappaAt(const PatchContext& p, double u, double v) {
-  return surfaceCurvature(bicubicDerivatives(p.net, u, v), p.scale, kEps).kappa;
+  return surfaceCurvature(p.derivs(u, v), p.scale, kEps).kappa;
 }
 
 double angleTest(const dvec3& a, const dvec3& b) {
@@ -201,7 +230,7 @@ class ReferenceClassifier final : public NodeClassifier {
   std::string name() const override { return "cpu-double"; }
 
   void beginTree(const std::vector<gpu::BicubicPatch>& patches) override {
-    contexts_.resize(patches.size());
+    contexts_.assign(patches.size(), PatchContext());
     for (size_t i = 0; i < patches.size(); ++i) {
       BezierPatch bp;
       bp.cp.resize(16);
@@ -213,10 +242,28 @@ class ReferenceClassifier final : public NodeClassifier {
     }
   }
 
+  void beginGeneralTree(const GeneralPatchSet& patches) override {
+    contexts_.clear();
+    for (size_t i = 0; i < patches.size(); ++i) contexts_.push_back(generalContext(patches, i));
+  }
+
   void classify(const std::vector<gpu::BicubicPatch>& patches,
                 const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
                 std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) override {
-    if (contexts_.size() != patches.size())
+    run(patches.size(), nodes, options, decisions, stats);
+  }
+
+  void classifyGeneral(const GeneralPatchSet& patches, const std::vector<gpu::QuadNode>& nodes,
+                       const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
+                       LevelStats& stats) override {
+    run(patches.size(), nodes, options, decisions, stats);
+  }
+
+ private:
+  void run(size_t patchCount, const std::vector<gpu::QuadNode>& nodes,
+           const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
+           LevelStats& stats) {
+    if (contexts_.size() != patchCount)
       throw std::logic_error("ReferenceClassifier: classify() without beginTree()");
     auto start = std::chrono::steady_clock::now();
     decisions.resize(nodes.size());
@@ -227,7 +274,6 @@ class ReferenceClassifier final : public NodeClassifier {
             .count();
   }
 
- private:
   std::vector<PatchContext> contexts_;
 };
 

@@ -3,19 +3,31 @@
 #include <chrono>
 #include <thread>
 
+#include "mirror/general_mirror.h"
 #include "mirror/quadtree_mirror.h"
 #include "quadtree.h"
 
 namespace tessera {
 namespace {
 
-void classifyRange(const std::vector<gpu::BicubicPatch>& patches,
-                   const std::vector<gpu::QuadNode>& nodes, uint32_t rule, int samples,
-                   const gpu::ClassifyPush& params, std::vector<gpu::NodeDecision>& decisions,
-                   size_t begin, size_t end) {
+gpu::NodeDecision classifyOne(const std::vector<gpu::BicubicPatch>& patches,
+                              const gpu::QuadNode& node, uint32_t rule, int samples,
+                              const gpu::ClassifyPush& params) {
+  return mirror::classifyNode(patches[node.patchIndex], node, rule, samples, params);
+}
+
+gpu::NodeDecision classifyOne(const GeneralPatchSet& patches, const gpu::QuadNode& node,
+                              uint32_t rule, int samples, const gpu::ClassifyPush& params) {
+  return mirror::classifyGeneralNode(patches.patches[node.patchIndex], patches.points.data(),
+                                     node, rule, samples, params);
+}
+
+template <class Patches>
+void classifyRange(const Patches& patches, const std::vector<gpu::QuadNode>& nodes,
+                   uint32_t rule, int samples, const gpu::ClassifyPush& params,
+                   std::vector<gpu::NodeDecision>& decisions, size_t begin, size_t end) {
   for (size_t i = begin; i < end; ++i)
-    decisions[i] =
-        mirror::classifyNode(patches[nodes[i].patchIndex], nodes[i], rule, samples, params);
+    decisions[i] = classifyOne(patches, nodes[i], rule, samples, params);
 }
 
 class MirrorClassifier final : public NodeClassifier {
@@ -29,6 +41,20 @@ class MirrorClassifier final : public NodeClassifier {
   void classify(const std::vector<gpu::BicubicPatch>& patches,
                 const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
                 std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) override {
+    run(patches, nodes, options, decisions, stats);
+  }
+
+  void classifyGeneral(const GeneralPatchSet& patches, const std::vector<gpu::QuadNode>& nodes,
+                       const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
+                       LevelStats& stats) override {
+    run(patches, nodes, options, decisions, stats);
+  }
+
+ private:
+  template <class Patches>
+  void run(const Patches& patches, const std::vector<gpu::QuadNode>& nodes,
+           const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
+           LevelStats& stats) {
     auto start = std::chrono::steady_clock::now();
     decisions.resize(nodes.size());
     gpu::ClassifyPush params = classifyParams(options, uint32_t(nodes.size()));
@@ -41,7 +67,7 @@ class MirrorClassifier final : public NodeClassifier {
       size_t chunk = (nodes.size() + workers - 1) / workers;
       for (size_t w = 0; w < workers; ++w) {
         size_t begin = w * chunk, end = std::min(nodes.size(), begin + chunk);
-        pool.emplace_back(classifyRange, std::cref(patches), std::cref(nodes), rule,
+        pool.emplace_back(classifyRange<Patches>, std::cref(patches), std::cref(nodes), rule,
                           options.samples, std::cref(params), std::ref(decisions), begin, end);
       }
       for (auto& t : pool) t.join();
@@ -51,7 +77,6 @@ class MirrorClassifier final : public NodeClassifier {
             .count();
   }
 
- private:
   unsigned threads_;
 };
 

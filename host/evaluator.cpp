@@ -4,6 +4,7 @@
 #include <string>
 
 #include "mirror/bicubic_mirror.h"
+#include "mirror/general_mirror.h"
 
 namespace tessera {
 
@@ -44,6 +45,18 @@ class MirrorEvaluator final : public PatchEvaluator {
     for (size_t i = 0; i < queries.size(); ++i) {
       const gpu::EvalQuery& q = queries[i];
       out[i] = mirror::evalBicubicSample(patches[q.patchIndex], q.u, q.v, kDegenerateEpsFp32);
+    }
+    return out;
+  }
+
+  std::vector<gpu::EvalSample> evaluateGeneral(const GeneralPatchSet& patches,
+                                               const std::vector<gpu::EvalQuery>& queries) override {
+    checkQueries(patches.size(), queries);
+    std::vector<gpu::EvalSample> out(queries.size());
+    for (size_t i = 0; i < queries.size(); ++i) {
+      const gpu::EvalQuery& q = queries[i];
+      out[i] = mirror::evalGeneralSample(patches.patches[q.patchIndex], patches.points.data(),
+                                         q.u, q.v, kDegenerateEpsFp32);
     }
     return out;
   }

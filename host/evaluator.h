@@ -1,12 +1,13 @@
-// Point evaluation of bicubic patches behind one interface, so tests and tools can swap the
-// backend (as OpenSubdiv's Osd evaluators do): the fp32 mirror (CPU, bit-exact twin of the
-// shader on lavapipe) and Vulkan. The double-precision kernel (bezier.h, surface_normal.h,
+// Point evaluation of patches (bicubic, and general ones: general_patch.h) behind one
+// interface, so tests and tools can swap the backend (as OpenSubdiv's Osd evaluators do):
+// the fp32 mirror (CPU, bit-exact twin of the shader on lavapipe) and Vulkan. The double-precision kernel (bezier.h, surface_normal.h,
 // curvature.h) is the accuracy reference and is used directly.
 #pragma once
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "general_patch.h"
 #include "patch.h"
 #include "shaders/layout.h"
 
@@ -25,6 +26,9 @@ class PatchEvaluator {
   // One sample per query, in query order. Query patch indices must be < patches.size().
   virtual std::vector<gpu::EvalSample> evaluate(const std::vector<gpu::BicubicPatch>& patches,
                                                 const std::vector<gpu::EvalQuery>& queries) = 0;
+  // The same for general patches (degree 1..7, polynomial or rational; general_patch.h).
+  virtual std::vector<gpu::EvalSample> evaluateGeneral(
+      const GeneralPatchSet& patches, const std::vector<gpu::EvalQuery>& queries) = 0;
 };
 
 std::unique_ptr<PatchEvaluator> makeMirrorEvaluator();

@@ -93,8 +93,25 @@ gpu::ClassifyPush classifyParams(const QuadtreeOptions& o, uint32_t nodeCount) {
   return {o.linearity, o.flatness, o.minSize, kDegenerateEpsFp32, o.maxDepth, nodeCount, 0, 0};
 }
 
-QuadtreeResult buildQuadtree(const std::vector<gpu::BicubicPatch>& patches,
-                             const QuadtreeOptions& options, NodeClassifier& classifier) {
+namespace {
+
+// The classifier's entry points for each patch representation.
+void beginTree(NodeClassifier& c, const std::vector<gpu::BicubicPatch>& p) { c.beginTree(p); }
+void beginTree(NodeClassifier& c, const GeneralPatchSet& p) { c.beginGeneralTree(p); }
+void classifyLevel(NodeClassifier& c, const std::vector<gpu::BicubicPatch>& p,
+                   const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& o,
+                   std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) {
+  c.classify(p, nodes, o, decisions, stats);
+}
+void classifyLevel(NodeClassifier& c, const GeneralPatchSet& p,
+                   const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& o,
+                   std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) {
+  c.classifyGeneral(p, nodes, o, decisions, stats);
+}
+
+template <class Patches>
+QuadtreeResult buildTree(const Patches& patches, const QuadtreeOptions& options,
+                         NodeClassifier& classifier) {
   validateOptions(options);
   if (options.rule == SplitRule::UniformGrid) return uniformGrid(patches.size(), options);
 
@@ -110,7 +127,7 @@ QuadtreeResult buildQuadtree(const std::vector<gpu::BicubicPatch>& patches,
     throw TessellationLimitError(std::to_string(total) + " patches exceed the node budget of " +
                                  std::to_string(options.nodeBudget));
 
-  classifier.beginTree(patches);
+  beginTree(classifier, patches);
   std::vector<gpu::NodeDecision> decisions;
   std::vector<gpu::QuadNode> next;
   std::vector<uint64_t> nextPaths;
@@ -118,7 +135,7 @@ QuadtreeResult buildQuadtree(const std::vector<gpu::BicubicPatch>& patches,
     LevelStats stats;
     stats.level = level;
     stats.nodes = nodes.size();
-    classifier.classify(patches, nodes, options, decisions, stats);
+    classifyLevel(classifier, patches, nodes, options, decisions, stats);
 
     auto start = std::chrono::steady_clock::now();
     next.clear();
@@ -159,6 +176,18 @@ QuadtreeResult buildQuadtree(const std::vector<gpu::BicubicPatch>& patches,
     paths.swap(nextPaths);
   }
   return result;
+}
+
+}  // namespace
+
+QuadtreeResult buildQuadtree(const std::vector<gpu::BicubicPatch>& patches,
+                             const QuadtreeOptions& options, NodeClassifier& classifier) {
+  return buildTree(patches, options, classifier);
+}
+
+QuadtreeResult buildQuadtree(const GeneralPatchSet& patches, const QuadtreeOptions& options,
+                             NodeClassifier& classifier) {
+  return buildTree(patches, options, classifier);
 }
 
 }  // namespace tessera

@@ -25,6 +25,12 @@ struct BezierPatch {
   int degreeU = 3;
   int degreeV = 3;
   std::vector<glm::dvec3> cp;
+  // Empty: a polynomial patch. Otherwise one weight per control point (same order) and the
+  // patch is the rational Σ B w b / Σ B w of the affine points cp: what scenes and the
+  // tessellator carry (general_patch.h). patchPoint, patchDerivatives and
+  // bicubicDerivatives evaluate it as rational (rational.h); the other polynomial functions
+  // (subdivision, degree elevation, ...) refuse it.
+  std::vector<double> weights;
 
   const glm::dvec3& at(int i, int j) const { return cp[i * (degreeV + 1) + j]; }
   glm::dvec3& at(int i, int j) { return cp[i * (degreeV + 1) + j]; }

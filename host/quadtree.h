@@ -1,4 +1,5 @@
-// Adaptive quad-tree tessellation of bicubic Bézier patches (Moriyama & Harada).
+// Adaptive quad-tree tessellation of Bézier patches (Moriyama & Harada): bicubic ones on a
+// fast path, general ones (degree 1..7, rational) through the same algorithm.
 // The CPU owns the frontier: each level's nodes go to a NodeClassifier (GPU or CPU) in one
 // batch; the decisions come back; leaves are emitted and the children of split nodes form the
 // next level. Split rules: A uniform N×M grid, B midpoint, C sampled κ maximum, D true κ
@@ -11,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "general_patch.h"
 #include "shaders/layout.h"
 
 namespace tessera {
@@ -82,6 +84,12 @@ class NodeClassifier {
   virtual void classify(const std::vector<gpu::BicubicPatch>& patches,
                         const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
                         std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) = 0;
+  // The same for general patches (degree 1..7, polynomial or rational; general_patch.h).
+  virtual void beginGeneralTree(const GeneralPatchSet& patches) { (void)patches; }
+  virtual void classifyGeneral(const GeneralPatchSet& patches,
+                               const std::vector<gpu::QuadNode>& nodes,
+                               const QuadtreeOptions& options,
+                               std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) = 0;
 };
 
 std::unique_ptr<NodeClassifier> makeMirrorClassifier();            // fp32, shader's twin
@@ -91,6 +99,8 @@ std::unique_ptr<NodeClassifier> makeVulkanClassifier(vk::Context& context);
 
 QuadtreeResult buildQuadtree(const std::vector<gpu::BicubicPatch>& patches,
                              const QuadtreeOptions& options, NodeClassifier& classifier);
+QuadtreeResult buildQuadtree(const GeneralPatchSet& patches, const QuadtreeOptions& options,
+                             NodeClassifier& classifier);
 
 // The push-constant block for `options` (shared by every backend).
 gpu::ClassifyPush classifyParams(const QuadtreeOptions& options, uint32_t nodeCount);

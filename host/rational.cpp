@@ -113,6 +113,18 @@ glm::dvec3 rationalCurveDerivative(const RationalBezierCurve& curve, double t, i
   return curveDerivatives(curve, t, order, "rationalCurveDerivative").back();
 }
 
+RationalBezierPatch toRationalPatch(const BezierPatch& patch) {
+  RationalBezierPatch r;
+  r.degreeU = patch.degreeU;
+  r.degreeV = patch.degreeV;
+  r.cpw.reserve(patch.cp.size());
+  for (size_t k = 0; k < patch.cp.size(); ++k) {
+    const double w = patch.weights.empty() ? 1.0 : patch.weights.at(k);
+    r.cpw.push_back(glm::dvec4(patch.cp[k] * w, w));
+  }
+  return r;
+}
+
 glm::dvec3 rationalPatchPoint(const RationalBezierPatch& patch, double u, double v) {
   checkPatch(patch, "rationalPatchPoint");
   const BernsteinTriangle bu = bernsteinTriangle(patch.degreeU, u);

@@ -16,6 +16,9 @@ glm::dvec3 rationalCurvePoint(const RationalBezierCurve& curve, double t);
 // d^order/dt^order of the projected curve; order 0 is the point.
 glm::dvec3 rationalCurveDerivative(const RationalBezierCurve& curve, double t, int order);
 
+// The homogeneous form (w·b, w) of a BezierPatch; weights 1 when it has none.
+RationalBezierPatch toRationalPatch(const BezierPatch& patch);
+
 glm::dvec3 rationalPatchPoint(const RationalBezierPatch& patch, double u, double v);
 // Position and all partials up to third order of the projected surface.
 SurfaceDerivatives rationalPatchDerivatives(const RationalBezierPatch& patch, double u, double v);

@@ -1,18 +1,22 @@
 #include "scene_convert.h"
 
+#include <stdexcept>
 #include <string>
 
 #include "bezier.h"
 #include "bspline.h"
 #include "bspline_to_bezier.h"
 #include "degree_elevation.h"
+#include "general_patch.h"
 #include "io/errors.h"
+#include "rational.h"
 
 namespace tessera {
 namespace {
 
-constexpr int kTessellatorDegree = 3;
-const char* const kLimitation = "the tessellator takes polynomial patches up to bicubic for now";
+// Polynomial patches up to this degree are elevated to it, exactly, so that they take the
+// bicubic fast path; higher degrees stay as they are (the general path takes them).
+constexpr int kBicubic = 3;
 
 // The surfaces of a scene built in code, in the documented default order.
 std::vector<SceneSurfaceRef> defaultOrder(const Scene& scene) {
@@ -41,17 +45,15 @@ class Converter {
                               (ref.name.empty() ? "" : " (\"" + ref.name + "\")");
     switch (ref.type) {
       case SceneSurfaceType::Bezier:
-        addPolynomial(scene_.bezier.at(ref.index), ref, where);
+        addPolynomial(scene_.bezier.at(ref.index));
         break;
       case SceneSurfaceType::Rational:
-        addPolynomial(polynomialOf(scene_.rational.at(ref.index), ref, where), ref, where);
+        addRational(scene_.rational.at(ref.index), ref, where);
         break;
       case SceneSurfaceType::BSpline: {
         const BSplineSurface& spline = scene_.bsplines.at(ref.index);
-        checkDegree(spline.degreeU, spline.degreeV, ref, where);
         validateSurface(spline);
-        for (const BezierPatchPiece& piece : bezierPatches(spline))
-          addPolynomial(piece.patch, ref, where);
+        for (const BezierPatchPiece& piece : bezierPatches(spline)) addPolynomial(piece.patch);
         break;
       }
     }
@@ -60,38 +62,41 @@ class Converter {
   std::vector<BezierPatch> patches;
 
  private:
-  void checkDegree(int degreeU, int degreeV, const SceneSurfaceRef& ref,
-                   const std::string& where) const {
-    if (degreeU > kTessellatorDegree || degreeV > kTessellatorDegree)
-      throw InputError(InputErrorKind::Degree, source_, ref.degreeLine ? ref.degreeLine : ref.line,
-                       std::string(kLimitation) + " (degree " + std::to_string(degreeU) + "×" +
-                           std::to_string(degreeV) + " at " + where + ")");
-  }
-
-  void addPolynomial(const BezierPatch& patch, const SceneSurfaceRef& ref,
-                     const std::string& where) {
+  void addPolynomial(const BezierPatch& patch) {
     validatePatch(patch);
-    checkDegree(patch.degreeU, patch.degreeV, ref, where);
-    patches.push_back(elevateDegreeTo(patch, kTessellatorDegree, kTessellatorDegree));
+    patches.push_back(patch.degreeU <= kBicubic && patch.degreeV <= kBicubic
+                          ? elevateDegreeTo(patch, kBicubic, kBicubic)
+                          : patch);
   }
 
-  // With every weight equal to w the quotient Σ B w b / Σ B w is Σ B b: a polynomial patch.
-  BezierPatch polynomialOf(const RationalBezierPatch& rational, const SceneSurfaceRef& ref,
-                           const std::string& where) const {
+  // With every weight equal to w the quotient Σ B w b / Σ B w is Σ B b: a polynomial patch,
+  // converted exactly. Otherwise the affine points b = (w·b)/w with their weights; a point of
+  // weight 0 has no position (it drops out of the surface) and is kept as the origin.
+  void addRational(const RationalBezierPatch& rational, const SceneSurfaceRef& ref,
+                   const std::string& where) {
+    validateRationalPatch(rational);
     BezierPatch patch;
     patch.degreeU = rational.degreeU;
     patch.degreeV = rational.degreeV;
-    const double w = rational.cpw.empty() ? 0.0 : rational.cpw.front().w;
-    for (const glm::dvec4& p : rational.cpw) {
-      if (p.w != w || !(w > 0.0))
-        throw InputError(InputErrorKind::Weight, source_,
-                         ref.weightsLine ? ref.weightsLine : ref.line,
-                         std::string(kLimitation) + " (rational weights at " + where +
-                             "; only equal weights, which make the patch polynomial, are "
-                             "accepted)");
-      patch.cp.push_back(glm::dvec3(p) / w);
+    const double w0 = rational.cpw.front().w;
+    bool equal = true;
+    for (const glm::dvec4& h : rational.cpw) {
+      patch.cp.push_back(h.w > 0.0 ? glm::dvec3(h) / h.w : glm::dvec3(0.0));
+      patch.weights.push_back(h.w);
+      equal = equal && h.w == w0;
     }
-    return patch;
+    if (equal) {
+      patch.weights.clear();
+      addPolynomial(patch);
+      return;
+    }
+    try {  // the reader checks weights; a scene built in code may not have
+      validateTessellationPatch(patch, where);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(InputErrorKind::Weight, source_, ref.weightsLine ? ref.weightsLine : ref.line,
+                       e.what());
+    }
+    patches.push_back(patch);
   }
 
   const Scene& scene_;
@@ -100,7 +105,7 @@ class Converter {
 
 }  // namespace
 
-std::vector<BezierPatch> sceneToBicubicPatches(const Scene& scene) {
+std::vector<BezierPatch> sceneToPatches(const Scene& scene) {
   const std::vector<SceneSurfaceRef> order = scene.order.empty() ? defaultOrder(scene) : scene.order;
   Converter converter(scene);
   for (size_t k = 0; k < order.size(); ++k) converter.add(order[k], k + 1);

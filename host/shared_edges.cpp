@@ -9,16 +9,31 @@ namespace {
 
 using CurveKey = std::vector<uint64_t>;  // the bits of every coordinate, in order
 
-CurveKey keyOf(const std::vector<glm::dvec3>& points) {
+// Points with their weights (1 on a polynomial patch, so a polynomial side and a rational
+// side with unit weights there are the same curve). Equal points with other weights are a
+// different curve (the same curve reparametrised, or another one): never shared.
+CurveKey keyOf(const std::vector<glm::dvec4>& points) {
   CurveKey key;
-  for (const glm::dvec3& p : points)
-    for (int c = 0; c < 3; ++c) {
+  for (const glm::dvec4& p : points)
+    for (int c = 0; c < 4; ++c) {
       double x = p[c] == 0.0 ? 0.0 : p[c];  // -0 and +0 are the same point
       uint64_t b;
       std::memcpy(&b, &x, sizeof b);
       key.push_back(b);
     }
   return key;
+}
+
+// Side `side`'s control points as (x, y, z, weight), in increasing t.
+std::vector<glm::dvec4> sideWeightedPoints(const BezierPatch& patch, int side) {
+  BezierPatch weights = patch;  // the weights laid out as a control net, to reuse the walk
+  for (size_t k = 0; k < weights.cp.size(); ++k)
+    weights.cp[k] = glm::dvec3(patch.weights.empty() ? 1.0 : patch.weights[k]);
+  std::vector<glm::dvec3> points = sideControlPoints(patch, side);
+  std::vector<glm::dvec3> w = sideControlPoints(weights, side);
+  std::vector<glm::dvec4> out;
+  for (size_t k = 0; k < points.size(); ++k) out.push_back(glm::dvec4(points[k], w[k].x));
+  return out;
 }
 
 }  // namespace
@@ -52,9 +67,10 @@ PatchTopology findSharedEdges(const std::vector<BezierPatch>& patches) {
         ++topology.collapsedSides;
         continue;
       }
-      CurveKey forward = keyOf(points);
-      std::reverse(points.begin(), points.end());
-      CurveKey backward = keyOf(points);
+      std::vector<glm::dvec4> weighted = sideWeightedPoints(patches[p], side);
+      CurveKey forward = keyOf(weighted);
+      std::reverse(weighted.begin(), weighted.end());
+      CurveKey backward = keyOf(weighted);
       bool reversed = backward < forward;  // canonical direction: the smaller key
       curves[reversed ? backward : forward].push_back({p, side, reversed});
     }

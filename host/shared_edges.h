@@ -1,6 +1,7 @@
 // Which patch boundaries are shared. Two boundary curves are the same curve when their
-// control points are equal bit for bit, in the same or in reverse order; a boundary whose
-// control points are all equal is collapsed to a point (the teapot's lid top and bottom).
+// control points and weights (1 on a polynomial patch) are equal bit for bit, in the same or
+// in reverse order; a boundary whose control points are all equal is collapsed to a point
+// (the teapot's lid top and bottom).
 #pragma once
 #include <array>
 #include <cstdint>

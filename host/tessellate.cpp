@@ -1,5 +1,6 @@
 #include "tessellate.h"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -50,25 +51,25 @@ Backend makeVulkanBackend(vk::Context& context) {
 Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeOptions& options,
                         Backend& backend) {
   auto start = std::chrono::steady_clock::now();
-  for (size_t i = 0; i < patches.size(); ++i) {
-    if (patches[i].degreeU != 3 || patches[i].degreeV != 3 || patches[i].cp.size() != 16)
-      throw std::invalid_argument("patch " + std::to_string(i) + " has degree " +
-                                  std::to_string(patches[i].degreeU) + "x" +
-                                  std::to_string(patches[i].degreeV) +
-                                  ": adaptive tessellation takes bicubic patches");
-    // fp32 on the GPU: a coordinate beyond ~1e15 loses all precision, NaN/Inf poison a tree.
-    for (const glm::dvec3& c : patches[i].cp)
-      if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z) ||
-          std::fabs(c.x) > 1e15 || std::fabs(c.y) > 1e15 || std::fabs(c.z) > 1e15)
-        throw std::invalid_argument("patch " + std::to_string(i) +
-                                    " has a control point that is not finite or exceeds 1e15");
-  }
-  std::vector<gpu::BicubicPatch> gpuPatches = toGpuPatches(patches);
-
+  for (size_t i = 0; i < patches.size(); ++i)
+    validateTessellationPatch(patches[i], "patch " + std::to_string(i));
+  // Bicubic polynomial patches take the BicubicPatch shaders; anything else sends the whole
+  // set through the general ones (a bicubic patch is a general patch too).
+  const bool bicubic = std::all_of(patches.begin(), patches.end(), isBicubicPolynomial);
   auto t = std::chrono::steady_clock::now();
-  QuadtreeResult tree = buildQuadtree(gpuPatches, options, *backend.classifier);
-  double treeMs = msSince(t);
-  Tessellation result = meshFromTree(patches, gpuPatches, std::move(tree), *backend.evaluator);
+  Tessellation result;
+  double treeMs = 0;
+  if (bicubic) {
+    std::vector<gpu::BicubicPatch> gpuPatches = toGpuPatches(patches);
+    QuadtreeResult tree = buildQuadtree(gpuPatches, options, *backend.classifier);
+    treeMs = msSince(t);
+    result = meshFromTree(patches, gpuPatches, std::move(tree), *backend.evaluator);
+  } else {
+    GeneralPatchSet gpuPatches = toGeneralPatchSet(patches);
+    QuadtreeResult tree = buildQuadtree(gpuPatches, options, *backend.classifier);
+    treeMs = msSince(t);
+    result = meshFromTree(patches, gpuPatches, std::move(tree), *backend.evaluator);
+  }
   result.stats.treeMs = treeMs;
   result.stats.totalMs = msSince(start);
   return result;
@@ -77,6 +78,21 @@ Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeO
 Tessellation meshFromTree(const std::vector<BezierPatch>& patches,
                           const std::vector<gpu::BicubicPatch>& gpuPatches, QuadtreeResult tree,
                           PatchEvaluator& evaluator) {
+  return meshFromTree(patches, std::move(tree), [&](const std::vector<gpu::EvalQuery>& q) {
+    return evaluator.evaluate(gpuPatches, q);
+  });
+}
+
+Tessellation meshFromTree(const std::vector<BezierPatch>& patches,
+                          const GeneralPatchSet& gpuPatches, QuadtreeResult tree,
+                          PatchEvaluator& evaluator) {
+  return meshFromTree(patches, std::move(tree), [&](const std::vector<gpu::EvalQuery>& q) {
+    return evaluator.evaluateGeneral(gpuPatches, q);
+  });
+}
+
+Tessellation meshFromTree(const std::vector<BezierPatch>& patches, QuadtreeResult tree,
+                          const VertexEvaluation& evaluate) {
   auto start = std::chrono::steady_clock::now();
   Tessellation result;
   result.tree = std::move(tree);
@@ -88,7 +104,7 @@ Tessellation meshFromTree(const std::vector<BezierPatch>& patches,
   std::vector<gpu::EvalQuery> queries(param.vertices.size());
   for (size_t i = 0; i < queries.size(); ++i)
     queries[i] = {param.vertices[i].patchIndex, param.vertices[i].u, param.vertices[i].v, 0};
-  std::vector<gpu::EvalSample> samples = evaluator.evaluate(gpuPatches, queries);
+  std::vector<gpu::EvalSample> samples = evaluate(queries);
   result.stats.evaluateMs = msSince(t);
 
   TriangleMesh& mesh = result.mesh;

@@ -1,6 +1,7 @@
 // The whole job: patches → adaptive quad-tree → triangles → vertices evaluated on the
 // backend → an indexed mesh with positions, normals, (u, v) and patch ids.
 #pragma once
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -40,8 +41,10 @@ struct Tessellation {
   TessellationStats stats;
 };
 
-// Throws std::invalid_argument for a patch the backend cannot take (the GPU path takes
-// bicubic patches), TessellationLimitError when the node budget is exceeded.
+// Takes patches of degree 1..7 each way, polynomial or rational (weights ≥ 0, corner weights
+// > 0): all bicubic polynomial → the BicubicPatch shaders, else the general ones for all.
+// Throws std::invalid_argument naming the patch for one it cannot take
+// (validateTessellationPatch), TessellationLimitError when the node budget is exceeded.
 Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeOptions& options,
                         Backend& backend);
 
@@ -50,5 +53,13 @@ Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeO
 Tessellation meshFromTree(const std::vector<BezierPatch>& patches,
                           const std::vector<gpu::BicubicPatch>& gpuPatches, QuadtreeResult tree,
                           PatchEvaluator& evaluator);
+Tessellation meshFromTree(const std::vector<BezierPatch>& patches,
+                          const GeneralPatchSet& gpuPatches, QuadtreeResult tree,
+                          PatchEvaluator& evaluator);
+// The same with any evaluation of the vertices' (patch, u, v) queries.
+using VertexEvaluation =
+    std::function<std::vector<gpu::EvalSample>(const std::vector<gpu::EvalQuery>&)>;
+Tessellation meshFromTree(const std::vector<BezierPatch>& patches, QuadtreeResult tree,
+                          const VertexEvaluation& evaluate);
 
 }  // namespace tessera

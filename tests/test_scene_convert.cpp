@@ -1,7 +1,7 @@
-// Scenes to bicubic patches (host/scene_convert.h): degree elevation and B-spline pieces give
-// the same surfaces, surfaces stay in file order, the documented limitation (degree above 3,
-// rational weights) is an InputError naming the file, line and surface, and the example
-// scene goes through readSurfaceFile and the CPU backend to a mesh.
+// Scenes to patches (host/scene_convert.h): degree elevation and B-spline pieces give the same
+// surfaces, surfaces stay in file order, degrees above 3 and rational weights are kept (a
+// bad weight in a scene built in code is an InputError naming the surface), and the example
+// scenes go through readSurfaceFile and the CPU backend to a mesh.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -13,6 +13,7 @@
 #include "bspline.h"
 #include "bspline_to_bezier.h"
 #include "io/errors.h"
+#include "rational.h"
 #include "io/scene_reader.h"
 #include "io/surface_reader.h"
 #include "knots.h"
@@ -64,7 +65,7 @@ std::string sceneJson(const std::vector<std::string>& surfaces) {
 
 InputError convertError(const Scene& scene) {
   try {
-    sceneToBicubicPatches(scene);
+    sceneToPatches(scene);
   } catch (const InputError& e) {
     return e;
   }
@@ -77,7 +78,7 @@ InputError convertError(const Scene& scene) {
 TEST_CASE("convert: the example scene gives the same surfaces as bicubic patches",
           "[io][convert]") {
   const Scene scene = readScene(TESSERA_SOURCE_DIR "/data/scene_example.json");
-  const std::vector<BezierPatch> patches = sceneToBicubicPatches(scene);
+  const std::vector<BezierPatch> patches = sceneToPatches(scene);
   // Bump (1), saddle (1), wave: 2 u-spans × 1 v-span.
   REQUIRE(patches.size() == 4);
   for (const BezierPatch& p : patches) {
@@ -118,7 +119,7 @@ TEST_CASE("convert: B-spline surfaces become one bicubic patch per span pair",
   validateSurface(s);
   Scene scene;
   scene.bsplines.push_back(s);
-  const std::vector<BezierPatch> patches = sceneToBicubicPatches(scene);
+  const std::vector<BezierPatch> patches = sceneToPatches(scene);
   const std::vector<BezierPatchPiece> pieces = bezierPatches(s);
   // u-spans [0, .2], [.2, .5], [.5, 1]; v-spans [0, .3], [.3, 1].
   REQUIRE(pieces.size() == 6);
@@ -144,7 +145,7 @@ TEST_CASE("convert: surfaces stay in file order; equal weights are polynomial",
   const Scene scene = parse(sceneJson(
       {bspline, bezierJson(1, 2, ", \"weights\": [2, 2, 2, 2, 2, 2]"), bezierJson(2, 1)}));
   REQUIRE(scene.order.size() == 3);
-  const std::vector<BezierPatch> patches = sceneToBicubicPatches(scene);
+  const std::vector<BezierPatch> patches = sceneToPatches(scene);
   REQUIRE(patches.size() == 4);  // 2 B-spline pieces, then the rational, then the Bézier
   CHECK(patches[0].at(0, 0) == glm::dvec3(0, 0, 0));
   CHECK(patches[1].at(3, 3) == glm::dvec3(2, 1, 0));
@@ -162,58 +163,49 @@ TEST_CASE("convert: surfaces stay in file order; equal weights are polynomial",
         }) < 1e-12);
 }
 
-TEST_CASE("convert: degrees above 3 and rational weights are the documented limitation",
+TEST_CASE("convert: degrees above 3 stay as they are, rational weights are kept",
           "[io][convert]") {
-  SECTION("a degree 5×4 patch names the file, the degree's line and the surface") {
-    // Surface 3 starts on line 8; its "degree" is on line 9.
-    const Scene scene = parse(sceneJson({bezierJson(3, 3), bezierJson(2, 2), bezierJson(5, 4)}),
-                              "big.json");
-    const InputError e = convertError(scene);
-    CHECK(e.kind() == InputErrorKind::Degree);
-    CHECK(e.file() == "big.json");
-    CHECK(e.line() == 9);
-    CHECK(std::string(e.what()) ==
-          "big.json:9: the tessellator takes polynomial patches up to bicubic for now (degree "
-          "5×4 at surface 3)");
+  SECTION("a degree 5×4 patch is passed on unchanged, lower degrees become bicubic") {
+    const Scene scene = parse(sceneJson({bezierJson(3, 3), bezierJson(2, 2), bezierJson(5, 4)}));
+    const std::vector<BezierPatch> patches = sceneToPatches(scene);
+    REQUIRE(patches.size() == 3);
+    CHECK((patches[1].degreeU == 3 && patches[1].degreeV == 3));
+    CHECK((patches[2].degreeU == 5 && patches[2].degreeV == 4));
+    CHECK(patches[2].cp == scene.bezier[2].cp);
+    CHECK(patches[2].weights.empty());
   }
-  SECTION("a quartic B-spline") {
+  SECTION("a quartic B-spline becomes quartic Bézier pieces") {
     const Scene scene = parse(sceneJson(
-        {bezierJson(1, 1),
-         "{\"type\": \"bspline\", \"name\": \"quartic\",\n \"degree\": [4, 1], \"count\": [5, 2], "
+        {"{\"type\": \"bspline\", \"name\": \"quartic\",\n \"degree\": [4, 1], \"count\": [5, 2], "
          "\"knots_u\": [0, 0, 0, 0, 0, 1, 1, 1, 1, 1], \"knots_v\": [0, 0, 1, 1], \"points\": "
-         "[[0, 0, 0], [0, 1, 0], [1, 0, 0], [1, 1, 0], [2, 0, 0], [2, 1, 0], [3, 0, 0], "
+         "[[0, 0, 0], [0, 1, 0], [1, 0, 1], [1, 1, 0], [2, 0, 0], [2, 1, 0], [3, 0, 0], "
          "[3, 1, 0], [4, 0, 0], [4, 1, 0]]}"}));
-    const InputError e = convertError(scene);
-    CHECK(e.kind() == InputErrorKind::Degree);
-    CHECK(e.line() == 6);
-    CHECK(std::string(e.what()).find("(degree 4×1 at surface 2 (\"quartic\"))") !=
-          std::string::npos);
+    const std::vector<BezierPatch> patches = sceneToPatches(scene);
+    REQUIRE(patches.size() == 1);
+    CHECK((patches[0].degreeU == 4 && patches[0].degreeV == 1));
+    CHECK(maxDeviation(patches[0], [&](double u, double v) {
+            return surfacePoint(scene.bsplines[0], u, v);
+          }) < 1e-12);
   }
-  SECTION("a rational patch names the weights' line") {
-    const Scene scene =
-        parse(sceneJson({bezierJson(1, 1, ",\n \"weights\": [1, 2, 1, 1]")}), "rational.json");
+  SECTION("a rational patch keeps its points and weights: the same surface") {
+    const Scene scene = parse(sceneJson({bezierJson(2, 2, ",\n \"weights\": [1, 2, 1, 2, 0, 2, 1, 2, 1]")}));
+    const std::vector<BezierPatch> patches = sceneToPatches(scene);
+    REQUIRE(patches.size() == 1);
+    REQUIRE(patches[0].weights.size() == 9);
+    CHECK(patches[0].weights[4] == 0.0);
+    CHECK(maxDeviation(patches[0], [&](double u, double v) {
+            return rationalPatchPoint(scene.rational[0], u, v);
+          }) < 1e-12);
+  }
+  SECTION("a scene built in code with a zero corner weight names the surface") {
+    Scene scene;
+    RationalBezierPatch bad;
+    bad.degreeU = bad.degreeV = 1;
+    bad.cpw = {{0, 0, 0, 1}, {0, 1, 0, 2}, {1, 0, 0, 1}, {0, 0, 0, 0}};
+    scene.rational.push_back(bad);
     const InputError e = convertError(scene);
     CHECK(e.kind() == InputErrorKind::Weight);
-    CHECK(e.line() == 5);
-    CHECK(std::string(e.what()) ==
-          "rational.json:5: the tessellator takes polynomial patches up to bicubic for now "
-          "(rational weights at surface 1; only equal weights, which make the patch "
-          "polynomial, are accepted)");
-  }
-  SECTION("a scene built in code: default order, no file, no line") {
-    Scene scene;
-    BezierPatch quintic;
-    quintic.degreeU = 5;
-    quintic.degreeV = 1;
-    quintic.cp.assign(12, glm::dvec3(0));
-    scene.bezier.push_back(BezierPatch{1, 1, std::vector<glm::dvec3>(4, glm::dvec3(0))});
-    scene.bezier.push_back(quintic);
-    const InputError e = convertError(scene);
-    CHECK(e.kind() == InputErrorKind::Degree);
-    CHECK(e.line() == 0);
-    CHECK(std::string(e.what()) ==
-          "scene: the tessellator takes polynomial patches up to bicubic for now (degree 5×1 at "
-          "surface 2)");
+    CHECK(std::string(e.what()) == "scene: surface 1 has a corner weight that is not positive");
   }
 }
 
@@ -234,17 +226,24 @@ TEST_CASE("convert: the example scene tessellates through readSurfaceFile on the
   CHECK(std::all_of(seen.begin(), seen.end(), [](bool s) { return s; }));
 }
 
-TEST_CASE("convert: the rational example is rejected by readSurfaceFile, naming the surface",
+TEST_CASE("convert: the rational example tessellates through readSurfaceFile on the CPU",
           "[io][convert]") {
-  const std::string path = TESSERA_SOURCE_DIR "/data/scene_rational.json";
-  try {
-    readSurfaceFile(path);
-    FAIL("no error");
-  } catch (const InputError& e) {
-    CHECK(e.kind() == InputErrorKind::Weight);
-    CHECK(e.file() == path);
-    CHECK(e.line() == 15);
-    CHECK(std::string(e.what()).find("(rational weights at surface 1 (\"quarter cylinder\")") !=
-          std::string::npos);
-  }
+  const std::vector<BezierPatch> patches =
+      readSurfaceFile(TESSERA_SOURCE_DIR "/data/scene_rational.json");
+  REQUIRE(patches.size() == 2);
+  REQUIRE(patches[0].weights.size() == 6);
+  REQUIRE(patches[1].weights.size() == 9);
+  Backend backend = makeCpuBackend();
+  const Tessellation t = tessellate(patches, QuadtreeOptions(), backend);
+  CHECK(t.mesh.triangleCount() > 0);
+  CHECK_NOTHROW(t.mesh.validate());
+  // The quarter cylinder's vertices lie on x² + y² = 1.
+  double worst = 0;
+  for (size_t k = 0; k < t.mesh.positions.size(); ++k)
+    if (t.mesh.patchIds[k] == 0)
+      worst = std::max(worst, std::fabs(std::hypot(double(t.mesh.positions[k].x),
+                                                    double(t.mesh.positions[k].y)) - 1.0));
+  WARN("scene_rational.json: " << t.mesh.triangleCount() << " triangles; quarter cylinder "
+       "vertices off the unit cylinder by at most " << worst);
+  CHECK(worst < 1e-6);
 }

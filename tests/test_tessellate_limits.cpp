@@ -73,10 +73,18 @@ TEST_CASE("non-finite or huge control points are refused with the patch named",
   REQUIRE_THROWS_WITH(tessellate({pointPatch(), bad}, o, cpu), Catch::Contains("patch 1"));
   bad.cp[5].y = 1e300;
   REQUIRE_THROWS_AS(tessellate({bad}, o, cpu), std::invalid_argument);
-  BezierPatch quadratic;
-  quadratic.degreeU = quadratic.degreeV = 2;
-  quadratic.cp.assign(9, glm::dvec3(0.0));
-  REQUIRE_THROWS_WITH(tessellate({quadratic}, o, cpu), Catch::Contains("bicubic"));
+  BezierPatch octic;
+  octic.degreeU = 8;
+  octic.degreeV = 2;
+  octic.cp.assign(27, glm::dvec3(0.0));
+  REQUIRE_THROWS_WITH(tessellate({octic}, o, cpu), Catch::Contains("degrees 1..7"));
+  BezierPatch weighted = pointPatch();
+  weighted.weights.assign(16, 1.0);
+  weighted.weights[5] = -1.0;
+  REQUIRE_THROWS_WITH(tessellate({weighted}, o, cpu), Catch::Contains("negative"));
+  weighted.weights[5] = 1.0;
+  weighted.weights[15] = 0.0;
+  REQUIRE_THROWS_WITH(tessellate({weighted}, o, cpu), Catch::Contains("corner weight"));
 }
 
 TEST_CASE("bad options are refused with the reason", "[tessellate][limits]") {

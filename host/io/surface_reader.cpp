@@ -15,7 +15,7 @@ std::vector<BezierPatch> readSurfaceFile(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   if (ext == ".bpt") return readBpt(path);
   if (ext == ".grid") return interpolateGrid(readGrid(path));
-  if (ext == ".json") return sceneToBicubicPatches(readScene(path));
+  if (ext == ".json") return sceneToPatches(readScene(path));
   throw InputError(InputErrorKind::Syntax, path, 0,
                    "unknown surface format '" + ext + "' (expected .bpt, .grid or .json)");
 }

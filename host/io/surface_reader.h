@@ -1,6 +1,6 @@
 // Reads any surface file Tessera knows, by extension: .bpt (Newell's patch format), .grid
 // (point data, interpolated into bicubic patches as in the quad-tree paper), .json (a scene,
-// docs/scene_format.md, converted to bicubic patches by sceneToBicubicPatches).
+// docs/scene_format.md, converted to patches by sceneToPatches).
 #pragma once
 #include <string>
 #include <vector>

@@ -26,5 +26,8 @@ static_assert(sizeof(NodeDecision) == 32 && offsetof(NodeDecision, cause) == 16 
 static_assert(sizeof(ClassifyPush) == 32 && offsetof(ClassifyPush, maxDepth) == 16 &&
                   offsetof(ClassifyPush, nodeCount) == 20,
               "ClassifyPush layout");
+static_assert(sizeof(GeneralPatch) == 16 && offsetof(GeneralPatch, degreeV) == 4 &&
+                  offsetof(GeneralPatch, rational) == 8 && offsetof(GeneralPatch, firstPoint) == 12,
+              "GeneralPatch: 4 scalars");
 
 }  // namespace tessera::gpu

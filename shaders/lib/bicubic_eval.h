@@ -166,9 +166,9 @@ float bicubicKappa(IN(BicubicDerivs) d, vec3 n, float tol) {
   return kappa;
 }
 
-EvalSample evalBicubicSample(IN(BicubicPatch) bp, float u, float v, float eps) {
-  BicubicDerivs d = evalBicubic(bp, u, v);
-  PRECISE float scale = bicubicScale(bp);
+// The sample of derivatives `d` at (u, v) of a patch of length scale `scale` (shared with
+// general_eval.h: any patch's derivatives give its normal and κ the same way).
+EvalSample sampleFromDerivs(IN(BicubicDerivs) d, float u, float v, float scale, float eps) {
   PRECISE float tol = eps * scale * scale;
   vec3 n = bicubicNormal(d, u, v, tol);
   float kappa = bicubicKappa(d, n, tol);
@@ -178,6 +178,10 @@ EvalSample evalBicubicSample(IN(BicubicPatch) bp, float u, float v, float eps) {
   s.dv = vec4(d.pv, 0.0f);
   s.normalKappa = vec4(n, kappa);
   return s;
+}
+
+EvalSample evalBicubicSample(IN(BicubicPatch) bp, float u, float v, float eps) {
+  return sampleFromDerivs(evalBicubic(bp, u, v), u, v, bicubicScale(bp), eps);
 }
 
 #endif

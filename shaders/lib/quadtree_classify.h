@@ -2,9 +2,19 @@
 // patches by a quad-tree"): find the node's split point by rule B, C or D, evaluate the four
 // corners and the split point, run the edge-linearity and flatness tests, decide leaf or split.
 // Compiled as GLSL (shaders/quadtree.comp.glsl) and as C++ (host/mirror/quadtree_mirror.cpp)
-// from this one text. Include shared_glsl_cpp.h, layout.h and bicubic_eval.h first.
+// from this one text. Include shared_glsl_cpp.h, layout.h and bicubic_eval.h (and for general
+// patches general_eval.h) first.
 #ifndef TESSERA_QUADTREE_CLASSIFY_H
 #define TESSERA_QUADTREE_CLASSIFY_H
+
+// The patch type and its evaluation. Bicubic by default; quadtree_general.comp.glsl and
+// host/mirror/general_mirror.cpp define these for GeneralPatch (general_eval.h) first, so one
+// text classifies both and the bicubic shader is the very same code as before.
+#ifndef CLASSIFY_PATCH
+#define CLASSIFY_PATCH BicubicPatch
+#define CLASSIFY_EVAL evalBicubic
+#define CLASSIFY_SCALE bicubicScale
+#endif
 
 // Position, unit tangents along u and v (zero where the derivative vanishes, as along a
 // collapsed edge) and unit normal (zero where none exists) at one point.
@@ -21,8 +31,8 @@ vec3 unitOrZero(vec3 v, float tol) {
   return vec3(0.0f);
 }
 
-FrameSample frameAt(IN(BicubicPatch) bp, float u, float v, float scale, float eps) {
-  BicubicDerivs d = evalBicubic(bp, u, v);
+FrameSample frameAt(IN(CLASSIFY_PATCH) bp, float u, float v, float scale, float eps) {
+  BicubicDerivs d = CLASSIFY_EVAL(bp, u, v);
   PRECISE float tolArea = eps * scale * scale;
   PRECISE float tolLength = eps * scale;
   FrameSample f;
@@ -33,8 +43,8 @@ FrameSample frameAt(IN(BicubicPatch) bp, float u, float v, float scale, float ep
   return f;
 }
 
-float kappaAt(IN(BicubicPatch) bp, float u, float v, float scale, float eps) {
-  BicubicDerivs d = evalBicubic(bp, u, v);
+float kappaAt(IN(CLASSIFY_PATCH) bp, float u, float v, float scale, float eps) {
+  BicubicDerivs d = CLASSIFY_EVAL(bp, u, v);
   PRECISE float tol = eps * scale * scale;
   vec3 n = bicubicNormal(d, u, v, tol);
   return bicubicKappa(d, n, tol);
@@ -54,14 +64,14 @@ float lerpParam(float lo, float hi, float s) {
   return r;
 }
 
-float kappaAtLocal(IN(BicubicPatch) bp, vec4 rect, float s, float t, float scale, float eps) {
+float kappaAtLocal(IN(CLASSIFY_PATCH) bp, vec4 rect, float s, float t, float scale, float eps) {
   return kappaAt(bp, lerpParam(rect.x, rect.z, s), lerpParam(rect.y, rect.w, t), scale, eps);
 }
 
 // Rule C: the largest κ on an S×S grid of interior points (s, t) = ((a+1)/(S+1), (b+1)/(S+1)).
 // Returns (s, t, κ); ties keep the first in scan order. Also returns the runner-up, a second
 // seed for rule D.
-void sampledMaxima(IN(BicubicPatch) bp, vec4 rect, int samples, float scale, float eps,
+void sampledMaxima(IN(CLASSIFY_PATCH) bp, vec4 rect, int samples, float scale, float eps,
                    OUT(vec3) best, OUT(vec3) second) {
   best = vec3(0.5f, 0.5f, -1.0f);
   second = vec3(0.5f, 0.5f, -1.0f);
@@ -104,7 +114,7 @@ vec2 stencilOffset(int k) {
 // (starting at half the sample spacing) bounds each step; a step is taken only if κ grows,
 // else the radius shrinks — so the search climbs monotonically and never leaves a sharp
 // peak the quadratic model overshoots.
-vec3 newtonMaximum(IN(BicubicPatch) bp, vec4 rect, vec3 seed, int samples, float scale,
+vec3 newtonMaximum(IN(CLASSIFY_PATCH) bp, vec4 rect, vec3 seed, int samples, float scale,
                    float eps) {
   const float hg = 1e-3f;
   const float hh = 2e-2f;
@@ -147,7 +157,7 @@ vec3 newtonMaximum(IN(BicubicPatch) bp, vec4 rect, vec3 seed, int samples, float
 
 // Rule D's boundary search: the best of S samples on each edge, refined along that edge by
 // the same trust-region Newton in one dimension.
-vec3 boundaryMaximum(IN(BicubicPatch) bp, vec4 rect, int samples, float scale, float eps) {
+vec3 boundaryMaximum(IN(CLASSIFY_PATCH) bp, vec4 rect, int samples, float scale, float eps) {
   vec3 best = vec3(0.5f, 0.5f, -1.0f);
   int bestEdge = 0;
   for (int e = 0; e < 4; ++e) {
@@ -194,7 +204,7 @@ vec3 boundaryMaximum(IN(BicubicPatch) bp, vec4 rect, int samples, float scale, f
 // The split point of a node in node-local coordinates (s, t), kept kSplitMargin away from the
 // edges. Where κ vanishes everywhere sampled (a plane, a degenerate patch) rules C and D fall
 // back to the midpoint.
-vec2 splitPointLocal(IN(BicubicPatch) bp, vec4 rect, uint rule, int samples, float scale,
+vec2 splitPointLocal(IN(CLASSIFY_PATCH) bp, vec4 rect, uint rule, int samples, float scale,
                      float eps) {
   if (rule == kSplitRuleMidpoint) return vec2(0.5f);
   vec3 best;
@@ -212,9 +222,9 @@ vec2 splitPointLocal(IN(BicubicPatch) bp, vec4 rect, uint rule, int samples, flo
   return clamp(vec2(best.x, best.y), vec2(kSplitMargin), vec2(1.0f - kSplitMargin));
 }
 
-NodeDecision classifyNode(IN(BicubicPatch) bp, IN(QuadNode) node, uint rule, int samples,
+NodeDecision classifyNode(IN(CLASSIFY_PATCH) bp, IN(QuadNode) node, uint rule, int samples,
                           IN(ClassifyPush) params) {
-  PRECISE float scale = bicubicScale(bp);
+  PRECISE float scale = CLASSIFY_SCALE(bp);
   float eps = params.degenerateEps;
   vec4 r = node.rect;
   vec2 local = splitPointLocal(bp, r, rule, samples, scale, eps);
