@@ -22,5 +22,6 @@ void addDevicesCommand(CLI::App& app, int& exitCode);
 void addInfoCommand(CLI::App& app, int& exitCode);
 void addRenderCommand(CLI::App& app, int& exitCode);
 void addPaperTableCommand(CLI::App& app, int& exitCode);
+void addReduceCommand(CLI::App& app, int& exitCode);
 
 }  // namespace tessera::cli

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   tessera::cli::addInfoCommand(app, exitCode);
   tessera::cli::addRenderCommand(app, exitCode);
   tessera::cli::addPaperTableCommand(app, exitCode);
+  tessera::cli::addReduceCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
