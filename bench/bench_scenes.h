@@ -11,14 +11,15 @@ namespace tessera::bench {
 // `count` copies of `model`, each moved and bent by its own smooth deformation field, so no
 // two are identical while coincident control points (collapsed edges, shared boundaries) stay
 // coincident: independent jitter would turn the teapot lid's collapsed edge into a crinkle
-// that never tests flat. Copies sit on a 40-wide grid 8 units apart.
-inline std::vector<BezierPatch> perturbedCopies(const std::vector<BezierPatch>& model, int count) {
+// that never tests flat. Copies sit on a grid `perRow` wide, 8 units apart.
+inline std::vector<BezierPatch> perturbedCopies(const std::vector<BezierPatch>& model, int count,
+                                                int perRow = 40) {
   std::mt19937 rng(1234);
   std::uniform_real_distribution<double> phase(0.0, 6.2831853);
   std::vector<BezierPatch> out;
   out.reserve(model.size() * size_t(count));
   for (int c = 0; c < count; ++c) {
-    glm::dvec3 offset(double(c % 40) * 8.0, double(c / 40) * 8.0, 0.0);
+    glm::dvec3 offset(double(c % perRow) * 8.0, double(c / perRow) * 8.0, 0.0);
     double a = phase(rng), b = phase(rng), d = phase(rng);
     for (BezierPatch p : model) {
       for (auto& cp : p.cp)

@@ -15,13 +15,17 @@ build=${BUILD_DIR:-build}
 quick=0
 [[ "${1:-}" == "--quick" ]] && quick=1
 scripts/deps.sh >/dev/null
-BUILD_DIR=$build scripts/build.sh >/dev/null
+# Configure (Release) and build only what bench/ needs: the benchmarks and the library.
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+make -C "$build/bench" -j "$(nproc)" >/dev/null
 
 # Arguments of each run, runs separated by '|'.
 declare -A sizes=(
   [bench_eval]="64 32 65536|256 32 65536|1024 32 262144|2048 32 262144"
   [bench_quadtree]="10 2|40 4|160 8"
   [bench_mesh]="10|40|160"
+  [bench_occt]="0.01,0.001 B"
+  [bench_tess_shader]="300 100 1"
 )
 
 out=bench/results
