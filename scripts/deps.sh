@@ -14,6 +14,8 @@ packages=(
   # bench/: the Open CASCADE peer (bench_occt), JSON merging and the plot of scripts/bench.sh
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-visualization-dev jq gnuplot-nox
+  # bench/bench_reduction: SISL's curve data reduction (s1940), the peer of the reduction
+  libsisl-dev
 )
 # node and npm run the Khronos glTF validator in the tests (scripts/gltf-validate.sh). Debian's
 # nodejs and npm only when the commands are missing: a Node.js installed another way (its own
