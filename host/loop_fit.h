@@ -27,6 +27,14 @@ struct LoopFitReport {
   double maxDistance = 0;      // max |p∞ − q| over the movable vertices at the end
 };
 
+// Several targets at once (joining: each side's vertices go back to their own surface): vertex
+// v is fitted to targets[targetOf[v] − 1], and stays where it is when targetOf[v] is 0.
+// options.movable is ignored.
+LoopFitReport fitLoopToSurfaces(const LoopTopology& topology, std::vector<glm::dvec3>& positions,
+                                const std::vector<const TriangleBvh*>& targets,
+                                const std::vector<uint8_t>& targetOf,
+                                const LoopFitOptions& options = {});
+
 // The energy and max distance of the current control positions against `target`.
 double loopFitEnergy(const LoopTopology& topology, const std::vector<glm::dvec3>& positions,
                      const TriangleBvh& target, const std::vector<uint8_t>& movable,
