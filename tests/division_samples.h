@@ -1,0 +1,22 @@
+// Random rational nets for the division-count tests: weights positive, with zeros, with
+// negative ones, or all negative with zeros (fixed seeds in the callers).
+#pragma once
+#include <random>
+#include <vector>
+
+#include "homogeneous_net.h"
+
+namespace tessera::test {
+
+enum class WeightKind { Positive, Zeros, Negative, AllNegativeWithZeros };
+
+// Corner weights stay non-zero (a zero corner weight sends the surface to infinity there).
+// Zeros: interior weights zero with probability 0.4 (at least one). Negative: one or two
+// interior weights in [−0.6, 0) (w usually stays positive on the patch; when it does not the
+// method must say so).
+std::vector<double> randomWeights(int n, int m, WeightKind kind, std::mt19937& rng);
+
+// Coordinates in [−1, 1]³; a zero weight keeps a finite numerator (a point at infinity).
+HomogeneousNet randomNet(int n, int m, WeightKind kind, std::mt19937& rng);
+
+}  // namespace tessera::test

@@ -1,0 +1,140 @@
+// "Never under-divides": over random rational curves and patches (fixed seeds) with zero and
+// negative weights, the bounds of the split and subdivided methods are never below the sampled
+// maximum of ‖c''‖ (‖S_uu‖, ‖S_uv‖, ‖S_vv‖), and the uniform grid of the computed counts
+// deviates at most TOL from the surface (host/division_count.h, docs/rational_division.md).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <random>
+
+#include "division_count.h"
+#include "division_deviation.h"
+#include "division_samples.h"
+#include "homogeneous_net.h"
+
+using namespace tessera;
+using namespace tessera::test;
+
+namespace {
+
+struct Tally {
+  int tried = 0, checked = 0, unbounded = 0, capped = 0, withZero = 0, withNegative = 0;
+  double worstBoundRatio = INFINITY;    // min over cases of bound / sampled max (must be ≥ 1)
+  double worstDeviationRatio = 0.0;     // max over cases of measured deviation / TOL (≤ 1)
+};
+
+bool hasZero(const HomogeneousNet& net) {
+  return std::any_of(net.c.begin(), net.c.end(), [](const glm::dvec4& h) { return h.w == 0; });
+}
+bool hasNegative(const HomogeneousNet& net) {
+  return std::any_of(net.c.begin(), net.c.end(), [](const glm::dvec4& h) { return h.w < 0; });
+}
+
+void checkPatch(const HomogeneousNet& net, DivisionMethod method, double tol, Tally& t) {
+  ++t.tried;
+  DivisionOptions o;
+  o.method = method;
+  o.tolerance = tol;
+  o.maxPerDirection = 400;
+  const Divisions d = patchDivisions(toPatch(net), o);
+  if (d.status == DivisionStatus::Unbounded) {
+    ++t.unbounded;
+    // Unbounded must mean it: w really vanishes or changes sign somewhere, or the q×q pieces
+    // could not show it does not. At least the grid of the cap must not pass silently.
+    CHECK(d.nu == o.maxPerDirection);
+    return;
+  }
+  const SampledSecondDerivatives s = sampledSecondDerivatives(net, 16);
+  auto ratio = [](double bound, double sampled) {
+    return sampled > 1e-12 ? bound / sampled : INFINITY;
+  };
+  const double r = std::min({ratio(d.bounds.uu, s.uu), ratio(d.bounds.uv, s.uv),
+                             ratio(d.bounds.vv, s.vv)});
+  t.worstBoundRatio = std::min(t.worstBoundRatio, r);
+  CHECK(r >= 1.0 - 1e-9);
+  if (d.status == DivisionStatus::Capped) {
+    ++t.capped;
+    return;
+  }
+  const double dev = uniformGridDeviation(net, d.nu, d.nv, {4, 24});
+  t.worstDeviationRatio = std::max(t.worstDeviationRatio, dev / tol);
+  CHECK(dev <= tol);
+  ++t.checked;
+  t.withZero += hasZero(net);
+  t.withNegative += hasNegative(net);
+}
+
+// `count` random patches of bidegree (1..3, 1..3), the four weight kinds in turn.
+Tally runPatches(uint32_t seed, int count, DivisionMethod method, double tol) {
+  std::mt19937 rng(seed);
+  Tally t;
+  for (int trial = 0; trial < count; ++trial) {
+    const int n = 1 + trial % 3, m = 1 + (trial / 3) % 3;
+    const WeightKind kind = static_cast<WeightKind>((trial / 9) % 4);
+    const HomogeneousNet net = randomNet(n, m, kind, rng);
+    INFO("trial " << trial);
+    checkPatch(net, method, tol, t);
+  }
+  WARN(divisionMethodName(method)
+       << ": " << t.tried << " patches, " << t.checked << " grids measured (" << t.withZero
+       << " with zero weights, " << t.withNegative << " with negative ones), " << t.unbounded
+       << " unbounded, " << t.capped << " capped; smallest bound/sampled " << t.worstBoundRatio
+       << ", largest deviation/TOL " << t.worstDeviationRatio);
+  return t;
+}
+
+}  // namespace
+
+TEST_CASE("Division never under-divides: 1,200 random rational patches, split method",
+          "[division]") {
+  const Tally t = runPatches(20260523, 1200, DivisionMethod::Split, 0.05);
+  CHECK(t.checked >= 1000);
+  CHECK(t.withZero >= 300);
+  CHECK(t.withNegative >= 300);
+}
+
+TEST_CASE("Division never under-divides: 300 random rational patches, subdivided method",
+          "[division]") {
+  const Tally t = runPatches(77, 300, DivisionMethod::Subdivided, 0.02);
+  CHECK(t.checked >= 250);
+  CHECK(t.withZero >= 60);
+  CHECK(t.withNegative >= 60);
+}
+
+TEST_CASE("Division never under-divides: ‖c''‖ bound over 1,200 random curves of degree 1..7",
+          "[division]") {
+  std::mt19937 rng(4242);
+  int bounded = 0, zeros = 0, negatives = 0;
+  double worst[2] = {INFINITY, INFINITY};
+  for (int trial = 0; trial < 1200; ++trial) {
+    const int degree = 1 + trial % kMaxDegree;
+    const WeightKind kind = static_cast<WeightKind>((trial / 7) % 4);
+    const HomogeneousNet net = randomNet(degree, 0, kind, rng);
+    const SampledSecondDerivatives s = sampledSecondDerivatives(net, 400);
+    int m = 0;
+    for (DivisionMethod method : {DivisionMethod::Split, DivisionMethod::Subdivided}) {
+      DivisionOptions o;
+      o.method = method;
+      const SecondDerivativeBounds b =
+          secondDerivativeBounds(RationalBezierCurve{degree, net.c}, o);
+      if (b.bounded && s.uu > 0) {
+        INFO("trial " << trial << " " << divisionMethodName(method) << ": bound " << b.uu
+                      << ", sampled " << s.uu);
+        CHECK(b.uu >= s.uu * (1 - 1e-9));
+        worst[m] = std::min(worst[m], b.uu / s.uu);
+        if (method == DivisionMethod::Split) {
+          ++bounded;
+          zeros += hasZero(net);
+          negatives += hasNegative(net);
+        }
+      }
+      ++m;
+    }
+  }
+  WARN("curves: " << bounded << " bounded by split (" << zeros << " with zero weights, "
+                  << negatives << " with negative ones); smallest bound/sampled: split "
+                  << worst[0] << ", subdivided " << worst[1]);
+  CHECK(bounded >= 1000);
+  CHECK(zeros >= 300);
+  CHECK(negatives >= 300);
+}
