@@ -110,7 +110,7 @@ LoopShape removeFaces(const LoopShape& mesh, const std::vector<uint8_t>& remove,
     }
   }
   if (out.topology.triangles.empty())
-    throw std::runtime_error("join: no triangle of " + what + " is left outside the other mesh");
+    throw std::invalid_argument("join: no triangle of " + what + " is left outside the other mesh");
   out.topology.vertexCount = uint32_t(out.positions.size());
   return out;
 }

@@ -13,7 +13,7 @@ namespace tessera {
 // Removes faces with remove[f] != 0, then, until nothing changes, the faces of every connected
 // piece but the largest and of the smaller fans at vertices the removal pinched (two boundary
 // fans meeting at one vertex). Unused vertices are dropped; keptVertex[old] is the new index or
-// kLoopNone. Throws std::runtime_error (naming `what`) if nothing is left.
+// kLoopNone. Throws std::invalid_argument (naming `what`) if nothing is left.
 LoopShape removeFaces(const LoopShape& mesh, const std::vector<uint8_t>& remove,
                       std::vector<uint32_t>& keptVertex, const std::string& what);
 

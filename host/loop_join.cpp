@@ -65,7 +65,7 @@ LoopJoinResult joinLoopMeshes(const LoopShape& a, const LoopShape& b,
   for (uint8_t f : firstA) report.interferingA += f;
   for (uint8_t f : firstB) report.interferingB += f;
   if (report.interferingA == 0)
-    throw std::runtime_error("join: " + a.name + " and " + b.name + " do not intersect");
+    throw std::invalid_argument("join: " + a.name + " and " + b.name + " do not intersect");
   report.levelsA = options.levelsA >= 0 ? options.levelsA : defaultLevels(areaA, areaB);
   report.levelsB = options.levelsB >= 0 ? options.levelsB : defaultLevels(areaB, areaA);
   report.trianglesIn = (a.topology.triangles.size() + b.topology.triangles.size()) / 3;
@@ -87,7 +87,7 @@ LoopJoinResult joinLoopMeshes(const LoopShape& a, const LoopShape& b,
   const auto loopsA = boundaryLoops(cutA.topology), loopsB = boundaryLoops(cutB.topology);
   const size_t openA = buildLoopTopology(a.topology).closed() ? 0 : 1;  // a pasted part's rim
   if (loopsA.size() != 1 || loopsB.size() != 1)
-    throw std::runtime_error("join: the intersection leaves " + std::to_string(loopsA.size()) +
+    throw std::invalid_argument("join: the intersection leaves " + std::to_string(loopsA.size()) +
                              " boundary loops on " + a.name + " and " +
                              std::to_string(loopsB.size()) + " on " + b.name +
                              " (expected one each: the shapes must overlap in one region" +

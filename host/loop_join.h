@@ -43,8 +43,8 @@ struct LoopJoinResult {
   LoopJoinReport report;
 };
 
-// Throws std::runtime_error when the meshes do not intersect, or their intersection does not
-// leave exactly one boundary loop on each side.
+// Throws std::invalid_argument (bad input geometry) when the meshes do not intersect, or their
+// intersection does not leave exactly one boundary loop on each side.
 LoopJoinResult joinLoopMeshes(const LoopShape& a, const LoopShape& b,
                               const LoopJoinOptions& options = {});
 

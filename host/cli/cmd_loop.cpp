@@ -1,0 +1,188 @@
+// tessera loop | limit | fit | join: Loop subdivision surfaces from OBJ control meshes
+// (docs/loop.md). Output by extension: .obj, .ply or .glb.
+#include <cstdio>
+#include <filesystem>
+
+#include "cli/cli_support.h"
+#include "cli/commands.h"
+#include "io/errors.h"
+#include "io/gltf_writer.h"
+#include "io/obj_reader.h"
+#include "io/obj_writer.h"
+#include "io/ply_writer.h"
+#include "loop_evaluator.h"
+#include "loop_join.h"
+#include "loop_limit.h"
+#include "loop_stencils.h"
+
+namespace tessera::cli {
+namespace {
+
+// A triangle control mesh from OBJ; topology errors name the file and the face's line.
+LoopShape readControlMesh(const std::string& path) {
+  PolygonMesh polygons = readObj(path);
+  requireTriangles(polygons, path);
+  requireManifold(polygons, path);
+  LoopShape shape;
+  shape.name = std::filesystem::path(path).stem().string();
+  shape.positions = polygons.positions;
+  shape.topology.vertexCount = uint32_t(polygons.positions.size());
+  for (const auto& face : polygons.faces)
+    shape.topology.triangles.insert(shape.topology.triangles.end(), face.begin(), face.end());
+  try {
+    buildLoopTopology(shape.topology);
+  } catch (const LoopTopologyError& e) {
+    const int line = e.face() < polygons.faceLines.size() ? polygons.faceLines[e.face()] : 0;
+    throw InputError(InputErrorKind::Topology, path, line, e.what());
+  }
+  return shape;
+}
+
+void checkMeshFormat(const std::string& path) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  if (ext != ".obj" && ext != ".ply" && ext != ".glb")
+    throw CLI::ValidationError("--output", "unknown output format '" + ext + "' (use .obj, .ply or .glb)");
+}
+
+void writeLoopMesh(const std::string& path, const std::vector<glm::dvec3>& positions,
+                   const std::vector<uint32_t>& triangles, const std::vector<glm::dvec3>& normals) {
+  TriangleMesh mesh;
+  for (const auto& p : positions) mesh.positions.push_back(glm::vec3(p));
+  for (const auto& n : normals) mesh.normals.push_back(glm::vec3(n));
+  mesh.indices = triangles;
+  const std::string ext = std::filesystem::path(path).extension().string();
+  if (ext == ".obj") writeObjFile(path, mesh);
+  else if (ext == ".ply") writePlyFile(path, mesh);
+  else writeGlbFile(path, mesh);
+}
+
+struct LoopArgs {
+  std::string input, target, output, backend = "auto", device;
+  int levels = 2;
+  bool limit = false;
+  double lambda = 1.0, threshold = 0.0;
+  int iterations = 100, levelsA = -1, levelsB = -1;
+  std::vector<double> cut;  // paste: nx ny nz d
+};
+
+// Refines on the chosen backend through the stencil tables; with `limit`, the last level's
+// vertices pushed to the limit surface, with limit normals.
+int runRefine(const LoopArgs& a) {
+  checkMeshFormat(a.output);
+  const LoopShape shape = readControlMesh(a.input);
+  LoopStencilOptions options;
+  options.levels = a.levels;
+  options.limit = options.tangents = a.limit;
+  LoopStencils stencils = buildLoopStencils(buildLoopTopology(shape.topology), options);
+  ChosenBackend chosen = chooseBackend(a.backend, a.device);
+  std::vector<float> rows(stencils.table.rowCount() * 3, 0.0f);
+  for (size_t v = 0; v < shape.positions.size(); ++v)
+    for (int c = 0; c < 3; ++c) rows[3 * v + c] = float(shape.positions[v][c]);
+  auto evaluator = chosen.context
+                       ? makeVulkanStencilEvaluator(*chosen.context, toFloatStencils(stencils.table), 3)
+                       : makeCpuStencilEvaluator(stencils.table, 3);
+  evaluator->apply(rows);
+  const LoopTopology& last = stencils.topology.back();
+  auto rowsAt = [&](uint32_t first) {
+    std::vector<glm::dvec3> out(last.vertexCount);
+    for (uint32_t v = 0; v < last.vertexCount; ++v)
+      out[v] = glm::dvec3(rows[3 * (first + v)], rows[3 * (first + v) + 1], rows[3 * (first + v) + 2]);
+    return out;
+  };
+  std::vector<glm::dvec3> normals;
+  if (a.limit) {
+    const auto t1 = rowsAt(stencils.tangent1Row), t2 = rowsAt(stencils.tangent2Row);
+    for (uint32_t v = 0; v < last.vertexCount; ++v) {
+      const glm::dvec3 n = glm::cross(t1[v], t2[v]);
+      normals.push_back(glm::length(n) > 0 ? glm::normalize(n) : glm::dvec3(0.0));
+    }
+  }
+  writeLoopMesh(a.output, rowsAt(a.limit ? stencils.limitRow : stencils.levelRow.back()),
+                last.triangles, normals);
+  std::printf("%s: %zu triangles, level %d%s on %s: wrote %s (%u vertices, %zu triangles)\n",
+              a.input.c_str(), shape.topology.triangles.size() / 3, a.levels,
+              a.limit ? " limit" : "", evaluator->name().c_str(), a.output.c_str(),
+              last.vertexCount, last.faceCount());
+  return kExitOk;
+}
+
+int runFit(const LoopArgs& a) {
+  checkMeshFormat(a.output);
+  LoopShape cage = readControlMesh(a.input);
+  const PolygonMesh target = readObj(a.target);
+  requireTriangles(target, a.target);
+  std::vector<uint32_t> triangles;
+  for (const auto& f : target.faces) triangles.insert(triangles.end(), f.begin(), f.end());
+  const TriangleBvh bvh(target.positions, triangles);
+  const LoopTopology topology = buildLoopTopology(cage.topology);
+  LoopFitOptions options;
+  options.lambda = a.lambda;
+  options.energyThreshold = a.threshold;
+  options.maxIterations = a.iterations;
+  const LoopFitReport report = fitLoopToSurface(topology, cage.positions, bvh, options);
+  writeLoopMesh(a.output, cage.positions, cage.topology.triangles, {});
+  std::printf("fit %s to %s: E %.6g -> %.6g in %d steps, max |p_inf - q| %.6g: wrote %s\n",
+              a.input.c_str(), a.target.c_str(), report.energy.front(), report.energy.back(),
+              report.iterations, report.maxDistance, a.output.c_str());
+  return kExitOk;
+}
+
+int runJoin(const LoopArgs& a) {
+  checkMeshFormat(a.output);
+  LoopShape first = readControlMesh(a.input);
+  const LoopShape second = readControlMesh(a.target);
+  if (!a.cut.empty()) {
+    if (a.cut.size() != 4) throw CLI::ValidationError("--paste-plane", "needs nx ny nz d");
+    first = cutByPlane(first, {a.cut[0], a.cut[1], a.cut[2]}, a.cut[3]);
+  }
+  LoopJoinOptions options;
+  options.levelsA = a.levelsA;
+  options.levelsB = a.levelsB;
+  const LoopJoinResult r = joinLoopMeshes(first, second, options);
+  writeLoopMesh(a.output, r.mesh.positions, r.mesh.topology.triangles, {});
+  const LoopJoinReport& p = r.report;
+  std::printf("join %s + %s: levels %d/%d, triangles %zu -> %zu (bridge %zu), %zu vertices "
+              "fitted, %zu unchanged, max |p_inf - original| %.3g: wrote %s\n",
+              a.input.c_str(), a.target.c_str(), p.levelsA, p.levelsB, p.trianglesIn,
+              p.trianglesOut, p.bridgeTriangles, p.fittedVertices, p.unchangedVertices,
+              p.maxDeviation, a.output.c_str());
+  return kExitOk;
+}
+
+}  // namespace
+
+void addLoopCommands(CLI::App& app, int& exitCode) {
+  static LoopArgs args;
+  for (const bool limit : {false, true}) {
+    CLI::App* cmd = app.add_subcommand(limit ? "limit" : "loop",
+                                       limit ? "Loop limit surface: refine, push to the limit, with normals"
+                                             : "Loop subdivision of a triangle control mesh (OBJ)");
+    cmd->add_option("input", args.input, "control mesh (.obj, triangles)")->required();
+    cmd->add_option("-o,--output", args.output, "output mesh (.obj, .ply or .glb)")->required();
+    cmd->add_option("-l,--levels", args.levels, "refinement levels")->check(CLI::Range(0, 8));
+    cmd->add_option("--backend", args.backend, "vulkan, cpu or auto")->check(CLI::IsMember({"vulkan", "cpu", "auto"}));
+    cmd->add_option("--device", args.device, "Vulkan device (name substring or index)");
+    cmd->callback([&exitCode, limit] {
+      args.limit = limit;
+      exitCode = runReportingErrors([] { return runRefine(args); }, {args.output});
+    });
+  }
+  CLI::App* fit = app.add_subcommand("fit", "Fit a Loop control mesh to a target mesh (Suzuki et al.)");
+  fit->add_option("cage", args.input, "control mesh to move (.obj)")->required();
+  fit->add_option("target", args.target, "target surface (.obj, triangles)")->required();
+  fit->add_option("-o,--output", args.output, "fitted control mesh (.obj, .ply or .glb)")->required();
+  fit->add_option("--lambda", args.lambda, "step weight λ in (0, 2]");
+  fit->add_option("--threshold", args.threshold, "stop when E = Σ|p∞ − q|² is below this");
+  fit->add_option("--iterations", args.iterations, "at most this many steps")->check(CLI::Range(1, 100000));
+  fit->callback([&exitCode] { exitCode = runReportingErrors([] { return runFit(args); }, {args.output}); });
+  CLI::App* join = app.add_subcommand("join", "Join two closed Loop control meshes by local refinement");
+  join->add_option("first", args.input, "first control mesh (.obj)")->required();
+  join->add_option("second", args.target, "second control mesh (.obj)")->required();
+  join->add_option("-o,--output", args.output, "joined control mesh (.obj, .ply or .glb)")->required();
+  join->add_option("--levels-first", args.levelsA, "local refinement levels of the first (default: by area)");
+  join->add_option("--levels-second", args.levelsB, "local refinement levels of the second");
+  join->add_option("--paste-plane", args.cut, "paste: keep the first mesh's part where n·x ≥ d (nx ny nz d)")->expected(4);
+  join->callback([&exitCode] { exitCode = runReportingErrors([] { return runJoin(args); }, {args.output}); });
+}
+
+}  // namespace tessera::cli
