@@ -23,6 +23,7 @@ void addInfoCommand(CLI::App& app, int& exitCode);
 void addRenderCommand(CLI::App& app, int& exitCode);
 void addPaperTableCommand(CLI::App& app, int& exitCode);
 void addReduceCommand(CLI::App& app, int& exitCode);
+void addDivisionsCommand(CLI::App& app, int& exitCode);
 void addLoopCommands(CLI::App& app, int& exitCode);  // loop, limit, fit, join
 
 }  // namespace tessera::cli

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   tessera::cli::addRenderCommand(app, exitCode);
   tessera::cli::addPaperTableCommand(app, exitCode);
   tessera::cli::addReduceCommand(app, exitCode);
+  tessera::cli::addDivisionsCommand(app, exitCode);
   tessera::cli::addLoopCommands(app, exitCode);
   try {
     app.parse(argc, argv);
