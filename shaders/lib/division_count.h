@@ -22,12 +22,6 @@ struct DivisionNet {
   vec4 d11[DIVISION_MAX_POINTS];
 };
 
-// Scalar nets of β, ω and w restricted to one piece.
-struct DivisionScalars {
-  float w[DIVISION_MAX_POINTS];
-  float beta[DIVISION_MAX_POINTS];
-  float omega[DIVISION_MAX_POINTS];
-};
 
 // Working storage, global so that GLSL passes no 6 KB struct by value (GLSL `in`/`inout` copy):
 // private per invocation in GLSL, thread_local in the C++ mirror.
@@ -37,7 +31,9 @@ struct DivisionScalars {
 #define DIVISION_STORAGE
 #endif
 DIVISION_STORAGE DivisionNet gNet;
-DIVISION_STORAGE DivisionScalars gScalars;
+// The scalar nets (w, β, ω) of one piece, packed so that one de Casteljau pass restricts all
+// three.
+DIVISION_STORAGE vec3 gPiece[DIVISION_MAX_POINTS];
 
 // D = (n−a)(X_(a+1) − X_a) + a(X_a − X_(a−1)) along u (dir 0) or v (dir 1), for the net in
 // `which` (0: h, 1: d1u, 2: d1v) into `out` (0: d1u, 1: d1v, 2: d2u, 3: d2v, 4: d11).
@@ -93,45 +89,32 @@ float divisionNorm(vec3 v) {
   return r;
 }
 
-// One coefficient row (stride `stride`, `degree` + 1 entries from `first`) of the three scalar
-// nets restricted to [t0, t1]: split at t1 keeping the left part, then at t0/t1 keeping the
-// right part (de Casteljau), as restrictCoefficients in host/homogeneous_net.h.
-void restrictScalarRow(int first, int stride, int degree, float t0,
-                       float t1) {
-  for (int which = 0; which < 3; ++which) {
-    float row[DIVISION_MAX_DEGREE + 1];
-    float left[DIVISION_MAX_DEGREE + 1];
-    for (int k = 0; k <= degree; ++k) {
-      int idx = first + k * stride;
-      row[k] = which == 0 ? gScalars.w[idx] : (which == 1 ? gScalars.beta[idx] : gScalars.omega[idx]);
+// One coefficient row (stride `stride`, `degree` + 1 entries from `first`) of the piece's
+// (w, β, ω) nets restricted to [t0, t1]: split at t1 keeping the left part, then at t0/t1
+// keeping the right part (de Casteljau), as restrictCoefficients in host/homogeneous_net.h.
+void restrictPieceRow(int first, int stride, int degree, float t0, float t1) {
+  vec3 row[DIVISION_MAX_DEGREE + 1];
+  vec3 left[DIVISION_MAX_DEGREE + 1];
+  for (int k = 0; k <= degree; ++k) row[k] = gPiece[first + k * stride];
+  left[0] = row[0];
+  PRECISE float om1 = 1.0f - t1;
+  for (int r = 1; r <= degree; ++r) {
+    for (int k = 0; k <= degree - r; ++k) {
+      PRECISE vec3 x = om1 * row[k] + t1 * row[k + 1];
+      row[k] = x;
     }
-    left[0] = row[0];
-    PRECISE float om1 = 1.0f - t1;
-    for (int r = 1; r <= degree; ++r) {
-      for (int k = 0; k <= degree - r; ++k) {
-        PRECISE float x = om1 * row[k] + t1 * row[k + 1];
-        row[k] = x;
-      }
-      left[r] = row[0];
+    left[r] = row[0];
+  }
+  PRECISE float s = t0 / t1;
+  PRECISE float om = 1.0f - s;
+  for (int k = 0; k <= degree; ++k) row[k] = left[k];
+  gPiece[first + degree * stride] = row[degree];
+  for (int r = 1; r <= degree; ++r) {
+    for (int k = 0; k <= degree - r; ++k) {
+      PRECISE vec3 x = om * row[k] + s * row[k + 1];
+      row[k] = x;
     }
-    PRECISE float s = t0 / t1;
-    PRECISE float om = 1.0f - s;
-    for (int k = 0; k <= degree; ++k) row[k] = left[k];
-    float outRow[DIVISION_MAX_DEGREE + 1];
-    outRow[degree] = row[degree];
-    for (int r = 1; r <= degree; ++r) {
-      for (int k = 0; k <= degree - r; ++k) {
-        PRECISE float x = om * row[k] + s * row[k + 1];
-        row[k] = x;
-      }
-      outRow[degree - r] = row[degree - r];
-    }
-    for (int k = 0; k <= degree; ++k) {
-      int idx = first + k * stride;
-      if (which == 0) gScalars.w[idx] = outRow[k];
-      else if (which == 1) gScalars.beta[idx] = outRow[k];
-      else gScalars.omega[idx] = outRow[k];
-    }
+    gPiece[first + (degree - r) * stride] = row[degree - r];
   }
 }
 
@@ -147,31 +130,30 @@ bool divisionWeightRatios(int q, OUT(vec2) ratios) {
     for (int pv = 0; pv < qv; ++pv) {
       for (int k = 0; k < count; ++k) {
         float wk = gNet.h[k].w;
-        gScalars.w[k] = wk;
-        gScalars.beta[k] = wk == 0.0f ? 1.0f : 0.0f;
-        gScalars.omega[k] = wk == 0.0f ? 0.0f : abs(wk);
+        gPiece[k] = vec3(wk, wk == 0.0f ? 1.0f : 0.0f, abs(wk));
       }
       PRECISE float u0 = float(pu) / float(q);
       PRECISE float u1 = float(pu + 1) / float(q);
       PRECISE float v0 = float(pv) / float(qv);
       PRECISE float v1 = float(pv + 1) / float(qv);
       if (u0 != 0.0f || u1 != 1.0f)
-        for (int j = 0; j <= gNet.m; ++j) restrictScalarRow(j, s, gNet.n, u0, u1);
+        for (int j = 0; j <= gNet.m; ++j) restrictPieceRow(j, s, gNet.n, u0, u1);
       if (v0 != 0.0f || v1 != 1.0f)
-        for (int i = 0; i <= gNet.n; ++i) restrictScalarRow(i * s, 1, gNet.m, v0, v1);
+        for (int i = 0; i <= gNet.n; ++i) restrictPieceRow(i * s, 1, gNet.m, v0, v1);
       bool positive = true;
       bool negative = true;
       for (int k = 0; k < count; ++k) {
-        positive = positive && gScalars.w[k] > 0.0f;
-        negative = negative && gScalars.w[k] < 0.0f;
+        positive = positive && gPiece[k].x > 0.0f;
+        negative = negative && gPiece[k].x < 0.0f;
       }
       int pieceSign = positive ? 1 : (negative ? -1 : 0);
       if (pieceSign == 0 || (sign != 0 && pieceSign != sign)) return false;
       sign = pieceSign;
       for (int k = 0; k < count; ++k) {
-        PRECISE float aw = abs(gScalars.w[k]);
-        PRECISE float rb = gScalars.beta[k] / aw;
-        PRECISE float ro = gScalars.omega[k] / aw;
+        vec3 c = gPiece[k];
+        PRECISE float aw = abs(c.x);
+        PRECISE float rb = c.y / aw;
+        PRECISE float ro = c.z / aw;
         ratios.x = max(ratios.x, rb);
         ratios.y = max(ratios.y, ro);
       }
@@ -179,66 +161,118 @@ bool divisionWeightRatios(int q, OUT(vec2) ratios) {
   return true;
 }
 
-// The B1..B8 class maxima of one second partial (0: uu, 1: uv, 2: vv, 3: uv with u and v
-// exchanged in the numerator, S_vu), combined with ρ and σ:
-// Σ_S B_S σ^(3−|S|) ρ^|S| (host/division_count.cpp, classMaxima and combineClasses).
-float divisionPartialBound(int partial, float rho, float sigma) {
+// Where the d_k = D1_k.w (along u or along v) of the k index lie: the extreme s_k = d_k/w_k
+// of the kept weights, and the (w_k, d_k) box of the vanished ones (host/division_count.cpp,
+// classMaxima: the norm is convex in them, so the extremes give the max over k).
+struct DivisionKRange {
+  float sMin;
+  float sMax;
+  float wzMin;
+  float wzMax;
+  float dzMin;
+  float dzMax;
+  bool anyKept;
+  bool anyVanished;
+};
+
+DivisionKRange divisionKRange(bool alongU) {
   int count = (gNet.n + 1) * (gNet.m + 1);
-  float sMin = 0.0f, sMax = 0.0f, wzMin = 0.0f, wzMax = 0.0f, dzMin = 0.0f, dzMax = 0.0f;
-  bool anyKept = false;
-  bool anyVanished = false;
+  DivisionKRange r;
+  r.sMin = 0.0f;
+  r.sMax = 0.0f;
+  r.wzMin = 0.0f;
+  r.wzMax = 0.0f;
+  r.dzMin = 0.0f;
+  r.dzMax = 0.0f;
+  r.anyKept = false;
+  r.anyVanished = false;
   for (int k = 0; k < count; ++k) {
     float wk = gNet.h[k].w;
-    float dk = partial == 0 || partial == 3 ? gNet.d1u[k].w : gNet.d1v[k].w;
+    float dk = alongU ? gNet.d1u[k].w : gNet.d1v[k].w;
     if (wk == 0.0f) {
-      wzMin = anyVanished ? min(wzMin, wk) : wk;
-      wzMax = anyVanished ? max(wzMax, wk) : wk;
-      dzMin = anyVanished ? min(dzMin, dk) : dk;
-      dzMax = anyVanished ? max(dzMax, dk) : dk;
-      anyVanished = true;
+      r.wzMin = r.anyVanished ? min(r.wzMin, wk) : wk;
+      r.wzMax = r.anyVanished ? max(r.wzMax, wk) : wk;
+      r.dzMin = r.anyVanished ? min(r.dzMin, dk) : dk;
+      r.dzMax = r.anyVanished ? max(r.dzMax, dk) : dk;
+      r.anyVanished = true;
     } else {
       PRECISE float sk = dk / wk;
-      sMin = anyKept ? min(sMin, sk) : sk;
-      sMax = anyKept ? max(sMax, sk) : sk;
-      anyKept = true;
+      r.sMin = r.anyKept ? min(r.sMin, sk) : sk;
+      r.sMax = r.anyKept ? max(r.sMax, sk) : sk;
+      r.anyKept = true;
     }
   }
-  float b[8];
-  for (int c = 0; c < 8; ++c) b[c] = 0.0f;
-  for (int i = 0; i < count; ++i)
+  return r;
+}
+
+// B1..B8 class maxima of the four numerators (0: uu, 1: uv, 2: vv, 3: uv with u and v
+// exchanged, S_vu; docs/rational_division.md), 8 classes each, indexed
+// 4·[i vanished] + 2·[j vanished] + [k vanished].
+DIVISION_STORAGE float gClass[32];
+
+// One (i, j) of numerator `partial`: A_ijk = E w_k − 2F d_k, maximised over k by the range.
+void divisionAccumulate(int partial, vec3 e, vec3 f, float den, int cls, IN(DivisionKRange) r) {
+  PRECISE vec3 f2 = 2.0f * f;
+  int base = 8 * partial + cls;
+  if (r.anyKept) {
+    PRECISE float v = max(divisionNorm(e - f2 * r.sMin), divisionNorm(e - f2 * r.sMax));
+    PRECISE float q = v / den;
+    gClass[base] = max(gClass[base], q);
+  }
+  if (r.anyVanished) {
+    PRECISE float v = 0.0f;
+    v = max(v, divisionNorm(e * r.wzMin - f2 * r.dzMin));
+    v = max(v, divisionNorm(e * r.wzMin - f2 * r.dzMax));
+    v = max(v, divisionNorm(e * r.wzMax - f2 * r.dzMin));
+    v = max(v, divisionNorm(e * r.wzMax - f2 * r.dzMax));
+    PRECISE float q = v / den;
+    gClass[base + 1] = max(gClass[base + 1], q);
+  }
+}
+
+// All four numerators' class maxima in one pass over the (i, j) pairs (each control-net entry
+// is loaded once per pair; the GPU keeps these arrays in scratch memory).
+void divisionClassMaxima() {
+  int count = (gNet.n + 1) * (gNet.m + 1);
+  DivisionKRange ru = divisionKRange(true);
+  DivisionKRange rv = divisionKRange(false);
+  for (int c = 0; c < 32; ++c) gClass[c] = 0.0f;
+  for (int i = 0; i < count; ++i) {
+    vec4 hi = gNet.h[i];
+    vec4 d1ui = gNet.d1u[i];
+    vec4 d1vi = gNet.d1v[i];
+    vec4 d2ui = gNet.d2u[i];
+    vec4 d2vi = gNet.d2v[i];
+    vec4 d11i = gNet.d11[i];
+    bool vi = hi.w == 0.0f;
     for (int j = 0; j < count; ++j) {
-      bool mixed = partial == 1 || partial == 3;
-      vec4 second = partial == 0 ? gNet.d2u[i] : (mixed ? gNet.d11[i] : gNet.d2v[i]);
-      PRECISE vec3 e = divisionWedge(second, gNet.h[j]);
-      if (partial == 1) e = e + divisionWedge(gNet.d1u[i], gNet.d1v[j]);
-      if (partial == 3) e = e + divisionWedge(gNet.d1v[i], gNet.d1u[j]);
-      vec4 first = partial == 2 || partial == 3 ? gNet.d1v[i] : gNet.d1u[i];
-      PRECISE vec3 f = divisionWedge(first, gNet.h[j]);
-      bool vi = gNet.h[i].w == 0.0f;
-      bool vj = gNet.h[j].w == 0.0f;
-      PRECISE float den = (vi ? 1.0f : abs(gNet.h[i].w)) * (vj ? 1.0f : abs(gNet.h[j].w));
+      vec4 hj = gNet.h[j];
+      vec4 d1uj = gNet.d1u[j];
+      vec4 d1vj = gNet.d1v[j];
+      bool vj = hj.w == 0.0f;
+      PRECISE float den = (vi ? 1.0f : abs(hi.w)) * (vj ? 1.0f : abs(hj.w));
       int cls = (vi ? 4 : 0) + (vj ? 2 : 0);
-      PRECISE vec3 f2 = 2.0f * f;
-      if (anyKept) {
-        PRECISE float v = max(divisionNorm(e - f2 * sMin), divisionNorm(e - f2 * sMax));
-        PRECISE float r = v / den;
-        b[cls] = max(b[cls], r);
-      }
-      if (anyVanished) {
-        PRECISE float v = 0.0f;
-        v = max(v, divisionNorm(e * wzMin - f2 * dzMin));
-        v = max(v, divisionNorm(e * wzMin - f2 * dzMax));
-        v = max(v, divisionNorm(e * wzMax - f2 * dzMin));
-        v = max(v, divisionNorm(e * wzMax - f2 * dzMax));
-        PRECISE float r = v / den;
-        b[cls + 1] = max(b[cls + 1], r);
-      }
+      vec3 fu = divisionWedge(d1ui, hj);
+      vec3 fv = divisionWedge(d1vi, hj);
+      vec3 mixed = divisionWedge(d11i, hj);
+      PRECISE vec3 e1 = mixed + divisionWedge(d1ui, d1vj);
+      PRECISE vec3 e3 = mixed + divisionWedge(d1vi, d1uj);
+      divisionAccumulate(0, divisionWedge(d2ui, hj), fu, den, cls, ru);
+      divisionAccumulate(1, e1, fu, den, cls, rv);
+      divisionAccumulate(2, divisionWedge(d2vi, hj), fv, den, cls, rv);
+      divisionAccumulate(3, e3, fv, den, cls, ru);
     }
+  }
+}
+
+// Σ_S B_S σ^(3−|S|) ρ^|S| for one numerator (host/division_count.cpp, combineClasses).
+float divisionCombine(int partial, float rho, float sigma) {
   PRECISE float sum = 0.0f;
   for (int c = 0; c < 8; ++c) {
-    if (b[c] == 0.0f) continue;
+    float b = gClass[8 * partial + c];
+    if (b == 0.0f) continue;
     int vanished = ((c >> 2) & 1) + ((c >> 1) & 1) + (c & 1);
-    PRECISE float term = b[c];
+    PRECISE float term = b;
     for (int t = 0; t < 3 - vanished; ++t) term = term * sigma;
     for (int t = 0; t < vanished; ++t) term = term * rho;
     sum = sum + term;
@@ -305,11 +339,11 @@ DivisionResult divisionCounts(IN(DivisionPush) params) {
     if (!divisionWeightRatios(int(params.ratioPieces), ratios)) return res;
   }
   divisionDerivativeNets();
-  res.uu = divisionPartialBound(0, ratios.x, ratios.y);
+  divisionClassMaxima();
+  res.uu = divisionCombine(0, ratios.x, ratios.y);
   if (gNet.m > 0) {
-    res.uv = min(divisionPartialBound(1, ratios.x, ratios.y),
-                 divisionPartialBound(3, ratios.x, ratios.y));
-    res.vv = divisionPartialBound(2, ratios.x, ratios.y);
+    res.uv = min(divisionCombine(1, ratios.x, ratios.y), divisionCombine(3, ratios.x, ratios.y));
+    res.vv = divisionCombine(2, ratios.x, ratios.y);
   }
   vec2 real = divisionRealCounts(res.uu, res.uv, res.vv, params.tolerance);
   res.realU = real.x;
