@@ -1,15 +1,25 @@
 #!/usr/bin/env bash
 # README command 2: install what is missing, build, and run the whole test suite through
 # CTest. GPU tests run on the Vulkan device (lavapipe in CI) with validation layers on.
-#   --cpu-only   run only the CPU tests, deliberately (GPU tests are not run at all)
+# Then the hardening step, scripts/sanitize.sh (docs/hardening.md): a clang build with
+# AddressSanitizer, UndefinedBehaviorSanitizer and libFuzzer runs the CPU tests again and every
+# fuzz target for a few seconds.
+#   --cpu-only      run only the CPU tests, deliberately (GPU tests are not run at all)
+#   --no-sanitize   skip the hardening step, deliberately (for quick local runs; CI runs it)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 labels=()
-if [[ "${1:-}" == "--cpu-only" ]]; then
-  labels=(-LE gpu)
-  echo "test: CPU-only run requested: GPU tests excluded"
-fi
+sanitize=1
+for arg in "$@"; do
+  case "$arg" in
+    --cpu-only) labels=(-LE gpu); echo "test: CPU-only run requested: GPU tests excluded" ;;
+    --no-sanitize) sanitize=0; echo "test: --no-sanitize: the sanitizer and fuzz step is skipped" ;;
+    *) echo "test: unknown option '$arg' (--cpu-only, --no-sanitize)" >&2; exit 2 ;;
+  esac
+done
 scripts/deps.sh
 scripts/build.sh
-cd "${BUILD_DIR:-build}"
-ctest --output-on-failure -j "$(nproc)" "${labels[@]}"
+(cd "${BUILD_DIR:-build}" && ctest --output-on-failure -j "$(nproc)" "${labels[@]}")
+if [[ $sanitize == 1 ]]; then
+  scripts/sanitize.sh
+fi

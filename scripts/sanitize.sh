@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# The hardening step of scripts/test.sh (docs/hardening.md), runnable alone: builds Tessera
+# with clang, AddressSanitizer + UndefinedBehaviorSanitizer and the libFuzzer targets into
+# ${SANITIZE_BUILD_DIR:-build-sanitize}, runs the CPU tests there (any sanitizer report fails
+# the test that triggered it), then every fuzz target for ${TESSERA_FUZZ_SECONDS:-5} s.
+#   --with-gpu   also run the GPU tests under the sanitizers (lavapipe; see docs/hardening.md)
+# Without clang it FAILS, unless TESSERA_SKIP_FUZZ=1: then GCC builds the sanitizer suite and
+# no fuzz target runs.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+labels=(-L cpu)
+[[ "${1:-}" == "--with-gpu" ]] && labels=()
+build_dir=${SANITIZE_BUILD_DIR:-build-sanitize}
+config=(-DTESSERA_SANITIZE=ON -DTESSERA_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo)
+if command -v clang++ >/dev/null; then
+  config+=(-DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DTESSERA_FUZZ=ON
+           -DTESSERA_FUZZ_SECONDS="${TESSERA_FUZZ_SECONDS:-5}")
+  fuzz=1
+elif [[ "${TESSERA_SKIP_FUZZ:-0}" == 1 ]]; then
+  echo "sanitize: no clang++; TESSERA_SKIP_FUZZ=1: GCC sanitizer build, fuzz targets not run"
+  fuzz=0
+else
+  echo "sanitize: clang++ not found: run scripts/deps.sh (or TESSERA_SKIP_FUZZ=1)" >&2
+  exit 1
+fi
+start=$SECONDS
+cmake -S . -B "$build_dir" "${config[@]}" >/dev/null
+cmake --build "$build_dir" -j "$(nproc)"
+echo "sanitize: build $((SECONDS - start)) s"
+
+# Leaks inside the Vulkan loader and driver are theirs, not ours: tests/lsan.supp lists each.
+export ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp:print_suppressions=0
+cd "$build_dir"
+start=$SECONDS
+ctest --output-on-failure -j "$(nproc)" -LE fuzz "${labels[@]}"
+echo "sanitize: tests $((SECONDS - start)) s"
+if [[ $fuzz == 1 ]]; then
+  start=$SECONDS
+  # Each target prints "fuzz: N executions of <target> ..."; -V shows those lines.
+  ctest --output-on-failure -j "$(nproc)" -L fuzz -V | grep -E "fuzz: |tests passed|Failed|\*\*\*"
+  echo "sanitize: fuzzing $((SECONDS - start)) s"
+fi
