@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <map>
-#include <numeric>
 #include <stdexcept>
 
 namespace tessera {
@@ -19,13 +18,16 @@ HalfEdges halfEdgesOf(const std::vector<uint32_t>& tris, const std::vector<uint8
   return h;
 }
 
-// Faces of every piece but the largest (pieces joined across edges).
-bool removeSmallPieces(const std::vector<uint32_t>& tris, std::vector<uint8_t>& gone) {
-  const uint32_t n = uint32_t(tris.size() / 3);
-  const HalfEdges h = halfEdgesOf(tris, gone);
-  std::vector<uint32_t> piece(n, kLoopNone), sizes;
-  for (uint32_t start = 0; start < n; ++start) {
-    if (gone[start] || piece[start] != kLoopNone) continue;
+// Splits `faces` into pieces, two faces being in one piece when they share an edge that
+// `crosses(a, b)` lets through, and removes (sets `gone`) every piece but the largest.
+// Returns whether anything was removed.
+template <class Crosses>
+bool keepLargestPiece(const std::vector<uint32_t>& faces, const std::vector<uint32_t>& tris,
+                      const HalfEdges& h, Crosses crosses, std::vector<uint8_t>& gone) {
+  std::map<uint32_t, uint32_t> piece;
+  std::vector<uint32_t> sizes;
+  for (uint32_t start : faces) {
+    if (piece.count(start)) continue;
     const uint32_t id = uint32_t(sizes.size());
     sizes.push_back(0);
     std::vector<uint32_t> stack{start};
@@ -35,20 +37,31 @@ bool removeSmallPieces(const std::vector<uint32_t>& tris, std::vector<uint8_t>& 
       stack.pop_back();
       ++sizes[id];
       for (int i = 0; i < 3; ++i) {
-        auto it = h.find({tris[3 * f + (i + 1) % 3], tris[3 * f + i]});
-        if (it != h.end() && piece[it->second] == kLoopNone) piece[it->second] = id, stack.push_back(it->second);
+        const uint32_t a = tris[3 * f + i], b = tris[3 * f + (i + 1) % 3];
+        if (!crosses(a, b)) continue;
+        auto it = h.find({b, a});
+        if (it != h.end() && !piece.count(it->second)) piece[it->second] = id, stack.push_back(it->second);
       }
     }
   }
   if (sizes.size() <= 1) return false;
   const uint32_t keep = uint32_t(std::max_element(sizes.begin(), sizes.end()) - sizes.begin());
-  for (uint32_t f = 0; f < n; ++f)
-    if (!gone[f] && piece[f] != keep) gone[f] = 1;
+  for (auto [f, id] : piece)
+    if (id != keep) gone[f] = 1;
   return true;
 }
 
+// Faces of every piece of the mesh but the largest.
+bool removeSmallPieces(const std::vector<uint32_t>& tris, std::vector<uint8_t>& gone) {
+  std::vector<uint32_t> faces;
+  for (uint32_t f = 0; f < tris.size() / 3; ++f)
+    if (!gone[f]) faces.push_back(f);
+  return keepLargestPiece(faces, tris, halfEdgesOf(tris, gone),
+                          [](uint32_t, uint32_t) { return true; }, gone);
+}
+
 // At a vertex where two or more fans of faces meet (only the removal can make one), keeps the
-// largest fan. Returns whether anything was removed.
+// largest fan (faces around v joined across edges through v).
 bool removePinchedFans(const std::vector<uint32_t>& tris, uint32_t vertexCount,
                        std::vector<uint8_t>& gone) {
   const HalfEdges h = halfEdgesOf(tris, gone);
@@ -57,33 +70,9 @@ bool removePinchedFans(const std::vector<uint32_t>& tris, uint32_t vertexCount,
     if (!gone[f])
       for (int i = 0; i < 3; ++i) facesOf[tris[3 * f + i]].push_back(f);
   bool changed = false;
-  for (uint32_t v = 0; v < vertexCount; ++v) {
-    // Fans: faces around v joined across edges through v.
-    std::map<uint32_t, uint32_t> fan;
-    std::vector<uint32_t> sizes;
-    for (uint32_t start : facesOf[v]) {
-      if (fan.count(start)) continue;
-      const uint32_t id = uint32_t(sizes.size());
-      sizes.push_back(0);
-      std::vector<uint32_t> stack{start};
-      fan[start] = id;
-      while (!stack.empty()) {
-        const uint32_t f = stack.back();
-        stack.pop_back();
-        ++sizes[id];
-        for (int i = 0; i < 3; ++i) {
-          const uint32_t a = tris[3 * f + i], b = tris[3 * f + (i + 1) % 3];
-          if (a != v && b != v) continue;
-          auto it = h.find({b, a});
-          if (it != h.end() && !fan.count(it->second)) fan[it->second] = id, stack.push_back(it->second);
-        }
-      }
-    }
-    if (sizes.size() <= 1) continue;
-    const uint32_t keep = uint32_t(std::max_element(sizes.begin(), sizes.end()) - sizes.begin());
-    for (auto [f, id] : fan)
-      if (id != keep) gone[f] = 1, changed = true;
-  }
+  for (uint32_t v = 0; v < vertexCount; ++v)
+    changed |= keepLargestPiece(facesOf[v], tris, h,
+                                [v](uint32_t a, uint32_t b) { return a == v || b == v; }, gone);
   return changed;
 }
 
