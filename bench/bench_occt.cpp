@@ -4,7 +4,7 @@
 // BRepMesh_IncrementalMesh at linear deflections 0.01 and 0.001 (angular 0.5 rad), serial and
 // parallel. Tessera (rule B by default) then runs at the largest threshold whose mesh has the same
 // or a smaller measured maximum deviation. Both meshes are measured by the same code with both
-// metrics: distance to the true surface (host/surface_distance.h, what OCCT's deflection
+// metrics: distance to the true surface (host/deviation.h geometric metric, what OCCT's deflection
 // promises; the metric the settings are matched on) and parametric (host/deviation.h).
 // Usage: bench_occt [deflections=0.01,0.001] [rules=B] [--json file]   (rules e.g. BD)
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -32,7 +32,6 @@
 #include "bench_report.h"
 #include "deviation.h"
 #include "io/bpt_reader.h"
-#include "surface_distance.h"
 #include "tessellate.h"
 #include "vk/context.h"
 
@@ -66,7 +65,7 @@ OcctModel buildShells(const std::vector<BezierPatch>& patches, const std::vector
 }
 
 // OCCT's triangulation of every face as a Tessellation (per-triangle patch and corner uvs), so
-// that measureDeviation and measureSurfaceDistance see it exactly as they see Tessera's.
+// that both metrics of measureDeviation see it exactly as they see Tessera's.
 Tessellation readTriangulation(const OcctModel& model) {
   Tessellation t;
   for (TopExp_Explorer e(model.shape, TopAbs_FACE); e.More(); e.Next()) {
@@ -102,7 +101,7 @@ struct Measured {
 };
 
 Measured measure(const Tessellation& t, const std::vector<BezierPatch>& patches) {
-  return {t.mesh.triangleCount(), measureSurfaceDistance(t, patches).maxDeviation,
+  return {t.mesh.triangleCount(), measureDeviation(t, patches, 4, DeviationMetric::Geometric).maxDeviation,
           measureDeviation(t, patches).maxDeviation};
 }
 
@@ -121,7 +120,7 @@ QuadtreeOptions matchDeviation(const std::vector<BezierPatch>& patches, SplitRul
   auto within = [&](double threshold) {
     o.linearity = o.flatness = float(threshold);
     Tessellation t = tessellate(patches, o, backend);
-    double d = measureSurfaceDistance(t, patches).maxDeviation;
+    double d = measureDeviation(t, patches, 4, DeviationMetric::Geometric).maxDeviation;
     std::fprintf(stderr, "  rule %c threshold %.3g: %zu triangles, distance %.3g (target %.3g)\n",
                  splitRuleLetter(rule), threshold, t.mesh.triangleCount(), d, target);
     return d <= target;

@@ -41,6 +41,9 @@ ClosestPoint closestPointOnPatch(const BezierPatch& patch, const glm::dvec3& tar
       if (a > 0 && det > 0) {
         const glm::dvec2 step((c * gu - b * gv) / det, (a * gv - b * gu) / det);
         next = clampToDomain(uv - step);
+        // Converged: the step no longer moves the parameter measurably (Newton's last steps
+        // are tiny), so further damped trials could only waste evaluations.
+        if (glm::length(next - uv) < 1e-12) return {uv, d.p, best};
         const SurfaceDerivatives trial = derivativesAt(patch, next);
         const double distance = glm::length(trial.p - target);
         if (distance < best) {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
+#include <thread>
 
 #include "bezier.h"
 #include "bicubic.h"
@@ -22,41 +24,69 @@ DeviationReport measureDeviation(const Tessellation& tessellation,
       tessellation.cornerUv.size() != mesh.indices.size())
     throw std::invalid_argument("measureDeviation: per-triangle patches and corner uvs missing");
   if (subdivisions < 1) throw std::invalid_argument("measureDeviation: subdivisions must be >= 1");
+  for (uint32_t patch : tessellation.trianglePatch)
+    if (patch >= patches.size())
+      throw std::invalid_argument("measureDeviation: patch " + std::to_string(patch) + " for " +
+                                  std::to_string(patches.size()) + " patches");
+  const size_t triangles = mesh.triangleCount();
+  const int n = subdivisions;
+  // Per triangle: largest and summed distance. Triangles are independent, so the work is
+  // split over all cores and merged afterwards in triangle order (the result does not depend
+  // on the thread count).
+  std::vector<double> triangleMax(triangles, 0.0), triangleSum(triangles, 0.0);
+  auto measureRange = [&](size_t first, size_t last) {
+    for (size_t t = first; t < last; ++t) {
+      const BezierPatch& patch = patches[tessellation.trianglePatch[t]];
+      const uint32_t* corner = &mesh.indices[3 * t];
+      const glm::vec2* uv = &tessellation.cornerUv[3 * t];
+      for (int i = 0; i <= n; ++i)
+        for (int j = 0; i + j <= n; ++j) {
+          const double wa = double(i) / n, wb = double(j) / n, wc = 1.0 - wa - wb;
+          const glm::dvec2 at = wa * glm::dvec2(uv[0]) + wb * glm::dvec2(uv[1]) + wc * glm::dvec2(uv[2]);
+          const glm::dvec3 p = wa * glm::dvec3(mesh.positions[corner[0]]) +
+                               wb * glm::dvec3(mesh.positions[corner[1]]) +
+                               wc * glm::dvec3(mesh.positions[corner[2]]);
+          double d;
+          if (metric == DeviationMetric::Parametric) {
+            const glm::dvec3 truth = patch.degreeU == 3 && patch.degreeV == 3
+                                         ? bicubicDerivatives(patch, at.x, at.y).p
+                                         : patchPoint(patch, at.x, at.y);
+            d = glm::length(p - truth);
+          } else {
+            d = closestPointOnPatch(patch, p, at).distance;
+          }
+          triangleMax[t] = std::max(triangleMax[t], d);
+          triangleSum[t] += d;
+        }
+    }
+  };
+  // Small meshes are not worth a thread start (the per-patch report measures each patch apart).
+  const unsigned threads =
+      triangles < 2048 ? 1u : std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::thread> pool;
+  for (unsigned k = 1; k < threads; ++k)
+    pool.emplace_back(measureRange, triangles * k / threads, triangles * (k + 1) / threads);
+  measureRange(0, triangles / threads);
+  for (auto& thread : pool) thread.join();
+
   DeviationReport report;
   report.perPatchMax.assign(patches.size(), 0.0);
   report.perPatchMean.assign(patches.size(), 0.0);
   std::vector<size_t> perPatchSamples(patches.size(), 0);
+  const size_t samplesPerTriangle = size_t(n + 1) * size_t(n + 2) / 2;
   double sum = 0;
-  const int n = subdivisions;
-  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-    uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
-    const BezierPatch& patch = patches.at(tessellation.trianglePatch[t / 3]);
-    const glm::dvec2 uvA(tessellation.cornerUv[t]), uvB(tessellation.cornerUv[t + 1]),
-        uvC(tessellation.cornerUv[t + 2]);
-    for (int i = 0; i <= n; ++i)
-      for (int j = 0; i + j <= n; ++j) {
-        double wa = double(i) / n, wb = double(j) / n, wc = 1.0 - wa - wb;
-        glm::dvec2 uv = wa * uvA + wb * uvB + wc * uvC;
-        glm::dvec3 p = wa * glm::dvec3(mesh.positions[a]) + wb * glm::dvec3(mesh.positions[b]) +
-                       wc * glm::dvec3(mesh.positions[c]);
-        glm::dvec3 truth = patch.degreeU == 3 && patch.degreeV == 3
-                               ? bicubicDerivatives(patch, uv.x, uv.y).p
-                               : patchPoint(patch, uv.x, uv.y);
-        double d = metric == DeviationMetric::Parametric
-                       ? glm::length(p - truth)
-                       : closestPointOnPatch(patch, p, uv).distance;
-        const uint32_t patchIndex = tessellation.trianglePatch[t / 3];
-        report.perPatchMax[patchIndex] = std::max(report.perPatchMax[patchIndex], d);
-        report.perPatchMean[patchIndex] += d;
-        ++perPatchSamples[patchIndex];
-        sum += d;
-        ++report.samples;
-        if (d > report.maxDeviation) {
-          report.maxDeviation = d;
-          report.worstTriangle = t / 3;
-        }
-      }
+  for (size_t t = 0; t < triangles; ++t) {
+    const uint32_t patch = tessellation.trianglePatch[t];
+    report.perPatchMax[patch] = std::max(report.perPatchMax[patch], triangleMax[t]);
+    report.perPatchMean[patch] += triangleSum[t];
+    perPatchSamples[patch] += samplesPerTriangle;
+    sum += triangleSum[t];
+    if (triangleMax[t] > report.maxDeviation) {
+      report.maxDeviation = triangleMax[t];
+      report.worstTriangle = t;
+    }
   }
+  report.samples = triangles * samplesPerTriangle;
   report.meanDeviation = report.samples ? sum / double(report.samples) : 0.0;
   for (size_t p = 0; p < patches.size(); ++p)
     if (perPatchSamples[p]) report.perPatchMean[p] /= double(perPatchSamples[p]);
