@@ -13,6 +13,9 @@
 #include "loop_evaluator.h"
 #include "loop_join.h"
 #include "loop_limit.h"
+#include "loop_picture.h"
+#include "io/png_writer.h"
+#include "vk/context.h"
 #include "loop_stencils.h"
 
 namespace tessera::cli {
@@ -63,6 +66,7 @@ struct LoopArgs {
   double lambda = 1.0, threshold = 0.0;
   int iterations = 100, levelsA = -1, levelsB = -1;
   std::vector<double> cut;  // paste: nx ny nz d
+  std::string picture;      // join: inputs, placement and result as one PNG
 };
 
 // Refines on the chosen backend through the stencil tables; with `limit`, the last level's
@@ -140,6 +144,15 @@ int runJoin(const LoopArgs& a) {
   options.levelsB = a.levelsB;
   const LoopJoinResult r = joinLoopMeshes(first, second, options);
   writeLoopMesh(a.output, r.mesh.positions, r.mesh.topology.triangles, {});
+  if (!a.picture.empty()) {
+    vk::ContextOptions vkOptions;
+    vkOptions.device = a.device;
+    vk::Context context(vkOptions);
+    const int panel = 640, height = 480;
+    writePngFile(a.picture, renderJoinPicture(context, first, second, r, panel, height), 3 * panel, height);
+    std::printf("drew %s (inputs, placement, result) on %s\n", a.picture.c_str(),
+                context.info().name.c_str());
+  }
   const LoopJoinReport& p = r.report;
   std::printf("join %s + %s: levels %d/%d, triangles %zu -> %zu (bridge %zu), %zu vertices "
               "fitted, %zu unchanged, max |p_inf - original| %.3g: wrote %s\n",
@@ -182,7 +195,12 @@ void addLoopCommands(CLI::App& app, int& exitCode) {
   join->add_option("--levels-first", args.levelsA, "local refinement levels of the first (default: by area)");
   join->add_option("--levels-second", args.levelsB, "local refinement levels of the second");
   join->add_option("--paste-plane", args.cut, "paste: keep the first mesh's part where n·x ≥ d (nx ny nz d)")->expected(4);
-  join->callback([&exitCode] { exitCode = runReportingErrors([] { return runJoin(args); }, {args.output}); });
+  join->add_option("--picture", args.picture, "also draw inputs, placement and result (.png, needs Vulkan)");
+  join->add_option("--device", args.device, "Vulkan device for --picture (name substring or index)");
+  join->callback([&exitCode] {
+    exitCode = runReportingErrors([] { return runJoin(args); }, {args.output, args.picture},
+                                  "join --picture needs a Vulkan device that draws");
+  });
 }
 
 }  // namespace tessera::cli
