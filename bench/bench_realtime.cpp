@@ -1,0 +1,187 @@
+// Case 5, real-time view-dependent tessellation: 100 perturbed teapots at 1920×1080 along the
+// 300-frame camera path of case 6, tolerance 1 px; every frame re-tessellates from scratch
+// (host/realtime_frame.h: cull, division counts on Vulkan, rule-A grids on Vulkan) with the
+// buffers kept between frames. Frames/s, triangles per frame, the split of a frame's time, and
+// the screen-space error of sampled frames against the double surface (must be ≤ the
+// tolerance). The tessellation-shader peer (case 6) runs the same path in the same run.
+// Usage: bench_realtime [frames=300] [teapots=100] [tolerancePx=1] [q=4] [--json file]
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "bench_report.h"
+#include "bench_scenes.h"
+#include "evaluator.h"
+#include "io/bpt_reader.h"
+#include "realtime_frame.h"
+#include "tess_shader_peer.h"
+#include "vk/context.h"
+
+using namespace tessera;
+
+namespace {
+
+struct Path {  // circles the scene, dipping closer and further (bench_tess_shader's path)
+  glm::dvec3 centre;
+  double radius;
+  int frames;
+  glm::dvec3 eye(int frame) const {
+    double t = 6.283185307179586 * frame / frames;
+    double distance = radius * (1.3 + 0.5 * std::sin(2.0 * t));
+    return centre + glm::dvec3(distance * std::cos(t), distance * std::sin(t), 0.5 * radius);
+  }
+  Camera camera(int frame) const {
+    return lookAtCamera(eye(frame), centre, {0, 0, 1}, glm::radians(45.0), 1920, 1080, 0.05,
+                        10.0 * radius);
+  }
+  glm::mat4 peerMatrix(int frame) const {
+    return glm::perspectiveRH_ZO(glm::radians(45.0f), 1920.0f / 1080.0f, 0.05f,
+                                 float(10.0 * radius)) *
+           glm::lookAtRH(glm::vec3(eye(frame)), glm::vec3(centre), glm::vec3(0, 0, 1));
+  }
+};
+
+bench::Timing timingOf(std::vector<double> seconds) {
+  std::sort(seconds.begin(), seconds.end());
+  return {seconds.front(), seconds[seconds.size() / 2], int(seconds.size())};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bench::Report report("bench_realtime", argc, argv);
+  const int frames = argc > 1 ? std::atoi(argv[1]) : 300;
+  const int teapots = argc > 2 ? std::atoi(argv[2]) : 100;
+  const double tolerance = argc > 3 ? std::atof(argv[3]) : 1.0;
+  const int ratioPieces = argc > 4 ? std::atoi(argv[4]) : 4;
+  const int perRow = std::max(1, int(std::lround(std::sqrt(double(teapots)))));
+  const auto patches =
+      bench::perturbedCopies(readBpt(TESSERA_BENCH_DATA "/teapot.bpt"), teapots, perRow);
+  glm::dvec3 lo(1e30), hi(-1e30);
+  for (auto& p : patches)
+    for (auto& c : p.cp) {
+      lo = glm::min(lo, c);
+      hi = glm::max(hi, c);
+    }
+  const Path path{0.5 * (lo + hi), 0.5 * glm::length(hi - lo), std::max(frames, 1)};
+  vk::ContextOptions options;
+  vk::Context context(options);
+  report.setDevice(context);
+
+  RealtimeTessellator tessellator(context, patches, {tolerance, 64, ratioPieces});
+  tessellator.tessellate(path.camera(0));  // warm-up: pipeline compile, buffers grown
+  std::vector<double> seconds;
+  double triangles = 0, counted = 0, vertices = 0, prepare = 0, count = 0, bucket = 0, grid = 0;
+  double culled = 0, fallback = 0, capped = 0, dispatches = 0;
+  auto start = std::chrono::steady_clock::now();
+  for (int f = 0; f < frames; ++f) {
+    auto frameStart = std::chrono::steady_clock::now();
+    const RealtimeFrame& frame = tessellator.tessellate(path.camera(f));
+    seconds.push_back(bench::secondsSince(frameStart));
+    triangles += double(frame.triangles);
+    vertices += double(frame.vertices);
+    counted += double(frame.countedTriangles);
+    prepare += frame.prepareSeconds;
+    count += frame.countSeconds;
+    bucket += frame.bucketSeconds;
+    grid += frame.gridSeconds;
+    culled += double(frame.culled);
+    fallback += double(frame.fallback);
+    capped += double(frame.capped);
+    dispatches += double(frame.dispatches);
+  }
+  const double total = bench::secondsSince(start);
+
+  // The screen-space error of a few frames, outside the timing (the double surface is slow).
+  double maxAffine = 0, maxPerspective = 0;
+  size_t measuredTriangles = 0;
+  std::vector<int> sampled;
+  for (int k = 0; k < 5; ++k) sampled.push_back(frames * k / 5);
+  for (int f : sampled) {
+    const Camera camera = path.camera(f);
+    const ScreenErrorReport e =
+        measureScreenError(tessellator.tessellate(camera), tessellator.patches(), camera, 2);
+    maxAffine = std::max(maxAffine, e.maxAffinePixels);
+    maxPerspective = std::max(maxPerspective, e.maxPerspectivePixels);
+    measuredTriangles += e.triangles;
+  }
+
+  // The peer on the same path (case 6), for the ratio in one run.
+  std::vector<double> peerSeconds;
+  double peerTriangles = 0, peerTotal = 0;
+  bool peerCounts = false;
+  if (context.enabledFeatures().tessellationShader) {
+    TessShaderPeer peer(context, toGpuPatches(patches),
+                        {1920, 1080, float(tolerance), 64.0f});
+    peer.drawFrame(path.peerMatrix(0));
+    auto peerStart = std::chrono::steady_clock::now();
+    for (int f = 0; f < frames; ++f) {
+      auto frameStart = std::chrono::steady_clock::now();
+      peerTriangles += double(peer.drawFrame(path.peerMatrix(f)));
+      peerSeconds.push_back(bench::secondsSince(frameStart));
+    }
+    peerTotal = bench::secondsSince(peerStart);
+    peerCounts = peer.countsTriangles();
+  }
+
+  char title[240];
+  std::snprintf(title, sizeof title,
+                "real-time view-dependent tessellation, %d teapots (%zu patches), %d-frame camera "
+                "path at 1920x1080, tolerance %.2g px, every frame from scratch (times per frame)",
+                teapots, patches.size(), frames, tolerance);
+  bench::Table& table = report.table("real-time", "frames", title);
+  table.rateUnit = "frames/s";
+  const double n = std::max(frames, 1);
+  bench::Case ours{"Tessera: cull + counts + rule-A grids on Vulkan (" + context.info().name + ")",
+                   double(frames), timingOf(seconds)};
+  ours.throughput = frames / total;
+  ours.extra = {{"teapots", teapots},
+                {"patches", patches.size()},
+                {"tolerancePixels", tolerance},
+                {"trianglesPerFrame", triangles / n},
+                {"verticesPerFrame", vertices / n},
+                {"countedTrianglesPerFrame", counted / n},
+                {"trianglesPerSecond", triangles / total},
+                {"secondsPerFrame",
+                 {{"hostTransformCullPack", prepare / n},
+                  {"gpuCounts", count / n},
+                  {"hostFallbackAndBucketing", bucket / n},
+                  {"gpuGridEvaluation", grid / n}}},
+                {"culledPerFrame", culled / n},
+                {"eyePlaneFallbacksPerFrame", fallback / n},
+                {"cappedPerFrame", capped / n},
+                {"gridDispatchesPerFrame", dispatches / n},
+                {"sampledFrames", sampled},
+                {"maxScreenErrorPixelsAffine", maxAffine},
+                {"maxScreenErrorPixelsPerspective", maxPerspective},
+                {"measuredTriangles", measuredTriangles}};
+  table.cases.push_back(ours);
+  if (!peerSeconds.empty()) {
+    bench::Case peer{"Vulkan tessellation shaders, max factor 64 (case 6)", double(frames),
+                     timingOf(peerSeconds)};
+    peer.throughput = frames / peerTotal;
+    peer.extra = {{"trianglesPerFrame", peerCounts ? peerTriangles / n : -1.0}};
+    table.cases.push_back(peer);
+  }
+  report.print(table);
+  std::printf("\nTessera: %.1f frames/s, %.0f triangles and %.0f vertices per frame; per frame "
+              "%.2f ms host transform/cull/pack, %.2f ms GPU counts, %.2f ms host "
+              "fallback/bucketing, %.2f ms GPU grids (%.1f dispatches); %.0f patches culled, "
+              "%.1f eye-plane fallbacks, %.1f capped per frame\n",
+              frames / total, triangles / n, vertices / n, 1e3 * prepare / n, 1e3 * count / n,
+              1e3 * bucket / n, 1e3 * grid / n, dispatches / n, culled / n, fallback / n,
+              capped / n);
+  std::printf("the counts ask for %.0f triangles per frame (2·N_u·N_v); square grids on the "
+              "ladder of sizes spend %.2fx that\n", counted / n, triangles / std::max(counted, 1.0));
+  std::printf("screen-space error over %zu sampled frames (%zu triangles): max %.3f px affine "
+              "(what the counts bound), %.3f px perspective-correct; tolerance %.2g px\n",
+              sampled.size(), measuredTriangles, maxAffine, maxPerspective, tolerance);
+  if (!peerSeconds.empty())
+    std::printf("tessellation shaders on the same path: %.1f frames/s, %.0f triangles per frame\n",
+                frames / peerTotal, peerCounts ? peerTriangles / n : -1.0);
+  report.finish();
+  return maxAffine <= tolerance ? 0 : 1;
+}

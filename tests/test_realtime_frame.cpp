@@ -1,0 +1,96 @@
+// Real-time view-dependent tessellation (host/realtime_frame.h): on a few frames of two
+// teapots the grids meet 1 px on screen (measured against the double surface), the grids are
+// the grid evaluator's fp32 mirror bit for bit, a finer tolerance spends more triangles, a
+// camera inside the scene routes eye-plane patches to the host count, and looking away culls
+// everything.
+#include <catch2/catch.hpp>
+
+#include <cstring>
+
+#include "evaluator.h"
+#include "gpu_test_context.h"
+#include "io/bpt_reader.h"
+#include "realtime_frame.h"
+
+using namespace tessera;
+
+namespace {
+
+std::vector<BezierPatch> twoTeapots() {
+  std::vector<BezierPatch> scene = readBpt(TESSERA_SOURCE_DIR "/data/teapot.bpt");
+  const size_t n = scene.size();
+  for (size_t p = 0; p < n; ++p) {
+    BezierPatch copy = scene[p];
+    for (glm::dvec3& c : copy.cp) c += glm::dvec3(8.0, 0.0, 0.0);
+    scene.push_back(copy);
+  }
+  return scene;
+}
+
+Camera view(const glm::dvec3& eye, const glm::dvec3& target) {
+  return lookAtCamera(eye, target, {0, 0, 1}, 0.8, 640, 360, 0.05, 200.0);
+}
+
+// Every grid equals the fp32 mirror's grid of the same patch and size, bit for bit.
+size_t gridsDifferingFromMirror(const RealtimeFrame& frame, const std::vector<BezierPatch>& scene) {
+  auto mirror = makeMirrorGridEvaluator(1);
+  size_t differing = 0;
+  for (const RealtimeGrid& g : frame.grids) {
+    const gpu::GridVertex* expected = mirror->evaluate({toGpuPatch(scene[g.patch])}, g.pointsPerSide);
+    const size_t bytes = sizeof(gpu::GridVertex) * g.pointsPerSide * g.pointsPerSide;
+    differing += std::memcmp(expected, g.vertices, bytes) != 0 ? 1 : 0;
+  }
+  return differing;
+}
+
+}  // namespace
+
+TEST_CASE("Real-time frames meet 1 px on screen and match the mirror", "[gpu][realtime]") {
+  vk::Context& context = test::gpuContext();
+  const std::vector<BezierPatch> scene = twoTeapots();
+  RealtimeTessellator tessellator(context, scene, {1.0, 64});
+  const std::vector<std::pair<const char*, Camera>> cameras = {
+      {"overview", view({4, -14, 6}, {4, 0, 1.5})},
+      {"close", view({1.5, -4, 2.5}, {0, 0, 1.5})},
+      {"inside the second teapot", view({8, 0, 1.5}, {0, 0, 1.5})},
+  };
+  for (const auto& [name, camera] : cameras) {
+    const RealtimeFrame& frame = tessellator.tessellate(camera);
+    const ScreenErrorReport error = measureScreenError(frame, scene, camera, 2);
+    INFO(name << ": " << frame.grids.size() << " grids, " << frame.triangles << " triangles, "
+              << frame.culled << " culled, " << frame.fallback << " eye-plane fallbacks, "
+              << frame.capped << " capped; max error " << error.maxAffinePixels
+              << " px affine, " << error.maxPerspectivePixels << " px perspective over "
+              << error.triangles << " triangles");
+    WARN(name << ": " << frame.triangles << " triangles, max error " << error.maxAffinePixels
+              << " px (affine), " << error.maxPerspectivePixels << " px (perspective), "
+              << frame.fallback << " eye-plane fallbacks");
+    CHECK(frame.grids.size() > 0);
+    CHECK(error.triangles > 0);
+    CHECK(frame.capped == 0);
+    CHECK(error.maxAffinePixels <= 1.0);
+    CHECK(error.maxPerspectivePixels <= 1.0);
+    for (const RealtimeGrid& g : frame.grids) CHECK(int(g.pointsPerSide) - 1 >= std::max(g.nu, g.nv));
+    CHECK(gridsDifferingFromMirror(frame, scene) == 0);
+    if (std::string(name) == "inside the second teapot") CHECK(frame.fallback > 0);
+  }
+  test::requireValidationClean();
+}
+
+TEST_CASE("Real-time frames: finer tolerance costs triangles, looking away culls all",
+          "[gpu][realtime]") {
+  vk::Context& context = test::gpuContext();
+  const std::vector<BezierPatch> scene = twoTeapots();
+  RealtimeTessellator coarse(context, scene, {4.0, 64}), fine(context, scene, {0.25, 64});
+  const Camera camera = view({4, -14, 6}, {4, 0, 1.5});
+  const size_t coarseTriangles = coarse.tessellate(camera).triangles;
+  const size_t fineTriangles = fine.tessellate(camera).triangles;
+  WARN("4 px: " << coarseTriangles << " triangles, 0.25 px: " << fineTriangles);
+  CHECK(fineTriangles > 4 * coarseTriangles);
+  const RealtimeFrame& away = coarse.tessellate(view({4, -14, 6}, {4, -40, 6}));
+  CHECK(away.grids.empty());
+  CHECK(away.culled == scene.size());
+  CHECK(away.triangles == 0);
+  CHECK_THROWS_AS(RealtimeTessellator(context, scene, {0.0, 64}), std::invalid_argument);
+  test::requireValidationClean();
+}
