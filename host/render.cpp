@@ -11,6 +11,7 @@
 #include "vk/buffer.h"
 #include "vk/context.h"
 #include "vk/image.h"
+#include "vk/graphics.h"
 
 #include "shaders/layout.h"
 // The generated headers declare bare uint32_t arrays.
@@ -108,8 +109,6 @@ struct DrawObjects {
     VkDevice device = context.device();
     if (pipeline) vk.vkDestroyPipeline(device, pipeline, nullptr);
     if (layout) vk.vkDestroyPipelineLayout(device, layout, nullptr);
-    if (vertexShader) vk.vkDestroyShaderModule(device, vertexShader, nullptr);
-    if (fragmentShader) vk.vkDestroyShaderModule(device, fragmentShader, nullptr);
     if (framebuffer) vk.vkDestroyFramebuffer(device, framebuffer, nullptr);
     if (renderPass) vk.vkDestroyRenderPass(device, renderPass, nullptr);
   }
@@ -119,171 +118,30 @@ struct DrawObjects {
   vk::Context& context;
   VkRenderPass renderPass = VK_NULL_HANDLE;
   VkFramebuffer framebuffer = VK_NULL_HANDLE;
-  VkShaderModule vertexShader = VK_NULL_HANDLE, fragmentShader = VK_NULL_HANDLE;
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkPipeline pipeline = VK_NULL_HANDLE;
 };
 
-// Attachments: 0 colour, 1 depth, and with multisampling 2 the single-sample resolve target.
-// The picture ends in TRANSFER_SRC_OPTIMAL for the copy to the host; the subpass dependencies
-// order the clears after earlier work and the copy after the last colour write (resolve).
-VkRenderPass createRenderPass(const vk::Context& context, VkSampleCountFlagBits samples) {
-  bool resolve = samples != VK_SAMPLE_COUNT_1_BIT;
-  VkAttachmentDescription attachments[3]{};
-  attachments[0].format = kColourFormat;
-  attachments[0].samples = samples;
-  attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  attachments[0].storeOp = resolve ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
-  attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-  attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  attachments[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  attachments[0].finalLayout =
-      resolve ? VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-  attachments[1] = attachments[0];
-  attachments[1].format = kDepthFormat;
-  attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  attachments[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-  attachments[2] = attachments[0];
-  attachments[2].samples = VK_SAMPLE_COUNT_1_BIT;
-  attachments[2].loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-  attachments[2].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  attachments[2].finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-
-  VkAttachmentReference colourRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-  VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
-  VkAttachmentReference resolveRef{2, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-  VkSubpassDescription subpass{};
-  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-  subpass.colorAttachmentCount = 1;
-  subpass.pColorAttachments = &colourRef;
-  subpass.pResolveAttachments = resolve ? &resolveRef : nullptr;
-  subpass.pDepthStencilAttachment = &depthRef;
-
-  const VkPipelineStageFlags attachmentStages = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
-                                                VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
-                                                VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-  VkSubpassDependency dependencies[2]{};
-  dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
-  dependencies[0].dstSubpass = 0;
-  dependencies[0].srcStageMask = attachmentStages;
-  dependencies[0].dstStageMask = attachmentStages;
-  dependencies[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
-                                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
-                                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-  dependencies[1].srcSubpass = 0;
-  dependencies[1].dstSubpass = VK_SUBPASS_EXTERNAL;
-  dependencies[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-  dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-  dependencies[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
-  dependencies[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-
-  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-  info.attachmentCount = resolve ? 3 : 2;
-  info.pAttachments = attachments;
-  info.subpassCount = 1;
-  info.pSubpasses = &subpass;
-  info.dependencyCount = 2;
-  info.pDependencies = dependencies;
-  VkRenderPass renderPass = VK_NULL_HANDLE;
-  VK_CHECK(context.vk().vkCreateRenderPass(context.device(), &info, nullptr, &renderPass));
-  return renderPass;
-}
-
-VkShaderModule createShader(const vk::Context& context, const uint32_t* code, size_t bytes) {
-  VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-  info.codeSize = bytes;
-  info.pCode = code;
-  VkShaderModule module = VK_NULL_HANDLE;
-  VK_CHECK(context.vk().vkCreateShaderModule(context.device(), &info, nullptr, &module));
-  return module;
-}
-
-void createPipeline(DrawObjects& d, const RenderOptions& o, VkSampleCountFlagBits samples) {
+void createPipeline(DrawObjects& d, VkSampleCountFlagBits samples, VkExtent2D extent) {
   const vk::Context& context = d.context;
-  const vk::DeviceTable& vk = context.vk();
-  d.vertexShader = createShader(context, kSpirv_mesh_vert, sizeof kSpirv_mesh_vert);
-  d.fragmentShader = createShader(context, kSpirv_mesh_frag, sizeof kSpirv_mesh_frag);
-
   VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                             sizeof(gpu::MeshDrawPush)};
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   layoutInfo.pushConstantRangeCount = 1;
   layoutInfo.pPushConstantRanges = &range;
-  VK_CHECK(vk.vkCreatePipelineLayout(context.device(), &layoutInfo, nullptr, &d.layout));
+  VK_CHECK(context.vk().vkCreatePipelineLayout(context.device(), &layoutInfo, nullptr, &d.layout));
 
-  VkPipelineShaderStageCreateInfo stages[2]{};
-  stages[0].sType = stages[1].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
-  stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-  stages[0].module = d.vertexShader;
-  stages[0].pName = "main";
-  stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-  stages[1].module = d.fragmentShader;
-  stages[1].pName = "main";
-
-  VkVertexInputBindingDescription binding{0, sizeof(DrawVertex), VK_VERTEX_INPUT_RATE_VERTEX};
-  VkVertexInputAttributeDescription attributes[2] = {
-      {0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(DrawVertex, position)},
-      {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(DrawVertex, normal)}};
-  VkPipelineVertexInputStateCreateInfo vertexInput{
-      VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-  vertexInput.vertexBindingDescriptionCount = 1;
-  vertexInput.pVertexBindingDescriptions = &binding;
-  vertexInput.vertexAttributeDescriptionCount = 2;
-  vertexInput.pVertexAttributeDescriptions = attributes;
-
-  VkPipelineInputAssemblyStateCreateInfo assembly{
-      VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-  assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-
-  VkViewport viewport{0.0f, 0.0f, float(o.width), float(o.height), 0.0f, 1.0f};
-  VkRect2D scissor{{0, 0}, {uint32_t(o.width), uint32_t(o.height)}};
-  VkPipelineViewportStateCreateInfo viewportState{
-      VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-  viewportState.viewportCount = 1;
-  viewportState.pViewports = &viewport;
-  viewportState.scissorCount = 1;
-  viewportState.pScissors = &scissor;
-
-  VkPipelineRasterizationStateCreateInfo raster{
-      VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-  raster.polygonMode = VK_POLYGON_MODE_FILL;
-  raster.cullMode = VK_CULL_MODE_NONE;  // two-sided: open surfaces show their inside
-  raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-  raster.lineWidth = 1.0f;
-
-  VkPipelineMultisampleStateCreateInfo multisample{
-      VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-  multisample.rasterizationSamples = samples;
-
-  VkPipelineDepthStencilStateCreateInfo depth{
-      VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-  depth.depthTestEnable = VK_TRUE;
-  depth.depthWriteEnable = VK_TRUE;
-  depth.depthCompareOp = VK_COMPARE_OP_LESS;
-
-  VkPipelineColorBlendAttachmentState blendAttachment{};
-  blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
-                                   VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-  VkPipelineColorBlendStateCreateInfo blend{
-      VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-  blend.attachmentCount = 1;
-  blend.pAttachments = &blendAttachment;
-
-  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-  info.stageCount = 2;
-  info.pStages = stages;
-  info.pVertexInputState = &vertexInput;
-  info.pInputAssemblyState = &assembly;
-  info.pViewportState = &viewportState;
-  info.pRasterizationState = &raster;
-  info.pMultisampleState = &multisample;
-  info.pDepthStencilState = &depth;
-  info.pColorBlendState = &blend;
-  info.layout = d.layout;
-  info.renderPass = d.renderPass;
-  info.subpass = 0;
-  VK_CHECK(vk.vkCreateGraphicsPipelines(context.device(), context.pipelineCache(), 1, &info,
-                                        nullptr, &d.pipeline));
+  vk::GraphicsPipelineDesc desc;
+  desc.stages = {{VK_SHADER_STAGE_VERTEX_BIT, kSpirv_mesh_vert, sizeof kSpirv_mesh_vert},
+                 {VK_SHADER_STAGE_FRAGMENT_BIT, kSpirv_mesh_frag, sizeof kSpirv_mesh_frag}};
+  desc.bindings = {{0, sizeof(DrawVertex), VK_VERTEX_INPUT_RATE_VERTEX}};
+  desc.attributes = {{0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(DrawVertex, position)},
+                     {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(DrawVertex, normal)}};
+  desc.extent = extent;
+  desc.samples = samples;
+  desc.layout = d.layout;
+  desc.renderPass = d.renderPass;
+  d.pipeline = vk::createGraphicsPipeline(context, desc);
 }
 
 void checkOptions(const TriangleMesh& mesh, const std::vector<float>& values,
@@ -371,7 +229,7 @@ std::vector<uint8_t> renderMesh(vk::Context& context, const TriangleMesh& mesh,
   const vk::Image& picture = resolve ? resolved : colour;
 
   DrawObjects d(context);
-  d.renderPass = createRenderPass(context, samples);
+  d.renderPass = vk::createColourDepthRenderPass(context, kColourFormat, kDepthFormat, samples);
   VkImageView views[3] = {colour.view(), depth.view(), resolved.view()};
   VkFramebufferCreateInfo framebufferInfo{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
   framebufferInfo.renderPass = d.renderPass;
@@ -382,7 +240,7 @@ std::vector<uint8_t> renderMesh(vk::Context& context, const TriangleMesh& mesh,
   framebufferInfo.layers = 1;
   VK_CHECK(context.vk().vkCreateFramebuffer(context.device(), &framebufferInfo, nullptr,
                                             &d.framebuffer));
-  createPipeline(d, options, samples);
+  createPipeline(d, samples, {width, height});
 
   std::vector<DrawVertex> vertices = unindex(mesh, perTriangleValue);
   vk::Buffer vertexBuffer;

@@ -11,6 +11,7 @@
 #include "tess_peer_vert.h"
 #include "vk/buffer.h"
 #include "vk/image.h"
+#include "vk/graphics.h"
 
 namespace tessera {
 
@@ -46,60 +47,6 @@ constexpr VkFormat kDepthFormat = VK_FORMAT_D16_UNORM;
 constexpr VkShaderStageFlags kTessStages =
     VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT | VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT;
 
-VkRenderPass createRenderPass(const vk::Context& context) {
-  VkAttachmentDescription attachments[2]{};
-  for (int k = 0; k < 2; ++k) {
-    attachments[k].format = k == 0 ? kColourFormat : kDepthFormat;
-    attachments[k].samples = VK_SAMPLE_COUNT_1_BIT;
-    attachments[k].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    attachments[k].storeOp = k == 0 ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    attachments[k].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    attachments[k].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    attachments[k].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    attachments[k].finalLayout = k == 0 ? VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL
-                                        : VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-  }
-  VkAttachmentReference colourRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-  VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
-  VkSubpassDescription subpass{};
-  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-  subpass.colorAttachmentCount = 1;
-  subpass.pColorAttachments = &colourRef;
-  subpass.pDepthStencilAttachment = &depthRef;
-  // Frame after frame the same attachments are cleared and drawn: order against the last frame.
-  VkSubpassDependency dependency{};
-  dependency.srcSubpass = VK_SUBPASS_EXTERNAL;
-  dependency.dstSubpass = 0;
-  dependency.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
-                            VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
-                            VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-  dependency.dstStageMask = dependency.srcStageMask;
-  dependency.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
-                             VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-  dependency.dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
-                             VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
-                             VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-  info.attachmentCount = 2;
-  info.pAttachments = attachments;
-  info.subpassCount = 1;
-  info.pSubpasses = &subpass;
-  info.dependencyCount = 1;
-  info.pDependencies = &dependency;
-  VkRenderPass renderPass = VK_NULL_HANDLE;
-  VK_CHECK(context.vk().vkCreateRenderPass(context.device(), &info, nullptr, &renderPass));
-  return renderPass;
-}
-
-VkShaderModule shaderModule(const vk::Context& context, const uint32_t* code, size_t bytes) {
-  VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-  info.codeSize = bytes;
-  info.pCode = code;
-  VkShaderModule module = VK_NULL_HANDLE;
-  VK_CHECK(context.vk().vkCreateShaderModule(context.device(), &info, nullptr, &module));
-  return module;
-}
-
 void createPipelineFor(TessShaderPeer::Objects& d);
 
 }  // namespace
@@ -115,13 +62,17 @@ TessShaderPeer::TessShaderPeer(vk::Context& context, const std::vector<gpu::Bicu
   d_->patches = vk::Buffer(context, std::max<size_t>(1, patches.size()) * sizeof(gpu::BicubicPatch),
                            vk::BufferUse::Upload);
   if (!patches.empty()) d_->patches.upload(patches);
+  // TRANSFER_SRC: the shared render pass leaves the picture ready for a copy.
   d_->colour = vk::Image(context, {options.width, options.height, kColourFormat,
-                                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, VK_IMAGE_ASPECT_COLOR_BIT,
+                                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                                       VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                   VK_IMAGE_ASPECT_COLOR_BIT,
                                    VK_SAMPLE_COUNT_1_BIT});
   d_->depth = vk::Image(context, {options.width, options.height, kDepthFormat,
                                   VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
                                   VK_IMAGE_ASPECT_DEPTH_BIT, VK_SAMPLE_COUNT_1_BIT});
-  d_->renderPass = createRenderPass(context);
+  d_->renderPass =
+      vk::createColourDepthRenderPass(context, kColourFormat, kDepthFormat, VK_SAMPLE_COUNT_1_BIT);
   VkImageView views[2] = {d_->colour.view(), d_->depth.view()};
   VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
   fb.renderPass = d_->renderPass;
@@ -164,73 +115,19 @@ void createPipelineFor(TessShaderPeer::Objects& d) {
   layoutInfo.pPushConstantRanges = &range;
   VK_CHECK(vk.vkCreatePipelineLayout(device, &layoutInfo, nullptr, &d.layout));
 
-  struct Stage {
-    VkShaderStageFlagBits stage;
-    const uint32_t* code;
-    size_t bytes;
-  } stages[4] = {
+  vk::GraphicsPipelineDesc desc;
+  desc.stages = {
       {VK_SHADER_STAGE_VERTEX_BIT, kSpirv_tess_peer_vert, sizeof(kSpirv_tess_peer_vert)},
       {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, kSpirv_tess_peer_tesc, sizeof(kSpirv_tess_peer_tesc)},
       {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, kSpirv_tess_peer_tese, sizeof(kSpirv_tess_peer_tese)},
       {VK_SHADER_STAGE_FRAGMENT_BIT, kSpirv_tess_peer_frag, sizeof(kSpirv_tess_peer_frag)}};
-  VkPipelineShaderStageCreateInfo stageInfo[4]{};
-  for (int k = 0; k < 4; ++k) {
-    stageInfo[k].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
-    stageInfo[k].stage = stages[k].stage;
-    stageInfo[k].module = shaderModule(d.context, stages[k].code, stages[k].bytes);
-    stageInfo[k].pName = "main";
-  }
-  VkPipelineVertexInputStateCreateInfo vertexInput{
-      VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-  VkPipelineInputAssemblyStateCreateInfo assembly{
-      VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-  assembly.topology = VK_PRIMITIVE_TOPOLOGY_PATCH_LIST;
-  VkPipelineTessellationStateCreateInfo tessellation{
-      VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO};
-  tessellation.patchControlPoints = 16;
-  VkViewport viewport{0, 0, float(d.options.width), float(d.options.height), 0, 1};
-  VkRect2D scissor{{0, 0}, {d.options.width, d.options.height}};
-  VkPipelineViewportStateCreateInfo viewportState{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-  viewportState.viewportCount = 1;
-  viewportState.pViewports = &viewport;
-  viewportState.scissorCount = 1;
-  viewportState.pScissors = &scissor;
-  VkPipelineRasterizationStateCreateInfo raster{
-      VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-  raster.polygonMode = VK_POLYGON_MODE_FILL;
-  raster.cullMode = VK_CULL_MODE_NONE;  // the tea set's patches face both ways
-  raster.lineWidth = 1.0f;
-  VkPipelineMultisampleStateCreateInfo multisample{
-      VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-  VkPipelineDepthStencilStateCreateInfo depth{
-      VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-  depth.depthTestEnable = VK_TRUE;
-  depth.depthWriteEnable = VK_TRUE;
-  depth.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
-  VkPipelineColorBlendAttachmentState blend{};
-  blend.colorWriteMask = 0xF;
-  VkPipelineColorBlendStateCreateInfo blendState{
-      VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-  blendState.attachmentCount = 1;
-  blendState.pAttachments = &blend;
-  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-  info.stageCount = 4;
-  info.pStages = stageInfo;
-  info.pVertexInputState = &vertexInput;
-  info.pInputAssemblyState = &assembly;
-  info.pTessellationState = &tessellation;
-  info.pViewportState = &viewportState;
-  info.pRasterizationState = &raster;
-  info.pMultisampleState = &multisample;
-  info.pDepthStencilState = &depth;
-  info.pColorBlendState = &blendState;
-  info.layout = d.layout;
-  info.renderPass = d.renderPass;
-  VkResult result = vk.vkCreateGraphicsPipelines(device, d.context.pipelineCache(), 1, &info,
-                                                 nullptr, &d.pipeline);
-  for (auto& s : stageInfo) vk.vkDestroyShaderModule(device, s.module, nullptr);
-  VK_CHECK(result);
+  desc.topology = VK_PRIMITIVE_TOPOLOGY_PATCH_LIST;
+  desc.patchControlPoints = 16;
+  desc.extent = {d.options.width, d.options.height};
+  desc.depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL;
+  desc.layout = d.layout;
+  desc.renderPass = d.renderPass;
+  d.pipeline = vk::createGraphicsPipeline(d.context, desc);
 }
 }  // namespace
 
