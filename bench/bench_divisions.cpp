@@ -1,0 +1,89 @@
+// Division counts per second for rational Bézier patches (the split method,
+// docs/rational_division.md): scalar CPU (the double reference, and the fp32 mirror, one
+// thread each) vs Vulkan (upload + dispatch + readback), on the same patches in one run.
+// Biquadratic patches (the rational cylinders and tori of the paper), a quarter each with all
+// weights positive, zero interior weights, negative interior weights, and both (all negative
+// with zeros). Usage: bench_divisions [patches]
+#include <cstdio>
+#include <algorithm>
+#include <cstdlib>
+#include <random>
+
+#include "bench_common.h"
+#include "division_count.h"
+#include "division_gpu.h"
+#include "vk/context.h"
+
+using namespace tessera;
+
+namespace {
+
+RationalBezierPatch randomPatch(int kind, std::mt19937& rng) {
+  std::uniform_real_distribution<double> coord(-1.0, 1.0), weight(0.3, 2.0), unit(0.0, 1.0);
+  RationalBezierPatch p;
+  p.degreeU = p.degreeV = 2;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const bool corner = (i != 1) && (j != 1);
+      double w = weight(rng);
+      if (!corner && (kind == 1 || kind == 3) && unit(rng) < 0.4) w = 0.0;
+      if (!corner && kind == 2 && unit(rng) < 0.25) w = -0.3 * unit(rng);
+      if (kind == 3) w = -w;
+      const glm::dvec3 x(i + 0.3 * coord(rng), j + 0.3 * coord(rng), coord(rng));
+      p.cpw.push_back(w == 0.0 ? glm::dvec4(x, 0.0) : glm::dvec4(w * x, w));
+    }
+  return p;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const size_t count = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : size_t(1) << 20;
+  std::mt19937 rng(11);
+  std::vector<RationalBezierPatch> patches;
+  patches.reserve(count);
+  for (size_t k = 0; k < count; ++k) patches.push_back(randomPatch(int(k % 4), rng));
+  // Batches of 2^18 patches keep every buffer under lavapipe's 128 MiB storage-buffer range.
+  const size_t batchSize = size_t(1) << 18;
+  std::vector<DivisionBatch> batches;
+  for (size_t first = 0; first < count; first += batchSize)
+    batches.push_back(packDivisionBatch(std::vector<RationalBezierPatch>(
+        patches.begin() + first, patches.begin() + std::min(count, first + batchSize))));
+  DivisionOptions options;
+  options.tolerance = 0.01;
+
+  vk::ContextOptions contextOptions;
+  vk::Context context(contextOptions);
+  auto gpu = makeVulkanDivisionCounter(context);
+  auto mirror = makeMirrorDivisionCounter();
+
+  long long sink = 0;
+  // timeRepeated warms up first (pipeline compilation, buffer allocation, page faults).
+  const auto gpuTime = bench::timeRepeated(5, [&] {
+    for (const DivisionBatch& b : batches) sink += gpu->count(b, options).back().nu;
+  });
+  const auto mirrorTime = bench::timeRepeated(5, [&] {
+    for (const DivisionBatch& b : batches) sink += mirror->count(b, options).back().nu;
+  });
+  const auto doubleTime = bench::timeRepeated(5, [&] {
+    for (const RationalBezierPatch& p : patches) sink += patchDivisions(p, options).nu;
+  });
+
+  const double doubleRate = count / doubleTime.minSeconds;
+  const double mirrorRate = count / mirrorTime.minSeconds;
+  const double gpuRate = count / gpuTime.minSeconds;
+  std::printf("bench_divisions: %zu biquadratic rational patches (1/4 each: positive, zero, "
+              "negative, all-negative-with-zero weights), split method, TOL %.3g\n",
+              count, options.tolerance);
+  std::printf("device: %s (%s)\n", context.info().name.c_str(), context.info().driverInfo.c_str());
+  std::printf("| path | min s | median s | patches/s | ratio to scalar CPU |\n"
+              "|---|---|---|---|---|\n");
+  std::printf("| scalar CPU (double reference, 1 thread) | %.3f | %.3f | %.3g | 1.00 |\n",
+              doubleTime.minSeconds, doubleTime.medianSeconds, doubleRate);
+  std::printf("| scalar CPU (fp32 mirror, 1 thread) | %.3f | %.3f | %.3g | %.2f |\n",
+              mirrorTime.minSeconds, mirrorTime.medianSeconds, mirrorRate,
+              mirrorRate / doubleRate);
+  std::printf("| Vulkan (upload + dispatch + readback) | %.3f | %.3f | %.3g | %.2f |\n",
+              gpuTime.minSeconds, gpuTime.medianSeconds, gpuRate, gpuRate / doubleRate);
+  return sink == -1 ? 1 : 0;  // keeps the loops from being optimised away
+}
