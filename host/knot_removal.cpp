@@ -10,6 +10,7 @@
 #include <string>
 
 #include "knots.h"
+#include "reduction_order.h"
 
 namespace tessera {
 
@@ -44,6 +45,15 @@ const char* stopReasonName(StopReason reason) {
   switch (reason) {
     case StopReason::Threshold: return "threshold";
     case StopReason::MinimumControlPoints: return "minimum control points";
+  }
+  return "?";
+}
+
+const char* knotChoiceName(KnotChoice choice) {
+  switch (choice) {
+    case KnotChoice::Curvature: return "curvature";
+    case KnotChoice::CurvatureFixed: return "curv-fixed";
+    case KnotChoice::Random: return "random";
   }
   return "?";
 }
@@ -112,8 +122,12 @@ void recordAttempt(PassReport& report, int pass, int removable, bool removed, do
   }
 }
 
-std::vector<double> knotCurvature(const BSplineSurface& s, ParamDirection d,
-                                  CurvatureAggregate aggregate) {
+namespace {
+
+// κ·|C′|^power at every interior knot, combined over the curves of `d` (power 0: curvature,
+// 2: normal acceleration).
+std::vector<double> knotBendingPower(const BSplineSurface& s, ParamDirection d,
+                                     CurvatureAggregate aggregate, int power) {
   validateSurface(s);
   const int p = degreeOf(s, d);
   const std::vector<double>& y = knotsOf(s, d);
@@ -137,8 +151,8 @@ std::vector<double> knotCurvature(const BSplineSurface& s, ParamDirection d,
         d2 += basis[2][static_cast<size_t>(r)] * q;
       }
       const double speed = glm::length(d1);
-      const double kappa = speed > 0.0 ? glm::length(glm::cross(d1, d2)) / (speed * speed * speed)
-                                       : 0.0;
+      const double divisor = power == 0 ? speed * speed * speed : speed;
+      const double kappa = speed > 0.0 ? glm::length(glm::cross(d1, d2)) / divisor : 0.0;
       combined = aggregate == CurvatureAggregate::Max ? std::max(combined, kappa)
                                                       : combined + kappa;
     }
@@ -146,6 +160,18 @@ std::vector<double> knotCurvature(const BSplineSurface& s, ParamDirection d,
         aggregate == CurvatureAggregate::Max ? combined : combined / curves;
   }
   return score;
+}
+
+}  // namespace
+
+std::vector<double> knotCurvature(const BSplineSurface& s, ParamDirection d,
+                                  CurvatureAggregate aggregate) {
+  return knotBendingPower(s, d, aggregate, 0);
+}
+
+std::vector<double> knotBending(const BSplineSurface& s, ParamDirection d,
+                                CurvatureAggregate aggregate) {
+  return knotBendingPower(s, d, aggregate, 2);
 }
 
 std::vector<int> removalOrder(const BSplineSurface& s, ParamDirection d,
@@ -208,10 +234,10 @@ ReductionResult reduceSurfaceReference(const BSplineSurface& original,
     const BSplineSurface data = result.surface;
     report.originalCount = countOf(data, dir);
     report.error = netDeviation(original, data);
-    const std::vector<int> order = removalOrder(original, dir, options);
+    KnotSchedule schedule(original, dir, options);
     std::vector<bool> present(y.size(), true);
     report.stop = StopReason::MinimumControlPoints;
-    for (int knot : order) {
+    for (int knot = schedule.next(); knot >= 0; knot = schedule.next()) {
       present[static_cast<size_t>(knot)] = false;
       std::vector<double> x;
       for (size_t k = 0; k < y.size(); ++k) {
@@ -230,8 +256,9 @@ ReductionResult reduceSurfaceReference(const BSplineSurface& original,
       }
       const DeviationStats error = netDeviation(original, candidate);
       const bool accepted = error.value(options.measure) <= report.target;
-      recordAttempt(report, pass, static_cast<int>(order.size()), accepted,
-                    error.value(options.measure), options);
+      schedule.record(knot, accepted);
+      recordAttempt(report, pass, schedule.size(), accepted, error.value(options.measure),
+                    options);
       if (!accepted) {
         present[static_cast<size_t>(knot)] = true;  // refused: the knot stays, try the next
         continue;

@@ -10,11 +10,12 @@
 //   points R, measured on the original (fine) control net.
 // - A surface is reduced one direction at a time. Every curve of that direction (every row of
 //   the net) shares x and y, so one A⁺ serves them all: one matrix product per direction.
-// - Knots are tried one at a time in a fixed order: by increasing curvature of the original
-//   surface's curves at the knot (KnotChoice::Curvature), or in a seeded random order
-//   (KnotChoice::Random). After each removal the reduced surface is compared with the original;
+// - Knots are tried one at a time, chosen by curvature (KnotChoice::Curvature: the least
+//   bending removal, re-ranked after each removal; CurvatureFixed: a fixed order by increasing
+//   curvature of the original surface's curves at the knot), or in a seeded random order
+//   (KnotChoice::Random); reduction_order.h. After each removal the reduced surface is compared with the original;
 //   a removal that would take the error above the pass's target is undone, that knot is kept,
-//   and the next knot of the order is tried. The pass ends when every knot has been tried.
+//   and the next knot is tried. The pass ends when every knot has been tried.
 //   (Stopping at the first refusal, the paper's literal flow, starves the curvature order: its
 //   lowest-curvature knots lie side by side, so it empties one flat stretch, exceeds the target
 //   there and stops while isolated knots elsewhere were still free; docs/reduction.md.)
@@ -47,7 +48,16 @@ std::vector<glm::dvec3> inverseOslo(int degree, const std::vector<double>& coars
                                     const std::vector<glm::dvec3>& fineCp);
 
 // --- Options and results -----------------------------------------------------------------
-enum class KnotChoice { Curvature, Random };
+// Curvature (default): the knot whose removal bends least, re-ranked after every removal —
+// score = the largest κ·|C′|² of the curves (their normal acceleration, κ in the curve's own
+// parameter) over the span the removal would create, × that span's length h². κ·(|C′|h)²/8 is
+// the sagitta of an arc of curvature κ and length |C′|h: the local error a removal risks. So
+// flat knots still go first, but a knot whose neighbours are already gone waits (reduction_order.h).
+// CurvatureFixed: the paper's literal order, by increasing κ on the original surface, fixed
+// before the pass (it empties flat stretches first; docs/reduction.md measures both).
+// Random: a seeded random order, the paper's comparison.
+enum class KnotChoice { Curvature, CurvatureFixed, Random };
+const char* knotChoiceName(KnotChoice choice);
 // How the curvatures of all curves of a direction at one knot are combined into its score.
 // Max (default): a knot is as curved as its most curved curve, so a feature crossing only a
 // few rows still protects its knots. Mean: the average over the rows.
@@ -142,8 +152,13 @@ void recordAttempt(PassReport& report, int pass, int removable, bool removed, do
 std::vector<double> knotCurvature(const BSplineSurface& surface, ParamDirection direction,
                                   CurvatureAggregate aggregate);
 
-// The interior knot indices of `direction`, in the order they are to be removed: by
-// increasing knotCurvature (ties by index), or a Fisher–Yates shuffle with mt19937_64 seeded by
+// Like knotCurvature, but κ·|C′|² = |C′×C″|/|C′| (the normal acceleration): the curvature in
+// the curves' own parameter, which KnotChoice::Curvature multiplies by a squared knot span.
+std::vector<double> knotBending(const BSplineSurface& surface, ParamDirection direction,
+                                CurvatureAggregate aggregate);
+
+// KnotChoice::CurvatureFixed and Random: the interior knot indices of `direction`, in the
+// order they are to be removed: by increasing knotCurvature (ties by index), or a Fisher–Yates shuffle with mt19937_64 seeded by
 // seed (u) or seed + 1 (v).
 std::vector<int> removalOrder(const BSplineSurface& surface, ParamDirection direction,
                               const ReductionOptions& options);

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "reduction_order.h"
 #include "reduction_pass.h"
 
 namespace tessera {
@@ -133,12 +134,13 @@ ReductionResult reduceSurface(const BSplineSurface& original, const ReductionOpt
     ReductionPass engine(p, y, data.data(), columns, error, options, st);
     report.originalCount = engine.controlCount();
     report.error = engine.error();
-    const std::vector<int> order = removalOrder(original, dir, options);
+    KnotSchedule schedule(original, dir, options);
     report.stop = StopReason::MinimumControlPoints;
-    for (int knot : order) {
+    for (int knot = schedule.next(); knot >= 0; knot = schedule.next()) {
       double measured = 0.0;
       const bool removed = engine.tryRemove(knot, options.measure, report.target, &measured);
-      recordAttempt(report, pass, static_cast<int>(order.size()), removed, measured, options);
+      schedule.record(knot, removed);
+      recordAttempt(report, pass, schedule.size(), removed, measured, options);
     }
     st.searchSeconds[pass] = secondsSince(start);
 

@@ -53,10 +53,11 @@ double waviness(const BSplineSurface& s, int isoCurves, int samples) {
 std::vector<ReductionTableRow> reductionTable(const BSplineSurface& surface,
                                               const std::vector<double>& thresholds,
                                               const ReductionOptions& base,
-                                              CurveProduct* product) {
+                                              CurveProduct* product,
+                                              const std::vector<KnotChoice>& choices) {
   std::vector<ReductionTableRow> rows;
   for (double threshold : thresholds) {
-    for (KnotChoice choice : {KnotChoice::Curvature, KnotChoice::Random}) {
+    for (KnotChoice choice : choices) {
       ReductionOptions o = base;
       o.threshold = threshold;
       o.choice = choice;
@@ -85,7 +86,7 @@ std::string formatReductionTable(const std::vector<ReductionTableRow>& rows,
     const std::string kept = std::to_string(r.result.surface.countU) + "x" +
                              std::to_string(r.result.surface.countV);
     std::snprintf(line, sizeof line, "%-9g  %-9s  %13s  %9.3f  %10.4f  %10.3g  %10.3g  %7.2f  %s\n",
-                  r.threshold, r.choice == KnotChoice::Curvature ? "curvature" : "random",
+                  r.threshold, knotChoiceName(r.choice),
                   kept.c_str(), r.result.compressionPercent(), r.waviness, r.result.error.mean,
                   r.result.error.max, r.seconds, stops(r.result).c_str());
     out += line;

@@ -25,12 +25,12 @@ struct ReductionTableRow {
   double seconds = 0.0;
 };
 
-// Reduces `surface` for every threshold with both knot choices (base supplies the rest of the
+// Reduces `surface` for every threshold with each knot choice (base supplies the rest of the
 // options, e.g. progress); `product` null = CPU only.
-std::vector<ReductionTableRow> reductionTable(const BSplineSurface& surface,
-                                              const std::vector<double>& thresholds,
-                                              const ReductionOptions& base,
-                                              CurveProduct* product);
+std::vector<ReductionTableRow> reductionTable(
+    const BSplineSurface& surface, const std::vector<double>& thresholds,
+    const ReductionOptions& base, CurveProduct* product,
+    const std::vector<KnotChoice>& choices = {KnotChoice::Curvature, KnotChoice::Random});
 
 // The table as text, with the original's waviness for reference.
 std::string formatReductionTable(const std::vector<ReductionTableRow>& rows,

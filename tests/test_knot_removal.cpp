@@ -15,6 +15,7 @@
 #include "knot_removal.h"
 #include "knots.h"
 #include "oslo.h"
+#include "reduction_order.h"
 #include "synthetic_surfaces.h"
 
 using namespace tessera;
@@ -185,6 +186,7 @@ TEST_CASE("Knot curvature and removal orders", "[reduce]") {
 
   const BSplineSurface s = syntheticLastSmall();
   ReductionOptions o;
+  o.choice = KnotChoice::CurvatureFixed;
   for (auto aggregate : {CurvatureAggregate::Max, CurvatureAggregate::Mean}) {
     o.aggregate = aggregate;
     const auto score = knotCurvature(s, ParamDirection::V, aggregate);
@@ -205,6 +207,57 @@ TEST_CASE("Knot curvature and removal orders", "[reduce]") {
   CHECK(*std::max_element(r1.begin(), r1.end()) == s.countU - 1);
   o.seed = 8;
   CHECK(removalOrder(s, ParamDirection::U, o) != r1);
+}
+
+TEST_CASE("The curvature choice re-ranks by bending over the span a removal would open", "[reduce]") {
+  const BSplineSurface circles = circleRows(50.0);
+  // Straight curves do not bend.
+  for (double b : knotBending(circles, ParamDirection::U, CurvatureAggregate::Max)) CHECK(b == Approx(0.0).margin(1e-12));
+  const auto bending = knotBending(circles, ParamDirection::V, CurvatureAggregate::Max);
+  const auto kappa = knotCurvature(circles, ParamDirection::V, CurvatureAggregate::Max);
+  for (int k = 4; k < circles.countV; ++k) CHECK(bending[static_cast<size_t>(k)] > kappa[static_cast<size_t>(k)]);
+
+  ReductionOptions o;  // KnotChoice::Curvature is the default
+  const std::vector<double>& y = circles.knotsV;
+  const auto initialScore = [&](int k) {
+    const double h = y[static_cast<size_t>(k + 1)] - y[static_cast<size_t>(k - 1)];
+    return bending[static_cast<size_t>(k)] * h * h;
+  };
+  // Every removal refused: the order is the initial scores', each knot once.
+  KnotSchedule refused(circles, ParamDirection::V, o);
+  REQUIRE(refused.size() == circles.countV - 4);
+  std::vector<int> seen;
+  for (int k = refused.next(); k >= 0; k = refused.next()) {
+    if (!seen.empty()) CHECK(initialScore(seen.back()) <= initialScore(k));
+    seen.push_back(k);
+    refused.record(k, false);
+  }
+  CHECK(seen.size() == static_cast<size_t>(refused.size()));
+  CHECK(std::set<int>(seen.begin(), seen.end()).size() == seen.size());
+
+  // Every removal accepted on near-constant curvature: a removed knot's neighbours now span
+  // 3 knot intervals instead of 2 (score × 2.25), so the removals spread out: no two
+  // neighbours among the first third (measured: the first 26 of 60).
+  KnotSchedule accepted(circles, ParamDirection::V, o);
+  std::set<int> firstThird;
+  for (int t = 0; t < accepted.size() / 3; ++t) {
+    const int k = accepted.next();
+    REQUIRE(k >= 4);
+    INFO("removal " << t << ": knot " << k);
+    CHECK(firstThird.count(k - 1) == 0);
+    CHECK(firstThird.count(k + 1) == 0);
+    firstThird.insert(k);
+    accepted.record(k, true);
+  }
+  int rest = 0;
+  for (int k = accepted.next(); k >= 0; k = accepted.next(), ++rest) accepted.record(k, true);
+  CHECK(static_cast<int>(firstThird.size()) + rest == accepted.size());
+
+  // The fixed orders are removalOrder's.
+  o.choice = KnotChoice::CurvatureFixed;
+  KnotSchedule fixed(circles, ParamDirection::V, o);
+  for (int k : removalOrder(circles, ParamDirection::V, o)) CHECK(fixed.next() == k);
+  CHECK(fixed.next() == -1);
 }
 
 TEST_CASE("The specification respects the threshold and says what stopped it", "[reduce]") {

@@ -23,6 +23,7 @@ struct ReduceArgs {
   int countU = kLargeSurfaceCount;
   int countV = kLargeSurfaceCount;
   std::vector<double> thresholds = {0.01, 0.05};
+  std::vector<std::string> choices = {"curvature", "curv-fixed", "random"};
   std::string backend = "cpu";
   std::string sceneDir;
   bool quiet = false;
@@ -53,12 +54,18 @@ int runReduce(const ReduceArgs& a) {
               "bounds the surface deviation.\n\n",
               a.countU, a.countV, surface.cp.size(),
               product ? product->name().c_str() : "cpu (double)");
+  std::vector<KnotChoice> choices;
+  for (const std::string& name : a.choices) {
+    for (KnotChoice c : {KnotChoice::Curvature, KnotChoice::CurvatureFixed, KnotChoice::Random}) {
+      if (name == knotChoiceName(c)) choices.push_back(c);
+    }
+  }
   const bool bar = !a.quiet && isatty(fileno(stderr));
   std::vector<ReductionTableRow> rows;
   for (double threshold : a.thresholds) {
     ReductionOptions o;
     if (bar) o.progress = progressBar("reducing at " + std::to_string(threshold).substr(0, 6));
-    for (auto& row : reductionTable(surface, {threshold}, o, product.get())) rows.push_back(std::move(row));
+    for (auto& row : reductionTable(surface, {threshold}, o, product.get(), choices)) rows.push_back(std::move(row));
     if (bar) std::fprintf(stderr, "\r\033[K");
   }
   std::printf("%s", formatReductionTable(rows, waviness(surface)).c_str());
@@ -66,8 +73,8 @@ int runReduce(const ReduceArgs& a) {
     writeBSplineScene(a.sceneDir + "/reduce_before.json", {{"synthetic last", &surface}});
     for (const ReductionTableRow& r : rows) {
       char name[96];
-      std::snprintf(name, sizeof name, "reduce_%s_%g.json",
-                    r.choice == KnotChoice::Curvature ? "curvature" : "random", r.threshold);
+      std::snprintf(name, sizeof name, "reduce_%s_%g.json", knotChoiceName(r.choice),
+                    r.threshold);
       writeBSplineScene(a.sceneDir + "/" + name, {{name, &r.result.surface}});
     }
     std::printf("wrote %s/reduce_before.json and %zu reduced scenes\n", a.sceneDir.c_str(),
@@ -91,6 +98,11 @@ void addReduceCommand(CLI::App& app, int& exitCode) {
       ->check(CLI::Range(4, 4000))->capture_default_str();
   cmd->add_option("--thresholds", args.thresholds, "mean-error thresholds in mm")
       ->delimiter(',')->check(CLI::NonNegativeNumber);
+  cmd->add_option("--choices", args.choices,
+                  "knot choices: curvature (re-ranked by bending x span^2), curv-fixed (fixed "
+                  "curvature order), random")
+      ->delimiter(',')->check(CLI::IsMember({"curvature", "curv-fixed", "random"}))
+      ->capture_default_str();
   cmd->add_option("--backend", args.backend, "row product on vulkan, cpu or auto")
       ->capture_default_str();
   cmd->add_option("--scene-dir", args.sceneDir,
