@@ -1,9 +1,15 @@
 #include "cli/cli_support.h"
 
+#include <CLI/CLI.hpp>
+
 #include <cstdio>
+#include <filesystem>
 
 #include "cli/commands.h"
 #include "io/errors.h"
+#include "io/gltf_writer.h"
+#include "io/obj_writer.h"
+#include "io/ply_writer.h"
 
 namespace tessera::cli {
 
@@ -77,6 +83,24 @@ Tessellation tessellateWithFallback(ChosenBackend& chosen, const std::string& ba
     chosen.context.reset();
     return tessellate(patches, options, chosen.backend);
   }
+}
+
+void checkMeshFormat(const std::string& path) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  if (ext != ".obj" && ext != ".ply" && ext != ".glb")
+    throw CLI::ValidationError("--output",
+                               "unknown output format '" + ext + "' (use .obj, .ply or .glb)");
+}
+
+void writeMesh(const std::string& path, const TriangleMesh& mesh) {
+  checkMeshFormat(path);
+  const std::string ext = std::filesystem::path(path).extension().string();
+  if (ext == ".obj")
+    writeObjFile(path, mesh);
+  else if (ext == ".ply")
+    writePlyFile(path, mesh);
+  else
+    writeGlbFile(path, mesh);
 }
 
 }  // namespace tessera::cli

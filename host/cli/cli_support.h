@@ -1,5 +1,5 @@
 // What the subcommands share: turning exceptions into one message and a documented exit code,
-// and choosing the backend (--backend vulkan|cpu|auto).
+// choosing the backend (--backend vulkan|cpu|auto), and writing meshes by extension.
 #pragma once
 #include <functional>
 #include <memory>
@@ -10,6 +10,12 @@
 #include "vk/context.h"
 
 namespace tessera::cli {
+
+// Throws CLI::ValidationError naming --output unless `path` ends in .obj, .ply or .glb.
+// Called before any work, so a typo costs nothing.
+void checkMeshFormat(const std::string& path);
+// Writes `mesh` atomically in the format of `path`'s extension (checked as above).
+void writeMesh(const std::string& path, const TriangleMesh& mesh);
 
 // Runs `body`; prints any exception as "tessera: <message>" on stderr and returns its exit code
 // (commands.h). An Io error on one of `outputs` is kExitOutput; `vulkanHint` prefixes a

@@ -41,22 +41,13 @@ LoopShape readControlMesh(const std::string& path) {
   return shape;
 }
 
-void checkMeshFormat(const std::string& path) {
-  const std::string ext = std::filesystem::path(path).extension().string();
-  if (ext != ".obj" && ext != ".ply" && ext != ".glb")
-    throw CLI::ValidationError("--output", "unknown output format '" + ext + "' (use .obj, .ply or .glb)");
-}
-
 void writeLoopMesh(const std::string& path, const std::vector<glm::dvec3>& positions,
                    const std::vector<uint32_t>& triangles, const std::vector<glm::dvec3>& normals) {
   TriangleMesh mesh;
   for (const auto& p : positions) mesh.positions.push_back(glm::vec3(p));
   for (const auto& n : normals) mesh.normals.push_back(glm::vec3(n));
   mesh.indices = triangles;
-  const std::string ext = std::filesystem::path(path).extension().string();
-  if (ext == ".obj") writeObjFile(path, mesh);
-  else if (ext == ".ply") writePlyFile(path, mesh);
-  else writeGlbFile(path, mesh);
+  writeMesh(path, mesh);
 }
 
 struct LoopArgs {

@@ -37,25 +37,6 @@ struct TessellateArgs {
   bool json = false;  // --json: the JSON report on stdout instead of the summary
 };
 
-// The output format by extension; checked before any work so a typo costs nothing.
-std::string meshFormat(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  if (ext != ".obj" && ext != ".ply" && ext != ".glb")
-    throw CLI::ValidationError("--output",
-                               "unknown output format '" + ext + "' (use .obj, .ply or .glb)");
-  return ext;
-}
-
-void writeMesh(const std::string& path, const TriangleMesh& mesh) {
-  const std::string ext = meshFormat(path);
-  if (ext == ".obj")
-    writeObjFile(path, mesh);
-  else if (ext == ".ply")
-    writePlyFile(path, mesh);
-  else
-    writeGlbFile(path, mesh);
-}
-
 // "N" or "NxM" (also "N×M"), each 1..4096: the cells of rule A's uniform grid.
 void parseGrid(const std::string& text, int& gridU, int& gridV) {
   const auto bad = [&] {
@@ -87,7 +68,7 @@ int run(const TessellateArgs& a) {
   options.maxDepth = a.maxDepth;
   options.samples = a.samples;
   parseGrid(a.grid, options.gridU, options.gridV);
-  if (!a.output.empty()) meshFormat(a.output);
+  if (!a.output.empty()) checkMeshFormat(a.output);
   options.nodeBudget = a.nodeBudget;
 
   std::vector<BezierPatch> patches = readSurfaceFile(a.input);
