@@ -26,6 +26,7 @@ declare -A sizes=(
   [bench_mesh]="10|40|160"
   [bench_occt]="0.01,0.001 B"
   [bench_tess_shader]="300 100 1"
+  [bench_realtime]="300 100 1"
 )
 
 out=bench/results
