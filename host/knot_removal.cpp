@@ -53,6 +53,7 @@ const char* knotChoiceName(KnotChoice choice) {
   switch (choice) {
     case KnotChoice::Curvature: return "curvature";
     case KnotChoice::CurvatureFixed: return "curv-fixed";
+    case KnotChoice::CurvatureSweeps: return "curv-sweeps";
     case KnotChoice::Random: return "random";
   }
   return "?";

@@ -55,8 +55,11 @@ std::vector<glm::dvec3> inverseOslo(int degree, const std::vector<double>& coars
 // flat knots still go first, but a knot whose neighbours are already gone waits (reduction_order.h).
 // CurvatureFixed: the paper's literal order, by increasing κ on the original surface, fixed
 // before the pass (it empties flat stretches first; docs/reduction.md measures both).
+// CurvatureSweeps: the fixed order in sweeps that skip (defer to the next sweep) a knot whose
+// removal would open a span containing a knot removed in the same sweep — spreading without
+// a span-aware score, measured against it in docs/reduction.md.
 // Random: a seeded random order, the paper's comparison.
-enum class KnotChoice { Curvature, CurvatureFixed, Random };
+enum class KnotChoice { Curvature, CurvatureFixed, CurvatureSweeps, Random };
 const char* knotChoiceName(KnotChoice choice);
 // How the curvatures of all curves of a direction at one knot are combined into its score.
 // Max (default): a knot is as curved as its most curved curve, so a feature crossing only a
@@ -157,7 +160,7 @@ std::vector<double> knotCurvature(const BSplineSurface& surface, ParamDirection 
 std::vector<double> knotBending(const BSplineSurface& surface, ParamDirection direction,
                                 CurvatureAggregate aggregate);
 
-// KnotChoice::CurvatureFixed and Random: the interior knot indices of `direction`, in the
+// KnotChoice::CurvatureFixed, CurvatureSweeps and Random: the interior knot indices of `direction`, in the
 // order they are to be removed: by increasing knotCurvature (ties by index), or a Fisher–Yates shuffle with mt19937_64 seeded by
 // seed (u) or seed + 1 (v).
 std::vector<int> removalOrder(const BSplineSurface& surface, ParamDirection direction,

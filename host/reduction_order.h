@@ -10,6 +10,9 @@
 // KnotChoice::CurvatureFixed) removes the flat knots side by side, opening long spans next to
 // dense ones; here a knot's score grows as its neighbours go, so removals spread out and a
 // flat stretch is thinned evenly before curved knots are touched. Ties go to the lower index.
+//
+// KnotChoice::CurvatureSweeps walks the fixed curvature order in sweeps; a knot whose removal
+// would open a span containing a knot removed in the current sweep waits for the next sweep.
 #pragma once
 #include <set>
 #include <utility>
@@ -34,13 +37,16 @@ class KnotSchedule {
 
  private:
   double score(int knot) const;
+  int nextInSweeps();
 
   int count_ = 0;
-  // Fixed orders (CurvatureFixed, Random).
-  std::vector<int> order_;
+  KnotChoice choice_;
+  // Fixed orders (CurvatureFixed, Random), and the order of the sweeps.
+  std::vector<int> order_, deferred_;
   size_t at_ = 0;
+  int sweep_ = 0;
+  std::vector<int> removedInSweep_;  // per knot: the sweep that removed it, −1 if present
   // Re-ranked order (Curvature).
-  bool dynamic_ = false;
   std::vector<double> knots_, bending_, scoreOf_;
   std::vector<int> prev_, next_;  // present neighbours (the clamped end knots stay)
   std::set<std::pair<double, int>> queue_;  // untried knots by (score, index)

@@ -253,6 +253,24 @@ TEST_CASE("The curvature choice re-ranks by bending over the span a removal woul
   for (int k = accepted.next(); k >= 0; k = accepted.next(), ++rest) accepted.record(k, true);
   CHECK(static_cast<int>(firstThird.size()) + rest == accepted.size());
 
+  // Sweeps: the fixed order, but within one sweep no removal opens a span around a knot
+  // removed in the same sweep; every knot is still tried once.
+  o.choice = KnotChoice::CurvatureSweeps;
+  const std::vector<int> fixedOrder = removalOrder(circles, ParamDirection::V, o);
+  KnotSchedule sweeps(circles, ParamDirection::V, o);
+  std::set<int> firstSweep, all;
+  bool inFirst = true;
+  for (int k = sweeps.next(); k >= 0; k = sweeps.next()) {
+    // The first sweep ends where the order wraps around to a deferred knot.
+    if (!all.empty() && inFirst && firstSweep.count(k - 1) + firstSweep.count(k + 1) > 0) inFirst = false;
+    if (inFirst) firstSweep.insert(k);
+    all.insert(k);
+    sweeps.record(k, true);
+  }
+  CHECK(all.size() == fixedOrder.size());
+  CHECK(firstSweep.size() >= fixedOrder.size() / 3);
+  CHECK(firstSweep.size() <= fixedOrder.size() / 2 + 1);
+
   // The fixed orders are removalOrder's.
   o.choice = KnotChoice::CurvatureFixed;
   KnotSchedule fixed(circles, ParamDirection::V, o);

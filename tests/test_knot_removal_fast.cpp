@@ -110,6 +110,7 @@ TEST_CASE("The fast reduction makes the specification's decisions", "[reduce]") 
       {"curvature mean, mean error, u first", 0.5, KnotChoice::Curvature, CurvatureAggregate::Mean, ErrorMeasure::Mean, ParamDirection::U},
       {"fixed curvature order, mean error", 0.2, KnotChoice::CurvatureFixed, CurvatureAggregate::Max, ErrorMeasure::Mean, ParamDirection::V},
       {"fixed curvature order mean, max error, u first", 1.0, KnotChoice::CurvatureFixed, CurvatureAggregate::Mean, ErrorMeasure::Max, ParamDirection::U},
+      {"curvature sweeps, mean error", 0.2, KnotChoice::CurvatureSweeps, CurvatureAggregate::Max, ErrorMeasure::Mean, ParamDirection::V},
       {"random, max error", 2.0, KnotChoice::Random, CurvatureAggregate::Max, ErrorMeasure::Max, ParamDirection::V},
       {"everything removable", 1e6, KnotChoice::Curvature, CurvatureAggregate::Max, ErrorMeasure::Mean, ParamDirection::V},
   };
@@ -141,7 +142,8 @@ TEST_CASE("The fast reduction makes the specification's decisions", "[reduce]") 
 TEST_CASE("The fast reduction respects the threshold on a larger surface", "[reduce]") {
   const BSplineSurface s = syntheticLast(150, 180);
   std::map<std::pair<int, double>, long long> kept;  // (choice, threshold) → control points
-  for (auto choice : {KnotChoice::Curvature, KnotChoice::CurvatureFixed, KnotChoice::Random}) {
+  for (auto choice : {KnotChoice::Curvature, KnotChoice::CurvatureFixed, KnotChoice::CurvatureSweeps,
+                      KnotChoice::Random}) {
     for (double threshold : {0.01, 0.05}) {
       ReductionOptions o;
       o.threshold = threshold;
@@ -188,6 +190,7 @@ TEST_CASE("The fast reduction respects the threshold on a larger surface", "[red
     const auto at = [&](KnotChoice c) { return kept[{static_cast<int>(c), threshold}]; };
     WARN("150 x 180 at " << threshold << ": kept " << at(KnotChoice::Curvature) << " (curvature), "
                          << at(KnotChoice::CurvatureFixed) << " (fixed curvature order), "
+                         << at(KnotChoice::CurvatureSweeps) << " (sweeps), "
                          << at(KnotChoice::Random) << " (random) of " << 150 * 180);
     CHECK(at(KnotChoice::Curvature) < at(KnotChoice::CurvatureFixed));
   }

@@ -24,6 +24,7 @@ struct ReduceArgs {
   int countV = kLargeSurfaceCount;
   std::vector<double> thresholds = {0.01, 0.05};
   std::vector<std::string> choices = {"curvature", "curv-fixed", "random"};
+  std::string aggregate = "max";
   std::string backend = "cpu";
   std::string sceneDir;
   bool quiet = false;
@@ -56,7 +57,8 @@ int runReduce(const ReduceArgs& a) {
               product ? product->name().c_str() : "cpu (double)");
   std::vector<KnotChoice> choices;
   for (const std::string& name : a.choices) {
-    for (KnotChoice c : {KnotChoice::Curvature, KnotChoice::CurvatureFixed, KnotChoice::Random}) {
+    for (KnotChoice c : {KnotChoice::Curvature, KnotChoice::CurvatureFixed,
+                         KnotChoice::CurvatureSweeps, KnotChoice::Random}) {
       if (name == knotChoiceName(c)) choices.push_back(c);
     }
   }
@@ -64,6 +66,7 @@ int runReduce(const ReduceArgs& a) {
   std::vector<ReductionTableRow> rows;
   for (double threshold : a.thresholds) {
     ReductionOptions o;
+    o.aggregate = a.aggregate == "mean" ? CurvatureAggregate::Mean : CurvatureAggregate::Max;
     if (bar) o.progress = progressBar("reducing at " + std::to_string(threshold).substr(0, 6));
     for (auto& row : reductionTable(surface, {threshold}, o, product.get(), choices)) rows.push_back(std::move(row));
     if (bar) std::fprintf(stderr, "\r\033[K");
@@ -100,9 +103,13 @@ void addReduceCommand(CLI::App& app, int& exitCode) {
       ->delimiter(',')->check(CLI::NonNegativeNumber);
   cmd->add_option("--choices", args.choices,
                   "knot choices: curvature (re-ranked by bending x span^2), curv-fixed (fixed "
-                  "curvature order), random")
-      ->delimiter(',')->check(CLI::IsMember({"curvature", "curv-fixed", "random"}))
+                  "curvature order), curv-sweeps (fixed order, spread in sweeps), random")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"curvature", "curv-fixed", "curv-sweeps", "random"}))
       ->capture_default_str();
+  cmd->add_option("--aggregate", args.aggregate,
+                  "curvature over the rows of a direction: max (default) or mean")
+      ->check(CLI::IsMember({"max", "mean"}))->capture_default_str();
   cmd->add_option("--backend", args.backend, "row product on vulkan, cpu or auto")
       ->capture_default_str();
   cmd->add_option("--scene-dir", args.sceneDir,
