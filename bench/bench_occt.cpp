@@ -6,7 +6,11 @@
 // or a smaller measured maximum deviation. Both meshes are measured by the same code with both
 // metrics: distance to the true surface (host/deviation.h geometric metric, what OCCT's deflection
 // promises; the metric the settings are matched on) and parametric (host/deviation.h).
-// Usage: bench_occt [deflections=0.01,0.001] [rules=B] [--json file]   (rules e.g. BD)
+// The threshold pair is searched along linearity = ratio · flatness for each ratio asked for
+// (1: the two equal; inf: flatness only, linearity 2 so that it never splits).
+// Rule A means grids per patch from Filip's bound (countedGrids below), matched on its TOL.
+// Usage: bench_occt [deflections=0.01,0.001] [rules=B] [ratios=1] [--json file]
+//   (rules e.g. ABCD, ratios e.g. 1,4,inf)
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
@@ -31,6 +35,9 @@
 
 #include "bench_report.h"
 #include "deviation.h"
+#include "division_count.h"
+#include "evaluator.h"
+#include "rational.h"
 #include "io/bpt_reader.h"
 #include "tessellate.h"
 #include "vk/context.h"
@@ -111,18 +118,26 @@ nlohmann::json toJson(const Measured& m) {
           {"maxParametricDeviation", m.parametricMax}};
 }
 
-// The largest threshold (linearity = flatness) whose mesh is within `target` by distance to
-// the surface: bisection in log space between thresholds that pass and fail.
+// Linearity = ratio · flatness, capped at 2 (1 − cos never exceeds 2: that test never splits).
+void setThresholds(QuadtreeOptions& o, double flatness, double ratio) {
+  o.flatness = float(flatness);
+  o.linearity = float(std::min(2.0, ratio * flatness));
+}
+
+// The largest flatness threshold (linearity = ratio · flatness) whose mesh is within `target`
+// by distance to the surface: bisection in log space between thresholds that pass and fail.
 QuadtreeOptions matchDeviation(const std::vector<BezierPatch>& patches, SplitRule rule,
-                               double target, Backend& backend) {
+                               double ratio, double target, Backend& backend) {
   QuadtreeOptions o;
   o.rule = rule;
   auto within = [&](double threshold) {
-    o.linearity = o.flatness = float(threshold);
+    setThresholds(o, threshold, ratio);
     Tessellation t = tessellate(patches, o, backend);
     double d = measureDeviation(t, patches, 4, DeviationMetric::Geometric).maxDeviation;
-    std::fprintf(stderr, "  rule %c threshold %.3g: %zu triangles, distance %.3g (target %.3g)\n",
-                 splitRuleLetter(rule), threshold, t.mesh.triangleCount(), d, target);
+    std::fprintf(stderr,
+                 "  rule %c flatness %.3g linearity %.3g: %zu triangles, distance %.3g (target "
+                 "%.3g)\n",
+                 splitRuleLetter(rule), threshold, o.linearity, t.mesh.triangleCount(), d, target);
     return d <= target;
   };
   // Thresholds are 1 − cos of angles; the deviation is not monotone in them (a level more or
@@ -137,8 +152,54 @@ QuadtreeOptions matchDeviation(const std::vector<BezierPatch>& patches, SplitRul
     }
   }
   if (best == 0) best = pass;  // none passed: the lower end, reported with what it measures
-  o.linearity = o.flatness = float(best);
+  setThresholds(o, best, ratio);
   return o;
+}
+
+// Rule A with each patch's grid from Filip's bound at TOL in model units
+// (host/division_count.h): the size-aware setting. Rules B–D stop on angles (1 − cos), which
+// do not see a patch's size, so at one absolute deviation they over-refine small patches.
+// The grids come from buildQuadtree's rule A, one patch at a time (as uniformGridMesh does),
+// and meshFromTree makes them watertight.
+Tessellation countedGrids(const std::vector<BezierPatch>& patches,
+                          const std::vector<gpu::BicubicPatch>& gpuPatches, double tolerance,
+                          PatchEvaluator& evaluator) {
+  DivisionOptions counting;
+  counting.tolerance = tolerance;
+  QuadtreeOptions grid;
+  grid.rule = SplitRule::UniformGrid;
+  const std::unique_ptr<NodeClassifier> unused = makeReferenceClassifier();
+  QuadtreeResult tree;
+  for (size_t p = 0; p < patches.size(); ++p) {
+    const Divisions d = patchDivisions(toRationalPatch(patches[p]), counting);
+    grid.gridU = d.nu;
+    grid.gridV = d.nv;
+    for (QuadLeaf leaf : buildQuadtree({gpuPatches[p]}, grid, *unused).leaves) {
+      leaf.patchIndex = uint32_t(p);
+      tree.leaves.push_back(leaf);
+    }
+  }
+  return meshFromTree(patches, gpuPatches, std::move(tree), evaluator);
+}
+
+// The largest TOL whose counted grids are within `target` by distance to the surface.
+double matchCountedGrids(const std::vector<BezierPatch>& patches,
+                         const std::vector<gpu::BicubicPatch>& gpuPatches, double target,
+                         PatchEvaluator& evaluator) {
+  double pass = target / 64, fail = 16 * target, best = 0;
+  for (int step = 0; step < 10; ++step) {
+    double mid = std::sqrt(pass * fail);
+    Tessellation t = countedGrids(patches, gpuPatches, mid, evaluator);
+    double d = measureDeviation(t, patches, 4, DeviationMetric::Geometric).maxDeviation;
+    std::fprintf(stderr, "  rule A counted TOL %.3g: %zu triangles, distance %.3g (target %.3g)\n",
+                 mid, t.mesh.triangleCount(), d, target);
+    if (d <= target) {
+      pass = best = mid;
+    } else {
+      fail = mid;
+    }
+  }
+  return best == 0 ? pass : best;
 }
 
 }  // namespace
@@ -152,10 +213,24 @@ int main(int argc, char** argv) {
     for (std::string item; std::getline(list, item, ',');) deflections.push_back(std::stod(item));
   }
   std::vector<SplitRule> rules = {SplitRule::Midpoint};
+  bool countedGridsAsked = false;  // "A": rule A with per-patch Filip counts
   if (argc > 2) {
     rules.clear();
-    for (const char* r = argv[2]; *r; ++r)
-      if (*r != ',') rules.push_back(parseSplitRule(std::string(1, *r)));
+    for (const char* r = argv[2]; *r; ++r) {
+      if (*r == ',') continue;
+      SplitRule rule = parseSplitRule(std::string(1, *r));
+      if (rule == SplitRule::UniformGrid)
+        countedGridsAsked = true;
+      else
+        rules.push_back(rule);
+    }
+  }
+  std::vector<double> ratios = {1.0};
+  if (argc > 3) {
+    ratios.clear();
+    std::stringstream list(argv[3]);
+    for (std::string item; std::getline(list, item, ',');)
+      ratios.push_back(item == "inf" ? 1e30 : std::stod(item));
   }
   std::vector<BezierPatch> patches;
   std::vector<size_t> parts;
@@ -215,22 +290,52 @@ int main(int argc, char** argv) {
       c.extra = toJson(occt);
       table.cases.push_back(c);
     }
-    for (SplitRule rule : rules) {
-      QuadtreeOptions o = matchDeviation(patches, rule, occt.surfaceMax, vulkan);
+    const std::vector<gpu::BicubicPatch> gpuPatches = toGpuPatches(patches);
+    if (countedGridsAsked) {
+      const double tolerance =
+          matchCountedGrids(patches, gpuPatches, occt.surfaceMax, *vulkan.evaluator);
       for (Backend* backend : {&vulkan, &cpu}) {
         Tessellation t;
-        bench::Case c{std::string("Tessera rule ") + splitRuleLetter(rule) + ", " +
-                          (backend == &vulkan ? "Vulkan" : "CPU all cores"),
+        bench::Case c{std::string("Tessera rule A, Filip counts per patch, ") +
+                          (backend == &vulkan ? "Vulkan evaluation" : "CPU evaluation"),
                       0};
-        c.timing = bench::timeRepeated(bench::kMinRuns, [&] { t = tessellate(patches, o, *backend); });
+        c.timing = bench::timeRepeated(bench::kMinRuns, [&] {
+          t = countedGrids(patches, gpuPatches, tolerance, *backend->evaluator);
+        });
         Measured m = measure(t, patches);
         c.workSize = double(m.triangles);
         c.throughput = 1.0 / c.timing.minSeconds;
         c.extra = toJson(m);
-        c.extra["threshold"] = o.flatness;
+        c.extra["divisionTolerance"] = tolerance;
         c.extra["fewerTrianglesThanOcct"] = m.triangles < occt.triangles;
         c.extra["speedupVsOcctParallel"] = occtTime[1].minSeconds / c.timing.minSeconds;
         table.cases.push_back(c);
+      }
+    }
+    for (SplitRule rule : rules) {
+      for (double ratio : ratios) {
+        QuadtreeOptions o = matchDeviation(patches, rule, ratio, occt.surfaceMax, vulkan);
+        char setting[64] = "";
+        if (ratios.size() > 1 || ratio != 1.0)
+          std::snprintf(setting, sizeof setting,
+                        ratio >= 1e29 ? " flatness only" : " linearity %g x flatness", ratio);
+        for (Backend* backend : {&vulkan, &cpu}) {
+          Tessellation t;
+          bench::Case c{std::string("Tessera rule ") + splitRuleLetter(rule) + setting + ", " +
+                            (backend == &vulkan ? "Vulkan" : "CPU all cores"),
+                        0};
+          c.timing = bench::timeRepeated(bench::kMinRuns,
+                                         [&] { t = tessellate(patches, o, *backend); });
+          Measured m = measure(t, patches);
+          c.workSize = double(m.triangles);
+          c.throughput = 1.0 / c.timing.minSeconds;
+          c.extra = toJson(m);
+          c.extra["threshold"] = o.flatness;
+          c.extra["linearity"] = o.linearity;
+          c.extra["fewerTrianglesThanOcct"] = m.triangles < occt.triangles;
+          c.extra["speedupVsOcctParallel"] = occtTime[1].minSeconds / c.timing.minSeconds;
+          table.cases.push_back(c);
+        }
       }
     }
     report.print(table);

@@ -175,7 +175,8 @@ int main(int argc, char** argv) {
               1e3 * bucket / n, 1e3 * grid / n, dispatches / n, culled / n, fallback / n,
               capped / n);
   std::printf("the counts ask for %.0f triangles per frame (2·N_u·N_v); square grids on the "
-              "ladder of sizes spend %.2fx that\n", counted / n, triangles / std::max(counted, 1.0));
+              "ladder of sizes spend %.2fx that\n",
+              counted / n, triangles / std::max(counted, 1.0));
   std::printf("screen-space error over %zu sampled frames (%zu triangles): max %.3f px affine "
               "(what the counts bound), %.3f px perspective-correct; tolerance %.2g px\n",
               sampled.size(), measuredTriangles, maxAffine, maxPerspective, tolerance);

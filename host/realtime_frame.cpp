@@ -66,7 +66,8 @@ RealtimeTessellator::RealtimeTessellator(vk::Context& context, std::vector<Bezie
     }
     ladder_.push_back(rung);
   }
-  for (size_t b = 0; b < ladder_.size(); ++b) evaluators_.push_back(makeVulkanGridEvaluator(context));
+  for (size_t b = 0; b < ladder_.size(); ++b)
+    evaluators_.push_back(makeVulkanGridEvaluator(context));
   bucketPatches_.resize(ladder_.size());
   bucketGrids_.resize(ladder_.size());
 }

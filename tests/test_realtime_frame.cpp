@@ -36,7 +36,8 @@ size_t gridsDifferingFromMirror(const RealtimeFrame& frame, const std::vector<Be
   auto mirror = makeMirrorGridEvaluator(1);
   size_t differing = 0;
   for (const RealtimeGrid& g : frame.grids) {
-    const gpu::GridVertex* expected = mirror->evaluate({toGpuPatch(scene[g.patch])}, g.pointsPerSide);
+    const gpu::GridVertex* expected =
+        mirror->evaluate({toGpuPatch(scene[g.patch])}, g.pointsPerSide);
     const size_t bytes = sizeof(gpu::GridVertex) * g.pointsPerSide * g.pointsPerSide;
     differing += std::memcmp(expected, g.vertices, bytes) != 0 ? 1 : 0;
   }
@@ -70,7 +71,8 @@ TEST_CASE("Real-time frames meet 1 px on screen and match the mirror", "[gpu][re
     CHECK(frame.capped == 0);
     CHECK(error.maxAffinePixels <= 1.0);
     CHECK(error.maxPerspectivePixels <= 1.0);
-    for (const RealtimeGrid& g : frame.grids) CHECK(int(g.pointsPerSide) - 1 >= std::max(g.nu, g.nv));
+    for (const RealtimeGrid& g : frame.grids)
+      CHECK(int(g.pointsPerSide) - 1 >= std::max(g.nu, g.nv));
     CHECK(gridsDifferingFromMirror(frame, scene) == 0);
     if (std::string(name) == "inside the second teapot") CHECK(frame.fallback > 0);
   }
