@@ -23,6 +23,16 @@ class VulkanClassifier final : public NodeClassifier {
 
   std::string name() const override { return "vulkan:" + context_.info().name; }
 
+  // Every buffer is bound whole as one storage buffer, so none may exceed the device's
+  // maxStorageBufferRange (128 MiB on lavapipe): nodes and decisions are 32 bytes each.
+  size_t maxBatchNodes() const override {
+    return size_t(context_.info().maxStorageBufferRange) /
+           std::max(sizeof(gpu::QuadNode), sizeof(gpu::NodeDecision));
+  }
+  size_t maxPatchBufferBytes() const override {
+    return size_t(context_.info().maxStorageBufferRange);
+  }
+
   void classify(const std::vector<gpu::BicubicPatch>& patches,
                 const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
                 std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) override {

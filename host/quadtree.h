@@ -5,6 +5,7 @@
 // next level. Split rules: A uniform N×M grid, B midpoint, C sampled κ maximum, D true κ
 // maximum (docs/quadtree.md).
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -43,6 +44,10 @@ struct QuadtreeOptions {
   int samples = 5;                 // S of rules C and D
   int gridU = 8, gridV = 8;        // N×M of rule A
   size_t nodeBudget = 1u << 24;    // most nodes in the tree, all levels together
+  // Most bytes the frontier may hold at once: nodes waiting for classification, the batch in
+  // flight with its decisions, and that batch's children. A level larger than that is
+  // classified in batches, depth first (docs/quadtree.md, "Bounded frontier").
+  size_t frontierBudgetBytes = size_t(256) << 20;
   // Called after each level (for progress display); may be empty.
   std::function<void(const LevelStats&)> onLevel;
 };
@@ -66,7 +71,19 @@ struct QuadtreeResult {
   std::vector<QuadLeaf> leaves;
   std::vector<LevelStats> levels;
   uint32_t depth = 0;  // deepest leaf level
+  size_t batches = 0;            // classifier calls (one per level when nothing was split up)
+  size_t patchGroups = 0;        // trees built over patch subsets the classifier could hold
+  size_t peakFrontierNodes = 0;  // most nodes held at once (see frontierBudgetBytes)
 };
+
+// The frontier's bytes per node it holds (a QuadNode and its path; a classified node also
+// has a NodeDecision), for QuadtreeOptions::frontierBudgetBytes.
+constexpr size_t kFrontierBytesPerNode = sizeof(gpu::QuadNode) + sizeof(uint64_t);
+// Nodes per classifier batch under `options` and a classifier that takes at most
+// `classifierLimit` nodes at once. Depth-first batching leaves at most three batches of
+// children waiting per level, so batch = budget / (3·(maxDepth + 1) + 5) nodes keeps the
+// whole frontier within the budget. Throws std::invalid_argument when it would be < 1.
+size_t frontierBatchNodes(const QuadtreeOptions& options, size_t classifierLimit);
 
 // The node budget would be exceeded: names the patch with the most frontier nodes and the level.
 class TessellationLimitError : public std::runtime_error {
@@ -90,6 +107,11 @@ class NodeClassifier {
                                const std::vector<gpu::QuadNode>& nodes,
                                const QuadtreeOptions& options,
                                std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) = 0;
+  // Most nodes one classify call may take, and most bytes of one patch array (BicubicPatch,
+  // GeneralPatch or control points) one tree may use: a GPU's largest storage buffer. The
+  // frontier splits levels and patch sets to stay within them.
+  virtual size_t maxBatchNodes() const { return SIZE_MAX; }
+  virtual size_t maxPatchBufferBytes() const { return SIZE_MAX; }
 };
 
 std::unique_ptr<NodeClassifier> makeMirrorClassifier();            // fp32, shader's twin

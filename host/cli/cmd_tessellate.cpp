@@ -30,6 +30,7 @@ struct TessellateArgs {
   int samples = 5;
   std::string grid = "8";  // rule A: "N" (N×N cells) or "NxM" (N along u, M along v)
   size_t nodeBudget = size_t(1) << 24;
+  double frontierBudgetMiB = 256;  // QuadtreeOptions::frontierBudgetBytes, in MiB
   std::string backend = "auto";
   std::string device;
   bool quiet = false;
@@ -70,6 +71,7 @@ int run(const TessellateArgs& a) {
   parseGrid(a.grid, options.gridU, options.gridV);
   if (!a.output.empty()) checkMeshFormat(a.output);
   options.nodeBudget = a.nodeBudget;
+  options.frontierBudgetBytes = size_t(a.frontierBudgetMiB * 1024.0 * 1024.0);
 
   std::vector<BezierPatch> patches = readSurfaceFile(a.input);
   // A one-line progress display on stderr for long runs, only on a terminal.
@@ -142,6 +144,10 @@ void addTessellateOptions(CLI::App* cmd, TessellateArgs& args) {
       ->capture_default_str();
   cmd->add_option("--node-budget", args.nodeBudget, "most quad-tree nodes before stopping")
       ->capture_default_str();
+  cmd->add_option("--frontier-budget", args.frontierBudgetMiB,
+                  "MiB the quad-tree frontier may hold; larger levels go in batches")
+      ->capture_default_str()
+      ->check(CLI::Range(0.01, 1048576.0));
   cmd->add_option("--backend", args.backend, "vulkan, cpu, or auto (Vulkan if a device exists)")
       ->capture_default_str();
   cmd->add_option("--device", args.device, "Vulkan device index or part of its name");

@@ -1,0 +1,84 @@
+// The largest scene: a wavy sheet tiled into n×n bicubic patches (10⁶ by default) tessellated
+// whole on Vulkan with a frontier budget, to show the frontier stays within it whatever the
+// scene size (docs/hardening.md). Patches share edges exactly (control points come from one
+// lattice), so the mesh is one watertight sheet. Not timed repeatedly: one run, its peak
+// resident memory (getrusage), the frontier's peak, batches and patch groups.
+// Usage: bench_scale [patches] [frontier budget MiB]
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "tessellate.h"
+#include "vk/context.h"
+
+using namespace tessera;
+
+namespace {
+
+std::vector<BezierPatch> wavySheet(int n) {
+  // Lattice point (I, J) of the 3n+1 × 3n+1 control net; patch (a, b) takes its 4×4 block.
+  auto lattice = [n](int i, int j) {
+    const double x = double(i) / 3.0, y = double(j) / 3.0;
+    return glm::dvec3(x, y, 0.15 * std::sin(1.9 * x) * std::cos(1.3 * y));
+  };
+  std::vector<BezierPatch> patches;
+  patches.reserve(size_t(n) * size_t(n));
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) {
+      BezierPatch p;
+      p.cp.resize(16);
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) p.at(i, j) = lattice(3 * a + i, 3 * b + j);
+      patches.push_back(std::move(p));
+    }
+  return patches;
+}
+
+double peakResidentMiB() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / 1024.0;  // kilobytes on Linux
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const long requested = argc > 1 ? std::atol(argv[1]) : 1000000;
+  const double budgetMiB = argc > 2 ? std::atof(argv[2]) : 64.0;
+  const int n = std::max(1, int(std::lround(std::sqrt(double(requested)))));
+  auto patches = wavySheet(n);
+  const double sceneMiB = peakResidentMiB();
+
+  vk::Context context;
+  Backend vulkan = makeVulkanBackend(context);
+  QuadtreeOptions options;
+  options.rule = SplitRule::Midpoint;
+  options.linearity = options.flatness = 0.02f;
+  options.frontierBudgetBytes = size_t(budgetMiB * 1024 * 1024);
+  const auto start = std::chrono::steady_clock::now();
+  Tessellation t = tessellate(patches, options, vulkan);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  const QuadtreeResult& tree = t.tree;
+  const size_t batchNodes = frontierBatchNodes(options, vulkan.classifier->maxBatchNodes());
+  const double frontierMiB =
+      double(tree.peakFrontierNodes * kFrontierBytesPerNode + batchNodes * sizeof(gpu::NodeDecision)) /
+      (1024.0 * 1024.0);
+  std::printf("bench_scale on %s: %zu patches (%dx%d wavy sheet), rule B at 0.02\n",
+              context.info().name.c_str(), patches.size(), n, n);
+  std::printf("| patches | leaves | triangles | patch groups | batches | batch nodes | peak frontier MiB | budget MiB | scene MiB | peak RSS MiB | seconds |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| %zu | %zu | %zu | %zu | %zu | %zu | %.1f | %.1f | %.0f | %.0f | %.1f |\n",
+              patches.size(), tree.leaves.size(), t.stats.triangles, tree.patchGroups,
+              tree.batches, batchNodes, frontierMiB, budgetMiB, sceneMiB, peakResidentMiB(),
+              seconds);
+  if (frontierMiB > budgetMiB) {
+    std::printf("FAILED: the frontier exceeded its budget\n");
+    return 1;
+  }
+  return 0;
+}
