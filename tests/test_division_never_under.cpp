@@ -56,7 +56,7 @@ void checkPatch(const HomogeneousNet& net, DivisionMethod method, double tol, Ta
     ++t.capped;
     return;
   }
-  const double dev = uniformGridDeviation(net, d.nu, d.nv, {4, 24});
+  const double dev = uniformGridDeviation(net, d.nu, d.nv, {3, 18});
   t.worstDeviationRatio = std::max(t.worstDeviationRatio, dev / tol);
   CHECK(dev <= tol);
   ++t.checked;

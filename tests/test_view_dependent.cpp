@@ -32,7 +32,7 @@ glm::dvec2 toPixels(const Camera& camera, const glm::dvec3& p) {
 
 }  // namespace
 
-TEST_CASE("View: TOL is in pixels; a patch in front gets counts that meet it on screen",
+TEST_CASE("View: TOL is in pixels, a patch in front gets counts that meet it on screen",
           "[division][view]") {
   const RationalBezierPatch cyl = quarterCylinder(1.0, 1.0);
   const Camera near = lookAtCamera({3, 3, 0.5}, {0, 0, 0.5}, {0, 0, 1}, 0.8, 1024, 1024);
@@ -127,7 +127,7 @@ TEST_CASE("View: a patch entirely behind the eye is culled and meshes to nothing
   CHECK(uniformGridMesh({cyl}, {d.divisions}).triangleCount() == 0);
 }
 
-TEST_CASE("View: counts drive rule A; a torus meshes watertight with per-patch counts",
+TEST_CASE("View: counts drive rule A, a torus meshes watertight with per-patch counts",
           "[division][view]") {
   const std::vector<RationalBezierPatch> torus = rationalTorus(2.0, 0.75);
   const Camera camera = lookAtCamera({0, -7, 4}, {0, 0, 0}, {0, 0, 1}, 0.9, 1024, 768);
