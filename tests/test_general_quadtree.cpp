@@ -27,7 +27,8 @@ QuadtreeOptions optionsFor(SplitRule rule, float threshold) {
 }
 
 // One classifier for every input: llvmpipe compiles the general classifier once per rule
-// (about 13 s for rule D, whose κ evaluations are all inlined), so compiling once matters.
+// (about 13 s for rule D, whose κ evaluations are all inlined; the on-disk pipeline cache
+// makes that a first-run cost: this case takes ~30 s cold, ~6 s warm).
 void checkGpuTrees(NodeClassifier& gpu, const std::vector<BezierPatch>& input,
                    const char* what) {
   vk::Context& context = test::gpuContext();
