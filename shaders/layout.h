@@ -256,42 +256,6 @@ struct BandApplyPush {
   uint pad0;
 };
 
-// ---- Rational division counts (shaders/division_count.comp.glsl,
-// shaders/lib/division_count.h, host/division_gpu.cpp; docs/rational_division.md) ----
-
-// One rational Bézier patch of bidegree (degreeU, degreeV) ≤ (7, 7): its homogeneous control
-// points (w·x, w·y, w·z, w), c[i*(degreeV+1) + j], start at points[firstPoint].
-struct DivisionPatch {
-  uint firstPoint;
-  uint degreeU;
-  uint degreeV;
-  uint pad;
-};
-
-TESSERA_CONST(uint, kDivisionOk, 0u);
-TESSERA_CONST(uint, kDivisionCapped, 1u);     // a count exceeded maxPerDirection, clamped
-TESSERA_CONST(uint, kDivisionUnbounded, 2u);  // w may vanish on the patch: both counts capped
-
-// Counts N_u, N_v, the real counts before rounding up, and the bounds of ‖S_uu‖, ‖S_uv‖, ‖S_vv‖.
-struct DivisionResult {
-  uint nu;
-  uint nv;
-  uint status;  // kDivision*
-  float realU;
-  float realV;
-  float uu;
-  float uv;
-  float vv;
-};
-
-// Push constants of division_count.comp.glsl.
-struct DivisionPush {
-  float tolerance;       // TOL, in the units of the control points
-  uint maxPerDirection;  // counts are clamped to this
-  uint ratioPieces;      // q of the ρ/σ bounds (q×q pieces)
-  uint patchCount;
-};
-
 #ifdef __cplusplus
 }  // namespace tessera::gpu
 #endif
