@@ -24,7 +24,7 @@ declare -A sizes=(
   [bench_eval]="64 32 65536|256 32 65536|1024 32 262144|2048 32 262144"
   [bench_quadtree]="10 2|40 4|160 8"
   [bench_mesh]="10|40|160"
-  [bench_occt]="0.01,0.001 B"
+  [bench_occt]="0.01,0.001 AB"
   [bench_tess_shader]="300 100 1"
   [bench_realtime]="300 100 1"
 )
