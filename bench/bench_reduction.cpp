@@ -101,15 +101,17 @@ int main(int argc, char** argv) {
       "(curvature-chosen knots), one run each; throughput = original control points per second");
   ReductionResult cpuResult, gpuResult;
   FastPathStats cpuStats;
-  const double cpuSeconds = secondsOf([&] { cpuResult = reduceSurface(surface, options, nullptr, &cpuStats); });
+  const double cpuSeconds =
+      secondsOf([&] { cpuResult = reduceSurface(surface, options, nullptr, &cpuStats); });
   bench::Case cpuCase{"CPU only (double)", double(surface.cp.size()), {cpuSeconds, cpuSeconds, 1}};
   // The window solves' locality and their drift from the from-scratch fit (docs/reduction.md).
-  cpuCase.extra = {{"kept", cpuResult.keptControlPoints}, {"ratioPercent", cpuResult.compressionPercent()},
-                   {"widestWindow", cpuStats.widestWindow},
-                   {"drift", std::max(cpuStats.drift[0], cpuStats.drift[1])}};
+  const double drift = std::max(cpuStats.drift[0], cpuStats.drift[1]);
+  cpuCase.extra = {{"kept", cpuResult.keptControlPoints},
+                   {"ratioPercent", cpuResult.compressionPercent()},
+                   {"widestWindow", cpuStats.widestWindow}, {"drift", drift}};
   std::printf("CPU only: kept %lld (%.3f %%), widest window %d, drift %.3g mm\n",
               cpuResult.keptControlPoints, cpuResult.compressionPercent(), cpuStats.widestWindow,
-              std::max(cpuStats.drift[0], cpuStats.drift[1]));
+              drift);
   whole.cases.push_back(cpuCase);
   try {
     vk::Context context;

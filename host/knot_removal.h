@@ -160,9 +160,10 @@ std::vector<double> knotCurvature(const BSplineSurface& surface, ParamDirection 
 std::vector<double> knotBending(const BSplineSurface& surface, ParamDirection direction,
                                 CurvatureAggregate aggregate);
 
-// KnotChoice::CurvatureFixed, CurvatureSweeps and Random: the interior knot indices of `direction`, in the
-// order they are to be removed: by increasing knotCurvature (ties by index), or a Fisher–Yates shuffle with mt19937_64 seeded by
-// seed (u) or seed + 1 (v).
+// The fixed orders: the interior knot indices of `direction` by increasing knotCurvature (ties
+// by index; CurvatureFixed, and the ranking CurvatureSweeps walks), or for Random a
+// Fisher–Yates shuffle with mt19937_64 seeded by seed (u) or seed + 1 (v). KnotChoice::Curvature
+// is re-ranked as knots go (KnotSchedule, reduction_order.h); here it gives the fixed sort.
 std::vector<int> removalOrder(const BSplineSurface& surface, ParamDirection direction,
                               const ReductionOptions& options);
 
