@@ -25,6 +25,7 @@ struct ReduceArgs {
   std::vector<double> thresholds = {0.01, 0.05};
   std::vector<std::string> choices = {"curvature", "curv-fixed", "random"};
   std::string aggregate = "max";
+  std::string measure = "mean";
   std::string backend = "cpu";
   std::string sceneDir;
   bool quiet = false;
@@ -51,10 +52,10 @@ int runReduce(const ReduceArgs& a) {
   if (chosen.context) product = makeVulkanCurveProduct(*chosen.context);
   const BSplineSurface surface = syntheticLast(a.countU, a.countV);
   std::printf("Synthetic last %d x %d = %zu control points (millimetres); row product: %s.\n"
-              "Error: mean |d| of the control-net difference (the threshold bounds it), max |d| "
-              "bounds the surface deviation.\n\n",
+              "Error: mean and max |d| of the control-net difference (the threshold bounds the "
+              "%s); max |d| bounds the surface deviation.\n\n",
               a.countU, a.countV, surface.cp.size(),
-              product ? product->name().c_str() : "cpu (double)");
+              product ? product->name().c_str() : "cpu (double)", a.measure.c_str());
   std::vector<KnotChoice> choices;
   for (const std::string& name : a.choices) {
     for (KnotChoice c : {KnotChoice::Curvature, KnotChoice::CurvatureFixed,
@@ -67,6 +68,7 @@ int runReduce(const ReduceArgs& a) {
   for (double threshold : a.thresholds) {
     ReductionOptions o;
     o.aggregate = a.aggregate == "mean" ? CurvatureAggregate::Mean : CurvatureAggregate::Max;
+    o.measure = a.measure == "max" ? ErrorMeasure::Max : ErrorMeasure::Mean;
     if (bar) o.progress = progressBar("reducing at " + std::to_string(threshold).substr(0, 6));
     for (auto& row : reductionTable(surface, {threshold}, o, product.get(), choices)) rows.push_back(std::move(row));
     if (bar) std::fprintf(stderr, "\r\033[K");
@@ -99,7 +101,7 @@ void addReduceCommand(CLI::App& app, int& exitCode) {
       ->check(CLI::Range(4, 4000))->capture_default_str();
   cmd->add_option("--count-v", args.countV, "control points heel to toe")
       ->check(CLI::Range(4, 4000))->capture_default_str();
-  cmd->add_option("--thresholds", args.thresholds, "mean-error thresholds in mm")
+  cmd->add_option("--thresholds", args.thresholds, "thresholds in mm (on the --measure error)")
       ->delimiter(',')->check(CLI::NonNegativeNumber);
   cmd->add_option("--choices", args.choices,
                   "knot choices: curvature (re-ranked by bending x span^2), curv-fixed (fixed "
@@ -110,6 +112,9 @@ void addReduceCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--aggregate", args.aggregate,
                   "curvature over the rows of a direction: max (default) or mean")
       ->check(CLI::IsMember({"max", "mean"}))->capture_default_str();
+  cmd->add_option("--measure", args.measure,
+                  "error the threshold bounds: mean (the paper) or max of the control-net difference")
+      ->check(CLI::IsMember({"mean", "max"}))->capture_default_str();
   cmd->add_option("--backend", args.backend, "row product on vulkan, cpu or auto")
       ->capture_default_str();
   cmd->add_option("--scene-dir", args.sceneDir,
