@@ -43,7 +43,7 @@ double combineClasses(const ClassMaxima& classes, double rho, double sigma);
 
 // AbiEzzi, PaperSplit and Split (options.method).
 SecondDerivativeBounds splitBounds(const HomogeneousNet& net, const DivisionOptions& options);
-// Subdivided (host/division_subdivided.cpp).
+// Subdivided (host/division_subdivided.cpp); also the global bound CellWise starts from.
 SecondDerivativeBounds subdividedBounds(const HomogeneousNet& net, const DivisionOptions& options);
 
 // The exact Bernstein coefficients of the numerators of S_uu, S_uv, S_vv (S'' = N / w³) and of
@@ -53,5 +53,22 @@ struct SecondDerivativeNumerators {
   ScalarNet w3;
 };
 SecondDerivativeNumerators secondDerivativeNumerators(const HomogeneousNet& net);
+
+// Bounds of sup‖S_uu‖, ‖S_uv‖, ‖S_vv‖ (in the patch's parameters) over a piece of parameter
+// size hu×hv whose reparametrised numerators are `num`: max_k ‖N_k‖/|W_k| over h², hk, k².
+// False (bounds untouched) unless W's coefficients are all of one strict sign.
+bool numeratorRatioBounds(const SecondDerivativeNumerators& num, double hu, double hv,
+                          double bounds[3]);
+
+// True when every control point of `net` lies outside one half-space of the clip region (the
+// convex hull does, so the piece is invisible). False when the clip is disabled.
+bool outsideClip(const HomogeneousNet& net, const ClipRegion& clip);
+
+// CellWise (host/division_cellwise.cpp): the smallest uniform grid found below the subdivided
+// counts (`subdivided`, the grid of the global bound, which passes) whose every cell passes
+// Filip's inequality with bounds over that cell only. Returns `subdivided` unless its status
+// is Ok.
+Divisions cellwiseDivisions(const HomogeneousNet& net, const DivisionOptions& options,
+                            const Divisions& subdivided);
 
 }  // namespace tessera

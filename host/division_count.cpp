@@ -90,16 +90,18 @@ const char* divisionMethodName(DivisionMethod method) {
     case DivisionMethod::PaperSplit: return "paper";
     case DivisionMethod::Split: return "split";
     case DivisionMethod::Subdivided: return "subdivided";
+    case DivisionMethod::CellWise: return "cellwise";
   }
   return "?";
 }
 
 DivisionMethod parseDivisionMethod(const std::string& name) {
   for (DivisionMethod m : {DivisionMethod::AbiEzzi, DivisionMethod::PaperSplit,
-                           DivisionMethod::Split, DivisionMethod::Subdivided})
+                           DivisionMethod::Split, DivisionMethod::Subdivided,
+                           DivisionMethod::CellWise})
     if (name == divisionMethodName(m)) return m;
   throw std::invalid_argument("unknown division method '" + name +
-                              "' (abi-ezzi, paper, split or subdivided)");
+                              "' (abi-ezzi, paper, split, subdivided or cellwise)");
 }
 
 const char* divisionStatusName(DivisionStatus status) {
@@ -376,22 +378,17 @@ Divisions divisionsFromBounds(const SecondDerivativeBounds& bounds, double toler
   return r;
 }
 
-SecondDerivativeBounds secondDerivativeBounds(const RationalBezierPatch& patch,
-                                              const DivisionOptions& options) {
-  const HomogeneousNet net = checkedNet(patch, options.method);
-  return options.method == DivisionMethod::Subdivided ? subdividedBounds(net, options)
-                                                      : splitBounds(net, options);
+namespace {
+
+// Subdivided and CellWise (which starts from the subdivided counts) take the subdivided bound.
+SecondDerivativeBounds boundsOf(const HomogeneousNet& net, const DivisionOptions& options) {
+  const bool subdivided = options.method == DivisionMethod::Subdivided ||
+                          options.method == DivisionMethod::CellWise;
+  return subdivided ? subdividedBounds(net, options) : splitBounds(net, options);
 }
 
-SecondDerivativeBounds secondDerivativeBounds(const RationalBezierCurve& curve,
-                                              const DivisionOptions& options) {
-  const HomogeneousNet net = checkedNet(curve, options.method);
-  return options.method == DivisionMethod::Subdivided ? subdividedBounds(net, options)
-                                                      : splitBounds(net, options);
-}
-
-Divisions patchDivisions(const RationalBezierPatch& patch, const DivisionOptions& options) {
-  const SecondDerivativeBounds bounds = secondDerivativeBounds(patch, options);
+Divisions divisionsOf(const HomogeneousNet& net, const DivisionOptions& options) {
+  const SecondDerivativeBounds bounds = boundsOf(net, options);
   if (!bounds.visible) {
     Divisions r;
     r.bounds = bounds;
@@ -400,12 +397,29 @@ Divisions patchDivisions(const RationalBezierPatch& patch, const DivisionOptions
     r.realU = r.realV = 0.0;
     return r;
   }
-  return divisionsFromBounds(bounds, options.tolerance, options.maxPerDirection);
+  const Divisions global = divisionsFromBounds(bounds, options.tolerance, options.maxPerDirection);
+  return options.method == DivisionMethod::CellWise ? cellwiseDivisions(net, options, global)
+                                                     : global;
+}
+
+}  // namespace
+
+SecondDerivativeBounds secondDerivativeBounds(const RationalBezierPatch& patch,
+                                              const DivisionOptions& options) {
+  return boundsOf(checkedNet(patch, options.method), options);
+}
+
+SecondDerivativeBounds secondDerivativeBounds(const RationalBezierCurve& curve,
+                                              const DivisionOptions& options) {
+  return boundsOf(checkedNet(curve, options.method), options);
+}
+
+Divisions patchDivisions(const RationalBezierPatch& patch, const DivisionOptions& options) {
+  return divisionsOf(checkedNet(patch, options.method), options);
 }
 
 Divisions curveDivisions(const RationalBezierCurve& curve, const DivisionOptions& options) {
-  return divisionsFromBounds(secondDerivativeBounds(curve, options), options.tolerance,
-                             options.maxPerDirection);
+  return divisionsOf(checkedNet(curve, options.method), options);
 }
 
 RationalBezierPatch substituteZeroWeights(const RationalBezierPatch& patch, double value) {

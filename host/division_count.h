@@ -39,10 +39,14 @@ enum class DivisionMethod {
   // Beyond the paper: de Casteljau pieces refined where the bound is loose; on each piece the
   // exact Bernstein coefficients of the numerator of S'' over those of w³.
   Subdivided,
+  // Beyond the paper: Filip's inequality per cell of the uniform grid, with the second
+  // derivatives bounded over that cell only (the numerators of Subdivided restricted to it);
+  // the smallest grid found below the Subdivided counts whose every cell passes.
+  CellWise,
 };
 
 const char* divisionMethodName(DivisionMethod method);
-// "abi-ezzi", "paper", "split", "subdivided"; throws std::invalid_argument otherwise.
+// "abi-ezzi", "paper", "split", "subdivided", "cellwise"; throws std::invalid_argument otherwise.
 DivisionMethod parseDivisionMethod(const std::string& name);
 
 enum class DivisionStatus {
@@ -77,6 +81,9 @@ struct DivisionOptions {
   double refineSlack = 0.05;
   int maxPieces = 4096;
   int maxDepth = 14;
+  // CellWise: a cell whose own bound fails is bounded as the maximum over its 2×2 sub-cells,
+  // this many levels deep.
+  int cellRefinement = 2;
   ClipRegion clip;
 };
 

@@ -33,41 +33,12 @@ struct Piece {
   double b[3] = {0, 0, 0};  // bounds of ‖S_uu‖, ‖S_uv‖, ‖S_vv‖ in the patch's own parameters
 };
 
-bool outsideClip(const HomogeneousNet& net, const ClipRegion& clip) {
-  if (!clip.enabled) return false;
-  // All control points beyond one plane of the region: the convex hull is, so the piece is.
-  auto allOutside = [&](auto outside) {
-    return std::all_of(net.c.begin(), net.c.end(), outside);
-  };
-  return allOutside([&](const glm::dvec4& h) { return h.w <= clip.nearW; }) ||
-         allOutside([&](const glm::dvec4& h) { return h.x < 0.0; }) ||
-         allOutside([&](const glm::dvec4& h) { return h.y < 0.0; }) ||
-         allOutside([&](const glm::dvec4& h) { return h.x > h.w * clip.width; }) ||
-         allOutside([&](const glm::dvec4& h) { return h.y > h.w * clip.height; });
-}
-
 void evaluatePiece(const HomogeneousNet& net, const DivisionOptions& options, Piece& piece) {
   const HomogeneousNet sub = subNet(net, piece.u0, piece.u1, piece.v0, piece.v1);
   piece.visible = !outsideClip(sub, options.clip);
   if (!piece.visible) return;
-  const bool positive =
-      std::all_of(sub.c.begin(), sub.c.end(), [](const glm::dvec4& h) { return h.w > 0.0; });
-  const bool negative =
-      std::all_of(sub.c.begin(), sub.c.end(), [](const glm::dvec4& h) { return h.w < 0.0; });
-  piece.resolved = positive || negative;
-  if (!piece.resolved) return;
-  // w's coefficients of one strict sign make w³'s too, so ‖N/w³‖ ≤ max_k ‖N_k‖/|W_k|.
-  const SecondDerivativeNumerators num = secondDerivativeNumerators(sub);
-  double best[3] = {0, 0, 0};
-  const VectorNet* nets[3] = {&num.uu, &num.uv, &num.vv};
-  for (size_t k = 0; k < num.w3.c.size(); ++k)
-    for (int p = 0; p < 3; ++p)
-      if (!nets[p]->c.empty())
-        best[p] = std::max(best[p], glm::length(nets[p]->c[k]) / std::abs(num.w3.c[k]));
-  const double hu = piece.u1 - piece.u0, hv = piece.v1 - piece.v0;
-  piece.b[0] = best[0] / (hu * hu);
-  piece.b[1] = best[1] / (hu * hv);
-  piece.b[2] = best[2] / (hv * hv);
+  piece.resolved = numeratorRatioBounds(secondDerivativeNumerators(sub), piece.u1 - piece.u0,
+                                        piece.v1 - piece.v0, piece.b);
 }
 
 // The largest ‖S''‖ actually found at a few points of the piece: what refinement aims for.
@@ -103,6 +74,37 @@ std::vector<Piece> split(const Piece& p, bool curve) {
 }
 
 }  // namespace
+
+bool outsideClip(const HomogeneousNet& net, const ClipRegion& clip) {
+  if (!clip.enabled) return false;
+  // All control points beyond one plane of the region: the convex hull is, so the piece is.
+  auto allOutside = [&](auto outside) {
+    return std::all_of(net.c.begin(), net.c.end(), outside);
+  };
+  return allOutside([&](const glm::dvec4& h) { return h.w <= clip.nearW; }) ||
+         allOutside([&](const glm::dvec4& h) { return h.x < 0.0; }) ||
+         allOutside([&](const glm::dvec4& h) { return h.y < 0.0; }) ||
+         allOutside([&](const glm::dvec4& h) { return h.x > h.w * clip.width; }) ||
+         allOutside([&](const glm::dvec4& h) { return h.y > h.w * clip.height; });
+}
+
+bool numeratorRatioBounds(const SecondDerivativeNumerators& num, double hu, double hv,
+                          double bounds[3]) {
+  // W's coefficients of one strict sign (they are when w's are) make ‖N/W‖ ≤ max_k ‖N_k‖/|W_k|.
+  const bool positive = std::all_of(num.w3.c.begin(), num.w3.c.end(), [](double w) { return w > 0; });
+  const bool negative = std::all_of(num.w3.c.begin(), num.w3.c.end(), [](double w) { return w < 0; });
+  if (!positive && !negative) return false;
+  double best[3] = {0, 0, 0};
+  const VectorNet* nets[3] = {&num.uu, &num.uv, &num.vv};
+  for (size_t k = 0; k < num.w3.c.size(); ++k)
+    for (int p = 0; p < 3; ++p)
+      if (!nets[p]->c.empty())
+        best[p] = std::max(best[p], glm::length(nets[p]->c[k]) / std::abs(num.w3.c[k]));
+  bounds[0] = best[0] / (hu * hu);
+  bounds[1] = best[1] / (hu * hv);
+  bounds[2] = best[2] / (hv * hv);
+  return true;
+}
 
 SecondDerivativeNumerators secondDerivativeNumerators(const HomogeneousNet& h) {
   const int n = h.n, m = h.m, N = 3 * n, M = 3 * m;

@@ -1,6 +1,7 @@
 #include "division_table.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 
 #include "division_count.h"
@@ -36,34 +37,43 @@ DivisionTable divisionComparison(const DivisionTableOptions& options) {
     const HomogeneousNet net = toNet(screen);
     DivisionViewRow row;
     row.name = view.name;
-    Divisions split, subdivided;
+    Divisions split, subdivided, cellwise;
     row.split = divisionsWith(screen, DivisionMethod::Split, tol, &split);
     row.sub001 = divisionsWith(substituteZeroWeights(screen, 0.001), DivisionMethod::AbiEzzi, tol);
     row.sub01 = divisionsWith(substituteZeroWeights(screen, 0.01), DivisionMethod::AbiEzzi, tol);
     row.subdivided = divisionsWith(screen, DivisionMethod::Subdivided, tol, &subdivided);
+    const auto start = std::chrono::steady_clock::now();
+    row.cellwise = divisionsWith(screen, DivisionMethod::CellWise, tol, &cellwise);
+    table.cellwiseSeconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     row.splitDeviation = uniformGridDeviation(net, split.nu, split.nv);
     row.subdividedDeviation = uniformGridDeviation(net, subdivided.nu, subdivided.nv);
-    // Search the true value below the smaller of the two grids known to pass.
-    const Divisions& known =
-        subdivided.divisionNumber() < split.divisionNumber() ? subdivided : split;
+    row.cellwiseDeviation = uniformGridDeviation(net, cellwise.nu, cellwise.nv);
+    // Search the true value below the smallest of the grids known to pass.
+    const Divisions& known = std::min({split, subdivided, cellwise}, [](const Divisions& a,
+                                                                       const Divisions& b) {
+      return a.divisionNumber() < b.divisionNumber();
+    });
     row.truth = smallestUniformGrid(net, tol, known.nu, known.nv).divisionNumber();
     table.views.push_back(row);
   }
   const double n = double(std::max<size_t>(1, table.views.size()));
   for (const DivisionViewRow& r : table.views) {
-    const long long values[5] = {r.split, r.sub001, r.sub01, r.subdivided, r.truth};
-    for (int k = 0; k < 5; ++k) table.average[k] += double(values[k]) / n;
+    const long long values[6] = {r.split, r.sub001, r.sub01, r.subdivided, r.cellwise, r.truth};
+    for (int k = 0; k < 6; ++k) table.average[k] += double(values[k]) / n;
     table.worstSubdividedRatio =
         std::max(table.worstSubdividedRatio, double(r.subdivided) / double(r.truth));
-    table.worstDeviation =
-        std::max({table.worstDeviation, r.splitDeviation, r.subdividedDeviation});
+    table.worstCellwiseRatio =
+        std::max(table.worstCellwiseRatio, double(r.cellwise) / double(r.truth));
+    table.worstDeviation = std::max(
+        {table.worstDeviation, r.splitDeviation, r.subdividedDeviation, r.cellwiseDeviation});
   }
   return table;
 }
 
 std::string formatDivisionTable(const DivisionTable& table, bool perView) {
   std::string out;
-  char line[256];
+  char line[512];
   std::snprintf(line, sizeof line,
                 "Division numbers N_u*N_v at TOL %.3g px on a %dx%d viewport, averaged over %zu "
                 "views with zero weights (paper 002, table 1)\n",
@@ -72,11 +82,11 @@ std::string formatDivisionTable(const DivisionTable& table, bool perView) {
   std::snprintf(line, sizeof line, "%-28s %18s %16s\n", "method", "division number",
                 "over-division");
   out += line;
-  const char* names[5] = {"split (this method)", "weight 0 -> 0.001", "weight 0 -> 0.01",
-                          "subdivided (beyond)", "true value"};
-  const double truth = table.average[4];
-  for (int k = 0; k < 5; ++k) {
-    if (k == 4)
+  const char* names[6] = {"split (this method)", "weight 0 -> 0.001", "weight 0 -> 0.01",
+                          "subdivided (beyond)", "cellwise (beyond)", "true value"};
+  const double truth = table.average[5];
+  for (int k = 0; k < 6; ++k) {
+    if (k == 5)
       std::snprintf(line, sizeof line, "%-28s %18.2f %16s\n", names[k], table.average[k], "-");
     else
       std::snprintf(line, sizeof line, "%-28s %18.2f %16.3f\n", names[k], table.average[k],
@@ -84,17 +94,22 @@ std::string formatDivisionTable(const DivisionTable& table, bool perView) {
     out += line;
   }
   std::snprintf(line, sizeof line,
-                "largest measured deviation of split and subdivided grids: %.4f px (TOL %.3g); "
-                "largest subdivided/true ratio of one view: %.3f\n",
-                table.worstDeviation, table.tolerance, table.worstSubdividedRatio);
+                "largest measured deviation of split, subdivided and cellwise grids: %.4f px "
+                "(TOL %.3g); largest ratio to the true value of one view: subdivided %.3f, "
+                "cellwise %.3f; cellwise %.1f patches/s\n",
+                table.worstDeviation, table.tolerance, table.worstSubdividedRatio,
+                table.worstCellwiseRatio,
+                table.cellwiseSeconds > 0 ? double(table.views.size()) / table.cellwiseSeconds
+                                          : 0.0);
   out += line;
   if (perView) {
-    std::snprintf(line, sizeof line, "\n%-64s %8s %14s %12s %8s %8s\n", "view", "split",
-                  "0->0.001", "0->0.01", "subdiv", "true");
+    std::snprintf(line, sizeof line, "\n%-64s %8s %14s %12s %8s %8s %8s\n", "view", "split",
+                  "0->0.001", "0->0.01", "subdiv", "cellwise", "true");
     out += line;
     for (const DivisionViewRow& r : table.views) {
-      std::snprintf(line, sizeof line, "%-64s %8lld %14lld %12lld %8lld %8lld\n", r.name.c_str(),
-                    r.split, r.sub001, r.sub01, r.subdivided, r.truth);
+      std::snprintf(line, sizeof line, "%-64s %8lld %14lld %12lld %8lld %8lld %8lld\n",
+                    r.name.c_str(), r.split, r.sub001, r.sub01, r.subdivided, r.cellwise,
+                    r.truth);
       out += line;
     }
   }

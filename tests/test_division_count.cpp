@@ -252,4 +252,6 @@ TEST_CASE("Division: bad input is refused with a reason", "[division]") {
                     Catch::Contains("≥ 0"));
   CHECK_THROWS_AS(parseDivisionMethod("fast"), std::invalid_argument);
   CHECK(parseDivisionMethod("split") == DivisionMethod::Split);
+  CHECK(parseDivisionMethod("cellwise") == DivisionMethod::CellWise);
+  CHECK(std::string(divisionMethodName(DivisionMethod::CellWise)) == "cellwise");
 }

@@ -1,5 +1,5 @@
 // "Never under-divides": over random rational curves and patches (fixed seeds) with zero and
-// negative weights, the bounds of the split and subdivided methods are never below the sampled
+// negative weights, the bounds of the split, subdivided and cellwise methods are never below the sampled
 // maximum of ‖c''‖ (‖S_uu‖, ‖S_uv‖, ‖S_vv‖), and the uniform grid of the computed counts
 // deviates at most TOL from the surface (host/division_count.h, docs/rational_division.md).
 #include <catch2/catch.hpp>
@@ -19,6 +19,7 @@ namespace {
 
 struct Tally {
   int tried = 0, checked = 0, unbounded = 0, capped = 0, withZero = 0, withNegative = 0;
+  long long faces = 0, subdividedFaces = 0;  // cellwise: its faces and the subdivided ones
   double worstBoundRatio = INFINITY;    // min over cases of bound / sampled max (must be ≥ 1)
   double worstDeviationRatio = 0.0;     // max over cases of measured deviation / TOL (≤ 1)
 };
@@ -37,6 +38,15 @@ void checkPatch(const HomogeneousNet& net, DivisionMethod method, double tol, Ta
   o.tolerance = tol;
   o.maxPerDirection = 400;
   const Divisions d = patchDivisions(toPatch(net), o);
+  if (method == DivisionMethod::CellWise) {
+    // Searched below the subdivided grid: never more faces, the same status.
+    o.method = DivisionMethod::Subdivided;
+    const Divisions s = patchDivisions(toPatch(net), o);
+    CHECK(d.status == s.status);
+    CHECK(d.divisionNumber() <= s.divisionNumber());
+    t.faces += d.divisionNumber();
+    t.subdividedFaces += s.divisionNumber();
+  }
   if (d.status == DivisionStatus::Unbounded) {
     ++t.unbounded;
     // Unbounded must mean it: w really vanishes or changes sign somewhere, or the q×q pieces
@@ -80,25 +90,36 @@ Tally runPatches(uint32_t seed, int count, DivisionMethod method, double tol) {
        << " with zero weights, " << t.withNegative << " with negative ones), " << t.unbounded
        << " unbounded, " << t.capped << " capped; smallest bound/sampled " << t.worstBoundRatio
        << ", largest deviation/TOL " << t.worstDeviationRatio);
+  if (method == DivisionMethod::CellWise)
+    WARN("cellwise faces " << t.faces << " vs subdivided " << t.subdividedFaces << " ("
+                           << double(t.faces) / double(std::max(1LL, t.subdividedFaces)) << ")");
   return t;
+}
+
+// Enough grids measured, enough of them with zero and with negative weights.
+void checkCoverage(const Tally& t, int checked, int withEach) {
+  CHECK(t.checked >= checked);
+  CHECK(t.withZero >= withEach);
+  CHECK(t.withNegative >= withEach);
 }
 
 }  // namespace
 
 TEST_CASE("Division never under-divides: 1,200 random rational patches, split method",
           "[division]") {
-  const Tally t = runPatches(20260523, 1200, DivisionMethod::Split, 0.05);
-  CHECK(t.checked >= 1000);
-  CHECK(t.withZero >= 300);
-  CHECK(t.withNegative >= 300);
+  checkCoverage(runPatches(20260523, 1200, DivisionMethod::Split, 0.05), 1000, 300);
 }
 
 TEST_CASE("Division never under-divides: 300 random rational patches, subdivided method",
           "[division]") {
-  const Tally t = runPatches(77, 300, DivisionMethod::Subdivided, 0.02);
-  CHECK(t.checked >= 250);
-  CHECK(t.withZero >= 60);
-  CHECK(t.withNegative >= 60);
+  checkCoverage(runPatches(77, 300, DivisionMethod::Subdivided, 0.02), 250, 60);
+}
+
+TEST_CASE("Division never under-divides: 1,050 random rational patches, cellwise method",
+          "[division]") {
+  const Tally t = runPatches(9151, 1050, DivisionMethod::CellWise, 0.25);
+  checkCoverage(t, 1000, 300);
+  CHECK(t.faces < t.subdividedFaces);  // the per-cell bounds do pay somewhere
 }
 
 TEST_CASE("Division never under-divides: ‖c''‖ bound over 1,200 random curves of degree 1..7",
