@@ -38,7 +38,7 @@ struct DivisionTable {
   double worstSubdividedRatio = 0;  // max over views of subdivided / truth
   double worstCellwiseRatio = 0;    // max over views of cellwise / truth
   double worstDeviation = 0;  // max over views of the split, subdivided, cellwise deviations
-  double cellwiseSeconds = 0;  // time spent in the cellwise method, all views
+  double subdividedSeconds = 0, cellwiseSeconds = 0;  // time in each method, all views
 };
 
 DivisionTable divisionComparison(const DivisionTableOptions& options);
