@@ -3,13 +3,14 @@
 // thread each) vs Vulkan (upload + dispatch + readback), on the same patches in one run.
 // Biquadratic patches (the rational cylinders and tori of the paper), a quarter each with all
 // weights positive, zero interior weights, negative interior weights, and both (all negative
-// with zeros). Usage: bench_divisions [patches]
+// with zeros). Usage: bench_divisions [patches] [--json file]
 #include <cstdio>
 #include <algorithm>
 #include <cstdlib>
 #include <random>
 
 #include "bench_common.h"
+#include "bench_report.h"
 #include "division_count.h"
 #include "division_gpu.h"
 #include "vk/context.h"
@@ -38,6 +39,7 @@ RationalBezierPatch randomPatch(int kind, std::mt19937& rng) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  bench::Report report("bench_divisions", argc, argv);
   const size_t count = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : size_t(1) << 20;
   std::mt19937 rng(11);
   std::vector<RationalBezierPatch> patches;
@@ -54,6 +56,7 @@ int main(int argc, char** argv) {
 
   vk::ContextOptions contextOptions;
   vk::Context context(contextOptions);
+  report.setDevice(context);
   auto gpu = makeVulkanDivisionCounter(context);
   auto mirror = makeMirrorDivisionCounter();
 
@@ -69,21 +72,23 @@ int main(int argc, char** argv) {
     for (const RationalBezierPatch& p : patches) sink += patchDivisions(p, options).nu;
   });
 
-  const double doubleRate = count / doubleTime.minSeconds;
-  const double mirrorRate = count / mirrorTime.minSeconds;
-  const double gpuRate = count / gpuTime.minSeconds;
-  std::printf("bench_divisions: %zu biquadratic rational patches (1/4 each: positive, zero, "
-              "negative, all-negative-with-zero weights), split method, TOL %.3g\n",
-              count, options.tolerance);
-  std::printf("device: %s (%s)\n", context.info().name.c_str(), context.info().driverInfo.c_str());
-  std::printf("| path | min s | median s | patches/s | ratio to scalar CPU |\n"
-              "|---|---|---|---|---|\n");
-  std::printf("| scalar CPU (double reference, 1 thread) | %.3f | %.3f | %.3g | 1.00 |\n",
-              doubleTime.minSeconds, doubleTime.medianSeconds, doubleRate);
-  std::printf("| scalar CPU (fp32 mirror, 1 thread) | %.3f | %.3f | %.3g | %.2f |\n",
-              mirrorTime.minSeconds, mirrorTime.medianSeconds, mirrorRate,
-              mirrorRate / doubleRate);
-  std::printf("| Vulkan (upload + dispatch + readback) | %.3f | %.3f | %.3g | %.2f |\n",
-              gpuTime.minSeconds, gpuTime.medianSeconds, gpuRate, gpuRate / doubleRate);
+  char title[200];
+  std::snprintf(title, sizeof title,
+                "%zu biquadratic rational patches (1/4 each: positive, zero, negative, "
+                "all-negative-with-zero weights), split method, TOL %.3g",
+                count, options.tolerance);
+  bench::Table& table = report.table("division counts", "patches", title);
+  for (const auto& [path, timing] :
+       {std::pair<const char*, bench::Timing>{"scalar CPU (double reference, 1 thread)", doubleTime},
+        {"scalar CPU (fp32 mirror, 1 thread)", mirrorTime},
+        {"Vulkan (upload + dispatch + readback)", gpuTime}}) {
+    bench::Case c;
+    c.path = path;
+    c.workSize = double(count);
+    c.timing = timing;
+    table.cases.push_back(c);
+  }
+  report.print(table);
+  report.finish();
   return sink == -1 ? 1 : 0;  // keeps the loops from being optimised away
 }

@@ -1,9 +1,10 @@
 // The largest scene: a wavy sheet tiled into n×n bicubic patches (10⁶ by default) tessellated
 // whole on Vulkan with a frontier budget, to show the frontier stays within it whatever the
 // scene size (docs/hardening.md). Patches share edges exactly (control points come from one
-// lattice), so the mesh is one watertight sheet. Not timed repeatedly: one run, its peak
-// resident memory (getrusage), the frontier's peak, batches and patch groups.
-// Usage: bench_scale [patches] [frontier budget MiB]
+// lattice), so the mesh is one watertight sheet. A memory figure, not a speed case: one timed
+// run (its `runs` is 1), its peak resident memory (getrusage), the frontier's peak, batches
+// and patch groups. Exits 1 if the frontier exceeded its budget.
+// Usage: bench_scale [patches] [frontier budget MiB] [--json file]
 #include <sys/resource.h>
 
 #include <chrono>
@@ -11,6 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "bench_report.h"
 #include "tessellate.h"
 #include "vk/context.h"
 
@@ -46,13 +48,19 @@ double peakResidentMiB() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  bench::Report report("bench_scale", argc, argv);
   const long requested = argc > 1 ? std::atol(argv[1]) : 1000000;
   const double budgetMiB = argc > 2 ? std::atof(argv[2]) : 64.0;
+  if (requested < 1 || !(budgetMiB > 0)) {
+    std::fprintf(stderr, "usage: bench_scale [patches ≥ 1] [frontier budget MiB > 0] [--json file]\n");
+    return 2;
+  }
   const int n = std::max(1, int(std::lround(std::sqrt(double(requested)))));
   auto patches = wavySheet(n);
   const double sceneMiB = peakResidentMiB();
 
   vk::Context context;
+  report.setDevice(context);
   Backend vulkan = makeVulkanBackend(context);
   QuadtreeOptions options;
   options.rule = SplitRule::Midpoint;
@@ -60,22 +68,36 @@ int main(int argc, char** argv) {
   options.frontierBudgetBytes = size_t(budgetMiB * 1024 * 1024);
   const auto start = std::chrono::steady_clock::now();
   Tessellation t = tessellate(patches, options, vulkan);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = bench::secondsSince(start);
 
   const QuadtreeResult& tree = t.tree;
   const size_t batchNodes = frontierBatchNodes(options, vulkan.classifier->maxBatchNodes());
   const double frontierMiB =
       double(tree.peakFrontierNodes * kFrontierBytesPerNode + batchNodes * sizeof(gpu::NodeDecision)) /
       (1024.0 * 1024.0);
-  std::printf("bench_scale on %s: %zu patches (%dx%d wavy sheet), rule B at 0.02\n",
-              context.info().name.c_str(), patches.size(), n, n);
+  char title[160];
+  std::snprintf(title, sizeof title, "%zu patches (%dx%d wavy sheet), rule B at 0.02, frontier budget %.0f MiB, one run",
+                patches.size(), n, n, budgetMiB);
+  bench::Table& table = report.table("scale", "triangles", title);
+  bench::Case c;
+  c.path = "Vulkan (" + context.info().name + "), batched frontier";
+  c.workSize = double(t.stats.triangles);
+  c.timing = {seconds, seconds, 1};
+  c.throughput = double(t.stats.triangles) / seconds;
+  c.extra = {{"patches", patches.size()},          {"leaves", tree.leaves.size()},
+             {"patchGroups", tree.patchGroups},    {"batches", tree.batches},
+             {"batchNodes", batchNodes},           {"peakFrontierMiB", frontierMiB},
+             {"frontierBudgetMiB", budgetMiB},     {"sceneMiB", sceneMiB},
+             {"peakResidentMiB", peakResidentMiB()}};
+  table.cases.push_back(c);
+  report.print(table);
   std::printf("| patches | leaves | triangles | patch groups | batches | batch nodes | peak frontier MiB | budget MiB | scene MiB | peak RSS MiB | seconds |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::printf("| %zu | %zu | %zu | %zu | %zu | %zu | %.1f | %.1f | %.0f | %.0f | %.1f |\n",
               patches.size(), tree.leaves.size(), t.stats.triangles, tree.patchGroups,
               tree.batches, batchNodes, frontierMiB, budgetMiB, sceneMiB, peakResidentMiB(),
               seconds);
+  report.finish();
   if (frontierMiB > budgetMiB) {
     std::printf("FAILED: the frontier exceeded its budget\n");
     return 1;

@@ -27,6 +27,7 @@ declare -A sizes=(
   [bench_occt]="0.01,0.001 AB"
   [bench_tess_shader]="300 100 1"
   [bench_realtime]="300 100 1"
+  [bench_scale]="1000000 64"
 )
 
 out=bench/results
@@ -58,7 +59,13 @@ for b in "$build"/bench/bench_*; do
     echo "== $name $args" >&2
     # shellcheck disable=SC2086  # args are words on purpose
     if "$b" $args --json "$work/run-$n.json" > "$work/run-$n.txt" 2>&1; then
-      jq --arg args "$args" '. + {args: $args}' "$work/run-$n.json" > "$work/run-$n.tagged.json"
+      if [[ -f "$work/run-$n.json" ]]; then
+        jq --arg args "$args" '. + {args: $args}' "$work/run-$n.json" > "$work/run-$n.tagged.json"
+      else  # a benchmark without --json support yet: its text output is in latest.md
+        echo "   $name wrote no JSON (no --json support): text output only" >&2
+        jq -n --arg b "$name" --arg args "$args" '{bench: $b, args: $args, noJson: true, tables: []}' \
+          > "$work/run-$n.tagged.json"
+      fi
     else
       echo "   $name $args FAILED (output in latest.md)" >&2
       jq -n --arg b "$name" --arg args "$args" '{bench: $b, args: $args, failed: true, tables: []}' \
@@ -83,7 +90,8 @@ mv "$work/latest.json" "$out/latest.json"
            if . then "\n- bandwidth cap: host memcpy \(.hostCopyBytesPerSecond / 1e9 * 100 | round / 100) GB/s measured → \(.capVerticesPerSecond / 1e6 | round) M vertices/s of 32 B; the issue assumes 5 GB/s → 156 M/s" else "" end) +
          "\n\n| benchmark | table | path | work | min s | median s | runs | throughput | ratio | of cap (measured / 5 GB/s) |\n|---|---|---|---|---|---|---|---|---|---|"' \
      "$out/latest.json"
-  jq -r '.runs[] | . as $r | if .failed then "| \(.bench) \(.args) | FAILED | | | | | | | | |" else
+  jq -r '.runs[] | . as $r | if .failed then "| \(.bench) \(.args) | FAILED | | | | | | | | |"
+         elif .noJson then "| \(.bench) \(.args) | (no JSON report: see its output below) | | | | | | | | |" else
          .tables[] | . as $t | .cases[] |
          "| \($r.bench) \($r.args) | \($t.name) | \(.path) | \(.workSize | round) \($t.workUnit) | \(.minSeconds * 1e4 | round / 1e4) | \(.medianSeconds * 1e4 | round / 1e4) | \(.runs) | \(.throughput | if . >= 1e6 then "\(. / 1e4 | round / 100) M" elif . >= 1e3 then "\(. / 10 | round / 100) k" else "\(. * 100 | round / 100)" end)/s | \(.ratioToBaseline * 100 | round / 100) | \(if .fractionOfCap then "\(.fractionOfCap * 100 | round) % / \(.fractionOfAssumedCap * 100 | round) %" else "—" end) |" end' \
      "$out/latest.json"
