@@ -21,5 +21,5 @@ scripts/deps.sh
 scripts/build.sh
 (cd "${BUILD_DIR:-build}" && ctest --output-on-failure -j "$(nproc)" "${labels[@]}")
 if [[ $sanitize == 1 ]]; then
-  scripts/sanitize.sh
+  if [[ ${#labels[@]} -gt 0 ]]; then scripts/sanitize.sh --cpu-only; else scripts/sanitize.sh; fi
 fi
