@@ -3,118 +3,29 @@
 #include "io/bpt_reader.h"
 
 #include <algorithm>
-#include <cerrno>
-#include <charconv>
-#include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <string_view>
-#include <system_error>
 
 #include "io/errors.h"
 #include "io/quoted_token.h"
+#include "io/text_lines.h"
 
 namespace tessera {
 namespace {
 
-bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-
-// Hands out the lines that carry data (skipping blank and '#' lines) split into tokens,
-// and knows the line numbers for messages.
-class LineSource {
- public:
-  LineSource(std::istream& in, const std::string& name) : in_(in), name_(name) {}
-
-  // Advance to the next data line; false at the end of the input.
-  bool next() {
-    while (std::getline(in_, text_)) {
-      ++linesRead_;
-      tokenize();
-      if (tokens_.empty() || tokens_.front().front() == '#') continue;
-      return true;
-    }
-    // getline sets failbit at a clean end of file too; only badbit means the read broke.
-    if (in_.bad()) fail(InputErrorKind::Io, linesRead_ + 1, "read error");
-    tokens_.clear();
-    return false;
-  }
-
-  const std::vector<std::string_view>& tokens() const { return tokens_; }
-  // The line `next()` last returned.
-  int line() const { return linesRead_; }
-  // Where more input was expected once `next()` has returned false: the line after the last.
-  int lineAfterEnd() const { return linesRead_ + 1; }
-
-  [[noreturn]] void fail(InputErrorKind kind, int line, const std::string& reason) const {
-    throw InputError(kind, name_, line, reason);
-  }
-  [[noreturn]] void fail(InputErrorKind kind, const std::string& reason) const {
-    fail(kind, linesRead_, reason);
-  }
-
- private:
-  void tokenize() {
-    tokens_.clear();
-    std::string_view rest(text_);
-    size_t i = 0;
-    while (i < rest.size()) {
-      while (i < rest.size() && isBlank(rest[i])) ++i;
-      size_t start = i;
-      while (i < rest.size() && !isBlank(rest[i])) ++i;
-      if (i > start) tokens_.push_back(rest.substr(start, i - start));
-    }
-  }
-
-  std::istream& in_;
-  const std::string& name_;
-  std::string text_;
-  std::vector<std::string_view> tokens_;
-  int linesRead_ = 0;
-};
-
-bool parseInteger(std::string_view token, long long& value, bool& outOfRange) {
-  const char* first = token.data();
-  const char* last = first + token.size();
-  if (first != last && *first == '+') ++first;
-  auto [ptr, ec] = std::from_chars(first, last, value);
-  outOfRange = ec == std::errc::result_out_of_range;
-  return (ec == std::errc() || outOfRange) && ptr == last && first != last;
+// The .bpt format's integers (counts, degrees) may carry any one leading '+'.
+bool parseBptInteger(std::string_view token, long long& value, bool& outOfRange) {
+  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  return parseInteger(token, value, outOfRange);
 }
 
 bool isInteger(std::string_view token) {
   long long value;
   bool outOfRange;
-  return parseInteger(token, value, outOfRange);
+  return parseBptInteger(token, value, outOfRange);
 }
 
-std::string commentHint(const std::vector<std::string_view>& tokens) {
-  for (std::string_view t : tokens)
-    if (t.front() == '#') return " ('#' starts a comment only at the beginning of a line)";
-  return "";
-}
-
-// std::from_chars is locale-independent, unlike strtod and streams.
-double parseCoordinate(const LineSource& src, std::string_view token, const std::string& what) {
-  const char* first = token.data();
-  const char* last = first + token.size();
-  // from_chars rejects an explicit '+', which other writers may emit; "+-1" stays invalid.
-  if (last - first > 1 && *first == '+' && first[1] != '-' && first[1] != '+') ++first;
-  double value = 0;
-  auto [ptr, ec] = std::from_chars(first, last, value, std::chars_format::general);
-  if (ptr != last || (ec != std::errc() && ec != std::errc::result_out_of_range))
-    src.fail(InputErrorKind::Syntax, quotedToken(token) + " is not a number (" + what + ")");
-  if (ec == std::errc::result_out_of_range)
-    src.fail(InputErrorKind::Range,
-             quotedToken(token) + " is outside the range of a double (" + what + ")");
-  if (!std::isfinite(value))
-    src.fail(InputErrorKind::NonFinite, quotedToken(token) + " is not a finite number (" + what + ")");
-  if (std::fabs(value) > kBptMaxAbsCoordinate)
-    src.fail(InputErrorKind::Range, quotedToken(token) + " exceeds the largest accepted magnitude 1e15 (" +
-                                        what + ")");
-  return value;
-}
-
-long long parsePatchCount(LineSource& src) {
+long long parsePatchCount(TextLines& src) {
   if (!src.next())
     src.fail(InputErrorKind::Count, src.lineAfterEnd(), "empty file: expected the patch count");
   const auto& tokens = src.tokens();
@@ -124,7 +35,7 @@ long long parsePatchCount(LineSource& src) {
                                          commentHint(tokens));
   long long count = 0;
   bool outOfRange = false;
-  if (!parseInteger(tokens[0], count, outOfRange))
+  if (!parseBptInteger(tokens[0], count, outOfRange))
     src.fail(InputErrorKind::Syntax, quotedToken(tokens[0]) + " is not an integer patch count");
   if (outOfRange) src.fail(InputErrorKind::Count, "patch count " + quotedToken(tokens[0]) + " is too large");
   if (count < 1)
@@ -132,11 +43,11 @@ long long parsePatchCount(LineSource& src) {
   return count;
 }
 
-int parseDegree(const LineSource& src, std::string_view token, const char* direction,
+int parseDegree(const TextLines& src, std::string_view token, const char* direction,
                 const std::string& patchName) {
   long long degree = 0;
   bool outOfRange = false;
-  if (!parseInteger(token, degree, outOfRange))
+  if (!parseBptInteger(token, degree, outOfRange))
     src.fail(InputErrorKind::Syntax, quotedToken(token) + " is not an integer degree (" + direction +
                                          " of " + patchName + ")");
   if (outOfRange || degree < 1 || degree > kMaxDegree)
@@ -146,7 +57,7 @@ int parseDegree(const LineSource& src, std::string_view token, const char* direc
   return static_cast<int>(degree);
 }
 
-BezierPatch parsePatch(LineSource& src, long long index, long long count) {
+BezierPatch parsePatch(TextLines& src, long long index, long long count) {
   const std::string patchName =
       "patch " + std::to_string(index + 1) + " of " + std::to_string(count);
   if (!src.next())
@@ -197,7 +108,7 @@ BezierPatch parsePatch(LineSource& src, long long index, long long count) {
 }  // namespace
 
 std::vector<BezierPatch> parseBpt(std::istream& in, const std::string& nameForMessages) {
-  LineSource src(in, nameForMessages);
+  TextLines src(in, nameForMessages);
   const long long count = parsePatchCount(src);
   const int countLine = src.line();
 
@@ -219,17 +130,7 @@ std::vector<BezierPatch> parseBpt(std::istream& in, const std::string& nameForMe
 }
 
 std::vector<BezierPatch> readBpt(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(InputErrorKind::Io, path, 0, "is a directory, not a .bpt file");
-  errno = 0;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    const int err = errno;
-    std::string reason = "cannot open for reading";
-    if (err != 0) reason += ": " + std::generic_category().message(err);
-    throw InputError(InputErrorKind::Io, path, 0, reason);
-  }
+  std::ifstream in = openForReading(path, "a .bpt file");
   return parseBpt(in, path);
 }
 

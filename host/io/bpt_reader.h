@@ -25,11 +25,12 @@
 #include <vector>
 
 #include "patch.h"
+#include "io/text_lines.h"
 
 namespace tessera {
 
 // Largest accepted |coordinate| in a .bpt file.
-constexpr double kBptMaxAbsCoordinate = 1e15;
+constexpr double kBptMaxAbsCoordinate = kMaxAbsInputCoordinate;  // io/text_lines.h
 
 // Read the file at `path`; an unreadable file is an InputError of kind Io.
 std::vector<BezierPatch> readBpt(const std::string& path);

@@ -22,11 +22,12 @@
 #include <string>
 
 #include "grid_interpolation.h"
+#include "io/text_lines.h"
 
 namespace tessera {
 
 // Largest accepted |coordinate| in a .grid file, as in .bpt.
-constexpr double kGridMaxAbsCoordinate = 1e15;
+constexpr double kGridMaxAbsCoordinate = kMaxAbsInputCoordinate;  // io/text_lines.h
 // Largest accepted rows·cols (a header beyond it is taken for a corrupt file).
 constexpr long long kGridMaxPoints = 1LL << 26;
 

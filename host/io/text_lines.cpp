@@ -66,12 +66,21 @@ void TextLines::fail(InputErrorKind kind, const std::string& reason) const {
   fail(kind, linesRead_, reason);
 }
 
-// std::from_chars is locale-independent, unlike strtod and streams; it rejects a leading '+',
-// which other writers emit, so one is skipped ("+-1" stays invalid).
+std::string_view withoutPlus(std::string_view token) {
+  if (token.size() > 1 && token[0] == '+' && token[1] != '+' && token[1] != '-')
+    token.remove_prefix(1);
+  return token;
+}
+
+std::string commentHint(const std::vector<std::string_view>& tokens) {
+  for (std::string_view t : tokens)
+    if (t.front() == '#') return " ('#' starts a comment only at the beginning of a line)";
+  return "";
+}
+
+// std::from_chars is locale-independent, unlike strtod and streams.
 double parseCoordinate(const TextLines& lines, std::string_view token, const std::string& what) {
-  std::string_view number = token;
-  if (number.size() > 1 && number[0] == '+' && number[1] != '+' && number[1] != '-')
-    number.remove_prefix(1);
+  const std::string_view number = withoutPlus(token);
   double value = 0;
   const auto [ptr, ec] = std::from_chars(number.data(), number.data() + number.size(), value,
                                          std::chars_format::general);

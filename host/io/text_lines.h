@@ -56,6 +56,14 @@ class TextLines {
   int linesRead_ = 0;
 };
 
+// `token` without one leading '+' (other writers emit it; std::from_chars rejects it), unless a
+// sign follows: "+-1" and "++1" stay invalid.
+std::string_view withoutPlus(std::string_view token);
+
+// For a line with the wrong number of tokens: a '#' inside it is the likely cause, since '#'
+// starts a comment only at the beginning of a line. Empty when no token starts with '#'.
+std::string commentHint(const std::vector<std::string_view>& tokens);
+
 // `token` as a coordinate on the current line of `lines`: Syntax unless the whole token is a
 // decimal number (an optional leading '+' is accepted, "+-1" and hex floats are not); Range
 // when it overflows a double or exceeds kMaxAbsInputCoordinate; NonFinite for nan/inf.
