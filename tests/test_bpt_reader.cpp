@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "input_error_checks.h"
 #include "io/bpt_reader.h"
 #include "io/errors.h"
 
@@ -39,13 +40,7 @@ std::vector<BezierPatch> parse(const std::string& text) {
 // The InputError parsing `text` throws; fails the test if it throws none.
 InputError parseError(const std::string& text, const std::string& name) {
   std::istringstream in(text);
-  try {
-    parseBpt(in, name);
-  } catch (const InputError& e) {
-    return e;
-  }
-  FAIL("no InputError for " << name);
-  throw std::logic_error("unreachable");
+  return test::inputErrorOf([&] { parseBpt(in, name); }, name);
 }
 
 // A valid bilinear patch: a degree line and 4 point lines.
@@ -192,13 +187,7 @@ TEST_CASE("bpt: malformed files name the error kind, file, line and reason", "[i
   for (const BadCase& c : cases) {
     INFO("case " << c.name);
     const InputError e = parseError(c.text, c.name);
-    INFO("message: " << e.what());
-    CHECK(inputErrorKindName(e.kind()) == std::string(inputErrorKindName(c.kind)));
-    CHECK(e.file() == c.name);
-    CHECK(e.line() == c.line);
-    const std::string what = e.what();
-    CHECK(what.rfind(std::string(c.name) + ":" + std::to_string(c.line) + ": ", 0) == 0);
-    CHECK(what.find(c.reason) != std::string::npos);
+    test::checkInputError(e, c.name, c.kind, c.line, c.reason);
     CHECK(e.reason().find(c.reason) != std::string::npos);
   }
 }

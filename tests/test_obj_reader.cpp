@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "input_error_checks.h"
 #include "io/errors.h"
 #include "io/obj_reader.h"
 
@@ -37,13 +38,7 @@ void checkCases(const std::vector<BadCase>& cases, Step check) {
       check(c.text, std::string(c.name));
     } catch (const InputError& e) {
       thrown = true;
-      INFO("message: " << e.what());
-      CHECK(inputErrorKindName(e.kind()) == std::string(inputErrorKindName(c.kind)));
-      CHECK(e.file() == c.name);
-      CHECK(e.line() == c.line);
-      const std::string what = e.what();
-      CHECK(what.rfind(std::string(c.name) + ":" + std::to_string(c.line) + ": ", 0) == 0);
-      CHECK(what.find(c.reason) != std::string::npos);
+      test::checkInputError(e, c.name, c.kind, c.line, c.reason);
     }
     CHECK(thrown);
   }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "input_error_checks.h"
 #include "io/errors.h"
 #include "io/scene_reader.h"
 #include "rational.h"
@@ -24,13 +25,7 @@ Scene parse(const std::string& text, const std::string& name = "test.json") {
 // The InputError parsing `text` throws; fails the test if it throws none.
 InputError parseError(const std::string& text, const std::string& name) {
   std::istringstream in(text);
-  try {
-    parseScene(in, name);
-  } catch (const InputError& e) {
-    return e;
-  }
-  FAIL("no InputError for " << name);
-  throw std::logic_error("unreachable");
+  return test::inputErrorOf([&] { parseScene(in, name); }, name);
 }
 
 // A scene of one surface: line 1 opens the scene, the surface's lines follow, the last line
@@ -74,13 +69,7 @@ void checkCases(const std::vector<BadCase>& cases) {
   for (const BadCase& c : cases) {
     INFO("case " << c.name);
     const InputError e = parseError(c.text, c.name);
-    INFO("message: " << e.what());
-    CHECK(inputErrorKindName(e.kind()) == std::string(inputErrorKindName(c.kind)));
-    CHECK(e.file() == c.name);
-    CHECK(e.line() == c.line);
-    const std::string what = e.what();
-    CHECK(what.rfind(std::string(c.name) + ":" + std::to_string(c.line) + ": ", 0) == 0);
-    CHECK(what.find(c.reason) != std::string::npos);
+    test::checkInputError(e, c.name, c.kind, c.line, c.reason);
   }
 }
 
