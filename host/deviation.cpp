@@ -72,12 +72,17 @@ DeviationReport measureDeviation(const Tessellation& tessellation,
   DeviationReport report;
   report.perPatchMax.assign(patches.size(), 0.0);
   report.perPatchMean.assign(patches.size(), 0.0);
-  std::vector<size_t> perPatchSamples(patches.size(), 0);
+  report.perPatchSamples.assign(patches.size(), 0);
+  report.perPatchWorstTriangle.assign(patches.size(), 0);
+  std::vector<size_t>& perPatchSamples = report.perPatchSamples;
   const size_t samplesPerTriangle = size_t(n + 1) * size_t(n + 2) / 2;
   double sum = 0;
   for (size_t t = 0; t < triangles; ++t) {
     const uint32_t patch = tessellation.trianglePatch[t];
-    report.perPatchMax[patch] = std::max(report.perPatchMax[patch], triangleMax[t]);
+    if (perPatchSamples[patch] == 0 || triangleMax[t] > report.perPatchMax[patch]) {
+      report.perPatchMax[patch] = triangleMax[t];
+      report.perPatchWorstTriangle[patch] = t;
+    }
     report.perPatchMean[patch] += triangleSum[t];
     perPatchSamples[patch] += samplesPerTriangle;
     sum += triangleSum[t];

@@ -27,6 +27,8 @@ struct DeviationReport {
   // (0 for a patch without triangles).
   std::vector<double> perPatchMax;
   std::vector<double> perPatchMean;
+  std::vector<size_t> perPatchSamples;
+  std::vector<size_t> perPatchWorstTriangle;  // the first triangle reaching perPatchMax
 };
 
 struct Tessellation;

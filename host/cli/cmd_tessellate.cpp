@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -36,6 +37,7 @@ struct TessellateArgs {
   bool quiet = false;
   std::string stats;  // --stats: the JSON report into this file
   bool json = false;  // --json: the JSON report on stdout instead of the summary
+  bool noDeviation = false;  // --no-deviation: skip measuring the deviation
 };
 
 // "N" or "NxM" (also "N×M"), each 1..4096: the cells of rule A's uniform grid.
@@ -89,13 +91,19 @@ int run(const TessellateArgs& a) {
   if (options.onLevel) std::fprintf(stderr, "\r%60s\r", "");
   if (!a.output.empty()) writeMesh(a.output, t.mesh);
   // The deviation from the true surface is part of every report: it is what the thresholds
-  // are for (parametric: triangle point vs the patch at the same (u, v) mix, host/deviation.h).
-  const PatchDeviation deviation = measureDeviationPerPatch(t, patches);
-  const PatchDeviation geometric =
-      measureDeviationPerPatch(t, patches, deviation.subdivisions, DeviationMetric::Geometric);
-  if (!a.stats.empty() || a.json) {
-    nlohmann::json report = statsToJson(t, &deviation);
-    addGeometricDeviation(report, geometric);
+  // are for (both metrics, host/deviation.h). It costs about as much as the tessellation, so it
+  // is measured only when something prints it, and --no-deviation skips it (reported as null).
+  const bool wantReport = !a.stats.empty() || a.json;
+  const bool summary = !a.quiet && !a.json;
+  std::optional<PatchDeviation> deviation, geometric;
+  if (!a.noDeviation && (wantReport || summary)) {
+    deviation = measureDeviationPerPatch(t, patches);
+    geometric =
+        measureDeviationPerPatch(t, patches, deviation->subdivisions, DeviationMetric::Geometric);
+  }
+  if (wantReport) {
+    nlohmann::json report = statsToJson(t, deviation ? &*deviation : nullptr);
+    if (geometric) addGeometricDeviation(report, *geometric);
     report["run"] = {{"input", a.input},
                      {"output", a.output.empty() ? nlohmann::json() : nlohmann::json(a.output)},
                      {"backend", backend.name},
@@ -106,7 +114,7 @@ int run(const TessellateArgs& a) {
       std::printf("%s\n",
                   report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
   }
-  if (!a.quiet && !a.json) {
+  if (summary) {
     const TessellationStats& s = t.stats;
     std::printf("%s: %zu patches, method %c, linearity %g, flatness %g, backend %s%s%s\n",
                 a.input.c_str(), s.patches, splitRuleLetter(options.rule), a.linearity,
@@ -114,13 +122,17 @@ int run(const TessellateArgs& a) {
                 context ? context->info().name.c_str() : "");
     std::printf("depth %u, leaves %zu, triangles %zu, vertices %zu (%zu zero-area dropped)\n",
                 s.depth, s.leaves, s.triangles, s.vertices, s.degenerateTrianglesDropped);
-    std::printf("max deviation %.3g geometric (mean %.3g), %.3g parametric (mean %.3g); %zu samples\n",
-                geometric.total.maxDeviation, geometric.total.meanDeviation,
-                deviation.total.maxDeviation, deviation.total.meanDeviation,
-                deviation.total.samples);
-    std::printf("time: tree %.1f ms, triangulation %.1f ms, vertices %.1f ms, total %.1f ms "
-                "(deviation measured in %.1f + %.1f ms)\n",
-                s.treeMs, s.triangulateMs, s.evaluateMs, s.totalMs, deviation.ms, geometric.ms);
+    if (deviation)
+      std::printf("max deviation %.3g geometric (mean %.3g), %.3g parametric (mean %.3g); %zu "
+                  "samples\n",
+                  geometric->total.maxDeviation, geometric->total.meanDeviation,
+                  deviation->total.maxDeviation, deviation->total.meanDeviation,
+                  deviation->total.samples);
+    std::printf("time: tree %.1f ms, triangulation %.1f ms, vertices %.1f ms, total %.1f ms\n",
+                s.treeMs, s.triangulateMs, s.evaluateMs, s.totalMs);
+    if (deviation)
+      std::printf("deviation measured in %.1f ms (parametric) + %.1f ms (geometric)\n",
+                  deviation->ms, geometric->ms);
     if (!a.output.empty()) std::printf("wrote %s\n", a.output.c_str());
     if (!a.stats.empty()) std::printf("wrote %s\n", a.stats.c_str());
   }
@@ -152,6 +164,9 @@ void addTessellateOptions(CLI::App* cmd, TessellateArgs& args) {
       ->capture_default_str();
   cmd->add_option("--device", args.device, "Vulkan device index or part of its name");
   cmd->add_flag("-q,--quiet", args.quiet, "print nothing on success");
+  cmd->add_flag("--no-deviation", args.noDeviation,
+                "skip measuring the deviation from the true surface (it costs about as much as "
+                "the tessellation); reports show it as null");
 }
 
 }  // namespace

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <charconv>
 #include <chrono>
-#include <limits>
 #include <stdexcept>
 
 #include "io/atomic_file.h"
@@ -69,58 +68,20 @@ PatchDeviation measureDeviationPerPatch(const Tessellation& t,
                                         const std::vector<BezierPatch>& patches,
                                         int subdivisions, DeviationMetric metric) {
   const auto start = std::chrono::steady_clock::now();
-  const TriangleMesh& mesh = t.mesh;
-  if (t.trianglePatch.size() != mesh.triangleCount() || t.cornerUv.size() != mesh.indices.size())
-    throw std::invalid_argument(
-        "measureDeviationPerPatch: per-triangle patches and corner uvs missing");
-  // The triangles of each patch, by index into the whole mesh.
-  std::vector<std::vector<size_t>> trianglesOf(patches.size());
-  for (size_t tri = 0; tri < mesh.triangleCount(); ++tri) {
-    const uint32_t id = t.trianglePatch[tri];
-    if (id >= patches.size())
-      throw std::invalid_argument("measureDeviationPerPatch: patch " + std::to_string(id) +
-                                  " for " + std::to_string(patches.size()) + " patches");
-    trianglesOf[id].push_back(tri);
-  }
-
+  // One pass over the whole mesh (on all cores) already gathers every patch's numbers.
+  const DeviationReport whole = measureDeviation(t, patches, subdivisions, metric);
   PatchDeviation result;
   result.subdivisions = subdivisions;
   result.perPatch.resize(patches.size());
-  constexpr uint32_t kUnmapped = std::numeric_limits<uint32_t>::max();
-  std::vector<uint32_t> remap(mesh.vertexCount(), kUnmapped);
-  double sampleSum = 0;
   for (size_t p = 0; p < patches.size(); ++p) {
-    if (trianglesOf[p].empty()) continue;
-    // A compact copy of this patch's triangles with what measureDeviation reads: positions,
-    // indices, and per triangle its patch and corner uvs.
-    Tessellation sub;
-    std::vector<uint32_t> used;
-    for (size_t tri : trianglesOf[p]) {
-      for (int corner = 0; corner < 3; ++corner) {
-        const uint32_t v = mesh.indices[3 * tri + corner];
-        if (remap[v] == kUnmapped) {
-          remap[v] = uint32_t(sub.mesh.positions.size());
-          used.push_back(v);
-          sub.mesh.positions.push_back(mesh.positions[v]);
-        }
-        sub.mesh.indices.push_back(remap[v]);
-        sub.cornerUv.push_back(t.cornerUv[3 * tri + corner]);
-      }
-      sub.trianglePatch.push_back(uint32_t(p));
-    }
-    for (uint32_t v : used) remap[v] = kUnmapped;
-
-    DeviationReport d = measureDeviation(sub, patches, subdivisions, metric);
-    d.worstTriangle = trianglesOf[p][d.worstTriangle];
-    result.perPatch[p] = d;
-    sampleSum += d.meanDeviation * double(d.samples);
-    result.total.samples += d.samples;
-    if (d.maxDeviation > result.total.maxDeviation) {
-      result.total.maxDeviation = d.maxDeviation;
-      result.total.worstTriangle = d.worstTriangle;
-    }
+    DeviationReport& d = result.perPatch[p];
+    d.samples = whole.perPatchSamples[p];
+    if (d.samples == 0) continue;
+    d.maxDeviation = whole.perPatchMax[p];
+    d.meanDeviation = whole.perPatchMean[p];
+    d.worstTriangle = whole.perPatchWorstTriangle[p];
   }
-  result.total.meanDeviation = result.total.samples ? sampleSum / double(result.total.samples) : 0;
+  result.total = whole;
   result.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                   .count();
   return result;

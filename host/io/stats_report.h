@@ -19,11 +19,9 @@ namespace tessera {
 // member changes meaning or goes away (adding members does not bump it).
 constexpr int kStatsSchemaVersion = 1;
 
-// measureDeviation (host/deviation.h) run on each patch's triangles separately. The total is
-// combined from the per-patch reports: its maxDeviation equals measureDeviation on the whole
-// mesh exactly (the same samples), its mean up to summation order. worstTriangle is an index
-// into the whole mesh's triangles in both (in the total: a triangle where the maximum is
-// reached; with ties it may differ from the whole-mesh measurement's).
+// measureDeviation (host/deviation.h) over the whole mesh, once, split by patch: the total is
+// that measurement, each patch's entry its samples, max, mean and worst triangle (an index
+// into the whole mesh's triangles).
 struct PatchDeviation {
   std::vector<DeviationReport> perPatch;  // one per patch, samples == 0 for a patch without triangles
   DeviationReport total;
