@@ -71,12 +71,13 @@ TrueDivisions smallestUniformGrid(const HomogeneousNet& net, double tolerance, i
                                   int knownNv, const DeviationSampling& search,
                                   const DeviationSampling& verify) {
   TrueDivisions best;
-  best.nu = knownNu;
-  best.nv = net.m == 0 ? 1 : knownNv;
   const int maxNu = 3 * knownNu;
   int nv = net.m == 0 ? 1 : 3 * knownNv;
-  // The staircase: for each N_u the smallest N_v that still passes, N_v never growing.
-  for (int nu = 1; nu <= maxNu && nu < best.divisionNumber(); ++nu) {
+  // The staircase: for each N_u the smallest N_v that still passes, N_v never growing. Every
+  // step that passes the coarse search lattice is a candidate, and so is the known grid.
+  std::vector<std::pair<int, int>> candidates{{knownNu, net.m == 0 ? 1 : knownNv}};
+  auto faces = [](const std::pair<int, int>& g) { return static_cast<long long>(g.first) * g.second; };
+  for (int nu = 1; nu <= maxNu && nu < faces(candidates.front()); ++nu) {
     ++best.evaluations;
     if (!passes(net, nu, nv, tolerance, search)) continue;
     while (nv > 1) {
@@ -84,13 +85,23 @@ TrueDivisions smallestUniformGrid(const HomogeneousNet& net, double tolerance, i
       if (!passes(net, nu, nv - 1, tolerance, search)) break;
       --nv;
     }
-    if (static_cast<long long>(nu) * nv < best.divisionNumber()) {
-      best.nu = nu;
-      best.nv = nv;
-    }
+    candidates.push_back({nu, nv});
   }
-  // The coarse search lattice can miss a peak the verification lattice finds: then grow the
-  // grid by one in the direction that costs fewer faces until it passes.
+  // The coarse lattice can miss a peak the verification lattice finds: the answer is the
+  // smallest candidate the verification passes.
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [&](const auto& a, const auto& b) { return faces(a) < faces(b); });
+  for (const auto& [nu, nvc] : candidates) {
+    ++best.evaluations;
+    best.nu = nu;
+    best.nv = nvc;
+    best.deviation = uniformGridDeviation(net, nu, nvc, verify);
+    if (best.deviation <= tolerance) return best;
+  }
+  // Not even the known grid passed the verification: grow it by one in the direction that
+  // costs fewer faces until it does.
+  best.nu = knownNu;
+  best.nv = net.m == 0 ? 1 : knownNv;
   best.deviation = uniformGridDeviation(net, best.nu, best.nv, verify);
   while (best.deviation > tolerance && best.nu < maxNu) {
     const bool growV = net.m != 0 && best.nu <= best.nv;

@@ -32,7 +32,8 @@ struct TrueDivisions {
 
 // The smallest N_u·N_v whose measured deviation is ≤ tolerance, searched as a staircase
 // (N_u up, N_v down) over N_u ≤ 3·knownNu, N_v ≤ 3·knownNv from a grid known to pass, assuming
-// the deviation does not grow when a count grows. The answer is re-measured with `verify`.
+// the deviation does not grow when a count grows. The answer is the smallest of the staircase's
+// grids and the known one that passes when re-measured with `verify`.
 TrueDivisions smallestUniformGrid(const HomogeneousNet& net, double tolerance, int knownNu,
                                   int knownNv, const DeviationSampling& search = {4, 32},
                                   const DeviationSampling& verify = {});
