@@ -60,7 +60,7 @@ class CellChecker {
     largest[0] = largest[1] = largest[2] = 0.0;
     // The cell that failed the last candidate usually fails this one too: try it first.
     const int fi = std::min(nu - 1, int(failU_ * nu)), fj = std::min(nv - 1, int(failV_ * nv));
-    if (!cellPasses(cellNets(patch_, fi, nu, fj, nv), h_, k_, largest)) return false;
+    if (!cellPasses(cellNets(patch_, fi, nu, fj, nv), largest)) return false;
     for (int i = 0; i < nu; ++i) {
       const RegionNets strip = curve_ ? patch_ : restrictRegion(patch_, double(i) / nu,
                                                                 double(i + 1) / nu, 0.0, 1.0,
@@ -70,7 +70,7 @@ class CellChecker {
         const RegionNets cell = curve_ ? cellNets(patch_, i, nu, 0, 1)
                                        : restrictRegion(strip, 0.0, 1.0, double(j) / nv,
                                                         double(j + 1) / nv, clip_.enabled);
-        if (!cellPasses(cell, h_, k_, largest)) {
+        if (!cellPasses(cell, largest)) {
           failU_ = (i + 0.5) / nu;
           failV_ = (j + 0.5) / nv;
           return false;
@@ -88,20 +88,21 @@ class CellChecker {
 
   double filip(const double b[3]) const { return h_ * h_ * b[0] + 2 * h_ * k_ * b[1] + k_ * k_ * b[2]; }
 
-  bool cellPasses(const RegionNets& cell, double hu, double hv, double largest[3]) const {
+  bool cellPasses(const RegionNets& cell, double largest[3]) const {
     double b[3];
-    if (!regionBounds(cell, hu, hv, refinement_, b)) return true;  // invisible
+    if (!regionBounds(cell, refinement_, b)) return true;  // invisible
     if (!(filip(b) <= limit_)) return false;
     for (int p = 0; p < 3; ++p) largest[p] = std::max(largest[p], b[p]);
     return true;
   }
 
-  // Bounds over a region of parameter size hu×hv (in the patch's parameters): its own piece
-  // bound, or where that fails Filip's test for the cell, the componentwise maximum over its
-  // 2×2 sub-regions (`depth` more levels); never above the global bound. False: invisible.
-  bool regionBounds(const RegionNets& r, double hu, double hv, int depth, double b[3]) const {
+  // Bounds over a region: its own piece bound, or where that fails Filip's test for the cell,
+  // the componentwise maximum over its 2×2 sub-regions (`depth` more levels); never above the
+  // global bound. False: invisible. The restricted numerators keep their values, derivatives
+  // in the patch's parameters, so the piece bound takes no rescaling (hu = hv = 1).
+  bool regionBounds(const RegionNets& r, int depth, double b[3]) const {
     if (clip_.enabled && outsideClip(r.h, clip_)) return false;
-    const bool resolved = numeratorRatioBounds(r.num, hu, hv, b);
+    const bool resolved = numeratorRatioBounds(r.num, 1.0, 1.0, b);
     if (!resolved) std::copy(global_, global_ + 3, b);
     for (int p = 0; p < 3; ++p) b[p] = std::min(b[p], global_[p]);
     if (filip(b) <= limit_ || depth == 0) return true;
@@ -113,7 +114,7 @@ class CellChecker {
         const RegionNets sub = restrictRegion(r, 0.5 * a, 0.5 * (a + 1), curve_ ? 0.0 : 0.5 * c,
                                               curve_ ? 1.0 : 0.5 * (c + 1), clip_.enabled);
         double s[3];
-        if (!regionBounds(sub, 0.5 * hu, curve_ ? hv : 0.5 * hv, depth - 1, s)) continue;
+        if (!regionBounds(sub, depth - 1, s)) continue;
         anyVisible = true;
         for (int p = 0; p < 3; ++p) children[p] = std::max(children[p], s[p]);
       }
