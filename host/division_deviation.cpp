@@ -77,9 +77,15 @@ TrueDivisions smallestUniformGrid(const HomogeneousNet& net, double tolerance, i
   // step that passes the coarse search lattice is a candidate, and so is the known grid.
   std::vector<std::pair<int, int>> candidates{{knownNu, net.m == 0 ? 1 : knownNv}};
   auto faces = [](const std::pair<int, int>& g) { return static_cast<long long>(g.first) * g.second; };
+  bool onStaircase = false;
   for (int nu = 1; nu <= maxNu && nu < faces(candidates.front()); ++nu) {
-    ++best.evaluations;
-    if (!passes(net, nu, nv, tolerance, search)) continue;
+    // Once a grid passed, one more u count keeps it passing (the assumption above; every
+    // candidate is measured again below), so only a smaller N_v needs a measurement.
+    if (!onStaircase) {
+      ++best.evaluations;
+      if (!passes(net, nu, nv, tolerance, search)) continue;
+      onStaircase = true;
+    }
     while (nv > 1) {
       ++best.evaluations;
       if (!passes(net, nu, nv - 1, tolerance, search)) break;
