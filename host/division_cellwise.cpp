@@ -14,6 +14,7 @@
 #include <cmath>
 
 #include "division_bounds.h"
+#include "division_directional.h"
 
 namespace tessera {
 namespace {
@@ -47,7 +48,9 @@ class CellChecker {
   CellChecker(const HomogeneousNet& net, const DivisionOptions& options,
               const SecondDerivativeBounds& global)
       : clip_(options.clip), curve_(net.m == 0), refinement_(options.cellRefinement),
-        limit_(8.0 * options.tolerance), global_{global.uu, global.uv, global.vv} {
+        directional_(options.method == DivisionMethod::Directional && net.m > 0),
+        tolerance_(options.tolerance), limit_(8.0 * options.tolerance),
+        global_{global.uu, global.uv, global.vv} {
     patch_.num = secondDerivativeNumerators(net);
     if (clip_.enabled) patch_.h = net;
   }
@@ -90,8 +93,16 @@ class CellChecker {
 
   bool cellPasses(const RegionNets& cell, double largest[3]) const {
     double b[3];
-    if (!regionBounds(cell, refinement_, b)) return true;  // invisible
-    if (!(filip(b) <= limit_)) return false;
+    // Directional: the cheap whole-cell Filip test first, then the directional bound, then
+    // Filip with the refined cell bounds.
+    if (!regionBounds(cell, directional_ ? 0 : refinement_, b)) return true;  // invisible
+    bool passes = filip(b) <= limit_;
+    if (!passes && directional_) {
+      passes = directionalCellBound(cell.num, h_, k_, refinement_, tolerance_) <= tolerance_;
+      if (!passes && !regionBounds(cell, refinement_, b)) return true;
+      passes = passes || filip(b) <= limit_;
+    }
+    if (!passes) return false;
     for (int p = 0; p < 3; ++p) largest[p] = std::max(largest[p], b[p]);
     return true;
   }
@@ -127,6 +138,8 @@ class CellChecker {
   ClipRegion clip_;
   bool curve_;
   int refinement_;
+  bool directional_;  // also pass cells by the directional bound (surfaces only)
+  double tolerance_;
   double limit_;
   double global_[3];
   double h_ = 1, k_ = 1;

@@ -91,6 +91,7 @@ const char* divisionMethodName(DivisionMethod method) {
     case DivisionMethod::Split: return "split";
     case DivisionMethod::Subdivided: return "subdivided";
     case DivisionMethod::CellWise: return "cellwise";
+    case DivisionMethod::Directional: return "directional";
   }
   return "?";
 }
@@ -98,10 +99,10 @@ const char* divisionMethodName(DivisionMethod method) {
 DivisionMethod parseDivisionMethod(const std::string& name) {
   for (DivisionMethod m : {DivisionMethod::AbiEzzi, DivisionMethod::PaperSplit,
                            DivisionMethod::Split, DivisionMethod::Subdivided,
-                           DivisionMethod::CellWise})
+                           DivisionMethod::CellWise, DivisionMethod::Directional})
     if (name == divisionMethodName(m)) return m;
   throw std::invalid_argument("unknown division method '" + name +
-                              "' (abi-ezzi, paper, split, subdivided or cellwise)");
+                              "' (abi-ezzi, paper, split, subdivided, cellwise or directional)");
 }
 
 const char* divisionStatusName(DivisionStatus status) {
@@ -380,10 +381,15 @@ Divisions divisionsFromBounds(const SecondDerivativeBounds& bounds, double toler
 
 namespace {
 
-// Subdivided and CellWise (which starts from the subdivided counts) take the subdivided bound.
+// Subdivided, CellWise and Directional (which start from the subdivided counts) take the
+// subdivided bound.
+bool searchesCells(DivisionMethod method) {
+  return method == DivisionMethod::CellWise || method == DivisionMethod::Directional;
+}
+
 SecondDerivativeBounds boundsOf(const HomogeneousNet& net, const DivisionOptions& options) {
   const bool subdivided = options.method == DivisionMethod::Subdivided ||
-                          options.method == DivisionMethod::CellWise;
+                          searchesCells(options.method);
   return subdivided ? subdividedBounds(net, options) : splitBounds(net, options);
 }
 
@@ -398,8 +404,7 @@ Divisions divisionsOf(const HomogeneousNet& net, const DivisionOptions& options)
     return r;
   }
   const Divisions global = divisionsFromBounds(bounds, options.tolerance, options.maxPerDirection);
-  return options.method == DivisionMethod::CellWise ? cellwiseDivisions(net, options, global)
-                                                     : global;
+  return searchesCells(options.method) ? cellwiseDivisions(net, options, global) : global;
 }
 
 }  // namespace

@@ -43,10 +43,15 @@ enum class DivisionMethod {
   // derivatives bounded over that cell only (the numerators of Subdivided restricted to it);
   // the smallest grid found below the Subdivided counts whose every cell passes.
   CellWise,
+  // Beyond the paper: CellWise, where a cell also passes when the directional bound of its
+  // deviation is within TOL: the exact error of the cell's constant second derivative along
+  // the triangles' three edge directions, plus Filip's bound of how far S'' strays from that
+  // constant over the cell (host/division_directional.h). Surfaces; a curve gets CellWise.
+  Directional,
 };
 
 const char* divisionMethodName(DivisionMethod method);
-// "abi-ezzi", "paper", "split", "subdivided", "cellwise"; throws std::invalid_argument otherwise.
+// "abi-ezzi", "paper", "split", "subdivided", "cellwise", "directional"; throws std::invalid_argument otherwise.
 DivisionMethod parseDivisionMethod(const std::string& name);
 
 enum class DivisionStatus {

@@ -1,5 +1,6 @@
 // "Never under-divides": over random rational curves and patches (fixed seeds) with zero and
-// negative weights, the bounds of the split, subdivided and cellwise methods are never below the sampled
+// negative weights, the bounds of the split, subdivided, cellwise and directional methods are
+// never below the sampled
 // maximum of ‖c''‖ (‖S_uu‖, ‖S_uv‖, ‖S_vv‖), and the uniform grid of the computed counts
 // deviates at most TOL from the surface (host/division_count.h, docs/rational_division.md).
 #include <catch2/catch.hpp>
@@ -19,10 +20,16 @@ namespace {
 
 struct Tally {
   int tried = 0, checked = 0, unbounded = 0, capped = 0, withZero = 0, withNegative = 0;
-  long long faces = 0, subdividedFaces = 0;  // cellwise: its faces and the subdivided ones
+  // cellwise and directional: their faces and the subdivided ones
+  long long faces = 0, subdividedFaces = 0;
   double worstBoundRatio = INFINITY;    // min over cases of bound / sampled max (must be ≥ 1)
   double worstDeviationRatio = 0.0;     // max over cases of measured deviation / TOL (≤ 1)
 };
+
+// Methods that search below the subdivided grid.
+bool searchesCells(DivisionMethod method) {
+  return method == DivisionMethod::CellWise || method == DivisionMethod::Directional;
+}
 
 bool hasZero(const HomogeneousNet& net) {
   return std::any_of(net.c.begin(), net.c.end(), [](const glm::dvec4& h) { return h.w == 0; });
@@ -38,7 +45,7 @@ void checkPatch(const HomogeneousNet& net, DivisionMethod method, double tol, Ta
   o.tolerance = tol;
   o.maxPerDirection = 400;
   const Divisions d = patchDivisions(toPatch(net), o);
-  if (method == DivisionMethod::CellWise) {
+  if (searchesCells(method)) {
     // Searched below the subdivided grid: never more faces, the same status.
     o.method = DivisionMethod::Subdivided;
     const Divisions s = patchDivisions(toPatch(net), o);
@@ -90,8 +97,8 @@ Tally runPatches(uint32_t seed, int count, DivisionMethod method, double tol) {
        << " with zero weights, " << t.withNegative << " with negative ones), " << t.unbounded
        << " unbounded, " << t.capped << " capped; smallest bound/sampled " << t.worstBoundRatio
        << ", largest deviation/TOL " << t.worstDeviationRatio);
-  if (method == DivisionMethod::CellWise)
-    WARN("cellwise faces " << t.faces << " vs subdivided " << t.subdividedFaces << " ("
+  if (searchesCells(method))
+    WARN(divisionMethodName(method) << " faces " << t.faces << " vs subdivided " << t.subdividedFaces << " ("
                            << double(t.faces) / double(std::max(1LL, t.subdividedFaces)) << ")");
   return t;
 }
@@ -120,6 +127,13 @@ TEST_CASE("Division never under-divides: 1,050 random rational patches, cellwise
   const Tally t = runPatches(9151, 1050, DivisionMethod::CellWise, 0.25);
   checkCoverage(t, 1000, 300);
   CHECK(t.faces < t.subdividedFaces);  // the per-cell bounds do pay somewhere
+}
+
+TEST_CASE("Division never under-divides: 1,050 random rational patches, directional method",
+          "[division]") {
+  const Tally t = runPatches(5150, 1050, DivisionMethod::Directional, 0.25);
+  checkCoverage(t, 1000, 300);
+  CHECK(t.faces < t.subdividedFaces);
 }
 
 TEST_CASE("Division never under-divides: ‖c''‖ bound over 1,200 random curves of degree 1..7",

@@ -16,9 +16,9 @@ void addDivisionsCommand(CLI::App& app, int& exitCode) {
   CLI::App* cmd = app.add_subcommand(
       "divisions",
       "Paper 002's table: average division number N_u*N_v of the split method, zero weights "
-      "replaced by 0.001 and 0.01, the subdivided and cellwise bounds and the true value, with "
-      "over-division ratios, on quarter cylinders and torus patches seen from a control point's "
-      "plane");
+      "replaced by 0.001 and 0.01, the subdivided, cellwise and directional bounds and the true "
+      "value, with over-division ratios, on quarter cylinders and torus patches seen from a "
+      "control point's plane");
   cmd->add_option("--tolerance", options.tolerance, "TOL in pixels")->capture_default_str();
   cmd->add_option("--viewport", options.viewport, "square viewport side in pixels")
       ->capture_default_str();
