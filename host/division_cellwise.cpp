@@ -14,6 +14,7 @@
 #include <cmath>
 
 #include "division_bounds.h"
+#include "division_direct.h"
 #include "division_directional.h"
 
 namespace tessera {
@@ -49,10 +50,12 @@ class CellChecker {
               const SecondDerivativeBounds& global)
       : clip_(options.clip), curve_(net.m == 0), refinement_(options.cellRefinement),
         directional_(options.method == DivisionMethod::Directional && net.m > 0),
+        direct_(options.method == DivisionMethod::Direct && net.m > 0),
+        needNet_(clip_.enabled || direct_), directDepth_(options.directDepth),
         tolerance_(options.tolerance), limit_(8.0 * options.tolerance),
         global_{global.uu, global.uv, global.vv} {
     patch_.num = secondDerivativeNumerators(net);
-    if (clip_.enabled) patch_.h = net;
+    if (needNet_) patch_.h = net;
   }
 
   // True when every cell of the nu×nv grid passes; `largest` then holds the largest cell
@@ -67,12 +70,12 @@ class CellChecker {
     for (int i = 0; i < nu; ++i) {
       const RegionNets strip = curve_ ? patch_ : restrictRegion(patch_, double(i) / nu,
                                                                 double(i + 1) / nu, 0.0, 1.0,
-                                                                clip_.enabled);
+                                                                needNet_);
       for (int j = 0; j < nv; ++j) {
         if (i == fi && j == fj) continue;
         const RegionNets cell = curve_ ? cellNets(patch_, i, nu, 0, 1)
                                        : restrictRegion(strip, 0.0, 1.0, double(j) / nv,
-                                                        double(j + 1) / nv, clip_.enabled);
+                                                        double(j + 1) / nv, needNet_);
         if (!cellPasses(cell, largest)) {
           failU_ = (i + 0.5) / nu;
           failV_ = (j + 0.5) / nv;
@@ -86,19 +89,22 @@ class CellChecker {
  private:
   RegionNets cellNets(const RegionNets& r, int i, int nu, int j, int nv) const {
     return restrictRegion(r, double(i) / nu, double(i + 1) / nu, double(j) / nv,
-                          double(j + 1) / nv, clip_.enabled);
+                          double(j + 1) / nv, needNet_);
   }
 
   double filip(const double b[3]) const { return h_ * h_ * b[0] + 2 * h_ * k_ * b[1] + k_ * k_ * b[2]; }
 
   bool cellPasses(const RegionNets& cell, double largest[3]) const {
     double b[3];
-    // Directional: the cheap whole-cell Filip test first, then the directional bound, then
-    // Filip with the refined cell bounds.
-    if (!regionBounds(cell, directional_ ? 0 : refinement_, b)) return true;  // invisible
+    // Directional and Direct: the cheap whole-cell Filip test first, then their own bound,
+    // then Filip with the refined cell bounds (where w³ changes sign on the cell, say).
+    const bool ownBound = directional_ || direct_;
+    if (!regionBounds(cell, ownBound ? 0 : refinement_, b)) return true;  // invisible
     bool passes = filip(b) <= limit_;
-    if (!passes && directional_) {
-      passes = directionalCellBound(cell.num, h_, k_, refinement_, tolerance_) <= tolerance_;
+    if (!passes && ownBound) {
+      passes = direct_ ? cellDeviationWithin(cell.h, tolerance_, directDepth_)
+                       : directionalCellBound(cell.num, h_, k_, refinement_, tolerance_) <=
+                             tolerance_;
       if (!passes && !regionBounds(cell, refinement_, b)) return true;
       passes = passes || filip(b) <= limit_;
     }
@@ -123,7 +129,7 @@ class CellChecker {
     for (int a = 0; a < 2; ++a)
       for (int c = 0; c < splitsV; ++c) {
         const RegionNets sub = restrictRegion(r, 0.5 * a, 0.5 * (a + 1), curve_ ? 0.0 : 0.5 * c,
-                                              curve_ ? 1.0 : 0.5 * (c + 1), clip_.enabled);
+                                              curve_ ? 1.0 : 0.5 * (c + 1), needNet_);
         double s[3];
         if (!regionBounds(sub, depth - 1, s)) continue;
         anyVisible = true;
@@ -139,6 +145,9 @@ class CellChecker {
   bool curve_;
   int refinement_;
   bool directional_;  // also pass cells by the directional bound (surfaces only)
+  bool direct_;       // also pass cells by the direct deviation bound (surfaces only)
+  bool needNet_;      // restrict the homogeneous net too (clip test, direct bound)
+  int directDepth_;
   double tolerance_;
   double limit_;
   double global_[3];

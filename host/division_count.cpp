@@ -92,6 +92,7 @@ const char* divisionMethodName(DivisionMethod method) {
     case DivisionMethod::Subdivided: return "subdivided";
     case DivisionMethod::CellWise: return "cellwise";
     case DivisionMethod::Directional: return "directional";
+    case DivisionMethod::Direct: return "direct";
   }
   return "?";
 }
@@ -99,10 +100,11 @@ const char* divisionMethodName(DivisionMethod method) {
 DivisionMethod parseDivisionMethod(const std::string& name) {
   for (DivisionMethod m : {DivisionMethod::AbiEzzi, DivisionMethod::PaperSplit,
                            DivisionMethod::Split, DivisionMethod::Subdivided,
-                           DivisionMethod::CellWise, DivisionMethod::Directional})
+                           DivisionMethod::CellWise, DivisionMethod::Directional,
+                           DivisionMethod::Direct})
     if (name == divisionMethodName(m)) return m;
   throw std::invalid_argument("unknown division method '" + name +
-                              "' (abi-ezzi, paper, split, subdivided, cellwise or directional)");
+                              "' (abi-ezzi, paper, split, subdivided, cellwise, directional or direct)");
 }
 
 const char* divisionStatusName(DivisionStatus status) {
@@ -381,10 +383,11 @@ Divisions divisionsFromBounds(const SecondDerivativeBounds& bounds, double toler
 
 namespace {
 
-// Subdivided, CellWise and Directional (which start from the subdivided counts) take the
-// subdivided bound.
+// Subdivided, CellWise, Directional and Direct (which start from the subdivided counts) take
+// the subdivided bound.
 bool searchesCells(DivisionMethod method) {
-  return method == DivisionMethod::CellWise || method == DivisionMethod::Directional;
+  return method == DivisionMethod::CellWise || method == DivisionMethod::Directional ||
+         method == DivisionMethod::Direct;
 }
 
 SecondDerivativeBounds boundsOf(const HomogeneousNet& net, const DivisionOptions& options) {

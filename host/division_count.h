@@ -48,10 +48,17 @@ enum class DivisionMethod {
   // the triangles' three edge directions, plus Filip's bound of how far S'' strays from that
   // constant over the cell (host/division_directional.h). Surfaces; a curve gets CellWise.
   Directional,
+  // Beyond the paper: CellWise, where a cell also passes when the deviation itself is proven
+  // within TOL: e = E/w with the polynomial E = w·L − P (L the triangle's linear interpolant),
+  // bounded by the hull of its Bernstein coefficients over w's on squares cut until the bound
+  // passes or a corner fails (host/division_direct.h). Tends to the true sup; surfaces only, a
+  // curve gets CellWise.
+  Direct,
 };
 
 const char* divisionMethodName(DivisionMethod method);
-// "abi-ezzi", "paper", "split", "subdivided", "cellwise", "directional"; throws std::invalid_argument otherwise.
+// "abi-ezzi", "paper", "split", "subdivided", "cellwise", "directional", "direct";
+// throws std::invalid_argument otherwise.
 DivisionMethod parseDivisionMethod(const std::string& name);
 
 enum class DivisionStatus {
@@ -89,6 +96,8 @@ struct DivisionOptions {
   // CellWise: a cell whose own bound fails is bounded as the maximum over its 2×2 sub-cells,
   // this many levels deep.
   int cellRefinement = 2;
+  // Direct: the most times a square of a cell is cut in four before the cell counts as failed.
+  int directDepth = 6;
   ClipRegion clip;
 };
 

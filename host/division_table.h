@@ -2,11 +2,10 @@
 // zero weights (quarter cylinders, torus patches seen from viewpoints on a control point's
 // plane; rational_samples.h), and for each the division number N_u·N_v of
 //   (i) the split method, (ii)/(iii) Abi-Ezzi with zero weights replaced by 0.001 / 0.01,
-//   (iv) the true value: the smallest uniform N_u·N_v whose measured deviation is ≤ TOL,
-//   (v) beyond the paper: the subdivided bound, (vi) the cell-wise bound, (vii) the
-//   directional bound,
+//   beyond the paper: the subdivided, cell-wise, directional and direct bounds,
+//   and the true value: the smallest uniform N_u·N_v whose measured deviation is ≤ TOL,
 // all in pixels of the camera's viewport. Over-division ratio = average division number over
-// the average of (iv), as the paper computes it (3630.57 / 735.14 = 4.939).
+// the average true value, as the paper computes it (3630.57 / 735.14 = 4.939).
 #pragma once
 #include <string>
 #include <vector>
@@ -24,28 +23,39 @@ struct DivisionTableOptions {
   bool full = false;       // more surfaces and viewpoints (zeroWeightViews(full))
 };
 
+// The table's columns, in the order printed.
+enum DivisionColumn {
+  kSplitColumn,
+  kWeight0001Column,  // zero weights replaced by 0.001
+  kWeight001Column,   // zero weights replaced by 0.01
+  kSubdividedColumn,
+  kCellwiseColumn,
+  kDirectionalColumn,
+  kDirectColumn,
+  kTruthColumn,
+  kDivisionColumns
+};
+// The columns whose grids must pass: the bounds (the substitutions are not bounds).
+constexpr DivisionColumn kBoundColumns[] = {kSplitColumn, kSubdividedColumn, kCellwiseColumn,
+                                            kDirectionalColumn, kDirectColumn};
+const char* divisionColumnName(DivisionColumn column);
+
 struct DivisionViewRow {
   std::string name;
-  long long split = 0, sub001 = 0, sub01 = 0, truth = 0, subdivided = 0, cellwise = 0,
-            directional = 0;
-  // measured, px
-  double splitDeviation = 0, subdividedDeviation = 0, cellwiseDeviation = 0,
-         directionalDeviation = 0;
+  long long faces[kDivisionColumns] = {};
+  // Measured deviation (px) of each bound column's grid.
+  double deviation[kDivisionColumns] = {};
 };
 
 struct DivisionTable {
   std::vector<DivisionViewRow> views;
   double tolerance = 0;
   int viewport = 0;
-  // Averages over the views, in the order split, 0.001, 0.01, subdivided, cellwise,
-  // directional, truth.
-  double average[7] = {0, 0, 0, 0, 0, 0, 0};
-  double worstSubdividedRatio = 0;  // max over views of subdivided / truth
-  double worstCellwiseRatio = 0;    // max over views of cellwise / truth
-  double worstDirectionalRatio = 0;  // max over views of directional / truth
-  // max over views of the split, subdivided, cellwise and directional grids' deviations
-  double worstDeviation = 0;
-  double subdividedSeconds = 0, cellwiseSeconds = 0, directionalSeconds = 0;  // all views
+  double average[kDivisionColumns] = {};    // division number over the views
+  double worstRatio[kDivisionColumns] = {};  // max over views of faces / true faces
+  double seconds[kDivisionColumns] = {};     // time in each method, all views
+  double worstDeviation = 0;  // max over views and bound columns of the measured deviation
+  double ratio(DivisionColumn column) const { return average[column] / average[kTruthColumn]; }
 };
 
 DivisionTable divisionComparison(const DivisionTableOptions& options);

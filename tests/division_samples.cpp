@@ -1,5 +1,7 @@
 #include "division_samples.h"
 
+#include <algorithm>
+
 namespace tessera::test {
 
 std::vector<double> randomWeights(int n, int m, WeightKind kind, std::mt19937& rng) {
@@ -39,6 +41,27 @@ HomogeneousNet randomNet(int n, int m, WeightKind kind, std::mt19937& rng) {
     net.c[k] = w[k] == 0.0 ? glm::dvec4(p, 0.0) : glm::dvec4(w[k] * p, w[k]);
   }
   return net;
+}
+
+RandomCell randomCell(int trial, std::mt19937& rng) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  RandomCell r;
+  const int n = 1 + trial % 3, m = 1 + (trial / 3) % 3;
+  r.patch = randomNet(n, m, static_cast<WeightKind>((trial / 9) % 4), rng);
+  r.h = 0.02 + 0.48 * unit(rng);
+  r.k = 0.02 + 0.48 * unit(rng);
+  r.u0 = (1.0 - r.h) * unit(rng);
+  r.v0 = (1.0 - r.k) * unit(rng);
+  r.cell = subNet(r.patch, r.u0, r.u0 + r.h, r.v0, r.v0 + r.k);
+  return r;
+}
+
+bool hasZeroWeight(const HomogeneousNet& net) {
+  return std::any_of(net.c.begin(), net.c.end(), [](const glm::dvec4& h) { return h.w == 0; });
+}
+
+bool hasNegativeWeight(const HomogeneousNet& net) {
+  return std::any_of(net.c.begin(), net.c.end(), [](const glm::dvec4& h) { return h.w < 0; });
 }
 
 }  // namespace tessera::test

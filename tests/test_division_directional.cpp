@@ -90,17 +90,13 @@ TEST_CASE("Directional bound: exact where S'' is constant, well below Filip's th
 TEST_CASE("Directional bound: never below the measured deviation of random rational cells",
           "[division]") {
   std::mt19937 rng(808);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
   int tested = 0, unresolved = 0, zeros = 0, negatives = 0;
   double tightest = 0.0, sumRatio = 0.0, worstScaleMismatch = 0.0;
   for (int trial = 0; tested < 1000 && trial < 4000; ++trial) {
-    const int n = 1 + trial % 3, m = 1 + (trial / 3) % 3;
-    const WeightKind kind = static_cast<WeightKind>((trial / 9) % 4);
-    const HomogeneousNet net = randomNet(n, m, kind, rng);
-    // A random cell, as small as a fine grid's and as large as a quarter of the patch.
-    const double h = 0.02 + 0.48 * unit(rng), k = 0.02 + 0.48 * unit(rng);
-    const double u0 = (1.0 - h) * unit(rng), v0 = (1.0 - k) * unit(rng);
-    const HomogeneousNet cell = subNet(net, u0, u0 + h, v0, v0 + k);
+    const RandomCell sample = randomCell(trial, rng);
+    const HomogeneousNet& net = sample.patch;
+    const HomogeneousNet& cell = sample.cell;
+    const double u0 = sample.u0, v0 = sample.v0, h = sample.h, k = sample.k;
     const int refinement = trial % 3;
     const double bound =
         directionalCellBound(restricted(net, u0, u0 + h, v0, v0 + k), h, k, refinement, 0.0);
@@ -118,9 +114,8 @@ TEST_CASE("Directional bound: never below the measured deviation of random ratio
     tightest = std::max(tightest, measured / bound);
     sumRatio += measured / bound;
     ++tested;
-    zeros += std::any_of(net.c.begin(), net.c.end(), [](const glm::dvec4& c) { return c.w == 0; });
-    negatives +=
-        std::any_of(net.c.begin(), net.c.end(), [](const glm::dvec4& c) { return c.w < 0; });
+    zeros += hasZeroWeight(net);
+    negatives += hasNegativeWeight(net);
   }
   WARN(tested << " cells (" << zeros << " of patches with zero weights, " << negatives
               << " with negative ones), " << unresolved

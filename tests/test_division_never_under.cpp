@@ -1,8 +1,7 @@
 // "Never under-divides": over random rational curves and patches (fixed seeds) with zero and
-// negative weights, the bounds of the split, subdivided, cellwise and directional methods are
-// never below the sampled
-// maximum of ‖c''‖ (‖S_uu‖, ‖S_uv‖, ‖S_vv‖), and the uniform grid of the computed counts
-// deviates at most TOL from the surface (host/division_count.h, docs/rational_division.md).
+// negative weights, the bounds of the split, subdivided, cellwise, directional and direct
+// methods are never below the sampled maximum of ‖c''‖ (‖S_uu‖, ‖S_uv‖, ‖S_vv‖), and the
+// uniform grid of the computed counts deviates at most TOL from the surface (host/division_count.h, docs/rational_division.md).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -28,14 +27,8 @@ struct Tally {
 
 // Methods that search below the subdivided grid.
 bool searchesCells(DivisionMethod method) {
-  return method == DivisionMethod::CellWise || method == DivisionMethod::Directional;
-}
-
-bool hasZero(const HomogeneousNet& net) {
-  return std::any_of(net.c.begin(), net.c.end(), [](const glm::dvec4& h) { return h.w == 0; });
-}
-bool hasNegative(const HomogeneousNet& net) {
-  return std::any_of(net.c.begin(), net.c.end(), [](const glm::dvec4& h) { return h.w < 0; });
+  return method == DivisionMethod::CellWise || method == DivisionMethod::Directional ||
+         method == DivisionMethod::Direct;
 }
 
 void checkPatch(const HomogeneousNet& net, DivisionMethod method, double tol, Tally& t) {
@@ -77,8 +70,8 @@ void checkPatch(const HomogeneousNet& net, DivisionMethod method, double tol, Ta
   t.worstDeviationRatio = std::max(t.worstDeviationRatio, dev / tol);
   CHECK(dev <= tol);
   ++t.checked;
-  t.withZero += hasZero(net);
-  t.withNegative += hasNegative(net);
+  t.withZero += hasZeroWeight(net);
+  t.withNegative += hasNegativeWeight(net);
 }
 
 // `count` random patches of bidegree (1..3, 1..3), the four weight kinds in turn.
@@ -136,6 +129,13 @@ TEST_CASE("Division never under-divides: 1,050 random rational patches, directio
   CHECK(t.faces < t.subdividedFaces);
 }
 
+TEST_CASE("Division never under-divides: 1,050 random rational patches, direct method",
+          "[division]") {
+  const Tally t = runPatches(6160, 1050, DivisionMethod::Direct, 0.25);
+  checkCoverage(t, 1000, 300);
+  CHECK(t.faces < t.subdividedFaces);
+}
+
 TEST_CASE("Division never under-divides: ‖c''‖ bound over 1,200 random curves of degree 1..7",
           "[division]") {
   std::mt19937 rng(4242);
@@ -159,8 +159,8 @@ TEST_CASE("Division never under-divides: ‖c''‖ bound over 1,200 random curve
         worst[m] = std::min(worst[m], b.uu / s.uu);
         if (method == DivisionMethod::Split) {
           ++bounded;
-          zeros += hasZero(net);
-          negatives += hasNegative(net);
+          zeros += hasZeroWeight(net);
+          negatives += hasNegativeWeight(net);
         }
       }
       ++m;
