@@ -14,15 +14,19 @@ int latticeSteps(int cells, const DeviationSampling& s) {
   return std::max({1, s.samplesPerCell, perCell});
 }
 
+// uniformGridDeviation, starting with the row of cells at u = *hotU (when given) and recording
+// there where a sample exceeded stopAbove: a search measures many grids that fail at the same
+// place, and a failing grid is cheap only if that place is looked at first.
+double gridDeviation(const HomogeneousNet& net, int nu, int nv, const DeviationSampling& sampling,
+                     double stopAbove, double* hotU);
+
 bool passes(const HomogeneousNet& net, int nu, int nv, double tolerance,
-            const DeviationSampling& sampling) {
-  return uniformGridDeviation(net, nu, nv, sampling, tolerance) <= tolerance;
+            const DeviationSampling& sampling, double* hotU) {
+  return gridDeviation(net, nu, nv, sampling, tolerance, hotU) <= tolerance;
 }
 
-}  // namespace
-
-double uniformGridDeviation(const HomogeneousNet& net, int nu, int nv,
-                            const DeviationSampling& sampling, double stopAbove) {
+double gridDeviation(const HomogeneousNet& net, int nu, int nv, const DeviationSampling& sampling,
+                     double stopAbove, double* hotU) {
   const int su = latticeSteps(nu, sampling), sv = net.m == 0 ? 1 : latticeSteps(nv, sampling);
   const int lu = nu * su, lv = nv * sv;
   const int rowStride = net.m + 1;
@@ -34,7 +38,9 @@ double uniformGridDeviation(const HomogeneousNet& net, int nu, int nv,
   std::vector<glm::dvec4> column(rowStride);
   double basisU[kMaxDegree + 1];
   double sign = 0.0, worst = 0.0;
-  for (int i = 0; i < nu; ++i) {
+  const int firstRow = hotU ? std::min(nu - 1, std::max(0, int(*hotU * nu))) : 0;
+  for (int row = 0; row < nu; ++row) {
+    const int i = (firstRow + row) % nu;
     for (int a = 0; a <= su; ++a) {
       bernsteinBasis(net.n, double(i * su + a) / lu, basisU);
       for (int b = 0; b <= net.m; ++b) {
@@ -60,17 +66,28 @@ double uniformGridDeviation(const HomogeneousNet& net, int nu, int nv,
           const glm::dvec3 chord = x >= y ? (1.0 - x) * c00 + (x - y) * c10 + y * c11
                                           : (1.0 - y) * c00 + (y - x) * c01 + x * c11;
           worst = std::max(worst, glm::length(at(a, b) - chord));
-          if (worst > stopAbove) return worst;
+          if (worst > stopAbove) {
+            if (hotU) *hotU = (i + 0.5) / nu;
+            return worst;
+          }
         }
     }
   }
   return worst;
 }
 
+}  // namespace
+
+double uniformGridDeviation(const HomogeneousNet& net, int nu, int nv,
+                            const DeviationSampling& sampling, double stopAbove) {
+  return gridDeviation(net, nu, nv, sampling, stopAbove, nullptr);
+}
+
 TrueDivisions smallestUniformGrid(const HomogeneousNet& net, double tolerance, int knownNu,
                                   int knownNv, const DeviationSampling& search,
                                   const DeviationSampling& verify) {
   TrueDivisions best;
+  double hotU = 0.0;  // where the last failing grid failed
   const int maxNu = 3 * knownNu;
   int nv = net.m == 0 ? 1 : 3 * knownNv;
   // The staircase: for each N_u the smallest N_v that still passes, N_v never growing. Every
@@ -83,13 +100,24 @@ TrueDivisions smallestUniformGrid(const HomogeneousNet& net, double tolerance, i
     // candidate is measured again below), so only a smaller N_v needs a measurement.
     if (!onStaircase) {
       ++best.evaluations;
-      if (!passes(net, nu, nv, tolerance, search)) continue;
+      if (!passes(net, nu, nv, tolerance, search, &hotU)) continue;
       onStaircase = true;
     }
-    while (nv > 1) {
+    // The smallest N_v that passes, below one that does: steps of 1, 2, 4, ... down while they
+    // pass, then bisection (a failing grid costs little, a passing one a full measurement).
+    auto passesAt = [&](int v) {
       ++best.evaluations;
-      if (!passes(net, nu, nv - 1, tolerance, search)) break;
-      --nv;
+      return passes(net, nu, v, tolerance, search, &hotU);
+    };
+    int step = 1, failing = 0;
+    while (nv - step >= 1 && passesAt(nv - step)) {
+      nv -= step;
+      step *= 2;
+    }
+    failing = std::max(0, nv - step);
+    while (nv - failing > 1) {
+      const int mid = (nv + failing) / 2;
+      (passesAt(mid) ? nv : failing) = mid;
     }
     candidates.push_back({nu, nv});
   }
