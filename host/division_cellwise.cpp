@@ -6,10 +6,12 @@
 // The bound of a cell is the subdivided method's piece bound (numeratorRatioBounds: the exact
 // Bernstein coefficients of the numerators of S'' over those of w³, division_subdivided.cpp)
 // on the patch's numerator nets restricted to the cell by de Casteljau (restriction commutes
-// with the products, so this is the piece bound of the cell), refined 2×2 where it fails, and
-// never above the global subdivided bound (both are bounds, so their minimum is). The grid
-// returned is searched below the subdivided counts and every one of its cells is verified, so
-// it never under-divides where the subdivided counts do not.
+// with the products, so this is the piece bound of the cell; the values stay derivatives in the
+// patch's parameters), refined 2×2 where it fails, and never above the global subdivided bound
+// (both are bounds, so their minimum is). The grid returned is searched below the subdivided
+// counts and every one of its cells is verified, so it never under-divides where the
+// subdivided counts do not. The Directional and Direct methods run the same search, and a cell
+// also passes by their own bound of its deviation (division_directional.h, division_direct.h).
 #include <algorithm>
 #include <cmath>
 
