@@ -230,14 +230,11 @@ TEST_CASE("obj: requireManifold names non-manifold edges and flipped faces", "[i
 
 TEST_CASE("obj: files on disk", "[io][obj]") {
   SECTION("a missing file is an Io error naming it") {
-    try {
-      readObj("/nonexistent/mesh.obj");
-      FAIL("no error");
-    } catch (const InputError& e) {
-      CHECK(e.kind() == InputErrorKind::Io);
-      CHECK(e.file() == "/nonexistent/mesh.obj");
-      CHECK(e.line() == 0);
-    }
+    const InputError e =
+        test::inputErrorOf([] { readObj("/nonexistent/mesh.obj"); }, "a missing file");
+    CHECK(e.kind() == InputErrorKind::Io);
+    CHECK(e.file() == "/nonexistent/mesh.obj");
+    CHECK(e.line() == 0);
   }
   SECTION("the bad inputs kept as files") {
     const std::string dir = TESSERA_SOURCE_DIR "/tests/bad_inputs/";

@@ -393,25 +393,19 @@ TEST_CASE("scene: bad B-spline surfaces name the file, line and reason", "[io][s
 
 TEST_CASE("scene: files on disk", "[io][scene]") {
   SECTION("a missing file is an Io error naming it") {
-    try {
-      readScene("/nonexistent/dir/scene.json");
-      FAIL("no error");
-    } catch (const InputError& e) {
-      CHECK(e.kind() == InputErrorKind::Io);
-      CHECK(e.file() == "/nonexistent/dir/scene.json");
-      CHECK(e.line() == 0);
-      CHECK(std::string(e.what()).find("cannot open for reading") != std::string::npos);
-    }
+    const InputError e =
+        test::inputErrorOf([] { readScene("/nonexistent/dir/scene.json"); }, "a missing file");
+    CHECK(e.kind() == InputErrorKind::Io);
+    CHECK(e.file() == "/nonexistent/dir/scene.json");
+    CHECK(e.line() == 0);
+    CHECK(std::string(e.what()).find("cannot open for reading") != std::string::npos);
   }
   SECTION("a directory is an Io error") {
-    try {
-      readScene(TESSERA_SOURCE_DIR "/data");
-      FAIL("no error");
-    } catch (const InputError& e) {
-      CHECK(e.kind() == InputErrorKind::Io);
-      CHECK(std::string(e.what()).find("is a directory, not a .json scene file") !=
-            std::string::npos);
-    }
+    const InputError e =
+        test::inputErrorOf([] { readScene(TESSERA_SOURCE_DIR "/data"); }, "a directory");
+    CHECK(e.kind() == InputErrorKind::Io);
+    CHECK(std::string(e.what()).find("is a directory, not a .json scene file") !=
+          std::string::npos);
   }
   SECTION("the bad inputs kept as files") {
     struct FileCase {
