@@ -54,6 +54,12 @@ struct SecondDerivativeNumerators {
 };
 SecondDerivativeNumerators secondDerivativeNumerators(const HomogeneousNet& net);
 
+// The numerators restricted to [u0,u1]×[v0,v1] of the patch by de Casteljau. Their values
+// stay derivatives in the patch's parameters. A curve's empty uv and vv nets stay empty, and
+// a curve ignores v0, v1.
+SecondDerivativeNumerators restrictNumerators(const SecondDerivativeNumerators& num, double u0,
+                                              double u1, double v0, double v1);
+
 // Bounds of sup‖S_uu‖, ‖S_uv‖, ‖S_vv‖ (in the patch's parameters) over a piece of parameter
 // size hu×hv whose reparametrised numerators are `num`: max_k ‖N_k‖/|W_k| over h², hk, k².
 // False (bounds untouched) unless W's coefficients are all of one strict sign.

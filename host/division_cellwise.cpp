@@ -29,20 +29,11 @@ struct RegionNets {
   HomogeneousNet h;
 };
 
-template <class T>
-BernsteinNet<T> cut(const BernsteinNet<T>& net, double u0, double u1, double v0, double v1) {
-  if (net.c.empty()) return net;  // a curve's uv and vv
-  return subNet(net, u0, u1, v0, v1);
-}
-
 RegionNets restrictRegion(const RegionNets& r, double u0, double u1, double v0, double v1,
                           bool withHull) {
   RegionNets out;
-  out.num.uu = cut(r.num.uu, u0, u1, v0, v1);
-  out.num.uv = cut(r.num.uv, u0, u1, v0, v1);
-  out.num.vv = cut(r.num.vv, u0, u1, v0, v1);
-  out.num.w3 = cut(r.num.w3, u0, u1, v0, v1);
-  if (withHull) out.h = cut(r.h, u0, u1, v0, v1);
+  out.num = restrictNumerators(r.num, u0, u1, v0, v1);
+  if (withHull) out.h = subNet(r.h, u0, u1, v0, v1);
   return out;
 }
 

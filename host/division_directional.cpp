@@ -52,18 +52,10 @@ bool collectRatios(const SecondDerivativeNumerators& cell, double h, double k, i
   const double size = 1.0 / pieces;
   for (int a = 0; a < pieces; ++a) {
     const double u0 = a * size;
-    SecondDerivativeNumerators strip;
-    strip.uu = subNet(cell.uu, u0, u0 + size, 0.0, 1.0);
-    strip.uv = subNet(cell.uv, u0, u0 + size, 0.0, 1.0);
-    strip.vv = subNet(cell.vv, u0, u0 + size, 0.0, 1.0);
-    strip.w3 = subNet(cell.w3, u0, u0 + size, 0.0, 1.0);
+    const SecondDerivativeNumerators strip = restrictNumerators(cell, u0, u0 + size, 0.0, 1.0);
     for (int b = 0; b < pieces; ++b) {
       const double v0 = b * size;
-      SecondDerivativeNumerators piece;
-      piece.uu = subNet(strip.uu, 0.0, 1.0, v0, v0 + size);
-      piece.uv = subNet(strip.uv, 0.0, 1.0, v0, v0 + size);
-      piece.vv = subNet(strip.vv, 0.0, 1.0, v0, v0 + size);
-      piece.w3 = subNet(strip.w3, 0.0, 1.0, v0, v0 + size);
+      const SecondDerivativeNumerators piece = restrictNumerators(strip, 0.0, 1.0, v0, v0 + size);
       if (!appendRatios(piece, h, k, out)) return false;
     }
   }

@@ -106,6 +106,13 @@ bool numeratorRatioBounds(const SecondDerivativeNumerators& num, double hu, doub
   return true;
 }
 
+SecondDerivativeNumerators restrictNumerators(const SecondDerivativeNumerators& num, double u0,
+                                              double u1, double v0, double v1) {
+  // (A curve's nets have degree 0 in v, which restriction leaves as it is.)
+  auto cut = [&](const auto& net) { return net.c.empty() ? net : subNet(net, u0, u1, v0, v1); };
+  return {cut(num.uu), cut(num.uv), cut(num.vv), cut(num.w3)};
+}
+
 SecondDerivativeNumerators secondDerivativeNumerators(const HomogeneousNet& h) {
   const int n = h.n, m = h.m, N = 3 * n, M = 3 * m;
   const ScalarNet w = weightsOf(h);

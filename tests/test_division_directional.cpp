@@ -31,12 +31,7 @@ double bruteSimplexMax(double c01, double c12, double c02, int steps) {
 // in the net's parameters), as the division search restricts them.
 SecondDerivativeNumerators restricted(const HomogeneousNet& net, double u0, double u1,
                                       double v0, double v1) {
-  SecondDerivativeNumerators n = secondDerivativeNumerators(net);
-  n.uu = subNet(n.uu, u0, u1, v0, v1);
-  n.uv = subNet(n.uv, u0, u1, v0, v1);
-  n.vv = subNet(n.vv, u0, u1, v0, v1);
-  n.w3 = subNet(n.w3, u0, u1, v0, v1);
-  return n;
+  return restrictNumerators(secondDerivativeNumerators(net), u0, u1, v0, v1);
 }
 
 // S(u, v) = (u, v, a u² + b uv + c v²) as a biquadratic net: S'' is constant.
