@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "io/errors.h"
 
@@ -32,6 +33,25 @@ inline void checkInputError(const InputError& e, const std::string& file, InputE
   const std::string what = e.what();
   CHECK(what.rfind(file + ":" + std::to_string(line) + ": ", 0) == 0);
   CHECK(what.find(reason) != std::string::npos);
+}
+
+// A malformed text, and the error reading it must raise.
+struct BadTextCase {
+  const char* name;
+  std::string text;
+  InputErrorKind kind;
+  int line;
+  const char* reason;  // a part of the reason that must appear
+};
+
+// `read(text, name)` must throw, for every case, the InputError the case describes.
+template <class Read>
+void checkBadTexts(const std::vector<BadTextCase>& cases, Read read) {
+  for (const BadTextCase& c : cases) {
+    INFO("case " << c.name);
+    const InputError e = inputErrorOf([&] { read(c.text, std::string(c.name)); }, c.name);
+    checkInputError(e, c.name, c.kind, c.line, c.reason);
+  }
 }
 
 }  // namespace tessera::test

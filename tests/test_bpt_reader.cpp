@@ -119,14 +119,7 @@ TEST_CASE("bpt: comments, blank lines, CRLF and number spellings", "[io][bpt]") 
 }
 
 TEST_CASE("bpt: malformed files name the error kind, file, line and reason", "[io][bpt]") {
-  struct BadCase {
-    const char* name;
-    std::string text;
-    InputErrorKind kind;
-    int line;
-    const char* reason;  // a part of the reason that must appear
-  };
-  const std::vector<BadCase> cases = {
+  const std::vector<test::BadTextCase> cases = {
       {"empty.bpt", "", InputErrorKind::Count, 1, "empty file: expected the patch count"},
       {"only_comments.bpt", "# nothing here\n\n", InputErrorKind::Count, 3, "empty file"},
       {"truncated_in_patch.bpt", "1\n1 1\n0 0 0\n1 0 0\n", InputErrorKind::Count, 5,
@@ -184,11 +177,11 @@ TEST_CASE("bpt: malformed files name the error kind, file, line and reason", "[i
        "unexpected content 'end' after the last of the 1 declared on line 1"},
   };
 
-  for (const BadCase& c : cases) {
+  for (const test::BadTextCase& c : cases) {
     INFO("case " << c.name);
     const InputError e = parseError(c.text, c.name);
     test::checkInputError(e, c.name, c.kind, c.line, c.reason);
-    CHECK(e.reason().find(c.reason) != std::string::npos);
+    CHECK(e.reason().find(c.reason) != std::string::npos);  // in the reason, not the prefix
   }
 }
 

@@ -20,29 +20,6 @@ PolygonMesh parse(const std::string& text, const std::string& name = "test.obj")
   return parseObj(in, name);
 }
 
-struct BadCase {
-  const char* name;
-  std::string text;
-  InputErrorKind kind;
-  int line;
-  const char* reason;  // a part of the reason that must appear
-};
-
-// `check` runs the step under test on `text` named `name`; it must throw an InputError.
-template <typename Step>
-void checkCases(const std::vector<BadCase>& cases, Step check) {
-  for (const BadCase& c : cases) {
-    INFO("case " << c.name);
-    bool thrown = false;
-    try {
-      check(c.text, std::string(c.name));
-    } catch (const InputError& e) {
-      thrown = true;
-      test::checkInputError(e, c.name, c.kind, c.line, c.reason);
-    }
-    CHECK(thrown);
-  }
-}
 
 void parseOnly(const std::string& text, const std::string& name) {
   std::istringstream in(text);
@@ -106,7 +83,7 @@ TEST_CASE("obj: positive indices may refer to vertices defined later", "[io][obj
 }
 
 TEST_CASE("obj: malformed files name the error kind, file, line and reason", "[io][obj]") {
-  checkCases(
+  test::checkBadTexts(
       {
           {"empty.obj", "", InputErrorKind::Count, 1,
            "empty mesh: no vertices (\"v\") and no faces (\"f\")"},
@@ -212,7 +189,7 @@ TEST_CASE("obj: requireManifold accepts closed and open oriented meshes", "[io][
 }
 
 TEST_CASE("obj: requireManifold names non-manifold edges and flipped faces", "[io][obj]") {
-  checkCases(
+  test::checkBadTexts(
       {
           {"non_manifold_edge.obj",
            kSquare + "v 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 5\n# a fin\nf 1 2 6\n",

@@ -22,12 +22,6 @@ Scene parse(const std::string& text, const std::string& name = "test.json") {
   return parseScene(in, name);
 }
 
-// The InputError parsing `text` throws; fails the test if it throws none.
-InputError parseError(const std::string& text, const std::string& name) {
-  std::istringstream in(text);
-  return test::inputErrorOf([&] { parseScene(in, name); }, name);
-}
-
 // A scene of one surface: line 1 opens the scene, the surface's lines follow, the last line
 // closes it. `surface` spans lines 2.. of the file.
 std::string sceneWith(const std::string& surface) {
@@ -57,20 +51,12 @@ std::string bspline(const std::string& knotsU = "[0, 0, 0, 0, 0.5, 1, 1, 1, 1]",
   return text + "]}";
 }
 
-struct BadCase {
-  const char* name;
-  std::string text;
-  InputErrorKind kind;
-  int line;
-  const char* reason;  // a part of the reason that must appear
-};
-
-void checkCases(const std::vector<BadCase>& cases) {
-  for (const BadCase& c : cases) {
-    INFO("case " << c.name);
-    const InputError e = parseError(c.text, c.name);
-    test::checkInputError(e, c.name, c.kind, c.line, c.reason);
-  }
+// Every case must make parseScene throw the InputError it describes.
+void checkCases(const std::vector<test::BadTextCase>& cases) {
+  test::checkBadTexts(cases, [](const std::string& text, const std::string& name) {
+    std::istringstream in(text);
+    parseScene(in, name);
+  });
 }
 
 }  // namespace
