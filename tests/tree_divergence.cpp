@@ -1,5 +1,7 @@
 #include "tree_divergence.h"
 
+#include <catch2/catch.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -104,6 +106,18 @@ DivergenceReport compareTrees(const QuadtreeResult& a, const QuadtreeResult& b,
   walk(ia, ib, options, band, seen, report, true);
   walk(ib, ia, options, band, seen, report, false);
   return report;
+}
+
+void requireExplainedDivergence(const QuadtreeResult& a, const QuadtreeResult& b,
+                                const QuadtreeOptions& options, double band,
+                                const std::string& what) {
+  const DivergenceReport r = compareTrees(a, b, options, band);
+  WARN(what << " rule " << splitRuleLetter(options.rule) << " threshold " << options.flatness
+            << ": fp32 " << r.leavesA << " leaves, double " << r.leavesB << ", matched "
+            << r.matchedLeaves << "; diverging nodes: " << r.ambiguous << " within the band, "
+            << r.moved << " moved, " << r.unexplained << " unexplained " << r.firstUnexplained);
+  REQUIRE(r.unexplained == 0);
+  if (options.rule == SplitRule::Midpoint) REQUIRE(r.moved == 0);  // midpoints are exact in both
 }
 
 }  // namespace tessera::test

@@ -22,4 +22,11 @@ struct DivergenceReport {
 DivergenceReport compareTrees(const QuadtreeResult& a, const QuadtreeResult& b,
                               const QuadtreeOptions& options, double band);
 
+// Prints the report of the fp32 tree `a` against the double tree `b` (labelled with `what`,
+// the options' rule and threshold) and requires every divergence explained; with the
+// midpoint rule no node may move either (midpoints are exact in both).
+void requireExplainedDivergence(const QuadtreeResult& a, const QuadtreeResult& b,
+                                const QuadtreeOptions& options, double band,
+                                const std::string& what);
+
 }  // namespace tessera::test
