@@ -11,8 +11,8 @@
 
 #include "bench_common.h"
 #include "bench_report.h"
-#include "division_count.h"
-#include "division_gpu.h"
+#include "division/count.h"
+#include "division/counter.h"
 #include "vk/context.h"
 
 using namespace tessera;

@@ -15,11 +15,11 @@
 
 #include "bench_report.h"
 #include "bench_scenes.h"
-#include "bicubic.h"
-#include "curvature.h"
-#include "evaluator.h"
-#include "grid_evaluator.h"
-#include "surface_normal.h"
+#include "geometry/bicubic.h"
+#include "geometry/curvature.h"
+#include "eval/evaluator.h"
+#include "realtime/grid_evaluator.h"
+#include "geometry/surface_normal.h"
 #include "vk/context.h"
 
 using namespace tessera;

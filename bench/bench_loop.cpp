@@ -14,11 +14,11 @@
 #include <cstdlib>
 
 #include "bench_report.h"
-#include "bvh.h"
-#include "loop_evaluator.h"
-#include "loop_join.h"
-#include "loop_shapes.h"
-#include "loop_stencils.h"
+#include "loop/bvh.h"
+#include "loop/evaluator.h"
+#include "loop/join.h"
+#include "loop/shapes.h"
+#include "loop/stencils.h"
 #include "osd/osd_loop.h"
 #include "vk/context.h"
 

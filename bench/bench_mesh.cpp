@@ -9,7 +9,7 @@
 #include "bench_report.h"
 #include "bench_scenes.h"
 #include "io/bpt_reader.h"
-#include "tessellate.h"
+#include "mesh/tessellate.h"
 #include "vk/context.h"
 
 using namespace tessera;

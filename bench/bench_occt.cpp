@@ -4,8 +4,8 @@
 // BRepMesh_IncrementalMesh at linear deflections 0.01 and 0.001 (angular 0.5 rad), serial and
 // parallel. Tessera (rule B by default) then runs at the largest threshold whose mesh has the same
 // or a smaller measured maximum deviation. Both meshes are measured by the same code with both
-// metrics: distance to the true surface (host/deviation.h geometric metric, what OCCT's deflection
-// promises; the metric the settings are matched on) and parametric (host/deviation.h).
+// metrics: distance to the true surface (host/mesh/deviation.h geometric metric, what OCCT's deflection
+// promises; the metric the settings are matched on) and parametric (host/mesh/deviation.h).
 // The threshold pair is searched along linearity = ratio · flatness for each ratio asked for
 // (1: the two equal; inf: flatness only, linearity 2 so that it never splits).
 // Rule A means grids per patch from Filip's bound (countedGrids below), matched on its TOL.
@@ -34,12 +34,12 @@
 #include <stdexcept>
 
 #include "bench_report.h"
-#include "deviation.h"
-#include "division_count.h"
-#include "evaluator.h"
-#include "rational.h"
+#include "mesh/deviation.h"
+#include "division/count.h"
+#include "eval/evaluator.h"
+#include "geometry/rational.h"
 #include "io/bpt_reader.h"
-#include "tessellate.h"
+#include "mesh/tessellate.h"
 #include "vk/context.h"
 
 using namespace tessera;
@@ -157,7 +157,7 @@ QuadtreeOptions matchDeviation(const std::vector<BezierPatch>& patches, SplitRul
 }
 
 // Rule A with each patch's grid from Filip's bound at TOL in model units
-// (host/division_count.h): the size-aware setting. Rules B–D stop on angles (1 − cos), which
+// (host/division/count.h): the size-aware setting. Rules B–D stop on angles (1 − cos), which
 // do not see a patch's size, so at one absolute deviation they over-refine small patches.
 // The grids come from buildQuadtree's rule A, one patch at a time (as uniformGridMesh does),
 // and meshFromTree makes them watertight.

@@ -9,9 +9,9 @@
 
 #include "bench_report.h"
 #include "bench_scenes.h"
-#include "evaluator.h"
+#include "eval/evaluator.h"
 #include "io/bpt_reader.h"
-#include "quadtree.h"
+#include "quadtree/quadtree.h"
 #include "vk/context.h"
 
 using namespace tessera;

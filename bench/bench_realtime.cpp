@@ -1,6 +1,6 @@
 // Case 5, real-time view-dependent tessellation: 100 perturbed teapots at 1920×1080 along the
 // 300-frame camera path of case 6, tolerance 1 px; every frame re-tessellates from scratch
-// (host/realtime_frame.h: cull, division counts on Vulkan, rule-A grids on Vulkan) with the
+// (host/realtime/frame.h: cull, division counts on Vulkan, rule-A grids on Vulkan) with the
 // buffers kept between frames. Frames/s, triangles per frame, the split of a frame's time, and
 // the screen-space error of sampled frames against the double surface (must be ≤ the
 // tolerance). The tessellation-shader peer (case 6) runs the same path in the same run.
@@ -14,10 +14,10 @@
 
 #include "bench_report.h"
 #include "bench_scenes.h"
-#include "evaluator.h"
+#include "eval/evaluator.h"
 #include "io/bpt_reader.h"
-#include "realtime_frame.h"
-#include "tess_shader_peer.h"
+#include "realtime/frame.h"
+#include "realtime/tess_shader_peer.h"
 #include "vk/context.h"
 
 using namespace tessera;

@@ -17,9 +17,9 @@
 #include <string>
 
 #include "bench_report.h"
-#include "curve_product.h"
-#include "reduction_fast.h"
-#include "synthetic_surfaces.h"
+#include "reduction/curve_product.h"
+#include "reduction/fast.h"
+#include "experiments/synthetic_surfaces.h"
 #include "vk/context.h"
 
 using namespace tessera;

@@ -13,7 +13,7 @@
 #include <cstdlib>
 
 #include "bench_report.h"
-#include "tessellate.h"
+#include "mesh/tessellate.h"
 #include "vk/context.h"
 
 using namespace tessera;

@@ -4,7 +4,7 @@
 #include <random>
 #include <vector>
 
-#include "patch.h"
+#include "geometry/patch.h"
 
 namespace tessera::bench {
 

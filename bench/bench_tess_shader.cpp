@@ -1,5 +1,5 @@
 // Case 6, the fixed-function peer: the scene of case 5 (100 perturbed teapots) drawn through
-// Vulkan tessellation shaders (host/tess_shader_peer.h: per-edge factors from the screen-space
+// Vulkan tessellation shaders (host/realtime/tess_shader_peer.h: per-edge factors from the screen-space
 // chord rule, tolerance 1 px, factor ≤ 64) at 1920×1080, along a camera path circling the
 // scene; every frame tessellates from scratch. Frames per second and triangles per second.
 // Usage: bench_tess_shader [frames=300] [teapots=100] [tolerancePx=1] [--json file]
@@ -12,9 +12,9 @@
 
 #include "bench_report.h"
 #include "bench_scenes.h"
-#include "evaluator.h"
+#include "eval/evaluator.h"
 #include "io/bpt_reader.h"
-#include "tess_shader_peer.h"
+#include "realtime/tess_shader_peer.h"
 #include "vk/context.h"
 
 using namespace tessera;

@@ -1,7 +1,7 @@
 #version 450
 // Division counts (N_u, N_v) of rational Bézier patches, one invocation per patch: the split
 // method in fp32 (docs/rational_division.md). The arithmetic lives in lib/division_count.h,
-// shared with the fp32 mirror (host/mirror/division_mirror.cpp).
+// shared with the fp32 mirror (host/division/count_mirror.cpp).
 #extension GL_GOOGLE_include_directive : require
 #include "layout.h"
 #include "lib/shared_glsl_cpp.h"

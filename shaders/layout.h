@@ -55,7 +55,7 @@ struct EvalPush {
 };
 
 
-// ---- Adaptive quad-tree (shaders/quadtree.comp.glsl, host/frontier.cpp) ----
+// ---- Adaptive quad-tree (shaders/quadtree.comp.glsl, host/quadtree/frontier.cpp) ----
 
 // Split rules of the quad-tree paper. A (uniform grid) needs no shader.
 TESSERA_CONST(uint, kSplitRuleMidpoint, 1u);    // (B) parameter midpoint
@@ -109,7 +109,7 @@ struct ClassifyPush {
 };
 
 
-// ---- Offscreen rendering (shaders/mesh.vert.glsl, mesh.frag.glsl, host/render.cpp) ----
+// ---- Offscreen rendering (shaders/mesh.vert.glsl, mesh.frag.glsl, host/render/offscreen_vulkan.cpp) ----
 
 // What colours a triangle (MeshDrawPush.colourMode).
 TESSERA_CONST(uint, kColourShaded, 0u);  // one porcelain colour
@@ -148,10 +148,10 @@ struct MeshDrawPush {
 };
 
 
-// ---- Loop subdivision stencils (shaders/loop_stencil.comp.glsl, host/loop_vulkan.cpp) ----
+// ---- Loop subdivision stencils (shaders/loop_stencil.comp.glsl, host/loop/evaluator_vulkan.cpp) ----
 
 // Push constants of loop_stencil.comp.glsl. One dispatch applies stencils firstStencil ..
-// firstStencil + stencilCount − 1 of a table (host/loop_stencils.h); stencil s writes row
+// firstStencil + stencilCount − 1 of a table (host/loop/stencils.h); stencil s writes row
 // sourceRows + s of the values buffer, a row being `width` floats (any per-vertex data).
 struct LoopStencilPush {
   uint firstStencil;
@@ -163,7 +163,7 @@ struct LoopStencilPush {
 
 // ---- General Bézier patches: degree 1..7 each way, polynomial or rational ----
 // (shaders/lib/general_eval.h, eval_general.comp.glsl, quadtree_general.comp.glsl,
-// host/general_patch.h). Bicubic polynomial patches keep BicubicPatch and its shaders.
+// host/geometry/general_patch.h). Bicubic polynomial patches keep BicubicPatch and its shaders.
 
 // Orders (degree + 1) are at most this: every loop over a patch's control points has this
 // fixed bound, so shader and mirror run the same loops for every degree.
@@ -180,7 +180,7 @@ struct GeneralPatch {
 
 
 // ---- Uniform-grid evaluation (shaders/grid_eval.comp.glsl, shaders/lib/grid_eval.h,
-// host/grid_evaluator.cpp) ----
+// host/realtime/grid_evaluator_vulkan.cpp) ----
 
 // One vertex of a patch's P×P grid: 32 bytes, the unit the bandwidth cap of bench/ counts.
 struct GridVertex {
@@ -199,7 +199,7 @@ struct GridEvalPush {
 
 
 // ---- The fixed-function peer: Vulkan tessellation shaders (shaders/tess_peer.*.glsl,
-// host/tess_shader_peer.cpp) ----
+// host/realtime/tess_shader_peer_vulkan.cpp) ----
 
 // Push constants of tess_peer.tesc/tese.glsl (80 of the guaranteed 128 bytes).
 struct TessPeerPush {
@@ -209,7 +209,7 @@ struct TessPeerPush {
 
 
 // ---- Rational division counts (shaders/division_count.comp.glsl,
-// shaders/lib/division_count.h, host/division_gpu.cpp; docs/rational_division.md) ----
+// shaders/lib/division_count.h, host/division/counter_vulkan.cpp; docs/rational_division.md) ----
 
 // One rational Bézier patch of bidegree (degreeU, degreeV) ≤ (7, 7): its homogeneous control
 // points (w·x, w·y, w·z, w), c[i*(degreeV+1) + j], start at points[firstPoint].

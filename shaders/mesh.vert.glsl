@@ -1,5 +1,5 @@
 #version 450
-// Draws an un-indexed triangle list (host/render.cpp): every triangle has its own three
+// Draws an un-indexed triangle list (host/render/offscreen_vulkan.cpp): every triangle has its own three
 // vertices, so each can carry its corner number (the barycentric coordinate for the wireframe)
 // and its triangle's palette value without a geometry shader, which lavapipe lacks.
 #extension GL_GOOGLE_include_directive : require

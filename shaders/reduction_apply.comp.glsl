@@ -1,5 +1,5 @@
 #version 450
-// The row product of the control-point reduction (host/reduction_vulkan.cpp): invocation
+// The row product of the control-point reduction (host/reduction/curve_product_vulkan.cpp): invocation
 // curve·rows + i writes output point i of one curve, row i of the band matrix applied to it.
 // All curves of one direction share the matrix (docs/reduction.md): one dispatch per pass.
 #extension GL_GOOGLE_include_directive : require

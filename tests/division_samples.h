@@ -4,7 +4,7 @@
 #include <random>
 #include <vector>
 
-#include "homogeneous_net.h"
+#include "geometry/homogeneous_net.h"
 
 namespace tessera::test {
 

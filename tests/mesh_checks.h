@@ -4,7 +4,7 @@
 #include <map>
 #include <utility>
 
-#include "mesh.h"
+#include "mesh/mesh.h"
 
 namespace tessera::test {
 

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "patch.h"
+#include "geometry/patch.h"
 #include "shaders/layout.h"
 
 namespace tessera::test {

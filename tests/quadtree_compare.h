@@ -2,7 +2,7 @@
 #pragma once
 #include <cstring>
 
-#include "quadtree.h"
+#include "quadtree/quadtree.h"
 
 namespace tessera::test {
 

@@ -1,4 +1,4 @@
-// Bernstein basis, Bézier curves and patches (host/bernstein.h, host/bezier.h).
+// Bernstein basis, Bézier curves and patches (host/geometry/bernstein.h, host/geometry/bezier.h).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -6,8 +6,8 @@
 #include <random>
 #include <stdexcept>
 
-#include "bernstein.h"
-#include "bezier.h"
+#include "geometry/bernstein.h"
+#include "geometry/bezier.h"
 
 using namespace tessera;
 

@@ -1,12 +1,12 @@
-// The bicubic fast path (host/bicubic.h) against the general evaluator (host/bezier.h).
+// The bicubic fast path (host/geometry/bicubic.h) against the general evaluator (host/geometry/bezier.h).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <random>
 #include <stdexcept>
 
-#include "bezier.h"
-#include "bicubic.h"
+#include "geometry/bezier.h"
+#include "geometry/bicubic.h"
 
 using namespace tessera;
 

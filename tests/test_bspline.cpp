@@ -9,8 +9,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "bspline.h"
-#include "knots.h"
+#include "bspline/bspline.h"
+#include "bspline/knots.h"
 
 using namespace tessera;
 

@@ -8,9 +8,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "bspline.h"
-#include "bspline_to_bezier.h"
-#include "knots.h"
+#include "bspline/bspline.h"
+#include "bspline/to_bezier.h"
+#include "bspline/knots.h"
 
 using namespace tessera;
 
@@ -29,7 +29,7 @@ double maxAbs(const glm::dvec3& d) {
 }
 
 // A local de Casteljau, so these tests do not lean on the Bézier kernel being built beside
-// this one (host/bezier.h).
+// this one (host/geometry/bezier.h).
 glm::dvec3 deCasteljau(std::vector<glm::dvec3> b, double s) {
   for (size_t level = 1; level < b.size(); ++level) {
     for (size_t k = 0; k + level < b.size(); ++k) b[k] = (1.0 - s) * b[k] + s * b[k + 1];

@@ -6,11 +6,11 @@
 #include <cmath>
 #include <random>
 
-#include "bezier.h"
-#include "closest_point.h"
-#include "deviation.h"
+#include "geometry/bezier.h"
+#include "geometry/closest_point.h"
+#include "mesh/deviation.h"
 #include "io/bpt_reader.h"
-#include "tessellate.h"
+#include "mesh/tessellate.h"
 
 using namespace tessera;
 

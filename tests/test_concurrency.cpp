@@ -12,7 +12,7 @@
 #include "gpu_test_context.h"
 #include "io/bpt_reader.h"
 #include "quadtree_compare.h"
-#include "tessellate.h"
+#include "mesh/tessellate.h"
 
 using namespace tessera;
 

@@ -1,13 +1,13 @@
-// Principal curvatures, K, H and κ (host/curvature.h, docs/conventions.md).
+// Principal curvatures, K, H and κ (host/geometry/curvature.h, docs/conventions.md).
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <random>
 
-#include "bezier.h"
-#include "curvature.h"
-#include "rational.h"
-#include "surface_normal.h"
+#include "geometry/bezier.h"
+#include "geometry/curvature.h"
+#include "geometry/rational.h"
+#include "geometry/surface_normal.h"
 
 using namespace tessera;
 

@@ -1,4 +1,4 @@
-// Degree elevation (host/degree_elevation.h): the elevated patch is the same surface, end
+// Degree elevation (host/geometry/degree_elevation.h): the elevated patch is the same surface, end
 // rows and columns are kept, and a boundary shared in opposite directions stays bit-identical.
 #include <catch2/catch.hpp>
 
@@ -7,8 +7,8 @@
 #include <random>
 #include <stdexcept>
 
-#include "bezier.h"
-#include "degree_elevation.h"
+#include "geometry/bezier.h"
+#include "geometry/degree_elevation.h"
 
 using namespace tessera;
 

@@ -1,4 +1,4 @@
-// Division counts for rational Bézier curves and patches (host/division_count.h): worked
+// Division counts for rational Bézier curves and patches (host/division/count.h): worked
 // cases, the corrected A_ijk, the methods against each other, the closed-form counts.
 #include <catch2/catch.hpp>
 
@@ -6,11 +6,11 @@
 #include <random>
 #include <stdexcept>
 
-#include "bernstein.h"
-#include "division_count.h"
-#include "division_deviation.h"
-#include "homogeneous_net.h"
-#include "rational_samples.h"
+#include "geometry/bernstein.h"
+#include "division/count.h"
+#include "division/deviation.h"
+#include "geometry/homogeneous_net.h"
+#include "experiments/rational_samples.h"
 
 using namespace tessera;
 

@@ -1,4 +1,4 @@
-// The direct deviation bound (host/division_direct.h): never below the densely measured
+// The direct deviation bound (host/division/detail/direct.h): never below the densely measured
 // deviation of a cell's two triangles (random rational cells with zero and negative weights),
 // tending to it as the squares shrink, and the adaptive pass/fail test agreeing with both: it
 // never passes a cell that measures above the tolerance, and always passes one whose uniform
@@ -8,10 +8,10 @@
 #include <algorithm>
 #include <random>
 
-#include "division_deviation.h"
-#include "division_direct.h"
+#include "division/deviation.h"
+#include "division/detail/direct.h"
 #include "division_samples.h"
-#include "homogeneous_net.h"
+#include "geometry/homogeneous_net.h"
 
 using namespace tessera;
 using namespace tessera::test;

@@ -1,4 +1,4 @@
-// The directional cell bound (host/division_directional.h): the simplex maximum against a brute
+// The directional cell bound (host/division/detail/directional.h): the simplex maximum against a brute
 // force scan, the cell bound never below the densely measured deviation of the cell's two
 // triangles (random rational cells with zero and negative weights), exact where S'' is
 // constant, and the same bound whether the numerators come from the patch or the cell's net.
@@ -7,10 +7,10 @@
 #include <algorithm>
 #include <random>
 
-#include "division_deviation.h"
-#include "division_directional.h"
+#include "division/deviation.h"
+#include "division/detail/directional.h"
 #include "division_samples.h"
-#include "homogeneous_net.h"
+#include "geometry/homogeneous_net.h"
 
 using namespace tessera;
 using namespace tessera::test;

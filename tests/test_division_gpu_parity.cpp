@@ -8,11 +8,11 @@
 #include <iostream>
 #include <random>
 
-#include "division_count.h"
-#include "division_gpu.h"
+#include "division/count.h"
+#include "division/counter.h"
 #include "division_samples.h"
 #include "gpu_test_context.h"
-#include "rational_samples.h"
+#include "experiments/rational_samples.h"
 
 using namespace tessera;
 using namespace tessera::test;

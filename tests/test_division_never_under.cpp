@@ -1,16 +1,16 @@
 // "Never under-divides": over random rational curves and patches (fixed seeds) with zero and
 // negative weights, the bounds of the split, subdivided, cellwise, directional and direct
 // methods are never below the sampled maximum of ‖c''‖ (‖S_uu‖, ‖S_uv‖, ‖S_vv‖), and the
-// uniform grid of the computed counts deviates at most TOL from the surface (host/division_count.h, docs/rational_division.md).
+// uniform grid of the computed counts deviates at most TOL from the surface (host/division/count.h, docs/rational_division.md).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <random>
 
-#include "division_count.h"
-#include "division_deviation.h"
+#include "division/count.h"
+#include "division/deviation.h"
 #include "division_samples.h"
-#include "homogeneous_net.h"
+#include "geometry/homogeneous_net.h"
 
 using namespace tessera;
 using namespace tessera::test;

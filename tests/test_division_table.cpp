@@ -1,10 +1,10 @@
-// The comparison of paper 002 (host/division_table.h) at its default settings, as
+// The comparison of paper 002 (host/experiments/division_table.h) at its default settings, as
 // `tessera divisions` prints it: the beyond-the-paper goal of issue #5 (over-division ≤ 2 on
 // average, measured deviation ≤ TOL on every surface and viewpoint), the order of the methods,
 // and the true value below every bound. The numbers are in docs/rational_division.md.
 #include <catch2/catch.hpp>
 
-#include "division_table.h"
+#include "experiments/division_table.h"
 
 using namespace tessera;
 

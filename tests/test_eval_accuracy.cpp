@@ -9,13 +9,13 @@
 
 #include <cmath>
 
-#include "bicubic.h"
-#include "curvature.h"
-#include "evaluator.h"
+#include "geometry/bicubic.h"
+#include "geometry/curvature.h"
+#include "eval/evaluator.h"
 #include "gpu_test_context.h"
 #include "io/bpt_reader.h"
 #include "patch_samples.h"
-#include "surface_normal.h"
+#include "geometry/surface_normal.h"
 
 using namespace tessera;
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "evaluator.h"
+#include "eval/evaluator.h"
 #include "gpu_test_context.h"
 #include "patch_samples.h"
 

@@ -1,4 +1,4 @@
-// The bounded frontier (host/frontier.cpp): a level larger than one batch — set by the
+// The bounded frontier (host/quadtree/frontier.cpp): a level larger than one batch — set by the
 // frontier memory budget or by the classifier's largest buffer — is classified in batches,
 // depth first, and a patch set larger than the classifier's patch buffer is split into
 // groups. Neither may change the tree: the same leaves, bit for bit (in another order), the
@@ -8,12 +8,12 @@
 #include <algorithm>
 #include <tuple>
 
-#include "evaluator.h"
-#include "general_patch.h"
+#include "eval/evaluator.h"
+#include "geometry/general_patch.h"
 #include "general_samples.h"
 #include "gpu_test_context.h"
 #include "io/bpt_reader.h"
-#include "quadtree.h"
+#include "quadtree/quadtree.h"
 #include "quadtree_compare.h"
 
 using namespace tessera;

@@ -13,14 +13,14 @@
 #include <cmath>
 #include <cstring>
 
-#include "curvature.h"
-#include "degree_elevation.h"
-#include "evaluator.h"
+#include "geometry/curvature.h"
+#include "geometry/degree_elevation.h"
+#include "eval/evaluator.h"
 #include "general_samples.h"
 #include "gpu_test_context.h"
 #include "patch_samples.h"
-#include "rational.h"
-#include "surface_normal.h"
+#include "geometry/rational.h"
+#include "geometry/surface_normal.h"
 
 using namespace tessera;
 

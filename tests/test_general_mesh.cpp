@@ -6,11 +6,11 @@
 
 #include <cmath>
 
-#include "deviation.h"
+#include "mesh/deviation.h"
 #include "general_samples.h"
 #include "mesh_checks.h"
-#include "shared_edges.h"
-#include "tessellate.h"
+#include "mesh/shared_edges.h"
+#include "mesh/tessellate.h"
 
 using namespace tessera;
 

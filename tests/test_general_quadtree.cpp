@@ -8,7 +8,7 @@
 
 #include "general_samples.h"
 #include "gpu_test_context.h"
-#include "quadtree.h"
+#include "quadtree/quadtree.h"
 #include "quadtree_compare.h"
 #include "tree_divergence.h"
 

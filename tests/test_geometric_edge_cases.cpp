@@ -14,7 +14,7 @@
 
 #include "gpu_test_context.h"
 #include "quadtree_compare.h"
-#include "tessellate.h"
+#include "mesh/tessellate.h"
 
 using namespace tessera;
 

@@ -21,7 +21,7 @@
 
 #include "io/bpt_reader.h"
 #include "io/gltf_writer.h"
-#include "tessellate.h"
+#include "mesh/tessellate.h"
 
 using namespace tessera;
 namespace fs = std::filesystem;

@@ -1,17 +1,17 @@
-// Uniform-grid evaluation (shaders/grid_eval.comp.glsl, host/grid_evaluator.h): the shader
+// Uniform-grid evaluation (shaders/grid_eval.comp.glsl, host/realtime/grid_evaluator.h): the shader
 // against its fp32 mirror (bit for bit on lavapipe), and the mirror against the double kernel.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <cstring>
 
-#include "bicubic.h"
-#include "evaluator.h"
+#include "geometry/bicubic.h"
+#include "eval/evaluator.h"
 #include "gpu_test_context.h"
-#include "grid_evaluator.h"
+#include "realtime/grid_evaluator.h"
 #include "io/bpt_reader.h"
 #include "patch_samples.h"
-#include "surface_normal.h"
+#include "geometry/surface_normal.h"
 
 using namespace tessera;
 

@@ -1,4 +1,4 @@
-// Data interpolation of grid points by bicubic Bézier patches (host/grid_interpolation.h) and
+// Data interpolation of grid points by bicubic Bézier patches (host/geometry/grid_interpolation.h) and
 // the .grid reader (host/io/grid_reader.h): the patches interpolate, reproduce planes and
 // bicubic polynomials, share their edges bit for bit and join C¹ (C², in fact); the bundled
 // data sets load; malformed files are rejected naming file, line and reason.
@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "grid_interpolation.h"
+#include "geometry/grid_interpolation.h"
 #include "io/errors.h"
 #include "io/grid_reader.h"
 

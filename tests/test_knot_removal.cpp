@@ -11,12 +11,12 @@
 #include <stdexcept>
 #include <vector>
 
-#include "banded_oslo.h"
-#include "knot_removal.h"
-#include "knots.h"
-#include "oslo.h"
-#include "reduction_order.h"
-#include "synthetic_surfaces.h"
+#include "reduction/banded_oslo.h"
+#include "reduction/knot_removal.h"
+#include "bspline/knots.h"
+#include "bspline/oslo.h"
+#include "reduction/detail/order.h"
+#include "experiments/synthetic_surfaces.h"
 
 using namespace tessera;
 using Catch::Matchers::Contains;

@@ -10,12 +10,12 @@
 #include <random>
 #include <vector>
 
-#include "banded_oslo.h"
-#include "curve_product.h"
-#include "knot_removal.h"
-#include "knots.h"
-#include "reduction_fast.h"
-#include "synthetic_surfaces.h"
+#include "reduction/banded_oslo.h"
+#include "reduction/curve_product.h"
+#include "reduction/knot_removal.h"
+#include "bspline/knots.h"
+#include "reduction/fast.h"
+#include "experiments/synthetic_surfaces.h"
 
 using namespace tessera;
 

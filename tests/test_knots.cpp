@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "knots.h"
+#include "bspline/knots.h"
 
 using Catch::Matchers::Contains;
 using tessera::findSpan;

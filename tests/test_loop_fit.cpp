@@ -7,10 +7,10 @@
 #include <cmath>
 #include <cstring>
 
-#include "bvh.h"
-#include "loop_fit.h"
-#include "loop_limit.h"
-#include "loop_shapes.h"
+#include "loop/bvh.h"
+#include "loop/fit.h"
+#include "loop/limit.h"
+#include "loop/shapes.h"
 
 using namespace tessera;
 

@@ -9,8 +9,8 @@
 #include <cstring>
 
 #include "gpu_test_context.h"
-#include "loop_evaluator.h"
-#include "loop_shapes.h"
+#include "loop/evaluator.h"
+#include "loop/shapes.h"
 
 using namespace tessera;
 

@@ -1,4 +1,4 @@
-// Joining two Loop control meshes by local refinement (host/loop_join.h): the result is a
+// Joining two Loop control meshes by local refinement (host/loop/join.h): the result is a
 // closed, consistently oriented 2-manifold of the expected genus, vertices away from the seam
 // are bit for bit the input's, and the fitted vertices' limit points lie near the original
 // surfaces. Sphere + torus, sphere + a bumpy (bunny-like) shape, and "paste" of a cut part.
@@ -6,8 +6,8 @@
 
 #include <cstring>
 
-#include "loop_join.h"
-#include "loop_limit.h"
+#include "loop/join.h"
+#include "loop/limit.h"
 
 using namespace tessera;
 

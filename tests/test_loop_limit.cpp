@@ -5,8 +5,8 @@
 #include <cmath>
 #include <vector>
 
-#include "loop_limit.h"
-#include "loop_shapes.h"
+#include "loop/limit.h"
+#include "loop/shapes.h"
 
 using namespace tessera;
 

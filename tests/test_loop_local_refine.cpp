@@ -1,4 +1,4 @@
-// Local Loop refinement with T-node splits (host/loop_local_refine.h, the paper's figure 6):
+// Local Loop refinement with T-node splits (host/loop/local_refine.h, the paper's figure 6):
 // split faces become 4, a neighbour with k split edges becomes 1 + k triangles (1 → 2, 2 → 3,
 // 3 → the regular 4), new vertices by Loop's edge mask, old vertices bit for bit, and the
 // result stays a closed oriented 2-manifold with the same Euler characteristic.
@@ -6,8 +6,8 @@
 
 #include <cstring>
 
-#include "loop_local_refine.h"
-#include "loop_refine.h"
+#include "loop/local_refine.h"
+#include "loop/refine.h"
 
 using namespace tessera;
 

@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "loop_refine.h"
-#include "loop_shapes.h"
+#include "loop/refine.h"
+#include "loop/shapes.h"
 
 using namespace tessera;
 

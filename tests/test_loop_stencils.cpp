@@ -4,10 +4,10 @@
 
 #include <cmath>
 
-#include "loop_evaluator.h"
-#include "loop_limit.h"
-#include "loop_shapes.h"
-#include "loop_stencils.h"
+#include "loop/evaluator.h"
+#include "loop/limit.h"
+#include "loop/shapes.h"
+#include "loop/stencils.h"
 
 using namespace tessera;
 

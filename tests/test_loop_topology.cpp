@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <string>
 
-#include "loop_shapes.h"
-#include "loop_topology.h"
+#include "loop/shapes.h"
+#include "loop/topology.h"
 
 using namespace tessera;
 

@@ -1,4 +1,4 @@
-// TriangleMesh::validate and the OBJ / PLY writers (host/mesh.h, host/io/obj_writer.h,
+// TriangleMesh::validate and the OBJ / PLY writers (host/mesh/mesh.h, host/io/obj_writer.h,
 // host/io/ply_writer.h): OBJ parses back to the same floats, PLY has exactly the header and
 // byte size its layout promises.
 #include <catch2/catch.hpp>
@@ -18,7 +18,7 @@
 #include "io/errors.h"
 #include "io/obj_writer.h"
 #include "io/ply_writer.h"
-#include "mesh.h"
+#include "mesh/mesh.h"
 
 using namespace tessera;
 namespace fs = std::filesystem;

@@ -9,8 +9,8 @@
 
 #include <cmath>
 
-#include "loop_limit.h"
-#include "loop_shapes.h"
+#include "loop/limit.h"
+#include "loop/shapes.h"
 #include "osd/osd_loop.h"
 
 using namespace tessera;

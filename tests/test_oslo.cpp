@@ -8,9 +8,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "bspline.h"
-#include "knots.h"
-#include "oslo.h"
+#include "bspline/bspline.h"
+#include "bspline/knots.h"
+#include "bspline/oslo.h"
 
 using namespace tessera;
 using Catch::Matchers::Contains;

@@ -3,10 +3,10 @@
 // values — for rules B, C, D and thresholds 0.3, 0.2, 0.1, 0.05.
 #include <catch2/catch.hpp>
 
-#include "evaluator.h"
+#include "eval/evaluator.h"
 #include "gpu_test_context.h"
 #include "patch_samples.h"
-#include "quadtree.h"
+#include "quadtree/quadtree.h"
 #include "quadtree_compare.h"
 
 using namespace tessera;

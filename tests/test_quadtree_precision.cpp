@@ -5,10 +5,10 @@
 // many nodes were of each kind and fails on any it cannot explain.
 #include <catch2/catch.hpp>
 
-#include "evaluator.h"
+#include "eval/evaluator.h"
 #include "io/bpt_reader.h"
 #include "patch_samples.h"
-#include "quadtree.h"
+#include "quadtree/quadtree.h"
 #include "tree_divergence.h"
 
 using namespace tessera;

@@ -5,12 +5,12 @@
 
 #include <cmath>
 
-#include "bicubic.h"
-#include "curvature.h"
-#include "evaluator.h"
+#include "geometry/bicubic.h"
+#include "geometry/curvature.h"
+#include "eval/evaluator.h"
 #include "gpu_test_context.h"
-#include "quadtree.h"
-#include "surface_normal.h"
+#include "quadtree/quadtree.h"
+#include "geometry/surface_normal.h"
 
 using namespace tessera;
 

@@ -1,12 +1,12 @@
-// Rational Bézier curves and patches (host/rational.h).
+// Rational Bézier curves and patches (host/geometry/rational.h).
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <random>
 #include <stdexcept>
 
-#include "bezier.h"
-#include "rational.h"
+#include "geometry/bezier.h"
+#include "geometry/rational.h"
 
 using namespace tessera;
 

@@ -1,4 +1,4 @@
-// Real-time view-dependent tessellation (host/realtime_frame.h): on a few frames of two
+// Real-time view-dependent tessellation (host/realtime/frame.h): on a few frames of two
 // teapots the grids meet 1 px on screen (measured against the double surface), the grids are
 // the grid evaluator's fp32 mirror bit for bit, a finer tolerance spends more triangles, a
 // camera inside the scene routes eye-plane patches to the host count, and looking away culls
@@ -7,10 +7,10 @@
 
 #include <cstring>
 
-#include "evaluator.h"
+#include "eval/evaluator.h"
 #include "gpu_test_context.h"
 #include "io/bpt_reader.h"
-#include "realtime_frame.h"
+#include "realtime/frame.h"
 
 using namespace tessera;
 

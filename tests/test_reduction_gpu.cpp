@@ -8,12 +8,12 @@
 #include <cstring>
 #include <vector>
 
-#include "banded_oslo.h"
-#include "curve_product.h"
+#include "reduction/banded_oslo.h"
+#include "reduction/curve_product.h"
 #include "gpu_test_context.h"
-#include "knots.h"
-#include "reduction_fast.h"
-#include "synthetic_surfaces.h"
+#include "bspline/knots.h"
+#include "reduction/fast.h"
+#include "experiments/synthetic_surfaces.h"
 
 using namespace tessera;
 

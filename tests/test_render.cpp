@@ -1,4 +1,4 @@
-// Offscreen rendering (host/render.h) and the PNG writer (host/io/png_writer.h). The pictures
+// Offscreen rendering (host/render/offscreen.h) and the PNG writer (host/io/png_writer.h). The pictures
 // are judged by counting pixels: how much of the frame the teapot covers, how many pixels
 // change between tessellations, colourings and the wireframe. Thresholds are loose on purpose
 // (what a working renderer gives on any driver), and every test prints what it measured.
@@ -25,8 +25,8 @@
 #include "gpu_test_context.h"
 #include "io/bpt_reader.h"
 #include "io/png_writer.h"
-#include "render.h"
-#include "tessellate.h"
+#include "render/offscreen.h"
+#include "mesh/tessellate.h"
 
 using namespace tessera;
 namespace fs = std::filesystem;

@@ -1,4 +1,4 @@
-// Scenes to patches (host/scene_convert.h): degree elevation and B-spline pieces give the same
+// Scenes to patches (host/io/scene_convert.h): degree elevation and B-spline pieces give the same
 // surfaces, surfaces stay in file order, degrees above 3 and rational weights are kept (a
 // bad weight in a scene built in code is an InputError naming the surface), and the example
 // scenes go through readSurfaceFile and the CPU backend to a mesh.
@@ -9,16 +9,16 @@
 #include <sstream>
 #include <string>
 
-#include "bezier.h"
-#include "bspline.h"
-#include "bspline_to_bezier.h"
+#include "geometry/bezier.h"
+#include "bspline/bspline.h"
+#include "bspline/to_bezier.h"
 #include "io/errors.h"
-#include "rational.h"
+#include "geometry/rational.h"
 #include "io/scene_reader.h"
 #include "io/surface_reader.h"
-#include "knots.h"
-#include "scene_convert.h"
-#include "tessellate.h"
+#include "bspline/knots.h"
+#include "io/scene_convert.h"
+#include "mesh/tessellate.h"
 
 using namespace tessera;
 

@@ -11,7 +11,7 @@
 #include "input_error_checks.h"
 #include "io/errors.h"
 #include "io/scene_reader.h"
-#include "rational.h"
+#include "geometry/rational.h"
 
 using namespace tessera;
 

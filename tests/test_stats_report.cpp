@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "deviation.h"
+#include "mesh/deviation.h"
 #include "io/bpt_reader.h"
 #include "io/stats_report.h"
-#include "tessellate.h"
+#include "mesh/tessellate.h"
 
 using namespace tessera;
 namespace fs = std::filesystem;

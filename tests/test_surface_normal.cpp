@@ -1,13 +1,13 @@
-// Unit normals, including degenerate points (host/surface_normal.h, docs/conventions.md).
+// Unit normals, including degenerate points (host/geometry/surface_normal.h, docs/conventions.md).
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <string>
 #include <utility>
 
-#include "bezier.h"
-#include "bicubic.h"
-#include "surface_normal.h"
+#include "geometry/bezier.h"
+#include "geometry/bicubic.h"
+#include "geometry/surface_normal.h"
 
 using namespace tessera;
 

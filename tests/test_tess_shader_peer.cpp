@@ -1,13 +1,13 @@
-// The tessellation-shader peer (host/tess_shader_peer.h): draws validation-clean, culls what
+// The tessellation-shader peer (host/realtime/tess_shader_peer.h): draws validation-clean, culls what
 // is off screen, and its triangle count grows as the tolerance shrinks (the screen-space rule).
 #include <catch2/catch.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "evaluator.h"
+#include "eval/evaluator.h"
 #include "gpu_test_context.h"
 #include "io/bpt_reader.h"
-#include "tess_shader_peer.h"
+#include "realtime/tess_shader_peer.h"
 
 using namespace tessera;
 

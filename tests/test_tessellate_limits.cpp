@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "io/bpt_reader.h"
-#include "tessellate.h"
+#include "mesh/tessellate.h"
 
 using namespace tessera;
 

@@ -1,14 +1,14 @@
-// View-dependent division counts (host/view_dependent.h): TOL in pixels, control points on the
+// View-dependent division counts (host/division/view_dependent.h): TOL in pixels, control points on the
 // eye plane and behind it, culling, and the counts driving rule A.
 #include <catch2/catch.hpp>
 
 #include <map>
 #include <utility>
 
-#include "division_deviation.h"
-#include "homogeneous_net.h"
-#include "rational_samples.h"
-#include "view_dependent.h"
+#include "division/deviation.h"
+#include "geometry/homogeneous_net.h"
+#include "experiments/rational_samples.h"
+#include "division/view_dependent.h"
 
 using namespace tessera;
 

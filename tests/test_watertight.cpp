@@ -6,13 +6,13 @@
 
 #include <cmath>
 
-#include "closest_point.h"
-#include "deviation.h"
+#include "geometry/closest_point.h"
+#include "mesh/deviation.h"
 #include "gpu_test_context.h"
 #include "io/bpt_reader.h"
 #include "mesh_checks.h"
-#include "shared_edges.h"
-#include "tessellate.h"
+#include "mesh/shared_edges.h"
+#include "mesh/tessellate.h"
 
 using namespace tessera;
 

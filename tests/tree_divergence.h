@@ -9,7 +9,7 @@
 #include <string>
 #include <tuple>
 
-#include "quadtree.h"
+#include "quadtree/quadtree.h"
 
 namespace tessera::test {
 

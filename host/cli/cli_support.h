@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "tessellate.h"
+#include "mesh/tessellate.h"
 #include "vk/context.h"
 
 namespace tessera::cli {

@@ -1,12 +1,12 @@
 // tessera divisions: paper 002's comparison table of division counts for rational surfaces
-// with zero weights (host/division_table.h, docs/rational_division.md).
+// with zero weights (host/experiments/division_table.h, docs/rational_division.md).
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
 #include "cli/cli_support.h"
 #include "cli/commands.h"
-#include "division_table.h"
+#include "experiments/division_table.h"
 
 namespace tessera::cli {
 

@@ -10,13 +10,13 @@
 #include "io/obj_reader.h"
 #include "io/obj_writer.h"
 #include "io/ply_writer.h"
-#include "loop_evaluator.h"
-#include "loop_join.h"
-#include "loop_limit.h"
-#include "loop_picture.h"
+#include "loop/evaluator.h"
+#include "loop/join.h"
+#include "loop/limit.h"
+#include "render/join_picture.h"
 #include "io/png_writer.h"
 #include "vk/context.h"
-#include "loop_stencils.h"
+#include "loop/stencils.h"
 
 namespace tessera::cli {
 namespace {

@@ -4,7 +4,7 @@
 #include "cli/cli_support.h"
 #include "cli/commands.h"
 #include "io/surface_reader.h"
-#include "paper_table.h"
+#include "experiments/paper_table.h"
 #include "vk/context.h"
 
 namespace tessera::cli {

@@ -11,10 +11,10 @@
 
 #include "cli/cli_support.h"
 #include "cli/commands.h"
-#include "curve_product.h"
+#include "reduction/curve_product.h"
 #include "io/bspline_scene_writer.h"
-#include "reduction_table.h"
-#include "synthetic_surfaces.h"
+#include "experiments/reduction_table.h"
+#include "experiments/synthetic_surfaces.h"
 
 namespace tessera::cli {
 namespace {

@@ -15,9 +15,9 @@
 #include "io/surface_reader.h"
 #include "io/errors.h"
 #include "io/png_writer.h"
-#include "render.h"
+#include "render/offscreen.h"
 #include "shaders/layout.h"
-#include "tessellate.h"
+#include "mesh/tessellate.h"
 #include "vk/context.h"
 
 namespace tessera::cli {

@@ -15,7 +15,7 @@
 #include "io/obj_writer.h"
 #include "io/ply_writer.h"
 #include "io/stats_report.h"
-#include "tessellate.h"
+#include "mesh/tessellate.h"
 #include "vk/context.h"
 
 namespace tessera::cli {
@@ -91,7 +91,7 @@ int run(const TessellateArgs& a) {
   if (options.onLevel) std::fprintf(stderr, "\r%60s\r", "");
   if (!a.output.empty()) writeMesh(a.output, t.mesh);
   // The deviation from the true surface is part of every report: it is what the thresholds
-  // are for (both metrics, host/deviation.h). It costs about as much as the tessellation, so it
+  // are for (both metrics, host/mesh/deviation.h). It costs about as much as the tessellation, so it
   // is measured only when something prints it, and --no-deviation skips it (reported as null).
   const bool wantReport = !a.stats.empty() || a.json;
   const bool summary = !a.quiet && !a.json;

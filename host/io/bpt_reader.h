@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "patch.h"
+#include "geometry/patch.h"
 #include "io/text_lines.h"
 
 namespace tessera {

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "bspline.h"
+#include "bspline/bspline.h"
 
 namespace tessera {
 

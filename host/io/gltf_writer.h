@@ -35,7 +35,7 @@
 #include <ostream>
 #include <string>
 
-#include "mesh.h"
+#include "mesh/mesh.h"
 
 namespace tessera {
 

@@ -21,7 +21,7 @@
 #include <istream>
 #include <string>
 
-#include "grid_interpolation.h"
+#include "geometry/grid_interpolation.h"
 #include "io/text_lines.h"
 
 namespace tessera {

@@ -10,7 +10,7 @@
 #include <ostream>
 #include <string>
 
-#include "mesh.h"
+#include "mesh/mesh.h"
 
 namespace tessera {
 

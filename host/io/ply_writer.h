@@ -18,7 +18,7 @@
 #include <ostream>
 #include <string>
 
-#include "mesh.h"
+#include "mesh/mesh.h"
 
 namespace tessera {
 

@@ -1,4 +1,4 @@
-// PNG output of RGBA8 pixels (what host/render.h produces), through stb_image_write.
+// PNG output of RGBA8 pixels (what host/render/offscreen.h produces), through stb_image_write.
 // Rows run top to bottom, 4 bytes per pixel, no padding between rows.
 #pragma once
 #include <cstdint>

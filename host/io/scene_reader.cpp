@@ -10,7 +10,7 @@
 #include "io/errors.h"
 #include "io/json_document.h"
 #include "io/text_lines.h"
-#include "knots.h"
+#include "bspline/knots.h"
 
 namespace tessera {
 namespace {

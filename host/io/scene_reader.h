@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "bspline.h"
-#include "patch.h"
+#include "bspline/bspline.h"
+#include "geometry/patch.h"
 
 namespace tessera {
 

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "deviation.h"
-#include "patch.h"
-#include "quadtree.h"
-#include "tessellate.h"
+#include "mesh/deviation.h"
+#include "geometry/patch.h"
+#include "quadtree/quadtree.h"
+#include "mesh/tessellate.h"
 
 namespace tessera {
 
@@ -19,7 +19,7 @@ namespace tessera {
 // member changes meaning or goes away (adding members does not bump it).
 constexpr int kStatsSchemaVersion = 1;
 
-// measureDeviation (host/deviation.h) over the whole mesh, once, split by patch: the total is
+// measureDeviation (host/mesh/deviation.h) over the whole mesh, once, split by patch: the total is
 // that measurement, each patch's entry its samples, max, mean and worst triangle (an index
 // into the whole mesh's triangles).
 struct PatchDeviation {

@@ -2,12 +2,12 @@
 
 #include <filesystem>
 
-#include "grid_interpolation.h"
+#include "geometry/grid_interpolation.h"
 #include "io/bpt_reader.h"
 #include "io/errors.h"
 #include "io/grid_reader.h"
 #include "io/scene_reader.h"
-#include "scene_convert.h"
+#include "io/scene_convert.h"
 
 namespace tessera {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "patch.h"
+#include "geometry/patch.h"
 
 namespace tessera {
 

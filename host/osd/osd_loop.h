@@ -15,7 +15,7 @@
 #include <memory>
 #include <vector>
 
-#include "loop_topology.h"
+#include "loop/topology.h"
 
 namespace tessera::osd {
 
@@ -26,7 +26,7 @@ std::unique_ptr<TopologyRefiner> makeLoopRefiner(
     const LoopControlTopology& control,
     BoundaryRule boundary = OpenSubdiv::Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
 
-// ours[l][i]: our index (host/loop_topology.h numbering at level l) of OpenSubdiv's vertex i at
+// ours[l][i]: our index (host/loop/topology.h numbering at level l) of OpenSubdiv's vertex i at
 // level l, for l = 0 .. refiner.GetMaxLevel(); `levels` are our topologies of the same levels.
 // Throws std::runtime_error if an OpenSubdiv edge has no counterpart in ours.
 std::vector<std::vector<uint32_t>> matchVertices(const TopologyRefiner& refiner,

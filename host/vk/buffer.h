@@ -3,6 +3,7 @@
 // device-local memory; elsewhere the GPU reads it over the bus (fine for Tessera's streams,
 // which are read once per dispatch).
 #pragma once
+#include "vk/backend_only.h"
 #include <cstddef>
 #include <cstring>
 #include <vector>

@@ -2,6 +2,7 @@
 // logical device with one queue, and one-time command submission. One context per thread:
 // a Context is not thread-safe, two Contexts are independent.
 #pragma once
+#include "vk/backend_only.h"
 #include <cstdint>
 #include <functional>
 #include <memory>

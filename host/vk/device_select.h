@@ -1,5 +1,6 @@
 // Describing physical devices and choosing one (internal to host/vk/).
 #pragma once
+#include "vk/backend_only.h"
 #include <string>
 #include <vector>
 

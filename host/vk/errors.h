@@ -1,6 +1,7 @@
 // Errors from the Vulkan layer. Every Vulkan call that returns VkResult goes through
 // VK_CHECK, which names the call and the result.
 #pragma once
+#include "vk/backend_only.h"
 #include <vulkan/vulkan.h>
 
 #include <stdexcept>

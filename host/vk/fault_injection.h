@@ -6,6 +6,7 @@
 //   no-device            vkEnumeratePhysicalDevices reports no devices
 //   no-push-descriptor   devices do not list VK_KHR_push_descriptor (a missing feature)
 #pragma once
+#include "vk/backend_only.h"
 #include "vk/loader.h"
 
 namespace tessera::vk {

@@ -2,6 +2,7 @@
 // tessellation-shader peer). One colour and one depth attachment, drawn into images that are
 // copied to the host afterwards; pipelines are built from embedded SPIR-V.
 #pragma once
+#include "vk/backend_only.h"
 #include <cstddef>
 #include <cstdint>
 #include <vector>

@@ -1,7 +1,8 @@
 // 2-D images in device memory with one view over the whole image: render targets (colour,
-// depth, multisampled or not) for host/render.cpp. The host never maps them; pixels reach it
+// depth, multisampled or not) for host/render/offscreen_vulkan.cpp. The host never maps them; pixels reach it
 // through vkCmdCopyImageToBuffer into a vk::Buffer.
 #pragma once
+#include "vk/backend_only.h"
 #include <cstdint>
 
 #include "vk/context.h"

@@ -4,6 +4,7 @@
 // Device functions live in a per-device table (not globals) so that two contexts can live
 // side by side, and so that tests can wrap single entry points to inject faults.
 #pragma once
+#include "vk/backend_only.h"
 #include <vulkan/vulkan.h>
 
 #include <string>

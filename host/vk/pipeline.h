@@ -2,6 +2,7 @@
 // (binding i = i-th buffer), parameters go in push constants, variants are chosen with
 // specialization constants (all 32-bit).
 #pragma once
+#include "vk/backend_only.h"
 #include <cstdint>
 #include <initializer_list>
 #include <string>

@@ -5,6 +5,7 @@
 // pipelineCacheUUID in the name). Everything here is best effort: a cache that cannot be read
 // or written is a slower start, never an error; the driver itself rejects stale data.
 #pragma once
+#include "vk/backend_only.h"
 #include <string>
 #include <vector>
 

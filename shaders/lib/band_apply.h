@@ -1,8 +1,8 @@
-// One output point of the control-point reduction's row product (host/curve_product.h): row i
+// One output point of the control-point reduction's row product (host/reduction/curve_product.h): row i
 // of a band matrix (A⁺ of banded_oslo.h) applied to one curve, in fp32. Compiled twice from
 // this one text: as GLSL in shaders/reduction_apply.comp.glsl, where firsts, offsets, weights,
 // points and results are storage buffers, and as C++ inside the struct of
-// host/mirror/band_mirror.cpp, where they are members of the same names. The sum runs over
+// host/reduction/band_mirror.cpp, where they are members of the same names. The sum runs over
 // the row's entries in order from 0 with no fused multiply-add (PRECISE), so lavapipe and the
 // mirror round identically. Points are relative to their curve's first point (the host
 // subtracts it in double and adds it back), so the rounding scales with the curve's extent,

@@ -1,7 +1,7 @@
 // Bicubic Bézier evaluation in fp32: derivatives to third order, the unit normal with the
 // degenerate-point rule and κ, both as in docs/conventions.md.
 // Compiled twice from this one text: as GLSL in shaders/*.comp.glsl and as C++ in
-// host/mirror/bicubic_mirror.cpp. Include shared_glsl_cpp.h and layout.h first.
+// host/eval/bicubic_mirror.cpp. Include shared_glsl_cpp.h and layout.h first.
 #ifndef TESSERA_BICUBIC_EVAL_H
 #define TESSERA_BICUBIC_EVAL_H
 

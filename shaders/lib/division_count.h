@@ -1,8 +1,8 @@
 // Division counts of rational Bézier patches in fp32: the `split` method of
-// host/division_count.h (B1..B8 with ρ ≥ sup β/|w| and σ ≥ sup ω/|w| from q×q de Casteljau
+// host/division/count.h (B1..B8 with ρ ≥ sup β/|w| and σ ≥ sup ω/|w| from q×q de Casteljau
 // pieces, the corrected A_ijk; docs/rational_division.md), then Filip's closed-form counts.
 // Compiled as GLSL (shaders/division_count.comp.glsl) and as C++
-// (host/mirror/division_mirror.cpp) from this one text. Include shared_glsl_cpp.h and
+// (host/division/count_mirror.cpp) from this one text. Include shared_glsl_cpp.h and
 // layout.h first.
 #ifndef TESSERA_DIVISION_COUNT_H
 #define TESSERA_DIVISION_COUNT_H
@@ -91,7 +91,7 @@ float divisionNorm(vec3 v) {
 
 // One coefficient row (stride `stride`, `degree` + 1 entries from `first`) of the piece's
 // (w, β, ω) nets restricted to [t0, t1]: split at t1 keeping the left part, then at t0/t1
-// keeping the right part (de Casteljau), as restrictCoefficients in host/homogeneous_net.h.
+// keeping the right part (de Casteljau), as restrictCoefficients in host/geometry/homogeneous_net.h.
 void restrictPieceRow(int first, int stride, int degree, float t0, float t1) {
   vec3 row[DIVISION_MAX_DEGREE + 1];
   vec3 left[DIVISION_MAX_DEGREE + 1];
@@ -162,7 +162,7 @@ bool divisionWeightRatios(int q, OUT(vec2) ratios) {
 }
 
 // Where the d_k = D1_k.w (along u or along v) of the k index lie: the extreme s_k = d_k/w_k
-// of the kept weights, and the (w_k, d_k) box of the vanished ones (host/division_count.cpp,
+// of the kept weights, and the (w_k, d_k) box of the vanished ones (host/division/count.cpp,
 // classMaxima: the norm is convex in them, so the extremes give the max over k).
 struct DivisionKRange {
   float sMin;
@@ -265,7 +265,7 @@ void divisionClassMaxima() {
   }
 }
 
-// Σ_S B_S σ^(3−|S|) ρ^|S| for one numerator (host/division_count.cpp, combineClasses).
+// Σ_S B_S σ^(3−|S|) ρ^|S| for one numerator (host/division/count.cpp, combineClasses).
 float divisionCombine(int partial, float rho, float sigma) {
   PRECISE float sum = 0.0f;
   for (int c = 0; c < 8; ++c) {

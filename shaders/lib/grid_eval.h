@@ -4,7 +4,7 @@
 // (12 multiply-adds for P, Pu, Pv instead of 48 for a full point evaluation from 16 points).
 // Reading the control points once per row instead of once per point is what lets lavapipe
 // reach the memory-bandwidth cap (bench/README.md, case 1).
-// Compiled as GLSL (shaders/grid_eval.comp.glsl) and as C++ (host/mirror/grid_mirror.cpp).
+// Compiled as GLSL (shaders/grid_eval.comp.glsl) and as C++ (host/realtime/grid_mirror.cpp).
 // Include shared_glsl_cpp.h, layout.h and bicubic_eval.h first.
 #ifndef TESSERA_GRID_EVAL_H
 #define TESSERA_GRID_EVAL_H

@@ -1,14 +1,14 @@
 // Quad-tree node classification in fp32 (Moriyama & Harada, "Subdivision of bicubic Bézier
 // patches by a quad-tree"): find the node's split point by rule B, C or D, evaluate the four
 // corners and the split point, run the edge-linearity and flatness tests, decide leaf or split.
-// Compiled as GLSL (shaders/quadtree.comp.glsl) and as C++ (host/mirror/quadtree_mirror.cpp)
+// Compiled as GLSL (shaders/quadtree.comp.glsl) and as C++ (host/quadtree/classify_mirror.cpp)
 // from this one text. Include shared_glsl_cpp.h, layout.h and bicubic_eval.h (and for general
 // patches general_eval.h) first.
 #ifndef TESSERA_QUADTREE_CLASSIFY_H
 #define TESSERA_QUADTREE_CLASSIFY_H
 
 // The patch type and its evaluation. Bicubic by default; quadtree_general.comp.glsl and
-// host/mirror/general_mirror.cpp define these for GeneralPatch (general_eval.h) first, so one
+// host/eval/general_mirror.cpp define these for GeneralPatch (general_eval.h) first, so one
 // text classifies both and the bicubic shader is the very same code as before.
 #ifndef CLASSIFY_PATCH
 #define CLASSIFY_PATCH BicubicPatch

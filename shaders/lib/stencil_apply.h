@@ -1,7 +1,7 @@
-// Applying one stencil of a Loop stencil table (host/loop_stencils.h) in fp32.
+// Applying one stencil of a Loop stencil table (host/loop/stencils.h) in fp32.
 // Compiled twice from this one text: as GLSL in shaders/loop_stencil.comp.glsl, where
 // offsets, indices, weights and values are storage buffers, and as C++ inside the struct of
-// host/mirror/stencil_mirror.cpp, where they are members of the same names. Every component is
+// host/loop/stencil_mirror.cpp, where they are members of the same names. Every component is
 // summed from 0 over the stencil's entries in table order with no fused multiply-add
 // (PRECISE), so lavapipe and the mirror round identically.
 // Include shared_glsl_cpp.h first.

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "io/errors.h"
-#include "patch.h"
+#include "geometry/patch.h"
 
 namespace tessera::fuzz {
 

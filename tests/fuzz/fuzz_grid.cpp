@@ -3,7 +3,7 @@
 #include <sstream>
 
 #include "fuzz_checks.h"
-#include "grid_interpolation.h"
+#include "geometry/grid_interpolation.h"
 #include "io/grid_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

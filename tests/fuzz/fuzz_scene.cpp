@@ -4,7 +4,7 @@
 
 #include "fuzz_checks.h"
 #include "io/scene_reader.h"
-#include "scene_convert.h"
+#include "io/scene_convert.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace tessera;

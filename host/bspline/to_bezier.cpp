@@ -1,0 +1,83 @@
+#include "bspline/to_bezier.h"
+
+#include "bspline/knots.h"
+#include "bspline/oslo.h"
+
+namespace tessera {
+
+namespace {
+
+// Non-empty spans μ (y_μ < y_{μ+1}) of a knot vector already at Bézier multiplicity. The
+// domain of y is [y_p, y_m] = [x_p, x_n]: the inserted copies sit inside the domain.
+std::vector<int> nonEmptySpans(int degree, const std::vector<double>& y) {
+  const int m = static_cast<int>(y.size()) - degree - 1;
+  std::vector<int> spans;
+  for (int mu = degree; mu < m; ++mu) {
+    if (y[static_cast<size_t>(mu)] < y[static_cast<size_t>(mu + 1)]) spans.push_back(mu);
+  }
+  return spans;
+}
+
+}  // namespace
+
+std::vector<double> bezierKnots(int degree, const std::vector<double>& knots) {
+  const int n = static_cast<int>(knots.size()) - degree - 1;
+  validateKnots(degree, n, knots, "bezierKnots");
+  const double lo = knots[static_cast<size_t>(degree)];
+  const double hi = knots[static_cast<size_t>(n)];
+  std::vector<double> inserted;
+  for (size_t k = 0; k < knots.size(); ++k) {
+    const double v = knots[k];
+    if (v < lo || v > hi || (k > 0 && knots[k - 1] == v)) continue;
+    for (int c = knotMultiplicity(knots, v); c < degree; ++c) inserted.push_back(v);
+  }
+  return mergeKnots(knots, inserted);
+}
+
+std::vector<BezierCurvePiece> bezierPieces(const BSplineCurve& curve) {
+  const int p = curve.degree;
+  const BSplineCurve refined = refineCurve(curve, bezierKnots(p, curve.knots));
+  std::vector<BezierCurvePiece> pieces;
+  for (int mu : nonEmptySpans(p, refined.knots)) {
+    BezierCurvePiece piece;
+    piece.curve.degree = p;
+    piece.curve.cp.assign(refined.cp.begin() + (mu - p), refined.cp.begin() + (mu + 1));
+    piece.t0 = refined.knots[static_cast<size_t>(mu)];
+    piece.t1 = refined.knots[static_cast<size_t>(mu + 1)];
+    pieces.push_back(std::move(piece));
+  }
+  return pieces;
+}
+
+std::vector<BezierPatchPiece> bezierPatches(const BSplineSurface& surface) {
+  const int p = surface.degreeU;
+  const int q = surface.degreeV;
+  validateSurface(surface);
+  const BSplineSurface alongU =
+      refineSurface(surface, ParamDirection::U, bezierKnots(p, surface.knotsU));
+  const BSplineSurface refined =
+      refineSurface(alongU, ParamDirection::V, bezierKnots(q, surface.knotsV));
+  const std::vector<int> spansU = nonEmptySpans(p, refined.knotsU);
+  const std::vector<int> spansV = nonEmptySpans(q, refined.knotsV);
+  std::vector<BezierPatchPiece> patches;
+  patches.reserve(spansU.size() * spansV.size());
+  for (int mu : spansU) {
+    for (int nu : spansV) {
+      BezierPatchPiece piece;
+      piece.patch.degreeU = p;
+      piece.patch.degreeV = q;
+      piece.patch.cp.resize(static_cast<size_t>((p + 1) * (q + 1)));
+      for (int i = 0; i <= p; ++i) {
+        for (int j = 0; j <= q; ++j) piece.patch.at(i, j) = refined.at(mu - p + i, nu - q + j);
+      }
+      piece.u0 = refined.knotsU[static_cast<size_t>(mu)];
+      piece.u1 = refined.knotsU[static_cast<size_t>(mu + 1)];
+      piece.v0 = refined.knotsV[static_cast<size_t>(nu)];
+      piece.v1 = refined.knotsV[static_cast<size_t>(nu + 1)];
+      patches.push_back(std::move(piece));
+    }
+  }
+  return patches;
+}
+
+}  // namespace tessera

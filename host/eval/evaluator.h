@@ -1,0 +1,46 @@
+// Point evaluation of patches (bicubic, and general ones: general_patch.h) behind one
+// interface, so tests and tools can swap the backend (as OpenSubdiv's Osd evaluators do):
+// the fp32 mirror (CPU, bit-exact twin of the shader on lavapipe) and Vulkan. The double-precision kernel (bezier.h, surface_normal.h,
+// curvature.h) is the accuracy reference and is used directly.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "geometry/general_patch.h"
+#include "geometry/patch.h"
+#include "shaders/layout.h"
+
+namespace tessera {
+namespace vk {
+class Context;
+}
+
+// ε of docs/conventions.md for fp32 evaluation.
+constexpr float kDegenerateEpsFp32 = 1e-5f;
+
+class PatchEvaluator {
+ public:
+  virtual ~PatchEvaluator() = default;
+  virtual std::string name() const = 0;
+  // One sample per query, in query order. Query patch indices must be < patches.size().
+  virtual std::vector<gpu::EvalSample> evaluate(const std::vector<gpu::BicubicPatch>& patches,
+                                                const std::vector<gpu::EvalQuery>& queries) = 0;
+  // The same for general patches (degree 1..7, polynomial or rational; general_patch.h).
+  virtual std::vector<gpu::EvalSample> evaluateGeneral(
+      const GeneralPatchSet& patches, const std::vector<gpu::EvalQuery>& queries) = 0;
+};
+
+std::unique_ptr<PatchEvaluator> makeMirrorEvaluator();
+// Evaluates on `context`'s device; the context must outlive the evaluator.
+std::unique_ptr<PatchEvaluator> makeVulkanEvaluator(vk::Context& context);
+
+// Converts a degree-3×3 patch to the GPU layout (positions rounded to float).
+// Throws std::invalid_argument for any other degree.
+gpu::BicubicPatch toGpuPatch(const BezierPatch& patch);
+std::vector<gpu::BicubicPatch> toGpuPatches(const std::vector<BezierPatch>& patches);
+
+// Throws std::out_of_range naming the first query whose patch index is out of range.
+void checkQueries(size_t patchCount, const std::vector<gpu::EvalQuery>& queries);
+
+}  // namespace tessera

@@ -1,0 +1,69 @@
+#include "eval/evaluator.h"
+
+#include <stdexcept>
+#include <string>
+
+#include "eval/detail/bicubic_mirror.h"
+#include "eval/general_mirror.h"
+
+namespace tessera {
+
+gpu::BicubicPatch toGpuPatch(const BezierPatch& patch) {
+  if (patch.degreeU != 3 || patch.degreeV != 3 || patch.cp.size() != 16)
+    throw std::invalid_argument("toGpuPatch: expected a bicubic patch, got degree " +
+                                std::to_string(patch.degreeU) + "x" +
+                                std::to_string(patch.degreeV));
+  gpu::BicubicPatch out{};
+  for (int k = 0; k < 16; ++k) out.cp[k] = gpu::vec4(glm::vec3(patch.cp[k]), 1.0f);
+  return out;
+}
+
+std::vector<gpu::BicubicPatch> toGpuPatches(const std::vector<BezierPatch>& patches) {
+  std::vector<gpu::BicubicPatch> out;
+  out.reserve(patches.size());
+  for (const BezierPatch& p : patches) out.push_back(toGpuPatch(p));
+  return out;
+}
+
+void checkQueries(size_t patchCount, const std::vector<gpu::EvalQuery>& queries) {
+  for (size_t i = 0; i < queries.size(); ++i)
+    if (queries[i].patchIndex >= patchCount)
+      throw std::out_of_range("query " + std::to_string(i) + " names patch " +
+                              std::to_string(queries[i].patchIndex) + " of " +
+                              std::to_string(patchCount));
+}
+
+namespace {
+
+class MirrorEvaluator final : public PatchEvaluator {
+ public:
+  std::string name() const override { return "cpu-fp32-mirror"; }
+  std::vector<gpu::EvalSample> evaluate(const std::vector<gpu::BicubicPatch>& patches,
+                                        const std::vector<gpu::EvalQuery>& queries) override {
+    checkQueries(patches.size(), queries);
+    std::vector<gpu::EvalSample> out(queries.size());
+    for (size_t i = 0; i < queries.size(); ++i) {
+      const gpu::EvalQuery& q = queries[i];
+      out[i] = mirror::evalBicubicSample(patches[q.patchIndex], q.u, q.v, kDegenerateEpsFp32);
+    }
+    return out;
+  }
+
+  std::vector<gpu::EvalSample> evaluateGeneral(const GeneralPatchSet& patches,
+                                               const std::vector<gpu::EvalQuery>& queries) override {
+    checkQueries(patches.size(), queries);
+    std::vector<gpu::EvalSample> out(queries.size());
+    for (size_t i = 0; i < queries.size(); ++i) {
+      const gpu::EvalQuery& q = queries[i];
+      out[i] = mirror::evalGeneralSample(patches.patches[q.patchIndex], patches.points.data(),
+                                         q.u, q.v, kDegenerateEpsFp32);
+    }
+    return out;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<PatchEvaluator> makeMirrorEvaluator() { return std::make_unique<MirrorEvaluator>(); }
+
+}  // namespace tessera

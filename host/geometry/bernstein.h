@@ -1,0 +1,64 @@
+// Bernstein polynomials B_i,n(t) = C(n,i) t^i (1−t)^(n−i) for n ≤ kMaxDegree, their
+// derivatives, and the tensor-product sums that every Bézier evaluator in host/ is built on.
+#pragma once
+#include <array>
+
+#include "geometry/patch.h"
+
+namespace tessera {
+
+// C(n, k) for 0 ≤ n ≤ 2·kMaxDegree (exact in double); 0 when k < 0 or k > n.
+double binomial(int n, int k);
+
+// out[i] = B_i,degree(t), i = 0..degree; 0 ≤ degree ≤ kMaxDegree.
+void bernsteinBasis(int degree, double t, double* out);
+
+// out[i] = d^order/dt^order B_i,degree(t), i = 0..degree; all zero when order > degree.
+void bernsteinDerivative(int degree, int order, double t, double* out);
+
+// Every row of the de Casteljau triangle: b[d][i] = B_i,d(t) for d = 0..degree.
+// Derivatives are taken in difference form, d^k/dt^k Σ B_i,n b_i = n!/(n−k)! Σ B_i,n−k Δ^k b_i
+// (Farin, Curves and Surfaces for CAGD, §5.3), which needs the lower rows.
+struct BernsteinTriangle {
+  int degree = 0;
+  std::array<std::array<double, kMaxDegree + 1>, kMaxDegree + 1> b{};
+};
+BernsteinTriangle bernsteinTriangle(int degree, double t);
+
+// n!/(n−k)!: the factor in front of the k-th hodograph.
+double fallingFactorial(int n, int k);
+
+// ∂^(a+b)/∂u^a ∂v^b of Σ_i Σ_j B_i,n(u) B_j,m(v) net[i*(m+1)+j], in difference form.
+// Differences of equal control points are exactly zero, so a collapsed edge gets exactly zero
+// tangents — the degenerate-normal rule (docs/conventions.md) depends on that; summing
+// derivative weights instead leaves rounding noise of size ε·|b|. Point: glm::dvec3 or dvec4;
+// bu and bv are the triangles of degree n at u and m at v.
+template <class Point>
+Point tensorPartial(const Point* net, int n, int m, int a, int b, const BernsteinTriangle& bu,
+                    const BernsteinTriangle& bv) {
+  if (a > n || b > m) return Point(0.0);
+  const int stride = m + 1;
+  std::array<Point, (kMaxDegree + 1) * (kMaxDegree + 1)> diff;
+  for (int k = 0; k < (n + 1) * stride; ++k) diff[k] = net[k];
+  // Repeated first differences in place: exact zero stays exact zero.
+  for (int r = 0; r < a; ++r)
+    for (int i = 0; i < n - r; ++i)
+      for (int j = 0; j <= m; ++j)
+        diff[i * stride + j] = diff[(i + 1) * stride + j] - diff[i * stride + j];
+  for (int r = 0; r < b; ++r)
+    for (int i = 0; i <= n - a; ++i)
+      for (int j = 0; j < m - r; ++j)
+        diff[i * stride + j] = diff[i * stride + j + 1] - diff[i * stride + j];
+
+  const auto& rowU = bu.b[n - a];
+  const auto& rowV = bv.b[m - b];
+  Point sum(0.0);
+  for (int i = 0; i <= n - a; ++i) {
+    Point row(0.0);
+    for (int j = 0; j <= m - b; ++j) row += rowV[j] * diff[i * stride + j];
+    sum += rowU[i] * row;
+  }
+  return (fallingFactorial(n, a) * fallingFactorial(m, b)) * sum;
+}
+
+}  // namespace tessera

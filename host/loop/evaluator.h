@@ -1,0 +1,42 @@
+// Applying Loop stencil tables behind one interface, so tests and tools can swap the backend
+// (OpenSubdiv's Osd evaluators): the CPU in double (the reference), the fp32 mirror (bit-exact
+// twin of the shader on lavapipe) and Vulkan. Each evaluator is built for one table and one row
+// width and keeps what it uploaded; apply() then refines new control data (animation, fitting).
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "loop/stencils.h"
+
+namespace tessera {
+namespace vk {
+class Context;
+}
+
+class StencilEvaluator {
+ public:
+  virtual ~StencilEvaluator() = default;
+  virtual std::string name() const = 0;
+  // rows holds rowCount × width floats: the first sourceRows × width are read, the rest are
+  // written (levels, limit, tangents: see LoopStencils for where each starts).
+  virtual void apply(std::vector<float>& rows) = 0;
+  // Device time of the last apply in seconds where measured (Vulkan timestamps), else 0.
+  virtual double lastDeviceSeconds() const { return 0.0; }
+};
+
+// Double arithmetic, rows rounded to float at the end.
+std::unique_ptr<StencilEvaluator> makeCpuStencilEvaluator(const StencilTable& table,
+                                                          uint32_t width);
+std::unique_ptr<StencilEvaluator> makeMirrorStencilEvaluator(const FloatStencilTable& table,
+                                                             uint32_t width);
+// Uploads the table to `context`'s device; the context must outlive the evaluator. Throws
+// std::length_error when the rows do not fit one storage buffer binding.
+std::unique_ptr<StencilEvaluator> makeVulkanStencilEvaluator(vk::Context& context,
+                                                             const FloatStencilTable& table,
+                                                             uint32_t width);
+
+// Throws std::invalid_argument unless rows.size() == rowCount × width.
+void checkStencilRows(size_t rowCount, uint32_t width, size_t values);
+
+}  // namespace tessera

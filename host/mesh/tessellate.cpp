@@ -1,0 +1,146 @@
+#include "mesh/tessellate.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <unordered_map>
+
+#include "mesh/triangulate.h"
+
+namespace tessera {
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+}
+
+// For each vertex, the first vertex with bit-identical position.
+std::vector<uint32_t> weldIdenticalPositions(const std::vector<glm::vec3>& positions) {
+  struct Hash {
+    size_t operator()(const std::array<uint32_t, 3>& k) const {
+      return (size_t(k[0]) * 73856093u) ^ (size_t(k[1]) * 19349663u) ^ (size_t(k[2]) * 83492791u);
+    }
+  };
+  std::unordered_map<std::array<uint32_t, 3>, uint32_t, Hash> first;
+  std::vector<uint32_t> remap(positions.size());
+  for (uint32_t i = 0; i < positions.size(); ++i) {
+    std::array<uint32_t, 3> key;
+    for (int c = 0; c < 3; ++c) {
+      float x = positions[i][c] == 0.0f ? 0.0f : positions[i][c];
+      std::memcpy(&key[c], &x, sizeof x);
+    }
+    remap[i] = first.emplace(key, i).first->second;
+  }
+  return remap;
+}
+
+}  // namespace
+
+Backend makeCpuBackend() {
+  return {"cpu", makeParallelMirrorClassifier(), makeMirrorEvaluator()};
+}
+
+Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeOptions& options,
+                        Backend& backend) {
+  auto start = std::chrono::steady_clock::now();
+  for (size_t i = 0; i < patches.size(); ++i)
+    validateTessellationPatch(patches[i], "patch " + std::to_string(i));
+  // Bicubic polynomial patches take the BicubicPatch shaders; anything else sends the whole
+  // set through the general ones (a bicubic patch is a general patch too).
+  const bool bicubic = std::all_of(patches.begin(), patches.end(), isBicubicPolynomial);
+  auto t = std::chrono::steady_clock::now();
+  Tessellation result;
+  double treeMs = 0;
+  if (bicubic) {
+    std::vector<gpu::BicubicPatch> gpuPatches = toGpuPatches(patches);
+    QuadtreeResult tree = buildQuadtree(gpuPatches, options, *backend.classifier);
+    treeMs = msSince(t);
+    result = meshFromTree(patches, gpuPatches, std::move(tree), *backend.evaluator);
+  } else {
+    GeneralPatchSet gpuPatches = toGeneralPatchSet(patches);
+    QuadtreeResult tree = buildQuadtree(gpuPatches, options, *backend.classifier);
+    treeMs = msSince(t);
+    result = meshFromTree(patches, gpuPatches, std::move(tree), *backend.evaluator);
+  }
+  result.stats.treeMs = treeMs;
+  result.stats.totalMs = msSince(start);
+  return result;
+}
+
+Tessellation meshFromTree(const std::vector<BezierPatch>& patches,
+                          const std::vector<gpu::BicubicPatch>& gpuPatches, QuadtreeResult tree,
+                          PatchEvaluator& evaluator) {
+  return meshFromTree(patches, std::move(tree), [&](const std::vector<gpu::EvalQuery>& q) {
+    return evaluator.evaluate(gpuPatches, q);
+  });
+}
+
+Tessellation meshFromTree(const std::vector<BezierPatch>& patches,
+                          const GeneralPatchSet& gpuPatches, QuadtreeResult tree,
+                          PatchEvaluator& evaluator) {
+  return meshFromTree(patches, std::move(tree), [&](const std::vector<gpu::EvalQuery>& q) {
+    return evaluator.evaluateGeneral(gpuPatches, q);
+  });
+}
+
+Tessellation meshFromTree(const std::vector<BezierPatch>& patches, QuadtreeResult tree,
+                          const VertexEvaluation& evaluate) {
+  auto start = std::chrono::steady_clock::now();
+  Tessellation result;
+  result.tree = std::move(tree);
+  auto t = std::chrono::steady_clock::now();
+  ParamMesh param = triangulateLeaves(result.tree.leaves, patches);
+  result.stats.triangulateMs = msSince(t);
+
+  t = std::chrono::steady_clock::now();
+  std::vector<gpu::EvalQuery> queries(param.vertices.size());
+  for (size_t i = 0; i < queries.size(); ++i)
+    queries[i] = {param.vertices[i].patchIndex, param.vertices[i].u, param.vertices[i].v, 0};
+  std::vector<gpu::EvalSample> samples = evaluate(queries);
+  result.stats.evaluateMs = msSince(t);
+
+  TriangleMesh& mesh = result.mesh;
+  mesh.positions.resize(samples.size());
+  mesh.normals.resize(samples.size());
+  mesh.uvs.resize(samples.size());
+  mesh.patchIds.resize(samples.size());
+  for (size_t i = 0; i < samples.size(); ++i) {
+    mesh.positions[i] = glm::vec3(samples[i].position);
+    mesh.normals[i] = glm::vec3(samples[i].normalKappa);
+    mesh.uvs[i] = glm::vec2(param.vertices[i].u, param.vertices[i].v);
+    mesh.patchIds[i] = param.vertices[i].patchIndex;
+  }
+  // Welding in the triangulation already dropped triangles with two corners at one vertex.
+  // Distinct vertices can still evaluate to the very same point (a fold, or points a hair
+  // apart): weld those too, so every zero-area triangle goes and its neighbours keep sharing
+  // their edges.
+  std::vector<uint32_t> remap = weldIdenticalPositions(mesh.positions);
+  result.stats.degenerateTrianglesDropped = param.droppedTriangles;
+  mesh.indices.reserve(param.indices.size());
+  for (size_t k = 0; k < param.indices.size(); k += 3) {
+    uint32_t a = remap[param.indices[k]], b = remap[param.indices[k + 1]],
+             c = remap[param.indices[k + 2]];
+    if (a == b || b == c || c == a) {
+      ++result.stats.degenerateTrianglesDropped;
+      continue;
+    }
+    mesh.indices.insert(mesh.indices.end(), {a, b, c});
+    result.trianglePatch.push_back(param.trianglePatch[k / 3]);
+    result.cornerUv.insert(result.cornerUv.end(), param.cornerUv.begin() + k,
+                           param.cornerUv.begin() + k + 3);
+  }
+
+  TessellationStats& s = result.stats;
+  s.patches = patches.size();
+  s.leaves = result.tree.leaves.size();
+  s.depth = result.tree.depth;
+  s.levels = result.tree.levels;
+  s.triangles = mesh.triangleCount();
+  s.vertices = mesh.vertexCount();
+  s.totalMs = msSince(start);
+  return result;
+}
+
+}  // namespace tessera

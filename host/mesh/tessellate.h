@@ -1,0 +1,65 @@
+// The whole job: patches → adaptive quad-tree → triangles → vertices evaluated on the
+// backend → an indexed mesh with positions, normals, (u, v) and patch ids.
+#pragma once
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "eval/evaluator.h"
+#include "mesh/mesh.h"
+#include "geometry/patch.h"
+#include "quadtree/quadtree.h"
+
+namespace tessera {
+
+// A classifier and an evaluator on the same device.
+struct Backend {
+  std::string name;
+  std::unique_ptr<NodeClassifier> classifier;
+  std::unique_ptr<PatchEvaluator> evaluator;
+};
+
+Backend makeCpuBackend();                       // fp32 mirror, all cores for the tree
+Backend makeVulkanBackend(vk::Context& context);
+
+struct TessellationStats {
+  size_t patches = 0, leaves = 0, triangles = 0, vertices = 0;
+  size_t degenerateTrianglesDropped = 0;  // zero-area triangles at collapsed edges
+  uint32_t depth = 0;
+  double treeMs = 0, triangulateMs = 0, evaluateMs = 0, totalMs = 0;
+  std::vector<LevelStats> levels;
+};
+
+struct Tessellation {
+  TriangleMesh mesh;
+  // Per triangle of `mesh`: its patch and its corners' (u, v) on that patch (a welded vertex's
+  // own uv is from one of the patches that share it). What measureDeviation needs.
+  std::vector<uint32_t> trianglePatch;
+  std::vector<glm::vec2> cornerUv;
+  QuadtreeResult tree;
+  TessellationStats stats;
+};
+
+// Takes patches of degree 1..7 each way, polynomial or rational (weights ≥ 0, corner weights
+// > 0): all bicubic polynomial → the BicubicPatch shaders, else the general ones for all.
+// Throws std::invalid_argument naming the patch for one it cannot take
+// (validateTessellationPatch), TessellationLimitError when the node budget is exceeded.
+Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeOptions& options,
+                        Backend& backend);
+
+// The second half of tessellate(): a finished tree → watertight mesh, vertices evaluated by
+// `evaluator` (timings in stats.triangulateMs and stats.evaluateMs).
+Tessellation meshFromTree(const std::vector<BezierPatch>& patches,
+                          const std::vector<gpu::BicubicPatch>& gpuPatches, QuadtreeResult tree,
+                          PatchEvaluator& evaluator);
+Tessellation meshFromTree(const std::vector<BezierPatch>& patches,
+                          const GeneralPatchSet& gpuPatches, QuadtreeResult tree,
+                          PatchEvaluator& evaluator);
+// The same with any evaluation of the vertices' (patch, u, v) queries.
+using VertexEvaluation =
+    std::function<std::vector<gpu::EvalSample>(const std::vector<gpu::EvalQuery>&)>;
+Tessellation meshFromTree(const std::vector<BezierPatch>& patches, QuadtreeResult tree,
+                          const VertexEvaluation& evaluate);
+
+}  // namespace tessera

@@ -1,0 +1,267 @@
+#include "mesh/triangulate.h"
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <map>
+#include <unordered_map>
+
+#include "mesh/shared_edges.h"
+
+namespace tessera {
+namespace {
+
+uint32_t bits(float x) {
+  uint32_t b;
+  std::memcpy(&b, &x, sizeof b);
+  return b;
+}
+
+enum KeyKind : uint32_t { kPatchParam, kEdgeParam, kPosition };
+
+struct VertexKey {
+  uint32_t kind;
+  uint32_t a;  // patch, edge group, or position id
+  uint64_t b;  // (u bits, v bits), canonical t bits, or 0
+  bool operator==(const VertexKey& o) const { return kind == o.kind && a == o.a && b == o.b; }
+};
+
+struct VertexKeyHash {
+  size_t operator()(const VertexKey& k) const {
+    uint64_t h = (uint64_t(k.kind) << 32 | k.a) * 0x9E3779B97F4A7C15ull;
+    return size_t(h ^ (k.b + 0x632BE59BD9B4E019ull + (h << 6) + (h >> 2)));
+  }
+};
+
+// Sorted coordinates of leaf corners on the lines u = const or v = const inside a patch.
+using LineIndex = std::unordered_map<uint64_t, std::vector<float>>;
+uint64_t lineKey(uint32_t patch, float coordinate) { return (uint64_t(patch) << 32) | bits(coordinate); }
+
+void sortUnique(std::vector<float>& values) {
+  std::sort(values.begin(), values.end());
+  values.erase(std::unique(values.begin(), values.end()), values.end());
+}
+
+// Values strictly between lo and hi (lo < hi), ascending.
+void between(const std::vector<float>* values, float lo, float hi, std::vector<float>& out) {
+  out.clear();
+  if (!values) return;
+  auto first = std::upper_bound(values->begin(), values->end(), lo);
+  auto last = std::lower_bound(values->begin(), values->end(), hi);
+  if (first < last) out.assign(first, last);
+}
+
+class Triangulator {
+ public:
+  Triangulator(const std::vector<QuadLeaf>& leaves, const std::vector<BezierPatch>& patches)
+      : leaves_(leaves), patches_(patches), topology_(findSharedEdges(patches)) {
+    mesh_.sharedEdgeGroups = topology_.groupCount;
+    sharedPoints_.resize(topology_.groupCount);
+    // Sized up front: rehashing these maps was a third of the triangulation time.
+    alongU_.reserve(leaves_.size() * 2);
+    alongV_.reserve(leaves_.size() * 2);
+    index_.reserve(leaves_.size() * 3);
+    mesh_.vertices.reserve(leaves_.size() * 3 / 2);
+    mesh_.indices.reserve(leaves_.size() * 8);
+    mesh_.trianglePatch.reserve(leaves_.size() * 8 / 3);
+    mesh_.cornerUv.reserve(leaves_.size() * 8);
+    for (const QuadLeaf& leaf : leaves_) {
+      const gpu::vec4& r = leaf.rect;
+      for (float v : {r.y, r.w})
+        for (float u : {r.x, r.z}) {
+          alongU_[lineKey(leaf.patchIndex, v)].push_back(u);
+          alongV_[lineKey(leaf.patchIndex, u)].push_back(v);
+          int side;
+          float t;
+          if (onSide(u, v, side, t)) {
+            const SideInfo& s = topology_.sides[leaf.patchIndex][side];
+            if (s.group >= 0) sharedPoints_[s.group].push_back(canonical(s, t));
+          }
+        }
+    }
+    for (LineIndex* lines : {&alongU_, &alongV_})
+      for (auto& [key, values] : *lines) sortUnique(values);
+    for (auto& values : sharedPoints_) snapTogether(values);
+  }
+
+  ParamMesh run() {
+    for (const QuadLeaf& leaf : leaves_) triangulateLeaf(leaf);
+    return std::move(mesh_);
+  }
+
+ private:
+  static float canonical(const SideInfo& s, float t) { return s.reversed ? 1.0f - t : t; }
+
+  // The two patches on a shared edge choose their points independently; points closer than
+  // this (in the curve's parameter) are one point. Mirror-image patches (the teapot's spout
+  // halves) put split points 1e-7 apart, which would otherwise give slivers that evaluate to
+  // zero area.
+  static constexpr float kSnap = 1e-6f;
+
+  // Sorted, with runs closer than kSnap replaced by their first value.
+  static void snapTogether(std::vector<float>& values) {
+    std::sort(values.begin(), values.end());
+    std::vector<float> kept;
+    for (float v : values)
+      if (kept.empty() || v - kept.back() > kSnap) kept.push_back(v);
+    values.swap(kept);
+  }
+
+  // The representative of canonical parameter c on group g (c itself if none is near).
+  float snap(int32_t group, float c) const {
+    const std::vector<float>& values = sharedPoints_[group];
+    auto it = std::lower_bound(values.begin(), values.end(), c - kSnap);
+    if (it != values.end() && *it <= c + kSnap) return *it;
+    return c;
+  }
+
+  // Which side of the parameter square (u, v) lies on, and the parameter t along it.
+  static bool onSide(float u, float v, int& side, float& t) {
+    if (v == 0.0f) return side = kSideV0, t = u, true;
+    if (v == 1.0f) return side = kSideV1, t = u, true;
+    if (u == 0.0f) return side = kSideU0, t = v, true;
+    if (u == 1.0f) return side = kSideU1, t = v, true;
+    return false;
+  }
+
+  uint32_t positionId(const glm::dvec3& p) {
+    std::array<uint64_t, 3> key;
+    for (int c = 0; c < 3; ++c) {
+      double x = p[c] == 0.0 ? 0.0 : p[c];
+      std::memcpy(&key[c], &x, sizeof x);
+    }
+    return positions_.emplace(key, uint32_t(positions_.size())).first->second;
+  }
+
+  uint32_t addVertex(const VertexKey& key, uint32_t patch, float u, float v) {
+    auto [it, inserted] = index_.emplace(key, uint32_t(mesh_.vertices.size()));
+    if (inserted) mesh_.vertices.push_back({patch, u, v});
+    return it->second;
+  }
+
+  // The vertex at (u, v) of `patch`, welded with every other patch's vertex at that point.
+  uint32_t vertexAt(uint32_t patch, float u, float v) {
+    const BezierPatch& bp = patches_[patch];
+    bool uEnd = u == 0.0f || u == 1.0f, vEnd = v == 0.0f || v == 1.0f;
+    if (uEnd && vEnd) {
+      const glm::dvec3& corner = bp.at(u == 0.0f ? 0 : bp.degreeU, v == 0.0f ? 0 : bp.degreeV);
+      return addVertex({kPosition, positionId(corner), 0}, patch, u, v);
+    }
+    int side;
+    float t;
+    if (onSide(u, v, side, t)) {
+      const SideInfo& s = topology_.sides[patch][side];
+      if (s.collapsed)
+        return addVertex({kPosition, positionId(sideControlPoints(bp, side)[0]), 0}, patch, u, v);
+      if (s.group >= 0)
+        return addVertex({kEdgeParam, uint32_t(s.group), bits(snap(s.group, canonical(s, t)))},
+                         patch, u, v);
+    }
+    uint64_t uv = (uint64_t(bits(u)) << 32) | bits(v);
+    return addVertex({kPatchParam, patch, uv}, patch, u, v);
+  }
+
+  struct RingVertex {
+    uint32_t index;
+    glm::vec2 uv;  // on the leaf's own patch
+  };
+
+  void push(std::vector<RingVertex>& ring, uint32_t patch, float u, float v) {
+    ring.push_back({vertexAt(patch, u, v), glm::vec2(u, v)});
+  }
+
+  // Appends the vertices strictly inside the leaf edge from t0 to t1 (in ring order) on the
+  // line `fixed` (v = fixed when alongU, else u = fixed).
+  void edgeInterior(uint32_t patch, bool alongU, float fixed, float t0, float t1,
+                    std::vector<RingVertex>& ring) {
+    int side = -1;
+    if (alongU && (fixed == 0.0f || fixed == 1.0f)) side = fixed == 0.0f ? kSideV0 : kSideV1;
+    if (!alongU && (fixed == 0.0f || fixed == 1.0f)) side = fixed == 0.0f ? kSideU0 : kSideU1;
+    auto place = [&](float t) {
+      if (alongU)
+        push(ring, patch, t, fixed);
+      else
+        push(ring, patch, fixed, t);
+    };
+    if (side >= 0) {
+      const SideInfo& s = topology_.sides[patch][side];
+      if (s.collapsed) return;  // every point of it is the same vertex
+      if (s.group >= 0) {
+        // Compare in the shared curve's own parameter, the same on both sides.
+        float c0 = snap(s.group, canonical(s, t0)), c1 = snap(s.group, canonical(s, t1));
+        between(&sharedPoints_[s.group], std::min(c0, c1), std::max(c0, c1), scratch_);
+        if (c0 > c1) std::reverse(scratch_.begin(), scratch_.end());
+        for (float c : scratch_) {
+          float t = s.reversed ? 1.0f - c : c;
+          glm::vec2 uv = alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
+          ring.push_back({addVertex({kEdgeParam, uint32_t(s.group), bits(c)}, patch, uv.x, uv.y), uv});
+        }
+        return;
+      }
+    }
+    const LineIndex& lines = alongU ? alongU_ : alongV_;
+    auto it = lines.find(lineKey(patch, fixed));
+    between(it == lines.end() ? nullptr : &it->second, std::min(t0, t1), std::max(t0, t1), scratch_);
+    if (t0 > t1) std::reverse(scratch_.begin(), scratch_.end());
+    for (float t : scratch_) place(t);
+  }
+
+  void emit(uint32_t patch, const RingVertex& a, const RingVertex& b, const RingVertex& c) {
+    if (a.index == b.index || b.index == c.index || c.index == a.index) {
+      ++mesh_.droppedTriangles;
+      return;
+    }
+    mesh_.indices.insert(mesh_.indices.end(), {a.index, b.index, c.index});
+    mesh_.trianglePatch.push_back(patch);
+    mesh_.cornerUv.insert(mesh_.cornerUv.end(), {a.uv, b.uv, c.uv});
+  }
+
+  void triangulateLeaf(const QuadLeaf& leaf) {
+    const uint32_t p = leaf.patchIndex;
+    const gpu::vec4& r = leaf.rect;
+    ring_.clear();
+    // Counter-clockwise: bottom (v0, u rising), right (u1, v rising), top (v1, u falling),
+    // left (u0, v falling); each edge contributes its start corner and interior vertices.
+    push(ring_, p, r.x, r.y);
+    edgeInterior(p, true, r.y, r.x, r.z, ring_);
+    push(ring_, p, r.z, r.y);
+    edgeInterior(p, false, r.z, r.y, r.w, ring_);
+    push(ring_, p, r.z, r.w);
+    edgeInterior(p, true, r.w, r.z, r.x, ring_);
+    push(ring_, p, r.x, r.w);
+    edgeInterior(p, false, r.x, r.w, r.y, ring_);
+
+    if (ring_.size() == 4) {
+      emit(p, ring_[0], ring_[1], ring_[2]);
+      emit(p, ring_[0], ring_[2], ring_[3]);
+      return;
+    }
+    float us = leaf.split.x, vs = leaf.split.y;
+    if (!(us > r.x && us < r.z && vs > r.y && vs < r.w)) {
+      us = 0.5f * (r.x + r.z);
+      vs = 0.5f * (r.y + r.w);
+    }
+    RingVertex center{vertexAt(p, us, vs), glm::vec2(us, vs)};
+    for (size_t k = 0; k < ring_.size(); ++k) emit(p, center, ring_[k], ring_[(k + 1) % ring_.size()]);
+  }
+
+  const std::vector<QuadLeaf>& leaves_;
+  const std::vector<BezierPatch>& patches_;
+  PatchTopology topology_;
+  LineIndex alongU_, alongV_;
+  std::vector<std::vector<float>> sharedPoints_;  // per group, canonical parameters
+  std::map<std::array<uint64_t, 3>, uint32_t> positions_;
+  std::unordered_map<VertexKey, uint32_t, VertexKeyHash> index_;
+  ParamMesh mesh_;
+  std::vector<RingVertex> ring_;
+  std::vector<float> scratch_;
+};
+
+}  // namespace
+
+ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
+                            const std::vector<BezierPatch>& patches) {
+  return Triangulator(leaves, patches).run();
+}
+
+}  // namespace tessera

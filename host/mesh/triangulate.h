@@ -1,0 +1,40 @@
+// Quad-tree leaves → a watertight triangle mesh (docs/watertight.md).
+// - Inside a patch: every leaf corner is a vertex, and a leaf whose edges carry corners of
+//   finer neighbours is fanned from its split point (an interior point, so the fan is valid),
+//   a leaf with only its 4 corners becomes 2 triangles. Both sides of every edge between
+//   leaves use the same vertices: no cracks, no T-junctions.
+// - Across patches: a boundary shared by two patches (same control points, either direction;
+//   shared_edges.h) carries the union of both sides' vertices, identified by the canonical
+//   parameter along the shared curve, so both sides reference the very same vertices.
+// - Patch corners and collapsed boundaries are welded by their exact control-point position;
+//   triangles that collapse onto an edge are dropped.
+// Vertices are (patch, u, v) only: positions come from an evaluator (GPU or CPU) afterwards.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "geometry/patch.h"
+#include "quadtree/quadtree.h"
+
+namespace tessera {
+
+struct ParamVertex {
+  uint32_t patchIndex;  // the patch it is evaluated on (one of them, for a welded vertex)
+  float u, v;
+};
+
+struct ParamMesh {
+  std::vector<ParamVertex> vertices;
+  std::vector<uint32_t> indices;  // counter-clockwise in (u, v): normals along Pu × Pv
+  // Per triangle, its patch and its corners' (u, v) on that patch: a welded vertex keeps one
+  // patch's (u, v), so measuring a triangle against its own patch needs these.
+  std::vector<uint32_t> trianglePatch;
+  std::vector<glm::vec2> cornerUv;  // 3 per triangle
+  size_t droppedTriangles = 0;    // collapsed by welding (two corners at one vertex)
+  size_t sharedEdgeGroups = 0;    // patch boundaries found shared
+};
+
+ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
+                            const std::vector<BezierPatch>& patches);
+
+}  // namespace tessera

@@ -1,0 +1,93 @@
+// CPU backends of NodeClassifier: the fp32 mirror of the shader, on one thread or on all.
+#include <algorithm>
+#include <chrono>
+#include <thread>
+
+#include "eval/general_mirror.h"
+#include "quadtree/detail/classify_mirror.h"
+#include "quadtree/quadtree.h"
+
+namespace tessera {
+namespace {
+
+gpu::NodeDecision classifyOne(const std::vector<gpu::BicubicPatch>& patches,
+                              const gpu::QuadNode& node, uint32_t rule, int samples,
+                              const gpu::ClassifyPush& params) {
+  return mirror::classifyNode(patches[node.patchIndex], node, rule, samples, params);
+}
+
+gpu::NodeDecision classifyOne(const GeneralPatchSet& patches, const gpu::QuadNode& node,
+                              uint32_t rule, int samples, const gpu::ClassifyPush& params) {
+  return mirror::classifyGeneralNode(patches.patches[node.patchIndex], patches.points.data(),
+                                     node, rule, samples, params);
+}
+
+template <class Patches>
+void classifyRange(const Patches& patches, const std::vector<gpu::QuadNode>& nodes,
+                   uint32_t rule, int samples, const gpu::ClassifyPush& params,
+                   std::vector<gpu::NodeDecision>& decisions, size_t begin, size_t end) {
+  for (size_t i = begin; i < end; ++i)
+    decisions[i] = classifyOne(patches, nodes[i], rule, samples, params);
+}
+
+class MirrorClassifier final : public NodeClassifier {
+ public:
+  explicit MirrorClassifier(unsigned threads) : threads_(std::max(1u, threads)) {}
+
+  std::string name() const override {
+    return threads_ == 1 ? "cpu-fp32" : "cpu-fp32-x" + std::to_string(threads_);
+  }
+
+  void classify(const std::vector<gpu::BicubicPatch>& patches,
+                const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
+                std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) override {
+    run(patches, nodes, options, decisions, stats);
+  }
+
+  void classifyGeneral(const GeneralPatchSet& patches, const std::vector<gpu::QuadNode>& nodes,
+                       const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
+                       LevelStats& stats) override {
+    run(patches, nodes, options, decisions, stats);
+  }
+
+ private:
+  template <class Patches>
+  void run(const Patches& patches, const std::vector<gpu::QuadNode>& nodes,
+           const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
+           LevelStats& stats) {
+    auto start = std::chrono::steady_clock::now();
+    decisions.resize(nodes.size());
+    gpu::ClassifyPush params = classifyParams(options, uint32_t(nodes.size()));
+    uint32_t rule = ruleConstant(options.rule);
+    size_t workers = std::min<size_t>(threads_, (nodes.size() + 255) / 256);
+    if (workers <= 1) {
+      classifyRange(patches, nodes, rule, options.samples, params, decisions, 0, nodes.size());
+    } else {
+      std::vector<std::thread> pool;
+      size_t chunk = (nodes.size() + workers - 1) / workers;
+      for (size_t w = 0; w < workers; ++w) {
+        size_t begin = w * chunk, end = std::min(nodes.size(), begin + chunk);
+        pool.emplace_back(classifyRange<Patches>, std::cref(patches), std::cref(nodes), rule,
+                          options.samples, std::cref(params), std::ref(decisions), begin, end);
+      }
+      for (auto& t : pool) t.join();
+    }
+    stats.classifyMs +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+            .count();
+  }
+
+  unsigned threads_;
+};
+
+}  // namespace
+
+std::unique_ptr<NodeClassifier> makeMirrorClassifier() {
+  return std::make_unique<MirrorClassifier>(1);
+}
+
+std::unique_ptr<NodeClassifier> makeParallelMirrorClassifier() {
+  return std::make_unique<MirrorClassifier>(std::thread::hardware_concurrency());
+}
+
+}  // namespace tessera

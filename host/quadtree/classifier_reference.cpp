@@ -1,0 +1,286 @@
+// The double-precision reference backend of NodeClassifier: the algorithm of
+// shaders/lib/quadtree_classify.h (same samples, same Newton steps, same tests), written
+// again on the independent double kernel (bicubic.h, bezier.h, rational.h, surface_normal.h,
+// curvature.h), so that it checks the shared fp32 text rather than repeating it. Bicubic and
+// general patches (any degree, rational) alike.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "geometry/bezier.h"
+#include "geometry/bicubic.h"
+#include "geometry/curvature.h"
+#include "geometry/rational.h"
+#include "quadtree/quadtree.h"
+#include "geometry/surface_normal.h"
+
+namespace tessera {
+namespace {
+
+using glm::dvec2;
+using glm::dvec3;
+
+constexpr double kEps = 1e-12;  // ε of docs/conventions.md in double
+
+struct Frame {
+  dvec3 tu, tv, n;
+  double kappa;
+};
+
+// One patch as the double kernel evaluates it, built from the fp32 values the GPU sees.
+struct PatchContext {
+  enum Kind { kBicubic, kPolynomial, kRational } kind = kBicubic;
+  BicubicNet net;
+  BezierPatch polynomial;
+  RationalBezierPatch rational;
+  double scale = 0;
+
+  SurfaceDerivatives derivs(double u, double v) const {
+    if (kind == kBicubic) return bicubicDerivatives(net, u, v);
+    if (kind == kPolynomial) return patchDerivatives(polynomial, u, v);
+    return rationalPatchDerivatives(rational, u, v);
+  }
+};
+
+PatchContext generalContext(const GeneralPatchSet& set, size_t index) {
+  const gpu::GeneralPatch& g = set.patches[index];
+  PatchContext c;
+  c.kind = g.rational ? PatchContext::kRational : PatchContext::kPolynomial;
+  const size_t count = size_t(g.degreeU + 1) * size_t(g.degreeV + 1);
+  c.polynomial.degreeU = c.rational.degreeU = int(g.degreeU);
+  c.polynomial.degreeV = c.rational.degreeV = int(g.degreeV);
+  for (size_t k = 0; k < count; ++k) {
+    const glm::dvec4 h(set.points.at(g.firstPoint + k));
+    c.polynomial.cp.push_back(dvec3(h));
+    c.rational.cpw.push_back(h);
+  }
+  c.scale = g.rational ? controlNetDiagonal(c.rational) : controlNetDiagonal(c.polynomial);
+  return c;
+}
+
+dvec3 unitOrZero(const dvec3& v, double tol) {
+  double len = glm::length(v);
+  return len > tol ? v / len : dvec3(0.0);
+}
+
+Frame frameAt(const PatchContext& p, double u, double v) {
+  SurfaceDerivatives d = p.derivs(u, v);
+  Frame f;
+  f.tu = unitOrZero(d.pu, kEps * p.scale);
+  f.tv = unitOrZero(d.pv, kEps * p.scale);
+  f.n = unitNormal(d, u, v, p.scale, kEps);
+  f.kappa = surfaceCurvature(d, p.scale, kEps).kappa;
+  return f;
+}
+
+double kappaAt(const PatchContext& p, double u, double v) {
+  return surfaceCurvature(p.derivs(u, v), p.scale, kEps).kappa;
+}
+
+double angleTest(const dvec3& a, const dvec3& b) {
+  if (glm::dot(a, a) == 0.0 || glm::dot(b, b) == 0.0) return 0.0;
+  return 1.0 - glm::dot(a, b);
+}
+
+struct Rect {
+  double u0, v0, u1, v1;
+  double u(double s) const { return u0 + (u1 - u0) * s; }
+  double v(double t) const { return v0 + (v1 - v0) * t; }
+};
+
+double kappaLocal(const PatchContext& p, const Rect& r, double s, double t) {
+  return kappaAt(p, r.u(s), r.v(t));
+}
+
+void sampledMaxima(const PatchContext& p, const Rect& r, int samples, dvec3& best, dvec3& second) {
+  best = second = dvec3(0.5, 0.5, -1.0);
+  for (int a = 0; a < samples; ++a)
+    for (int b = 0; b < samples; ++b) {
+      double s = double(a + 1) / double(samples + 1), t = double(b + 1) / double(samples + 1);
+      double k = kappaLocal(p, r, s, t);
+      if (k > best.z) {
+        second = best;
+        best = dvec3(s, t, k);
+      } else if (k > second.z) {
+        second = dvec3(s, t, k);
+      }
+    }
+}
+
+constexpr double kGradientStep = 1e-3, kHessianStep = 2e-2;
+
+dvec3 newtonMaximum(const PatchContext& p, const Rect& r, dvec3 seed, int samples) {
+  const double hg = kGradientStep, hh = kHessianStep;
+  dvec2 x(seed.x, seed.y);
+  double kx = seed.z;
+  double radius = 0.5 / double(samples + 1);
+  for (int it = 0; it < gpu::kNewtonIterations; ++it) {
+    double gs = (kappaLocal(p, r, x.x + hg, x.y) - kappaLocal(p, r, x.x - hg, x.y)) / (2 * hg);
+    double gt = (kappaLocal(p, r, x.x, x.y + hg) - kappaLocal(p, r, x.x, x.y - hg)) / (2 * hg);
+    double hss = (kappaLocal(p, r, x.x + hh, x.y) - 2 * kx + kappaLocal(p, r, x.x - hh, x.y)) /
+                 (hh * hh);
+    double htt = (kappaLocal(p, r, x.x, x.y + hh) - 2 * kx + kappaLocal(p, r, x.x, x.y - hh)) /
+                 (hh * hh);
+    double hst = (kappaLocal(p, r, x.x + hh, x.y + hh) - kappaLocal(p, r, x.x + hh, x.y - hh) -
+                  kappaLocal(p, r, x.x - hh, x.y + hh) + kappaLocal(p, r, x.x - hh, x.y - hh)) /
+                 (4 * hh * hh);
+    double det = hss * htt - hst * hst;
+    dvec2 step(gs, gt);
+    if (hss < 0.0 && det > 0.0)
+      step = dvec2(-(htt * gs - hst * gt) / det, -(hss * gt - hst * gs) / det);
+    double slen = glm::length(step);
+    if (slen > radius) step *= radius / slen;
+    dvec2 y = glm::clamp(x + step, dvec2(0.0), dvec2(1.0));
+    double ky = kappaLocal(p, r, y.x, y.y);
+    if (ky > kx) {
+      x = y;
+      kx = ky;
+      radius = std::min(2.0 * radius, 0.25);
+    } else {
+      radius *= 0.25;
+    }
+  }
+  return dvec3(x.x, x.y, kx);
+}
+
+dvec3 boundaryMaximum(const PatchContext& p, const Rect& r, int samples) {
+  dvec3 best(0.5, 0.5, -1.0);
+  int bestEdge = 0;
+  for (int e = 0; e < 4; ++e)
+    for (int a = 0; a < samples; ++a) {
+      double q = double(a + 1) / double(samples + 1);
+      double s = e == 0 ? q : (e == 1 ? 1.0 : (e == 2 ? q : 0.0));
+      double t = e == 0 ? 0.0 : (e == 1 ? q : (e == 2 ? 1.0 : q));
+      double k = kappaLocal(p, r, s, t);
+      if (k > best.z) {
+        best = dvec3(s, t, k);
+        bestEdge = e;
+      }
+    }
+  const double hg = kGradientStep, hh = kHessianStep;
+  dvec2 dir = (bestEdge == 0 || bestEdge == 2) ? dvec2(1, 0) : dvec2(0, 1);
+  dvec2 x(best.x, best.y);
+  double kx = best.z;
+  double radius = 0.5 / double(samples + 1);
+  for (int it = 0; it < gpu::kNewtonIterations; ++it) {
+    double g = (kappaLocal(p, r, x.x + hg * dir.x, x.y + hg * dir.y) -
+                kappaLocal(p, r, x.x - hg * dir.x, x.y - hg * dir.y)) /
+               (2 * hg);
+    double h2 = (kappaLocal(p, r, x.x + hh * dir.x, x.y + hh * dir.y) - 2 * kx +
+                 kappaLocal(p, r, x.x - hh * dir.x, x.y - hh * dir.y)) /
+                (hh * hh);
+    double step = std::clamp(h2 < 0.0 ? -g / h2 : g, -radius, radius);
+    dvec2 y = glm::clamp(x + step * dir, dvec2(0.0), dvec2(1.0));
+    double ky = kappaLocal(p, r, y.x, y.y);
+    if (ky > kx) {
+      x = y;
+      kx = ky;
+      radius = std::min(2.0 * radius, 0.25);
+    } else {
+      radius *= 0.25;
+    }
+  }
+  return dvec3(x.x, x.y, kx);
+}
+
+dvec2 splitPointLocal(const PatchContext& p, const Rect& r, SplitRule rule, int samples) {
+  if (rule == SplitRule::Midpoint) return dvec2(0.5);
+  dvec3 best, second;
+  sampledMaxima(p, r, samples, best, second);
+  if (rule == SplitRule::TrueMax) {
+    for (dvec3 c : {newtonMaximum(p, r, best, samples), newtonMaximum(p, r, second, samples),
+                    boundaryMaximum(p, r, samples)})
+      if (c.z > best.z) best = c;
+  }
+  if (!(best.z > 0.0)) return dvec2(0.5);
+  double m = gpu::kSplitMargin;
+  return glm::clamp(dvec2(best.x, best.y), dvec2(m), dvec2(1.0 - m));
+}
+
+gpu::NodeDecision classifyNode(const PatchContext& p, const gpu::QuadNode& node,
+                               const QuadtreeOptions& o) {
+  Rect r{node.rect.x, node.rect.y, node.rect.z, node.rect.w};
+  dvec2 local = splitPointLocal(p, r, o.rule, o.samples);
+  double us = r.u(local.x), vs = r.v(local.y);
+  Frame c0 = frameAt(p, r.u0, r.v0), c1 = frameAt(p, r.u1, r.v0);
+  Frame c2 = frameAt(p, r.u1, r.v1), c3 = frameAt(p, r.u0, r.v1);
+  Frame sp = frameAt(p, us, vs);
+  double lin = std::max({angleTest(c0.tu, c1.tu), angleTest(c1.tv, c2.tv),
+                         angleTest(c3.tu, c2.tu), angleTest(c0.tv, c3.tv)});
+  double flat = std::max({angleTest(c0.n, c1.n), angleTest(c1.n, c2.n), angleTest(c2.n, c3.n),
+                          angleTest(c3.n, c0.n), angleTest(c0.n, sp.n), angleTest(c1.n, sp.n),
+                          angleTest(c2.n, sp.n), angleTest(c3.n, sp.n)});
+  gpu::NodeDecision d{};
+  d.split = gpu::vec4(float(us), float(vs), float(sp.kappa), 0.0f);
+  d.linearity = float(lin);
+  d.flatness = float(flat);
+  if (lin < o.linearity && flat < o.flatness)
+    d.cause = gpu::kCauseFlat;
+  else if (node.level >= o.maxDepth)
+    d.cause = gpu::kCauseMaxDepth;
+  else if (std::min(r.u1 - r.u0, r.v1 - r.v0) < o.minSize)
+    d.cause = gpu::kCauseMinSize;
+  else
+    d.cause = gpu::kCauseSplit;
+  return d;
+}
+
+class ReferenceClassifier final : public NodeClassifier {
+ public:
+  std::string name() const override { return "cpu-double"; }
+
+  void beginTree(const std::vector<gpu::BicubicPatch>& patches) override {
+    contexts_.assign(patches.size(), PatchContext());
+    for (size_t i = 0; i < patches.size(); ++i) {
+      BezierPatch bp;
+      bp.cp.resize(16);
+      for (int k = 0; k < 16; ++k) {
+        contexts_[i].net[k] = dvec3(glm::vec3(patches[i].cp[k]));
+        bp.cp[k] = contexts_[i].net[k];
+      }
+      contexts_[i].scale = controlNetDiagonal(bp);
+    }
+  }
+
+  void beginGeneralTree(const GeneralPatchSet& patches) override {
+    contexts_.clear();
+    for (size_t i = 0; i < patches.size(); ++i) contexts_.push_back(generalContext(patches, i));
+  }
+
+  void classify(const std::vector<gpu::BicubicPatch>& patches,
+                const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
+                std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) override {
+    run(patches.size(), nodes, options, decisions, stats);
+  }
+
+  void classifyGeneral(const GeneralPatchSet& patches, const std::vector<gpu::QuadNode>& nodes,
+                       const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
+                       LevelStats& stats) override {
+    run(patches.size(), nodes, options, decisions, stats);
+  }
+
+ private:
+  void run(size_t patchCount, const std::vector<gpu::QuadNode>& nodes,
+           const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
+           LevelStats& stats) {
+    if (contexts_.size() != patchCount)
+      throw std::logic_error("ReferenceClassifier: classify() without beginTree()");
+    auto start = std::chrono::steady_clock::now();
+    decisions.resize(nodes.size());
+    for (size_t i = 0; i < nodes.size(); ++i)
+      decisions[i] = classifyNode(contexts_[nodes[i].patchIndex], nodes[i], options);
+    stats.classifyMs +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+            .count();
+  }
+
+  std::vector<PatchContext> contexts_;
+};
+
+}  // namespace
+
+std::unique_ptr<NodeClassifier> makeReferenceClassifier() {
+  return std::make_unique<ReferenceClassifier>();
+}
+
+}  // namespace tessera

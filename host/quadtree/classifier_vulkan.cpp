@@ -1,0 +1,133 @@
+// The Vulkan backend of NodeClassifier: one dispatch of shaders/quadtree.comp.glsl (bicubic)
+// or quadtree_general.comp.glsl (general patches) per level. Pipelines are made once per
+// (shader, rule, S) and buffers grow and are kept between levels.
+#include <chrono>
+#include <cstdint>  // before the generated SPIR-V array, which uses uint32_t
+#include <map>
+#include <tuple>
+#include <stdexcept>
+#include <utility>
+
+#include "quadtree/quadtree.h"
+#include "quadtree_comp.h"
+#include "quadtree_general_comp.h"
+#include "vk/buffer.h"
+#include "vk/pipeline.h"
+
+namespace tessera {
+namespace {
+
+class VulkanClassifier final : public NodeClassifier {
+ public:
+  explicit VulkanClassifier(vk::Context& context) : context_(context), timer_(context, 2) {}
+
+  std::string name() const override { return "vulkan:" + context_.info().name; }
+
+  // Every buffer is bound whole as one storage buffer, so none may exceed the device's
+  // maxStorageBufferRange (128 MiB on lavapipe): nodes and decisions are 32 bytes each.
+  size_t maxBatchNodes() const override {
+    return size_t(context_.info().maxStorageBufferRange) /
+           std::max(sizeof(gpu::QuadNode), sizeof(gpu::NodeDecision));
+  }
+  size_t maxPatchBufferBytes() const override {
+    return size_t(context_.info().maxStorageBufferRange);
+  }
+
+  void classify(const std::vector<gpu::BicubicPatch>& patches,
+                const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
+                std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) override {
+    if (uploaded_count_ != patches.size() || uploadedGeneral_)
+      throw std::logic_error("VulkanClassifier: classify() without beginTree() for these patches");
+    run(false, {&patches_, &nodes_, &decisions_}, nodes, options, decisions, stats);
+  }
+
+  void classifyGeneral(const GeneralPatchSet& patches, const std::vector<gpu::QuadNode>& nodes,
+                       const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
+                       LevelStats& stats) override {
+    if (uploaded_count_ != patches.size() || !uploadedGeneral_)
+      throw std::logic_error(
+          "VulkanClassifier: classifyGeneral() without beginGeneralTree() for these patches");
+    run(true, {&patches_, &nodes_, &decisions_, &points_}, nodes, options, decisions, stats);
+  }
+
+  void beginTree(const std::vector<gpu::BicubicPatch>& patches) override {
+    uploaded_count_ = patches.size();
+    uploadedGeneral_ = false;
+    if (patches.empty()) return;
+    vk::ensureCapacity(context_, patches_, patches.size() * sizeof(gpu::BicubicPatch),
+                       vk::BufferUse::Upload);
+    patches_.upload(patches);
+  }
+
+  void beginGeneralTree(const GeneralPatchSet& patches) override {
+    uploaded_count_ = patches.size();
+    uploadedGeneral_ = true;
+    if (patches.patches.empty()) return;
+    vk::ensureCapacity(context_, patches_, patches.patches.size() * sizeof(gpu::GeneralPatch),
+                       vk::BufferUse::Upload);
+    vk::ensureCapacity(context_, points_, patches.points.size() * sizeof(gpu::vec4),
+                       vk::BufferUse::Upload);
+    patches_.upload(patches.patches);
+    points_.upload(patches.points);
+  }
+
+ private:
+  void run(bool general, std::initializer_list<const vk::Buffer*> buffers,
+           const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
+           std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) {
+    auto start = std::chrono::steady_clock::now();
+    decisions.resize(nodes.size());
+    if (nodes.empty()) return;
+    vk::ComputePipeline& pipeline = pipelineFor(general, ruleConstant(options.rule), options.samples);
+    vk::ensureCapacity(context_, nodes_, nodes.size() * sizeof(gpu::QuadNode),
+                       vk::BufferUse::Upload);
+    vk::ensureCapacity(context_, decisions_, nodes.size() * sizeof(gpu::NodeDecision),
+                       vk::BufferUse::Readback);
+    nodes_.upload(nodes);
+    gpu::ClassifyPush push = classifyParams(options, uint32_t(nodes.size()));
+    context_.submitAndWait([&](VkCommandBuffer cmd) {
+      timer_.reset(cmd);
+      timer_.mark(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+      pipeline.dispatch(cmd, buffers, &push, push.nodeCount);
+      timer_.mark(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
+      vk::computeToHostBarrier(context_, cmd);
+    });
+    decisions_.download(decisions.data(), nodes.size() * sizeof(gpu::NodeDecision));
+    auto intervals = timer_.intervalsNs();
+    if (!intervals.empty()) stats.gpuMs += intervals[0] * 1e-6;
+    stats.classifyMs +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+            .count();
+  }
+
+  vk::ComputePipeline& pipelineFor(bool general, uint32_t rule, int samples) {
+    auto key = std::make_tuple(general, rule, samples);
+    auto it = pipelines_.find(key);
+    if (it == pipelines_.end()) {
+      vk::ComputePipelineDesc desc{general ? "quadtree_general.comp" : "quadtree.comp",
+                                   general ? kSpirv_quadtree_general_comp : kSpirv_quadtree_comp,
+                                   general ? sizeof(kSpirv_quadtree_general_comp)
+                                           : sizeof(kSpirv_quadtree_comp),
+                                   general ? 4u : 3u,
+                                   sizeof(gpu::ClassifyPush),
+                                   {{0, rule}, {1, uint32_t(samples)}}};
+      it = pipelines_.emplace(key, std::make_unique<vk::ComputePipeline>(context_, desc)).first;
+    }
+    return *it->second;
+  }
+
+  vk::Context& context_;
+  vk::GpuTimer timer_;
+  std::map<std::tuple<bool, uint32_t, int>, std::unique_ptr<vk::ComputePipeline>> pipelines_;
+  vk::Buffer patches_, nodes_, decisions_, points_;
+  size_t uploaded_count_ = 0;
+  bool uploadedGeneral_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<NodeClassifier> makeVulkanClassifier(vk::Context& context) {
+  return std::make_unique<VulkanClassifier>(context);
+}
+
+}  // namespace tessera

@@ -1,0 +1,22 @@
+#include "quadtree/detail/classify_mirror.h"
+
+#include "common/glsl_builtins.h"
+
+namespace tessera::mirror {
+namespace glsl {
+namespace {  // each mirror translation unit gets its own copy of the shared functions
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"  // the point-evaluation entry is unused here
+#include "shaders/lib/shared_glsl_cpp.h"
+#include "shaders/lib/bicubic_eval.h"
+#include "shaders/lib/quadtree_classify.h"
+#pragma GCC diagnostic pop
+}  // namespace
+}  // namespace glsl
+
+gpu::NodeDecision classifyNode(const gpu::BicubicPatch& patch, const gpu::QuadNode& node,
+                               uint32_t rule, int samples, const gpu::ClassifyPush& params) {
+  return glsl::classifyNode(patch, node, rule, samples, params);
+}
+
+}  // namespace tessera::mirror

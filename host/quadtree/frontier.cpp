@@ -1,0 +1,319 @@
+// The level-synchronous frontier of the adaptive quad-tree (CPU side).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <unordered_map>
+
+#include "eval/evaluator.h"
+#include "geometry/general_patch.h"
+#include "quadtree/quadtree.h"
+
+namespace tessera {
+namespace {
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+void validateOptions(const QuadtreeOptions& o) {
+  auto positiveFinite = [](float x) { return std::isfinite(x) && x > 0.0f; };
+  if (!positiveFinite(o.linearity) || !positiveFinite(o.flatness))
+    throw std::invalid_argument("linearity and flatness must be finite and > 0");
+  if (!(o.minSize >= 0.0f) || !std::isfinite(o.minSize))
+    throw std::invalid_argument("the minimum node size must be finite and >= 0");
+  // Paths keep 2 bits per level in 64 bits; fp32 parameters stop resolving long before.
+  if (o.maxDepth > 24) throw std::invalid_argument("the maximum depth is at most 24");
+  if (o.samples < 1 || o.samples > 32)
+    throw std::invalid_argument("the sample count S of rules C and D must be 1..32");
+  if (o.gridU < 1 || o.gridV < 1 || o.gridU > 4096 || o.gridV > 4096)
+    throw std::invalid_argument("the uniform grid of rule A must be 1..4096 cells per side");
+  if (o.nodeBudget == 0) throw std::invalid_argument("the node budget must be > 0");
+}
+
+QuadtreeResult uniformGrid(size_t patchCount, const QuadtreeOptions& o) {
+  QuadtreeResult result;
+  size_t cells = size_t(o.gridU) * size_t(o.gridV);
+  if (patchCount * cells > o.nodeBudget)
+    throw TessellationLimitError("rule A: " + std::to_string(patchCount) + " patches × " +
+                                 std::to_string(cells) + " cells exceed the node budget of " +
+                                 std::to_string(o.nodeBudget));
+  result.leaves.reserve(patchCount * cells);
+  for (uint32_t p = 0; p < patchCount; ++p)
+    for (int i = 0; i < o.gridU; ++i)
+      for (int j = 0; j < o.gridV; ++j) {
+        QuadLeaf leaf{};
+        leaf.rect = gpu::vec4(float(i) / float(o.gridU), float(j) / float(o.gridV),
+                              float(i + 1) / float(o.gridU), float(j + 1) / float(o.gridV));
+        leaf.patchIndex = p;
+        leaf.cause = gpu::kCauseUniform;
+        leaf.path = uint64_t(i) * uint64_t(o.gridV) + uint64_t(j);
+        leaf.split = gpu::vec2(0.5f * (leaf.rect.x + leaf.rect.z), 0.5f * (leaf.rect.y + leaf.rect.w));
+        result.leaves.push_back(leaf);
+      }
+  LevelStats stats;
+  stats.nodes = stats.leaves = result.leaves.size();
+  result.levels.push_back(stats);
+  return result;
+}
+
+[[noreturn]] void throwBudgetExceeded(const std::vector<gpu::QuadNode>& next, uint32_t level,
+                                      size_t total, size_t budget) {
+  std::unordered_map<uint32_t, size_t> perPatch;
+  for (const auto& n : next) ++perPatch[n.patchIndex];
+  auto worst = std::max_element(perPatch.begin(), perPatch.end(),
+                                [](const auto& a, const auto& b) { return a.second < b.second; });
+  throw TessellationLimitError(
+      "node budget of " + std::to_string(budget) + " exceeded at level " +
+      std::to_string(level + 1) + " (" + std::to_string(total) + " nodes); patch " +
+      std::to_string(worst->first) + " alone has " + std::to_string(worst->second) +
+      " nodes there. Raise the thresholds, lower the maximum depth, or raise the budget.");
+}
+
+}  // namespace
+
+SplitRule parseSplitRule(const std::string& name) {
+  if (name == "A" || name == "a" || name == "uniform") return SplitRule::UniformGrid;
+  if (name == "B" || name == "b" || name == "midpoint") return SplitRule::Midpoint;
+  if (name == "C" || name == "c" || name == "sampled") return SplitRule::SampledMax;
+  if (name == "D" || name == "d" || name == "true") return SplitRule::TrueMax;
+  throw std::invalid_argument("unknown split rule '" + name + "' (expected A, B, C or D)");
+}
+
+char splitRuleLetter(SplitRule rule) { return "ABCD"[static_cast<int>(rule)]; }
+
+uint32_t ruleConstant(SplitRule rule) {
+  switch (rule) {
+    case SplitRule::SampledMax: return gpu::kSplitRuleSampledMax;
+    case SplitRule::TrueMax: return gpu::kSplitRuleTrueMax;
+    default: return gpu::kSplitRuleMidpoint;
+  }
+}
+
+gpu::ClassifyPush classifyParams(const QuadtreeOptions& o, uint32_t nodeCount) {
+  return {o.linearity, o.flatness, o.minSize, kDegenerateEpsFp32, o.maxDepth, nodeCount, 0, 0};
+}
+
+size_t frontierBatchNodes(const QuadtreeOptions& options, size_t classifierLimit) {
+  // Held at the peak: ≤ 3 waiting batches for each level 1..maxDepth, the batch in flight
+  // (with its decisions) and its ≤ 4 batches of children.
+  const size_t bytesPerBatchNode =
+      kFrontierBytesPerNode * (3 * size_t(options.maxDepth) + 5) + sizeof(gpu::NodeDecision);
+  const size_t byBudget = options.frontierBudgetBytes / bytesPerBatchNode;
+  if (byBudget < 1)
+    throw std::invalid_argument("the frontier budget of " +
+                                std::to_string(options.frontierBudgetBytes) +
+                                " bytes holds no batch: at least " +
+                                std::to_string(bytesPerBatchNode) + " bytes are needed at depth " +
+                                std::to_string(options.maxDepth));
+  return std::max<size_t>(1, std::min(byBudget, classifierLimit));
+}
+
+namespace {
+
+// The classifier's entry points for each patch representation.
+void beginTree(NodeClassifier& c, const std::vector<gpu::BicubicPatch>& p) { c.beginTree(p); }
+void beginTree(NodeClassifier& c, const GeneralPatchSet& p) { c.beginGeneralTree(p); }
+void classifyLevel(NodeClassifier& c, const std::vector<gpu::BicubicPatch>& p,
+                   const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& o,
+                   std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) {
+  c.classify(p, nodes, o, decisions, stats);
+}
+void classifyLevel(NodeClassifier& c, const GeneralPatchSet& p,
+                   const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& o,
+                   std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) {
+  c.classifyGeneral(p, nodes, o, decisions, stats);
+}
+
+// Patch groups: the patches one tree may take at once (what the classifier's patch buffer
+// holds, and no more roots than one batch). Usually one group, the whole set, uncopied.
+size_t patchBytes(const std::vector<gpu::BicubicPatch>& patches, size_t first, size_t last) {
+  (void)patches;
+  return (last - first) * sizeof(gpu::BicubicPatch);
+}
+size_t patchBytes(const GeneralPatchSet& set, size_t first, size_t last) {
+  size_t points = 0;
+  for (size_t p = first; p < last; ++p)
+    points += size_t(set.patches[p].degreeU + 1) * size_t(set.patches[p].degreeV + 1);
+  return std::max((last - first) * sizeof(gpu::GeneralPatch), points * sizeof(gpu::vec4));
+}
+std::vector<gpu::BicubicPatch> patchSubset(const std::vector<gpu::BicubicPatch>& patches,
+                                           size_t first, size_t last) {
+  return {patches.begin() + long(first), patches.begin() + long(last)};
+}
+GeneralPatchSet patchSubset(const GeneralPatchSet& set, size_t first, size_t last) {
+  GeneralPatchSet subset;
+  for (size_t p = first; p < last; ++p) {
+    gpu::GeneralPatch patch = set.patches[p];
+    const size_t count = size_t(patch.degreeU + 1) * size_t(patch.degreeV + 1);
+    const auto begin = set.points.begin() + long(patch.firstPoint);
+    patch.firstPoint = uint32_t(subset.points.size());
+    subset.points.insert(subset.points.end(), begin, begin + long(count));
+    subset.patches.push_back(patch);
+  }
+  return subset;
+}
+
+// Nodes of one level waiting for the classifier, with their paths.
+struct Batch {
+  uint32_t level = 0;
+  std::vector<gpu::QuadNode> nodes;
+  std::vector<uint64_t> paths;
+};
+
+// Pushes `nodes` as batches of at most `batchNodes`, the first on top (so it runs next).
+void pushBatches(std::vector<Batch>& stack, uint32_t level, std::vector<gpu::QuadNode>& nodes,
+                 std::vector<uint64_t>& paths, size_t batchNodes) {
+  const size_t count = (nodes.size() + batchNodes - 1) / batchNodes;
+  for (size_t k = count; k-- > 0;) {
+    const size_t first = k * batchNodes, last = std::min(nodes.size(), first + batchNodes);
+    Batch batch;
+    batch.level = level;
+    if (count == 1) {
+      batch.nodes.swap(nodes);
+      batch.paths.swap(paths);
+    } else {
+      batch.nodes.assign(nodes.begin() + long(first), nodes.begin() + long(last));
+      batch.paths.assign(paths.begin() + long(first), paths.begin() + long(last));
+    }
+    stack.push_back(std::move(batch));
+  }
+  nodes.clear();
+  paths.clear();
+}
+
+void addLevelStats(LevelStats& total, const LevelStats& batch) {
+  total.nodes += batch.nodes;
+  total.splits += batch.splits;
+  total.leaves += batch.leaves;
+  total.classifyMs += batch.classifyMs;
+  total.gpuMs += batch.gpuMs;
+  total.frontierMs += batch.frontierMs;
+}
+
+// One tree over `patches` (a group; leaves name patch firstPatch + local index). Levels are
+// classified whole while they fit in a batch — the level-synchronous algorithm of the paper —
+// and split into batches taken depth first when they do not, which bounds the frontier.
+template <class Patches>
+void buildGroupTree(const Patches& patches, uint32_t firstPatch, const QuadtreeOptions& options,
+                    NodeClassifier& classifier, size_t batchNodes, size_t& total,
+                    QuadtreeResult& result) {
+  std::vector<gpu::QuadNode> roots;
+  std::vector<uint64_t> rootPaths;
+  for (uint32_t p = 0; p < patches.size(); ++p) {
+    roots.push_back({gpu::vec4(0.0f, 0.0f, 1.0f, 1.0f), p, 0, 0, 0});
+    rootPaths.push_back(0);
+  }
+  beginTree(classifier, patches);
+  std::vector<Batch> stack;
+  size_t waiting = roots.size();  // nodes in `stack`
+  pushBatches(stack, 0, roots, rootPaths, batchNodes);
+  std::vector<gpu::NodeDecision> decisions;
+  std::vector<gpu::QuadNode> next;
+  std::vector<uint64_t> nextPaths;
+  while (!stack.empty()) {
+    Batch batch = std::move(stack.back());
+    stack.pop_back();
+    waiting -= batch.nodes.size();
+    const uint32_t level = batch.level;
+    LevelStats stats;
+    stats.level = level;
+    stats.nodes = batch.nodes.size();
+    classifyLevel(classifier, patches, batch.nodes, options, decisions, stats);
+    ++result.batches;
+
+    auto start = std::chrono::steady_clock::now();
+    next.clear();
+    nextPaths.clear();
+    for (size_t i = 0; i < batch.nodes.size(); ++i) {
+      const gpu::QuadNode& n = batch.nodes[i];
+      const gpu::NodeDecision& d = decisions[i];
+      float us = d.split.x, vs = d.split.y;
+      uint32_t cause = d.cause;
+      // A split point that does not fall strictly inside (fp32 ran out of resolution)
+      // would make empty children: end the node here instead.
+      if (cause == gpu::kCauseSplit &&
+          !(us > n.rect.x && us < n.rect.z && vs > n.rect.y && vs < n.rect.w))
+        cause = gpu::kCauseMinSize;
+      if (cause != gpu::kCauseSplit) {
+        result.leaves.push_back({n.rect, firstPatch + n.patchIndex, level, cause, batch.paths[i],
+                                 d.linearity, d.flatness, gpu::vec2(us, vs)});
+        result.depth = std::max(result.depth, level);
+        ++stats.leaves;
+        continue;
+      }
+      ++stats.splits;
+      const gpu::vec4 r = n.rect;
+      const gpu::vec4 children[4] = {{r.x, r.y, us, vs}, {us, r.y, r.z, vs},
+                                     {r.x, vs, us, r.w}, {us, vs, r.z, r.w}};
+      for (uint64_t q = 0; q < 4; ++q) {
+        next.push_back({children[q], n.patchIndex, level + 1, 0, 0});
+        nextPaths.push_back(batch.paths[i] | (q << (2 * level)));
+      }
+    }
+    total += next.size();
+    if (total > options.nodeBudget) {
+      for (auto& n : next) n.patchIndex += firstPatch;  // name the patch as the caller knows it
+      throwBudgetExceeded(next, level, total, options.nodeBudget);
+    }
+    result.peakFrontierNodes =
+        std::max(result.peakFrontierNodes, waiting + batch.nodes.size() + next.size());
+    waiting += next.size();
+    pushBatches(stack, level + 1, next, nextPaths, batchNodes);
+    stats.frontierMs = millisecondsSince(start);
+    if (result.levels.size() <= level) result.levels.resize(level + 1);
+    result.levels[level].level = level;
+    addLevelStats(result.levels[level], stats);
+    if (options.onLevel) options.onLevel(result.levels[level]);
+  }
+}
+
+template <class Patches>
+QuadtreeResult buildTree(const Patches& patches, const QuadtreeOptions& options,
+                         NodeClassifier& classifier) {
+  validateOptions(options);
+  if (options.rule == SplitRule::UniformGrid) return uniformGrid(patches.size(), options);
+  if (patches.size() > options.nodeBudget)
+    throw TessellationLimitError(std::to_string(patches.size()) +
+                                 " patches exceed the node budget of " +
+                                 std::to_string(options.nodeBudget));
+
+  const size_t batchNodes = frontierBatchNodes(options, classifier.maxBatchNodes());
+  const size_t bufferBytes = classifier.maxPatchBufferBytes();
+  QuadtreeResult result;
+  size_t total = 0;
+  for (size_t first = 0; first < patches.size();) {
+    size_t last = first + 1;
+    while (last < patches.size() && last - first < batchNodes &&
+           patchBytes(patches, first, last + 1) <= bufferBytes)
+      ++last;
+    if (patchBytes(patches, first, last) > bufferBytes)
+      throw TessellationLimitError("patch " + std::to_string(first) + " alone needs " +
+                                   std::to_string(patchBytes(patches, first, last)) +
+                                   " bytes, more than the device's largest storage buffer (" +
+                                   std::to_string(bufferBytes) + " bytes)");
+    total += last - first;
+    ++result.patchGroups;
+    if (first == 0 && last == patches.size())
+      buildGroupTree(patches, 0, options, classifier, batchNodes, total, result);
+    else
+      buildGroupTree(patchSubset(patches, first, last), uint32_t(first), options, classifier,
+                     batchNodes, total, result);
+    first = last;
+  }
+  return result;
+}
+
+}  // namespace
+
+QuadtreeResult buildQuadtree(const std::vector<gpu::BicubicPatch>& patches,
+                             const QuadtreeOptions& options, NodeClassifier& classifier) {
+  return buildTree(patches, options, classifier);
+}
+
+QuadtreeResult buildQuadtree(const GeneralPatchSet& patches, const QuadtreeOptions& options,
+                             NodeClassifier& classifier) {
+  return buildTree(patches, options, classifier);
+}
+
+}  // namespace tessera

@@ -1,0 +1,131 @@
+// Adaptive quad-tree tessellation of Bézier patches (Moriyama & Harada): bicubic ones on a
+// fast path, general ones (degree 1..7, rational) through the same algorithm.
+// The CPU owns the frontier: each level's nodes go to a NodeClassifier (GPU or CPU) in one
+// batch; the decisions come back; leaves are emitted and the children of split nodes form the
+// next level. Split rules: A uniform N×M grid, B midpoint, C sampled κ maximum, D true κ
+// maximum (docs/quadtree.md).
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "geometry/general_patch.h"
+#include "shaders/layout.h"
+
+namespace tessera {
+namespace vk {
+class Context;
+}
+
+enum class SplitRule { UniformGrid, Midpoint, SampledMax, TrueMax };  // A, B, C, D
+
+// Parses "A".."D" (or "uniform", "midpoint", "sampled", "true"); throws std::invalid_argument.
+SplitRule parseSplitRule(const std::string& name);
+char splitRuleLetter(SplitRule rule);
+
+struct LevelStats {
+  uint32_t level = 0;
+  size_t nodes = 0, splits = 0, leaves = 0;
+  double classifyMs = 0;  // the classifier: GPU dispatch + transfers, or CPU work
+  double gpuMs = 0;       // GPU time of the dispatch by timestamps (0 on CPU backends)
+  double frontierMs = 0;  // host: emitting leaves and building the next level
+};
+
+struct QuadtreeOptions {
+  SplitRule rule = SplitRule::Midpoint;
+  float linearity = 0.1f;          // leaf when every 1 − Ti·Tj < linearity ...
+  float flatness = 0.1f;           // ... and every 1 − Ni·Nj < flatness
+  uint32_t maxDepth = 12;          // nodes at this depth are leaves
+  float minSize = 1.0f / 65536.0f; // nodes narrower than this (in u or v) are leaves
+  int samples = 5;                 // S of rules C and D
+  int gridU = 8, gridV = 8;        // N×M of rule A
+  size_t nodeBudget = 1u << 24;    // most nodes in the tree, all levels together
+  // Most bytes the frontier may hold at once: nodes waiting for classification, the batch in
+  // flight with its decisions, and that batch's children. A level larger than that is
+  // classified in batches, depth first (docs/quadtree.md, "Bounded frontier").
+  size_t frontierBudgetBytes = size_t(256) << 20;
+  // Called after each level (for progress display); may be empty.
+  std::function<void(const LevelStats&)> onLevel;
+};
+
+// One leaf: the node rectangle, its depth, why it ended, the split point and test values its
+// classification found (the split point is where the node would have been split).
+struct QuadLeaf {
+  gpu::vec4 rect;  // u0, v0, u1, v1
+  uint32_t patchIndex;
+  uint32_t level;
+  uint32_t cause;  // gpu::kCause*
+  uint64_t path;   // child quadrants from the root, 2 bits per level (0: u-low v-low, 1: u-high
+                   // v-low, 2: u-low v-high, 3: u-high v-high), for comparing trees
+  float linearity;
+  float flatness;
+  gpu::vec2 split;  // (us, vs) the classification chose
+};
+
+
+struct QuadtreeResult {
+  std::vector<QuadLeaf> leaves;
+  std::vector<LevelStats> levels;
+  uint32_t depth = 0;  // deepest leaf level
+  size_t batches = 0;            // classifier calls (one per level when nothing was split up)
+  size_t patchGroups = 0;        // trees built over patch subsets the classifier could hold
+  size_t peakFrontierNodes = 0;  // most nodes held at once (see frontierBudgetBytes)
+};
+
+// The frontier's bytes per node it holds (a QuadNode and its path; a classified node also
+// has a NodeDecision), for QuadtreeOptions::frontierBudgetBytes.
+constexpr size_t kFrontierBytesPerNode = sizeof(gpu::QuadNode) + sizeof(uint64_t);
+// Nodes per classifier batch under `options` and a classifier that takes at most
+// `classifierLimit` nodes at once. Depth-first batching leaves at most three batches of
+// children waiting per level, so batch = budget / (3·(maxDepth + 1) + 5) nodes keeps the
+// whole frontier within the budget. Throws std::invalid_argument when it would be < 1.
+size_t frontierBatchNodes(const QuadtreeOptions& options, size_t classifierLimit);
+
+// The node budget would be exceeded: names the patch with the most frontier nodes and the level.
+class TessellationLimitError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// One level's classification, behind one interface so tests can swap backends.
+class NodeClassifier {
+ public:
+  virtual ~NodeClassifier() = default;
+  virtual std::string name() const = 0;
+  // Called once per tree before its first level (the GPU backend uploads the patches here).
+  virtual void beginTree(const std::vector<gpu::BicubicPatch>& patches) { (void)patches; }
+  virtual void classify(const std::vector<gpu::BicubicPatch>& patches,
+                        const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
+                        std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) = 0;
+  // The same for general patches (degree 1..7, polynomial or rational; general_patch.h).
+  virtual void beginGeneralTree(const GeneralPatchSet& patches) { (void)patches; }
+  virtual void classifyGeneral(const GeneralPatchSet& patches,
+                               const std::vector<gpu::QuadNode>& nodes,
+                               const QuadtreeOptions& options,
+                               std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) = 0;
+  // Most nodes one classify call may take, and most bytes of one patch array (BicubicPatch,
+  // GeneralPatch or control points) one tree may use: a GPU's largest storage buffer. The
+  // frontier splits levels and patch sets to stay within them.
+  virtual size_t maxBatchNodes() const { return SIZE_MAX; }
+  virtual size_t maxPatchBufferBytes() const { return SIZE_MAX; }
+};
+
+std::unique_ptr<NodeClassifier> makeMirrorClassifier();            // fp32, shader's twin
+std::unique_ptr<NodeClassifier> makeParallelMirrorClassifier();    // the same on all cores
+std::unique_ptr<NodeClassifier> makeReferenceClassifier();         // double precision
+std::unique_ptr<NodeClassifier> makeVulkanClassifier(vk::Context& context);
+
+QuadtreeResult buildQuadtree(const std::vector<gpu::BicubicPatch>& patches,
+                             const QuadtreeOptions& options, NodeClassifier& classifier);
+QuadtreeResult buildQuadtree(const GeneralPatchSet& patches, const QuadtreeOptions& options,
+                             NodeClassifier& classifier);
+
+// The push-constant block for `options` (shared by every backend).
+gpu::ClassifyPush classifyParams(const QuadtreeOptions& options, uint32_t nodeCount);
+uint32_t ruleConstant(SplitRule rule);
+
+}  // namespace tessera

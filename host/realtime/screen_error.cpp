@@ -1,0 +1,84 @@
+// Screen-space error of a real-time frame (measureScreenError, realtime_frame.h): triangle
+// samples against the double-precision surface, both projected to pixels.
+#include <algorithm>
+#include <array>
+
+#include "geometry/bezier.h"
+#include "realtime/frame.h"
+
+namespace tessera {
+namespace {
+
+struct Projected {
+  glm::dvec2 pixel;
+  double w;  // clip w: depth in front of the eye
+};
+
+Projected project(const Camera& camera, const glm::dvec3& world) {
+  const glm::dvec4 h = camera.viewProjection * glm::dvec4(world, 1.0);
+  return {glm::dvec2((h.x / h.w + 1.0) * 0.5 * camera.width,
+                     (h.y / h.w + 1.0) * 0.5 * camera.height),
+          h.w};
+}
+
+bool onScreen(const Camera& camera, const glm::dvec2& p) {
+  return p.x >= 0.0 && p.x <= camera.width && p.y >= 0.0 && p.y <= camera.height;
+}
+
+struct Corner {
+  glm::dvec3 world;
+  glm::dvec2 uv;
+  Projected screen;
+};
+
+// Both errors of one triangle at its (i, j, k)/n samples, into `report`.
+void measureTriangle(const std::array<Corner, 3>& c, const BezierPatch& patch,
+                     const Camera& camera, int n, ScreenErrorReport& report) {
+  for (const Corner& corner : c)
+    if (corner.screen.w <= camera.nearW) return;
+  if (!onScreen(camera, c[0].screen.pixel) && !onScreen(camera, c[1].screen.pixel) &&
+      !onScreen(camera, c[2].screen.pixel))
+    return;
+  ++report.triangles;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j) {
+      const double a = double(i) / n, b = double(j) / n, g = 1.0 - a - b;
+      const glm::dvec2 uv = a * c[0].uv + b * c[1].uv + g * c[2].uv;
+      const glm::dvec2 truth = project(camera, patchPoint(patch, uv.x, uv.y)).pixel;
+      const glm::dvec2 affine =
+          a * c[0].screen.pixel + b * c[1].screen.pixel + g * c[2].screen.pixel;
+      const glm::dvec2 perspective =
+          project(camera, a * c[0].world + b * c[1].world + g * c[2].world).pixel;
+      report.maxAffinePixels = std::max(report.maxAffinePixels, glm::length(affine - truth));
+      report.maxPerspectivePixels =
+          std::max(report.maxPerspectivePixels, glm::length(perspective - truth));
+      ++report.samples;
+    }
+}
+
+}  // namespace
+
+ScreenErrorReport measureScreenError(const RealtimeFrame& frame,
+                                     const std::vector<BezierPatch>& patches,
+                                     const Camera& camera, int subdivisions) {
+  ScreenErrorReport report;
+  const int n = std::max(1, subdivisions);
+  for (const RealtimeGrid& grid : frame.grids) {
+    const uint32_t side = grid.pointsPerSide;
+    const double step = 1.0 / double(side - 1);
+    auto corner = [&](uint32_t i, uint32_t j) {
+      const glm::dvec3 world(glm::vec3(grid.vertices[i * side + j].position));
+      return Corner{world, glm::dvec2(i * step, j * step), project(camera, world)};
+    };
+    for (uint32_t i = 0; i + 1 < side; ++i)
+      for (uint32_t j = 0; j + 1 < side; ++j) {
+        // The cell's two triangles along the (i, j)–(i+1, j+1) diagonal.
+        const Corner c00 = corner(i, j), c11 = corner(i + 1, j + 1);
+        measureTriangle({c00, corner(i + 1, j), c11}, patches[grid.patch], camera, n, report);
+        measureTriangle({c00, c11, corner(i, j + 1)}, patches[grid.patch], camera, n, report);
+      }
+  }
+  return report;
+}
+
+}  // namespace tessera
