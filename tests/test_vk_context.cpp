@@ -2,11 +2,21 @@
 
 #include <cstdlib>
 
+#include <type_traits>
+
 #include "gpu_test_context.h"
 #include "vk/buffer.h"
 #include "vk/device_select.h"
 
 using namespace tessera;
+
+// VK_NO_PROTOTYPES belongs to the Vulkan backend alone (volk, host/vk/loader.h): a user of the
+// library includes its headers and still sees vulkan.h's prototypes, not volk's pointers.
+#ifdef VK_NO_PROTOTYPES
+#error "VK_NO_PROTOTYPES leaked from the Tessera library to its users"
+#endif
+static_assert(std::is_function_v<decltype(::vkCreateInstance)>,
+              "vkCreateInstance is a prototype here, not volk's global function pointer");
 
 TEST_CASE("a Vulkan context comes up with validation layers on", "[gpu][vk]") {
   vk::Context& context = test::gpuContext();
@@ -34,6 +44,33 @@ TEST_CASE("buffers round-trip data and grow on demand", "[gpu][vk]") {
   vk::ensureCapacity(context, buffer, 5000, vk::BufferUse::Upload);
   REQUIRE(buffer.size() >= 5000);
   REQUIRE_THROWS_AS(buffer.upload(values.data(), buffer.size() + 1), std::out_of_range);
+  test::requireValidationClean();
+}
+
+// Dispatch tables are per context (host/vk/loader.h): a second instance and device that come
+// and go leave the first working.
+TEST_CASE("a second Vulkan context comes and goes while the first keeps working", "[gpu][vk]") {
+  vk::Context& first = test::gpuContext();
+  const std::vector<uint32_t> values = {1, 2, 3, 5, 8, 13, 21};
+  auto roundTrip = [&](vk::Context& context) {
+    vk::Buffer buffer;
+    vk::ensureCapacity(context, buffer, values.size() * sizeof(uint32_t), vk::BufferUse::Upload);
+    buffer.upload(values);
+    std::vector<uint32_t> back;
+    buffer.download(back, values.size());
+    return back;
+  };
+  {
+    vk::ContextOptions options;
+    options.validation = vk::Validation::Required;
+    vk::Context second(options);
+    REQUIRE(second.device() != first.device());
+    REQUIRE(&second.vk() != &first.vk());
+    REQUIRE(roundTrip(second) == values);
+    REQUIRE(roundTrip(first) == values);
+    REQUIRE(second.validationMessages().empty());
+  }
+  REQUIRE(roundTrip(first) == values);
   test::requireValidationClean();
 }
 

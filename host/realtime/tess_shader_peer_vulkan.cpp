@@ -12,6 +12,7 @@
 #include "vk/buffer.h"
 #include "vk/image.h"
 #include "vk/graphics.h"
+#include "vk/loader.h"
 
 namespace tessera {
 

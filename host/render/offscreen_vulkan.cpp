@@ -12,6 +12,7 @@
 #include "vk/context.h"
 #include "vk/image.h"
 #include "vk/graphics.h"
+#include "vk/loader.h"
 
 #include "shaders/layout.h"
 // The generated headers declare bare uint32_t arrays.

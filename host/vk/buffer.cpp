@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "vk/loader.h"
+
 namespace tessera::vk {
 namespace {
 

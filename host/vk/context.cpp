@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "vk/device_select.h"
+#include "vk/loader.h"
 #include "vk/pipeline_cache.h"
 
 namespace tessera::vk {
@@ -13,20 +14,21 @@ namespace {
 
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
-bool hasInstanceLayer(const GlobalTable& global, const char* name) {
+// Global functions: volk's, set by ensureLoaded().
+bool hasInstanceLayer(const char* name) {
   uint32_t count = 0;
-  global.vkEnumerateInstanceLayerProperties(&count, nullptr);
+  vkEnumerateInstanceLayerProperties(&count, nullptr);
   std::vector<VkLayerProperties> layers(count);
-  global.vkEnumerateInstanceLayerProperties(&count, layers.data());
+  vkEnumerateInstanceLayerProperties(&count, layers.data());
   return std::any_of(layers.begin(), layers.end(),
                      [&](const auto& l) { return std::strcmp(l.layerName, name) == 0; });
 }
 
-bool hasInstanceExtension(const GlobalTable& global, const char* layer, const char* name) {
+bool hasInstanceExtension(const char* layer, const char* name) {
   uint32_t count = 0;
-  global.vkEnumerateInstanceExtensionProperties(layer, &count, nullptr);
+  vkEnumerateInstanceExtensionProperties(layer, &count, nullptr);
   std::vector<VkExtensionProperties> extensions(count);
-  global.vkEnumerateInstanceExtensionProperties(layer, &count, extensions.data());
+  vkEnumerateInstanceExtensionProperties(layer, &count, extensions.data());
   return std::any_of(extensions.begin(), extensions.end(),
                      [&](const auto& e) { return std::strcmp(e.extensionName, name) == 0; });
 }
@@ -65,33 +67,35 @@ Context::Context(const ContextOptions& options) {
 Context::~Context() { release(); }
 
 void Context::release() {
-  if (device_) {
-    device_table_.vkDeviceWaitIdle(device_);
+  // Without its table (loading failed) a handle cannot be destroyed; that only happens when
+  // Vulkan itself is broken.
+  if (device_ && device_table_) {
+    device_table_->vkDeviceWaitIdle(device_);
     if (pipeline_cache_) {
       savePipelineCache();
-      device_table_.vkDestroyPipelineCache(device_, pipeline_cache_, nullptr);
+      device_table_->vkDestroyPipelineCache(device_, pipeline_cache_, nullptr);
     }
-    if (fence_) device_table_.vkDestroyFence(device_, fence_, nullptr);
-    if (command_pool_) device_table_.vkDestroyCommandPool(device_, command_pool_, nullptr);
-    device_table_.vkDestroyDevice(device_, nullptr);
+    if (fence_) device_table_->vkDestroyFence(device_, fence_, nullptr);
+    if (command_pool_) device_table_->vkDestroyCommandPool(device_, command_pool_, nullptr);
+    device_table_->vkDestroyDevice(device_, nullptr);
     device_ = VK_NULL_HANDLE;
   }
-  if (messenger_) {
-    instance_table_.vkDestroyDebugUtilsMessengerEXT(instance_, messenger_, nullptr);
+  if (messenger_ && instance_table_) {
+    instance_table_->vkDestroyDebugUtilsMessengerEXT(instance_, messenger_, nullptr);
     messenger_ = VK_NULL_HANDLE;
   }
-  if (instance_) {
-    instance_table_.vkDestroyInstance(instance_, nullptr);
+  if (instance_ && instance_table_) {
+    instance_table_->vkDestroyInstance(instance_, nullptr);
     instance_ = VK_NULL_HANDLE;
   }
 }
 
 void Context::createInstance(const ContextOptions& options) {
-  const GlobalTable& global = globalTable();
+  ensureLoaded();
   std::vector<const char*> layers;
   std::vector<const char*> extensions;
   if (options.validation != Validation::Off) {
-    if (hasInstanceLayer(global, kValidationLayer)) {
+    if (hasInstanceLayer(kValidationLayer)) {
       layers.push_back(kValidationLayer);
       validation_enabled_ = true;
     } else if (options.validation == Validation::Required) {
@@ -101,8 +105,8 @@ void Context::createInstance(const ContextOptions& options) {
     }
   }
   bool debugUtils = validation_enabled_ &&
-                    (hasInstanceExtension(global, nullptr, VK_EXT_DEBUG_UTILS_EXTENSION_NAME) ||
-                     hasInstanceExtension(global, kValidationLayer,
+                    (hasInstanceExtension(nullptr, VK_EXT_DEBUG_UTILS_EXTENSION_NAME) ||
+                     hasInstanceExtension(kValidationLayer,
                                           VK_EXT_DEBUG_UTILS_EXTENSION_NAME));
   if (debugUtils) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
 
@@ -124,34 +128,34 @@ void Context::createInstance(const ContextOptions& options) {
   features.pEnabledValidationFeatures = enables;
   features.pNext = debugUtils ? &messengerInfo : nullptr;
 
-  instance_ = vk::createInstance(global, layers, extensions,
+  instance_ = vk::createInstance(layers, extensions,
                                  validation_enabled_ ? static_cast<const void*>(&features) : nullptr);
-  instance_table_ = loadInstanceTable(global, instance_);
-  if (debugUtils && instance_table_.vkCreateDebugUtilsMessengerEXT)
-    VK_CHECK(instance_table_.vkCreateDebugUtilsMessengerEXT(instance_, &messengerInfo, nullptr,
-                                                            &messenger_));
+  instance_table_ = std::make_unique<InstanceTable>(loadInstanceTable(instance_));
+  if (debugUtils && instance_table_->vkCreateDebugUtilsMessengerEXT)
+    VK_CHECK(instance_table_->vkCreateDebugUtilsMessengerEXT(instance_, &messengerInfo, nullptr,
+                                                             &messenger_));
 }
 
 void Context::choosePhysicalDevice(const std::string& selector) {
   uint32_t count = 0;
-  VK_CHECK(instance_table_.vkEnumeratePhysicalDevices(instance_, &count, nullptr));
+  VK_CHECK(instance_table_->vkEnumeratePhysicalDevices(instance_, &count, nullptr));
   std::vector<VkPhysicalDevice> physical(count);
-  VK_CHECK(instance_table_.vkEnumeratePhysicalDevices(instance_, &count, physical.data()));
+  VK_CHECK(instance_table_->vkEnumeratePhysicalDevices(instance_, &count, physical.data()));
   std::vector<DeviceInfo> devices;
   for (uint32_t i = 0; i < count; ++i)
-    devices.push_back(describeDevice(instance_table_, physical[i], i));
+    devices.push_back(describeDevice(*instance_table_, physical[i], i));
   size_t chosen = selectDevice(devices, selector);
   physical_ = physical[chosen];
   info_ = devices[chosen];
-  instance_table_.vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
+  instance_table_->vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
 }
 
 void Context::createDevice() {
   uint32_t familyCount = 0;
-  instance_table_.vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount, nullptr);
+  instance_table_->vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount, nullptr);
   std::vector<VkQueueFamilyProperties> families(familyCount);
-  instance_table_.vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount,
-                                                           families.data());
+  instance_table_->vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount,
+                                                            families.data());
   // One queue for everything: prefer a family that also draws (tessera render).
   int chosen = -1;
   for (uint32_t i = 0; i < familyCount; ++i) {
@@ -178,41 +182,41 @@ void Context::createDevice() {
   info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
   info.ppEnabledExtensionNames = extensions.data();
   VkPhysicalDeviceFeatures available{};
-  instance_table_.vkGetPhysicalDeviceFeatures(physical_, &available);
+  instance_table_->vkGetPhysicalDeviceFeatures(physical_, &available);
   enabled_features_.tessellationShader = available.tessellationShader;
   enabled_features_.pipelineStatisticsQuery = available.pipelineStatisticsQuery;
   info.pEnabledFeatures = &enabled_features_;
-  VK_CHECK(instance_table_.vkCreateDevice(physical_, &info, nullptr, &device_));
-  device_table_ = loadDeviceTable(instance_table_, device_);
-  if (!device_table_.vkCmdPushDescriptorSetKHR)
+  VK_CHECK(instance_table_->vkCreateDevice(physical_, &info, nullptr, &device_));
+  device_table_ = std::make_unique<DeviceTable>(loadDeviceTable(instance_, device_));
+  if (!device_table_->vkCmdPushDescriptorSetKHR)
     throw VulkanUnavailable("device '" + info_.name + "' lacks vkCmdPushDescriptorSetKHR");
-  device_table_.vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
+  device_table_->vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
 
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
   poolInfo.queueFamilyIndex = queue_family_;
-  VK_CHECK(device_table_.vkCreateCommandPool(device_, &poolInfo, nullptr, &command_pool_));
+  VK_CHECK(device_table_->vkCreateCommandPool(device_, &poolInfo, nullptr, &command_pool_));
   VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  VK_CHECK(device_table_.vkCreateFence(device_, &fenceInfo, nullptr, &fence_));
+  VK_CHECK(device_table_->vkCreateFence(device_, &fenceInfo, nullptr, &fence_));
   VkPhysicalDeviceProperties properties{};
-  instance_table_.vkGetPhysicalDeviceProperties(physical_, &properties);
+  instance_table_->vkGetPhysicalDeviceProperties(physical_, &properties);
   pipeline_cache_path_ = vk::pipelineCachePath(properties);
   std::vector<char> cached = readPipelineCache(pipeline_cache_path_);
   pipeline_cache_loaded_bytes_ = cached.size();
   VkPipelineCacheCreateInfo cacheInfo{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
   cacheInfo.initialDataSize = cached.size();
   cacheInfo.pInitialData = cached.empty() ? nullptr : cached.data();
-  VK_CHECK(device_table_.vkCreatePipelineCache(device_, &cacheInfo, nullptr, &pipeline_cache_));
+  VK_CHECK(device_table_->vkCreatePipelineCache(device_, &cacheInfo, nullptr, &pipeline_cache_));
 }
 
 void Context::savePipelineCache() {
-  if (pipeline_cache_path_.empty() || !device_table_.vkGetPipelineCacheData) return;
+  if (pipeline_cache_path_.empty() || !device_table_->vkGetPipelineCacheData) return;
   size_t bytes = 0;
-  if (device_table_.vkGetPipelineCacheData(device_, pipeline_cache_, &bytes, nullptr) !=
+  if (device_table_->vkGetPipelineCacheData(device_, pipeline_cache_, &bytes, nullptr) !=
           VK_SUCCESS || bytes == 0)
     return;
   std::vector<char> data(bytes);
-  if (device_table_.vkGetPipelineCacheData(device_, pipeline_cache_, &bytes, data.data()) !=
+  if (device_table_->vkGetPipelineCacheData(device_, pipeline_cache_, &bytes, data.data()) !=
       VK_SUCCESS)
     return;
   data.resize(bytes);
@@ -221,24 +225,24 @@ void Context::savePipelineCache() {
 }
 
 void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {
-  VK_CHECK(device_table_.vkResetCommandPool(device_, command_pool_, 0));
+  VK_CHECK(device_table_->vkResetCommandPool(device_, command_pool_, 0));
   VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
   allocInfo.commandPool = command_pool_;
   allocInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
   allocInfo.commandBufferCount = 1;
   VkCommandBuffer cmd = VK_NULL_HANDLE;
-  VK_CHECK(device_table_.vkAllocateCommandBuffers(device_, &allocInfo, &cmd));
+  VK_CHECK(device_table_->vkAllocateCommandBuffers(device_, &allocInfo, &cmd));
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  VK_CHECK(device_table_.vkBeginCommandBuffer(cmd, &begin));
+  VK_CHECK(device_table_->vkBeginCommandBuffer(cmd, &begin));
   record(cmd);
-  VK_CHECK(device_table_.vkEndCommandBuffer(cmd));
+  VK_CHECK(device_table_->vkEndCommandBuffer(cmd));
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &cmd;
-  VK_CHECK(device_table_.vkResetFences(device_, 1, &fence_));
-  VK_CHECK(device_table_.vkQueueSubmit(queue_, 1, &submit, fence_));
-  VK_CHECK(device_table_.vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX));
+  VK_CHECK(device_table_->vkResetFences(device_, 1, &fence_));
+  VK_CHECK(device_table_->vkQueueSubmit(queue_, 1, &submit, fence_));
+  VK_CHECK(device_table_->vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX));
 }
 
 void Context::reportValidationMessage(const std::string& message) {

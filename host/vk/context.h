@@ -11,9 +11,13 @@
 #include <vector>
 
 #include "vk/errors.h"
-#include "vk/loader.h"
 
 namespace tessera::vk {
+
+// The dispatch tables (vk/loader.h, volk) are private to the Vulkan backend: only declared here,
+// so that this header needs no VK_NO_PROTOTYPES. Code calling through vk() includes vk/loader.h.
+struct InstanceTable;
+struct DeviceTable;
 
 enum class Validation {
   Off,          // no layers
@@ -60,7 +64,7 @@ class Context {
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
 
-  const DeviceTable& vk() const { return device_table_; }
+  const DeviceTable& vk() const { return *device_table_; }
   VkDevice device() const { return device_; }
   VkPhysicalDevice physicalDevice() const { return physical_; }
   VkQueue queue() const { return queue_; }
@@ -97,8 +101,9 @@ class Context {
   void release();
   void savePipelineCache();
 
-  InstanceTable instance_table_{};
-  DeviceTable device_table_{};
+  // Per context, so two contexts live side by side (vk/loader.h).
+  std::unique_ptr<InstanceTable> instance_table_;
+  std::unique_ptr<DeviceTable> device_table_;
   VkInstance instance_ = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
   VkPhysicalDevice physical_ = VK_NULL_HANDLE;

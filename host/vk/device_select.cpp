@@ -4,6 +4,8 @@
 #include <cctype>
 #include <cstring>
 
+#include "vk/loader.h"
+
 namespace tessera::vk {
 
 const std::vector<const char*>& requiredDeviceExtensions() {
@@ -22,8 +24,9 @@ std::string DeviceInfo::typeName() const {
   }
 }
 
-VkInstance createInstance(const GlobalTable& global, const std::vector<const char*>& layers,
+VkInstance createInstance(const std::vector<const char*>& layers,
                           const std::vector<const char*>& extensions, const void* next) {
+  ensureLoaded();
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = "tessera";
   app.pEngineName = "tessera";
@@ -36,7 +39,7 @@ VkInstance createInstance(const GlobalTable& global, const std::vector<const cha
   info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
   info.ppEnabledExtensionNames = extensions.data();
   VkInstance instance = VK_NULL_HANDLE;
-  VkResult result = global.vkCreateInstance(&info, nullptr, &instance);
+  VkResult result = vkCreateInstance(&info, nullptr, &instance);
   if (result == VK_ERROR_INCOMPATIBLE_DRIVER)
     throw VulkanUnavailable(
         "no Vulkan driver found (vkCreateInstance: VK_ERROR_INCOMPATIBLE_DRIVER). Install one, "
@@ -150,9 +153,8 @@ size_t selectDevice(const std::vector<DeviceInfo>& devices, const std::string& s
 }
 
 std::vector<DeviceInfo> listDevices() {
-  const GlobalTable& global = globalTable();
-  VkInstance instance = createInstance(global, {}, {}, nullptr);
-  InstanceTable vk = loadInstanceTable(global, instance);
+  VkInstance instance = createInstance({}, {}, nullptr);
+  InstanceTable vk = loadInstanceTable(instance);
   uint32_t count = 0;
   vk.vkEnumeratePhysicalDevices(instance, &count, nullptr);
   std::vector<VkPhysicalDevice> physical(count);

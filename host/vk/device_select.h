@@ -18,8 +18,8 @@ size_t selectDevice(const std::vector<DeviceInfo>& devices, const std::string& s
 // Device extensions Tessera requires.
 const std::vector<const char*>& requiredDeviceExtensions();
 
-// An instance with no layers, for listing devices; destroyed by the caller.
-VkInstance createInstance(const GlobalTable& global, const std::vector<const char*>& layers,
+// An instance (opening the Vulkan loader first, vk/loader.h); destroyed by the caller.
+VkInstance createInstance(const std::vector<const char*>& layers,
                           const std::vector<const char*>& extensions, const void* next);
 
 }  // namespace tessera::vk

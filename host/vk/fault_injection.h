@@ -1,5 +1,6 @@
-// Faults injected through our own loader, for testing the error paths: the environment
-// variable TESSERA_VK_FAULT names one (read once per process):
+// Faults injected into the dispatch tables of vk/loader.h (wrappers replace table entries), for
+// testing the error paths: the environment variable TESSERA_VK_FAULT names one (read once per
+// process):
 //   alloc[:N]            the N-th vkAllocateMemory (default the first) fails with
 //                        VK_ERROR_OUT_OF_DEVICE_MEMORY
 //   device-lost[:N]      the N-th vkQueueSubmit fails with VK_ERROR_DEVICE_LOST

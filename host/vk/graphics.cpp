@@ -1,6 +1,7 @@
 #include "vk/graphics.h"
 
 #include "vk/errors.h"
+#include "vk/loader.h"
 
 namespace tessera::vk {
 

@@ -4,6 +4,8 @@
 #include <string>
 #include <utility>
 
+#include "vk/loader.h"
+
 namespace tessera::vk {
 namespace {
 

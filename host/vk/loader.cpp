@@ -9,23 +9,15 @@
 #include "vk/fault_injection.h"
 
 namespace tessera::vk {
-namespace {
 
-std::string chosenLoaderPath() {
-  const char* overridePath = std::getenv("TESSERA_VULKAN_LOADER");
-  return (overridePath && *overridePath) ? overridePath : "libvulkan.so.1";
-}
-
-}  // namespace
-
-std::string loaderPath() { return chosenLoaderPath(); }
-
-const GlobalTable& globalTable() {
-  static GlobalTable table;
+void ensureLoaded() {
   static std::string failure;
   static std::once_flag once;
   std::call_once(once, [] {
-    const std::string path = chosenLoaderPath();
+    // Opened here rather than by volkInitialize(), which only tries the default names: this is
+    // what lets TESSERA_VULKAN_LOADER point elsewhere (the tests simulate a missing loader).
+    const char* overridePath = std::getenv("TESSERA_VULKAN_LOADER");
+    const std::string path = (overridePath && *overridePath) ? overridePath : "libvulkan.so.1";
     // The handle is never closed: function pointers from it live as long as the process.
     void* library = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!library) {
@@ -35,26 +27,24 @@ const GlobalTable& globalTable() {
                 "with `--backend cpu`.";
       return;
     }
-    table.vkGetInstanceProcAddr =
+    auto getInstanceProcAddr =
         reinterpret_cast<PFN_vkGetInstanceProcAddr>(dlsym(library, "vkGetInstanceProcAddr"));
-    if (!table.vkGetInstanceProcAddr) {
+    if (!getInstanceProcAddr) {
       failure = "'" + path + "' is not a Vulkan loader (no vkGetInstanceProcAddr)";
       return;
     }
-#define TESSERA_LOAD_GLOBAL(name) \
-  table.name = reinterpret_cast<PFN_##name>(table.vkGetInstanceProcAddr(nullptr, #name));
-    TESSERA_VK_GLOBAL_FUNCTIONS(TESSERA_LOAD_GLOBAL)
-#undef TESSERA_LOAD_GLOBAL
-    if (!table.vkCreateInstance) failure = "the Vulkan loader '" + path + "' lacks vkCreateInstance";
+    volkInitializeCustom(getInstanceProcAddr);
+    if (!vkCreateInstance || !vkEnumerateInstanceLayerProperties ||
+        !vkEnumerateInstanceExtensionProperties)
+      failure = "the Vulkan loader '" + path + "' lacks vkCreateInstance";
   });
   if (!failure.empty()) throw VulkanUnavailable(failure);
-  return table;
 }
 
-InstanceTable loadInstanceTable(const GlobalTable& global, VkInstance instance) {
-  InstanceTable table;
+InstanceTable loadInstanceTable(VkInstance instance) {
+  InstanceTable table;  // the instance exists, so ensureLoaded() has set vkGetInstanceProcAddr
 #define TESSERA_LOAD_INSTANCE(name) \
-  table.name = reinterpret_cast<PFN_##name>(global.vkGetInstanceProcAddr(instance, #name));
+  table.name = reinterpret_cast<PFN_##name>(vkGetInstanceProcAddr(instance, #name));
   TESSERA_VK_INSTANCE_FUNCTIONS(TESSERA_LOAD_INSTANCE)
   TESSERA_VK_INSTANCE_EXT_FUNCTIONS(TESSERA_LOAD_INSTANCE)
 #undef TESSERA_LOAD_INSTANCE
@@ -66,18 +56,20 @@ InstanceTable loadInstanceTable(const GlobalTable& global, VkInstance instance) 
   return table;
 }
 
-DeviceTable loadDeviceTable(const InstanceTable& instance, VkDevice device) {
-  DeviceTable table;
-  // Fetched from the device itself, so calls skip the loader's trampoline (as volk does).
-#define TESSERA_LOAD_DEVICE(name) \
-  table.name = reinterpret_cast<PFN_##name>(instance.vkGetDeviceProcAddr(device, #name));
-  TESSERA_VK_DEVICE_FUNCTIONS(TESSERA_LOAD_DEVICE)
-  TESSERA_VK_DEVICE_EXT_FUNCTIONS(TESSERA_LOAD_DEVICE)
-#undef TESSERA_LOAD_DEVICE
-#define TESSERA_REQUIRE_DEVICE(name) \
-  if (!table.name) throw VulkanUnavailable("the Vulkan device lacks " #name);
-  TESSERA_VK_DEVICE_FUNCTIONS(TESSERA_REQUIRE_DEVICE)
-#undef TESSERA_REQUIRE_DEVICE
+DeviceTable loadDeviceTable(VkInstance instance, VkDevice device) {
+  DeviceTable table{};
+  {
+    // volkLoadDeviceTable fetches through volk's global vkGetDeviceProcAddr, which only
+    // volkLoadInstanceOnly sets (with the other instance globals, which we never read). The
+    // two calls are one step under a lock, so contexts created on two threads do not race.
+    static std::mutex mutex;
+    std::lock_guard<std::mutex> lock(mutex);
+    volkLoadInstanceOnly(instance);
+    volkLoadDeviceTable(&table, device);
+  }
+  // Vulkan 1.0 guarantees the core functions; an empty table means the loading itself failed.
+  if (!table.vkDestroyDevice || !table.vkQueueSubmit)
+    throw VulkanUnavailable("could not load the Vulkan device functions (vkGetDeviceProcAddr)");
   injectDeviceFaults(table);
   return table;
 }

@@ -1,21 +1,29 @@
-// A small volk-style meta-loader: libvulkan.so.1 is opened at run time (no link-time
-// dependency), global and instance entry points are fetched through vkGetInstanceProcAddr and
-// device entry points straight from the driver through vkGetDeviceProcAddr, into tables.
-// Device functions live in a per-device table (not globals) so that two contexts can live
-// side by side, and so that tests can wrap single entry points to inject faults.
+// Vulkan entry points through volk (Debian libvulkan-volk-dev), plus what Tessera adds on top:
+// the path of libvulkan.so.1 can be overridden, a missing loader is a VulkanUnavailable with
+// instructions, and every table passes through fault injection (vk/fault_injection.h).
+//
+//   global functions (vkCreateInstance, vkEnumerateInstance*): volk's globals, set once per
+//     process by ensureLoaded() and only read afterwards.
+//   instance functions: our own InstanceTable per instance, not volk's globals, because
+//     volkLoadInstance* overwrites process-wide pointers: two contexts (two instances, maybe on
+//     two threads) would race on them and fault wrappers could not be per instance.
+//   device functions: volk's VolkDeviceTable per device (volkLoadDeviceTable), fetched from the
+//     driver through vkGetDeviceProcAddr, so calls skip the loader's trampoline.
+//
+// Private to the Vulkan backend's own sources: volk.h declares every Vulkan command as a global
+// function pointer, which needs VK_NO_PROTOTYPES in the whole translation unit. tessera_vulkan
+// compiles with it (tessera::volk, linked PRIVATE); the other vk/ headers, which its users (the
+// CLI, tests, bench) include, only forward-declare the tables, so users never need the macro.
 #pragma once
 #include "vk/backend_only.h"
-#include <vulkan/vulkan.h>
+#if !defined(VK_NO_PROTOTYPES)
+#error "vk/loader.h is private to tessera_vulkan's sources (tessera::volk defines VK_NO_PROTOTYPES)"
+#endif
+#include <volk.h>
 
 #include <string>
 
 namespace tessera::vk {
-
-#define TESSERA_VK_GLOBAL_FUNCTIONS(X)    \
-  X(vkCreateInstance)                     \
-  X(vkEnumerateInstanceExtensionProperties) \
-  X(vkEnumerateInstanceLayerProperties)   \
-  X(vkEnumerateInstanceVersion)
 
 #define TESSERA_VK_INSTANCE_FUNCTIONS(X)        \
   X(vkDestroyInstance)                          \
@@ -35,104 +43,24 @@ namespace tessera::vk {
   X(vkCreateDebugUtilsMessengerEXT)          \
   X(vkDestroyDebugUtilsMessengerEXT)
 
-#define TESSERA_VK_DEVICE_FUNCTIONS(X)     \
-  X(vkDestroyDevice)                       \
-  X(vkGetDeviceQueue)                      \
-  X(vkDeviceWaitIdle)                      \
-  X(vkQueueSubmit)                         \
-  X(vkQueueWaitIdle)                       \
-  X(vkCreateBuffer)                        \
-  X(vkDestroyBuffer)                       \
-  X(vkGetBufferMemoryRequirements)         \
-  X(vkAllocateMemory)                      \
-  X(vkFreeMemory)                          \
-  X(vkBindBufferMemory)                    \
-  X(vkMapMemory)                           \
-  X(vkUnmapMemory)                         \
-  X(vkCreateImage)                         \
-  X(vkDestroyImage)                        \
-  X(vkGetImageMemoryRequirements)          \
-  X(vkBindImageMemory)                     \
-  X(vkCreateImageView)                     \
-  X(vkDestroyImageView)                    \
-  X(vkCreateShaderModule)                  \
-  X(vkDestroyShaderModule)                 \
-  X(vkCreatePipelineCache)                 \
-  X(vkDestroyPipelineCache)                \
-  X(vkGetPipelineCacheData)                \
-  X(vkCreateComputePipelines)              \
-  X(vkCreateGraphicsPipelines)             \
-  X(vkDestroyPipeline)                     \
-  X(vkCreatePipelineLayout)                \
-  X(vkDestroyPipelineLayout)               \
-  X(vkCreateDescriptorSetLayout)           \
-  X(vkDestroyDescriptorSetLayout)          \
-  X(vkCreateRenderPass)                    \
-  X(vkDestroyRenderPass)                   \
-  X(vkCreateFramebuffer)                   \
-  X(vkDestroyFramebuffer)                  \
-  X(vkCreateCommandPool)                   \
-  X(vkDestroyCommandPool)                  \
-  X(vkResetCommandPool)                    \
-  X(vkAllocateCommandBuffers)              \
-  X(vkBeginCommandBuffer)                  \
-  X(vkEndCommandBuffer)                    \
-  X(vkCreateFence)                         \
-  X(vkDestroyFence)                        \
-  X(vkResetFences)                         \
-  X(vkWaitForFences)                       \
-  X(vkCreateQueryPool)                     \
-  X(vkDestroyQueryPool)                    \
-  X(vkGetQueryPoolResults)                 \
-  X(vkCmdResetQueryPool)                   \
-  X(vkCmdWriteTimestamp)                   \
-  X(vkCmdBindPipeline)                     \
-  X(vkCmdPushConstants)                    \
-  X(vkCmdDispatch)                         \
-  X(vkCmdPipelineBarrier)                  \
-  X(vkCmdCopyBuffer)                       \
-  X(vkCmdCopyImageToBuffer)                \
-  X(vkCmdFillBuffer)                       \
-  X(vkCmdBeginRenderPass)                  \
-  X(vkCmdEndRenderPass)                    \
-  X(vkCmdBindVertexBuffers)                \
-  X(vkCmdBindIndexBuffer)                  \
-  X(vkCmdDrawIndexed)                      \
-  X(vkCmdSetViewport)                      \
-  X(vkCmdSetScissor)                       \
-  X(vkCmdBeginQuery)                       \
-  X(vkCmdEndQuery)                         \
-  X(vkCmdDraw)
-
-// Optional device functions (extensions): null when absent.
-#define TESSERA_VK_DEVICE_EXT_FUNCTIONS(X) X(vkCmdPushDescriptorSetKHR)
-
 #define TESSERA_VK_DECLARE_MEMBER(name) PFN_##name name = nullptr;
-
-struct GlobalTable {
-  PFN_vkGetInstanceProcAddr vkGetInstanceProcAddr = nullptr;
-  TESSERA_VK_GLOBAL_FUNCTIONS(TESSERA_VK_DECLARE_MEMBER)
-};
 
 struct InstanceTable {
   TESSERA_VK_INSTANCE_FUNCTIONS(TESSERA_VK_DECLARE_MEMBER)
   TESSERA_VK_INSTANCE_EXT_FUNCTIONS(TESSERA_VK_DECLARE_MEMBER)
 };
 
-struct DeviceTable {
-  TESSERA_VK_DEVICE_FUNCTIONS(TESSERA_VK_DECLARE_MEMBER)
-  TESSERA_VK_DEVICE_EXT_FUNCTIONS(TESSERA_VK_DECLARE_MEMBER)
-};
+// volk's table of every device function (null where the device lacks it); a struct of its own
+// so that vk/context.h can forward-declare it.
+struct DeviceTable : VolkDeviceTable {};
 
-// Opens the Vulkan loader once per process (thread-safe) and returns its global table.
-// The library path is libvulkan.so.1 unless TESSERA_VULKAN_LOADER names another file.
-// Throws VulkanUnavailable with instructions when the loader cannot be opened.
-const GlobalTable& globalTable();
+// Opens the Vulkan loader once per process (thread-safe) and hands its vkGetInstanceProcAddr to
+// volk (volkInitializeCustom), which sets the global functions. The library is libvulkan.so.1
+// unless TESSERA_VULKAN_LOADER names another file. Throws VulkanUnavailable with instructions
+// when the loader cannot be opened (every call, not only the first).
+void ensureLoaded();
 
-InstanceTable loadInstanceTable(const GlobalTable& global, VkInstance instance);
-DeviceTable loadDeviceTable(const InstanceTable& instance, VkDevice device);
-
-// The library path globalTable() opened (or tried to open).
-std::string loaderPath();
+InstanceTable loadInstanceTable(VkInstance instance);
+DeviceTable loadDeviceTable(VkInstance instance, VkDevice device);
 
 }  // namespace tessera::vk

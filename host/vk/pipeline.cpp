@@ -6,6 +6,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "vk/loader.h"
+
 namespace tessera::vk {
 
 SpecConstant specFloat(uint32_t id, float value) {

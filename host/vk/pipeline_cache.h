@@ -6,10 +6,10 @@
 // or written is a slower start, never an error; the driver itself rejects stale data.
 #pragma once
 #include "vk/backend_only.h"
+#include <vulkan/vulkan.h>
+
 #include <string>
 #include <vector>
-
-#include "vk/loader.h"
 
 namespace tessera::vk {
 
