@@ -63,7 +63,7 @@ void refinementTable(bench::Report& report, vk::Context& context, const LoopShap
   std::vector<float> osdDst(size_t(osdTable->GetNumStencils()) * 3);
   const Osd::BufferDescriptor desc(0, 3, 3);
 
-  auto cpu = makeCpuStencilEvaluator(chained.table, 3);
+  auto cpu = makeReferenceStencilEvaluator(chained.table, 3);
   auto mirror = makeMirrorStencilEvaluator(chainedF, 3);
   auto gpuChained = makeVulkanStencilEvaluator(context, chainedF, 3);
   auto gpuFactorized = makeVulkanStencilEvaluator(context, factorizedF, 3);

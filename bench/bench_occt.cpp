@@ -249,7 +249,7 @@ int main(int argc, char** argv) {
   report.note("occtVersion", OCC_VERSION_COMPLETE);
   report.note("patches", patches.size());
   Backend vulkan = makeVulkanBackend(context);
-  Backend cpu = makeCpuBackend();
+  Backend cpu = makeMirrorBackend();
 
   for (double deflection : deflections) {
     OcctModel model = buildShells(patches, parts);

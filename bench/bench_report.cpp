@@ -27,7 +27,7 @@ Report::Report(std::string benchName, int& argc, char** argv) : name_(std::move(
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--json") == 0) {
       if (i + 1 >= argc) throw std::invalid_argument(name_ + ": --json needs a file name");
-      json_path_ = argv[++i];
+      jsonPath_ = argv[++i];
     } else {
       argv[out++] = argv[i];
     }
@@ -97,7 +97,7 @@ void Report::finish() {
                 capVerticesPerSecond() * kVertexBytes / 1e9, capVerticesPerSecond() / 1e6,
                 int(kVertexBytes), kAssumedCopyBytesPerSecond / kVertexBytes / 1e6);
   }
-  if (json_path_.empty()) return;
+  if (jsonPath_.empty()) return;
   nlohmann::json doc = {{"bench", name_}, {"notes", notes_}, {"tables", nlohmann::json::array()}};
   if (anyCap)
     doc["bandwidthCap"] = {{"hostCopyBytesPerSecond", capVerticesPerSecond() * kVertexBytes},
@@ -134,7 +134,7 @@ void Report::finish() {
                              {"baseline", t.cases.empty() ? "" : t.cases.front().path},
                              {"cases", cases}});
   }
-  writeFileAtomically(json_path_, [&](std::ostream& out) { out << doc.dump(2) << "\n"; });
+  writeFileAtomically(jsonPath_, [&](std::ostream& out) { out << doc.dump(2) << "\n"; });
 }
 
 }  // namespace tessera::bench

@@ -64,7 +64,7 @@ class Report {
   double capVerticesPerSecond() const;
 
   std::string name_;
-  std::string json_path_;
+  std::string jsonPath_;
   nlohmann::json notes_ = nlohmann::json::object();
   std::deque<Table> tables_;  // deque: table() hands out references
   mutable std::optional<double> bandwidth_;

@@ -1,7 +1,7 @@
 // The bad-input corpus (tests/bad_inputs/, listed in its MANIFEST.tsv): every file must be
 // refused with the InputError kind, file, line and reason the manifest states — never
 // accepted, never another exception. Surface files go through readSurfaceFile (what the CLI
-// reads), OBJ meshes through readObj and requireManifold.
+// reads), OBJ meshes through readObj and validateManifold.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -49,7 +49,7 @@ std::vector<ManifestRow> readManifest() {
 
 void readAsTheCliOrMeshUserWould(const std::string& path) {
   if (std::filesystem::path(path).extension() == ".obj") {
-    requireManifold(readObj(path), path);
+    validateManifold(readObj(path), path);
   } else {
     readSurfaceFile(path);
   }

@@ -104,7 +104,7 @@ TEST_CASE("distance to a patch: plane and a quarter cylinder", "[deviation]") {
 
 TEST_CASE("distance to the surface is at most the parametric deviation", "[deviation]") {
   auto teapot = readBpt(TESSERA_SOURCE_DIR "/data/teapot.bpt");
-  Backend cpu = makeCpuBackend();
+  Backend cpu = makeMirrorBackend();
   QuadtreeOptions o;
   o.linearity = o.flatness = 0.2f;
   Tessellation t = tessellate(teapot, o, cpu);

@@ -85,7 +85,7 @@ void runAloneThenTogether(const std::vector<Job>& jobs,
 TEST_CASE("two tessellations on two threads equal the same runs one at a time (CPU)",
           "[tessellate][concurrency]") {
   const std::vector<Job> jobs = twoJobs();
-  Backend a = makeCpuBackend(), b = makeCpuBackend();
+  Backend a = makeMirrorBackend(), b = makeMirrorBackend();
   runAloneThenTogether(jobs, {&a, &b}, 3);
 }
 

@@ -25,7 +25,7 @@ double arcBound(float flatness, double chord) {
 
 void checkClosed(const std::vector<BezierPatch>& patches, long eulerExpected, double chord,
                  const char* what) {
-  Backend cpu = makeCpuBackend();
+  Backend cpu = makeMirrorBackend();
   for (SplitRule rule : {SplitRule::Midpoint, SplitRule::SampledMax, SplitRule::TrueMax})
     for (float threshold : {0.1f, 0.03f}) {
       QuadtreeOptions o;
@@ -78,7 +78,7 @@ TEST_CASE("a rational sphere with collapsed poles tessellates closed", "[waterti
 
 TEST_CASE("a rational quarter cylinder's tessellation lies on the cylinder",
           "[watertight][general]") {
-  Backend cpu = makeCpuBackend();
+  Backend cpu = makeMirrorBackend();
   for (float flatness : {0.1f, 0.01f}) {
     QuadtreeOptions o;
     o.rule = SplitRule::Midpoint;

@@ -126,13 +126,13 @@ void runEdgeCases(Backend& backend, const char* backendName) {
 
 TEST_CASE("degenerate, cusped and folding patches give finite meshes and recorded limits (CPU)",
           "[tessellate][edge-cases]") {
-  Backend cpu = makeCpuBackend();
+  Backend cpu = makeMirrorBackend();
   runEdgeCases(cpu, "cpu");
 }
 
 TEST_CASE("a cusp stops at the minimum node size when the depth allows more, with that cause",
           "[tessellate][edge-cases]") {
-  Backend cpu = makeCpuBackend();
+  Backend cpu = makeMirrorBackend();
   QuadtreeOptions o;
   o.maxDepth = 24;
   o.minSize = 1.0f / 256.0f;  // reached at depth 8 by midpoint splits
@@ -158,7 +158,7 @@ TEST_CASE("degenerate, cusped and folding patches on Vulkan: finite, and the sam
   vk::Context& context = test::gpuContext();
   Backend gpu = makeVulkanBackend(context);
   runEdgeCases(gpu, "vulkan");
-  Backend cpu = makeCpuBackend();
+  Backend cpu = makeMirrorBackend();
   for (const EdgeCase& c : edgeCases()) {
     QuadtreeOptions o;
     o.maxDepth = 8;

@@ -207,7 +207,7 @@ std::map<std::string, TriangleMesh> validatorSamples() {
 
 TEST_CASE("gltf: the teapot parses back to the mesh, bit for bit", "[gltf]") {
   const std::vector<BezierPatch> patches = readBpt(TESSERA_SOURCE_DIR "/data/teapot.bpt");
-  Backend backend = makeCpuBackend();
+  Backend backend = makeMirrorBackend();
   const Tessellation t = tessellate(patches, QuadtreeOptions{}, backend);
   const TriangleMesh& mesh = t.mesh;
   REQUIRE(mesh.triangleCount() > 0);

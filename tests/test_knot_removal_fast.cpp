@@ -133,7 +133,7 @@ TEST_CASE("The fast reduction makes the specification's decisions", "[reduce]") 
       CHECK(stats.drift[0] <= 1e-9);
       CHECK(stats.drift[1] <= 1e-9);
       // The explicit A⁺ product (the GPU's route, here in double) gives the same.
-      auto cpu = makeCpuCurveProduct();
+      auto cpu = makeReferenceCurveProduct();
       requireSameReduction(reduceSurface(s, o, cpu.get()), spec, 1e-9);
     }
   }

@@ -34,7 +34,7 @@ StencilParity runParity(const LoopShape& shape, const LoopStencilOptions& option
   vk::Context& context = test::gpuContext();
   makeVulkanStencilEvaluator(context, table, width)->apply(gpu);
   makeMirrorStencilEvaluator(table, width)->apply(mirror);
-  makeCpuStencilEvaluator(stencils.table, width)->apply(reference);
+  makeReferenceStencilEvaluator(stencils.table, width)->apply(reference);
   StencilParity r;
   for (size_t i = 0; i < gpu.size(); ++i) {
     REQUIRE(std::isfinite(gpu[i]));

@@ -28,7 +28,7 @@ void parseOnly(const std::string& text, const std::string& name) {
 
 void parseAndRequireManifold(const std::string& text, const std::string& name) {
   std::istringstream in(text);
-  requireManifold(parseObj(in, name), name);
+  validateManifold(parseObj(in, name), name);
 }
 
 // Four vertices of a unit square in z = 0 (lines 1–4).
@@ -148,13 +148,13 @@ TEST_CASE("obj: malformed files name the error kind, file, line and reason", "[i
       parseOnly);
 }
 
-TEST_CASE("obj: requireTriangles names the first other face and its line", "[io][obj]") {
+TEST_CASE("obj: validateTriangles names the first other face and its line", "[io][obj]") {
   const PolygonMesh triangles = parse(kSquare + "f 1 2 3\nf 1 3 4\n");
-  CHECK_NOTHROW(requireTriangles(triangles, "tris.obj"));
+  CHECK_NOTHROW(validateTriangles(triangles, "tris.obj"));
 
   const PolygonMesh mixed = parse(kSquare + "f 1 2 3\n# a quad\nf 1 2 3 4\nf 1 2 3 4\n");
   try {
-    requireTriangles(mixed, "mixed.obj");
+    validateTriangles(mixed, "mixed.obj");
     FAIL("no error");
   } catch (const InputError& e) {
     CHECK(e.kind() == InputErrorKind::Topology);
@@ -168,7 +168,7 @@ TEST_CASE("obj: requireTriangles names the first other face and its line", "[io]
   inCode.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
   inCode.faces = {{0, 1, 3, 2}};
   try {
-    requireTriangles(inCode, "built");
+    validateTriangles(inCode, "built");
     FAIL("no error");
   } catch (const InputError& e) {
     CHECK(e.line() == 0);
@@ -176,19 +176,19 @@ TEST_CASE("obj: requireTriangles names the first other face and its line", "[io]
   }
 }
 
-TEST_CASE("obj: requireManifold accepts closed and open oriented meshes", "[io][obj]") {
+TEST_CASE("obj: validateManifold accepts closed and open oriented meshes", "[io][obj]") {
   // A tetrahedron, outward normals: closed, every edge in two faces, opposite directions.
   const PolygonMesh tetrahedron =
       parse("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n");
-  CHECK_NOTHROW(requireManifold(tetrahedron, "tetrahedron.obj"));
+  CHECK_NOTHROW(validateManifold(tetrahedron, "tetrahedron.obj"));
   // A square with a hole's worth of boundary: two triangles and a quad, all edges ≤ 2 faces.
   const PolygonMesh open = parse(kSquare + "v 2 0 0\nv 2 1 0\nf 1 2 3\nf 1 3 4\nf 2 5 6 3\n");
-  CHECK_NOTHROW(requireManifold(open, "open.obj"));
+  CHECK_NOTHROW(validateManifold(open, "open.obj"));
   // A single triangle: all three edges are boundary edges (holes are allowed).
-  CHECK_NOTHROW(requireManifold(parse("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "one.obj"));
+  CHECK_NOTHROW(validateManifold(parse("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "one.obj"));
 }
 
-TEST_CASE("obj: requireManifold names non-manifold edges and flipped faces", "[io][obj]") {
+TEST_CASE("obj: validateManifold names non-manifold edges and flipped faces", "[io][obj]") {
   test::checkBadTexts(
       {
           {"non_manifold_edge.obj",
@@ -232,7 +232,7 @@ TEST_CASE("obj: files on disk", "[io][obj]") {
       INFO(path);
       try {
         const PolygonMesh mesh = readObj(path);
-        if (c.manifoldCheck) requireManifold(mesh, path);
+        if (c.manifoldCheck) validateManifold(mesh, path);
         FAIL("no error");
       } catch (const InputError& e) {
         INFO(e.what());

@@ -214,7 +214,7 @@ TEST_CASE("convert: the example scene tessellates through readSurfaceFile on the
   const std::vector<BezierPatch> patches =
       readSurfaceFile(TESSERA_SOURCE_DIR "/data/scene_example.json");
   REQUIRE(patches.size() == 4);
-  Backend backend = makeCpuBackend();
+  Backend backend = makeMirrorBackend();
   QuadtreeOptions options;
   const Tessellation t = tessellate(patches, options, backend);
   CHECK(t.mesh.triangleCount() > 0);
@@ -233,7 +233,7 @@ TEST_CASE("convert: the rational example tessellates through readSurfaceFile on 
   REQUIRE(patches.size() == 2);
   REQUIRE(patches[0].weights.size() == 6);
   REQUIRE(patches[1].weights.size() == 9);
-  Backend backend = makeCpuBackend();
+  Backend backend = makeMirrorBackend();
   const Tessellation t = tessellate(patches, QuadtreeOptions(), backend);
   CHECK(t.mesh.triangleCount() > 0);
   CHECK_NOTHROW(t.mesh.validate());

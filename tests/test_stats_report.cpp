@@ -31,7 +31,7 @@ const TeapotRun& teapot() {
   static const TeapotRun run = [] {
     TeapotRun r;
     r.patches = readBpt(TESSERA_SOURCE_DIR "/data/teapot.bpt");
-    Backend backend = makeCpuBackend();
+    Backend backend = makeMirrorBackend();
     QuadtreeOptions options;
     options.rule = SplitRule::SampledMax;
     r.tessellation = tessellate(r.patches, options, backend);

@@ -23,7 +23,7 @@ BezierPatch pointPatch() {  // every control point equal: a patch collapsed to a
 TEST_CASE("runaway refinement stops at the node budget, naming the patch and level",
           "[tessellate][limits]") {
   auto teapot = readBpt(TESSERA_SOURCE_DIR "/data/teapot.bpt");
-  Backend cpu = makeCpuBackend();
+  Backend cpu = makeMirrorBackend();
   QuadtreeOptions o;
   o.linearity = o.flatness = 1e-6f;  // practically never flat
   o.nodeBudget = 5000;
@@ -36,7 +36,7 @@ TEST_CASE("runaway refinement stops at the node budget, naming the patch and lev
 TEST_CASE("the maximum depth bounds refinement, and every leaf records why it ended",
           "[tessellate][limits]") {
   auto teapot = readBpt(TESSERA_SOURCE_DIR "/data/teapot.bpt");
-  Backend cpu = makeCpuBackend();
+  Backend cpu = makeMirrorBackend();
   QuadtreeOptions o;
   o.linearity = o.flatness = 1e-6f;
   o.maxDepth = 3;
@@ -53,7 +53,7 @@ TEST_CASE("the maximum depth bounds refinement, and every leaf records why it en
 
 TEST_CASE("a patch collapsed to a point gives one leaf and no triangles, never NaN",
           "[tessellate][limits]") {
-  Backend cpu = makeCpuBackend();
+  Backend cpu = makeMirrorBackend();
   for (SplitRule rule : {SplitRule::Midpoint, SplitRule::SampledMax, SplitRule::TrueMax}) {
     QuadtreeOptions o;
     o.rule = rule;
@@ -66,7 +66,7 @@ TEST_CASE("a patch collapsed to a point gives one leaf and no triangles, never N
 
 TEST_CASE("non-finite or huge control points are refused with the patch named",
           "[tessellate][limits]") {
-  Backend cpu = makeCpuBackend();
+  Backend cpu = makeMirrorBackend();
   QuadtreeOptions o;
   BezierPatch bad = pointPatch();
   bad.cp[5].y = std::numeric_limits<double>::quiet_NaN();
@@ -88,7 +88,7 @@ TEST_CASE("non-finite or huge control points are refused with the patch named",
 }
 
 TEST_CASE("bad options are refused with the reason", "[tessellate][limits]") {
-  Backend cpu = makeCpuBackend();
+  Backend cpu = makeMirrorBackend();
   QuadtreeOptions o;
   o.flatness = std::numeric_limits<float>::quiet_NaN();
   REQUIRE_THROWS_WITH(tessellate({pointPatch()}, o, cpu), Catch::Contains("flatness"));

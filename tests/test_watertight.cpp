@@ -115,7 +115,7 @@ TEST_CASE("shared patch boundaries are found, reversed ones too", "[watertight]"
 TEST_CASE("a torus of bicubic patches tessellates closed and consistently oriented",
           "[watertight]") {
   auto torus = torusPatches(2.0, 0.7);
-  Backend cpu = makeCpuBackend();
+  Backend cpu = makeMirrorBackend();
   for (SplitRule rule : {SplitRule::UniformGrid, SplitRule::Midpoint, SplitRule::SampledMax,
                          SplitRule::TrueMax})
     for (float threshold : {0.1f, 0.02f}) {
@@ -140,7 +140,7 @@ TEST_CASE("the teapot has no cracks: open edges lie only on unshared patch sides
           "[watertight]") {
   auto teapot = readBpt(TESSERA_SOURCE_DIR "/data/teapot.bpt");
   PatchTopology topology = findSharedEdges(teapot);
-  Backend cpu = makeCpuBackend();
+  Backend cpu = makeMirrorBackend();
   for (SplitRule rule : {SplitRule::Midpoint, SplitRule::SampledMax, SplitRule::TrueMax}) {
     QuadtreeOptions o;
     o.rule = rule;
@@ -194,7 +194,7 @@ TEST_CASE("the teapot has no cracks: open edges lie only on unshared patch sides
 TEST_CASE("the Vulkan path gives the same watertight teapot", "[gpu][watertight]") {
   auto teapot = readBpt(TESSERA_SOURCE_DIR "/data/teapot.bpt");
   Backend gpu = makeVulkanBackend(test::gpuContext());
-  Backend cpu = makeCpuBackend();
+  Backend cpu = makeMirrorBackend();
   QuadtreeOptions o;
   o.rule = SplitRule::TrueMax;
   Tessellation a = tessellate(teapot, o, gpu);

@@ -47,7 +47,7 @@ int runReportingErrors(const std::function<int()>& body, const std::vector<std::
 ChosenBackend chooseBackend(const std::string& name, const std::string& device) {
   ChosenBackend chosen;
   if (name == "cpu") {
-    chosen.backend = makeCpuBackend();
+    chosen.backend = makeMirrorBackend();
     return chosen;
   }
   if (name != "vulkan" && name != "auto")
@@ -61,7 +61,7 @@ ChosenBackend chooseBackend(const std::string& name, const std::string& device) 
     if (name == "vulkan") throw;
     std::fprintf(stderr, "tessera: no Vulkan (%s); using the CPU backend\n", e.what());
     chosen.context.reset();
-    chosen.backend = makeCpuBackend();
+    chosen.backend = makeMirrorBackend();
   }
   return chosen;
 }
@@ -79,7 +79,7 @@ Tessellation tessellateWithFallback(ChosenBackend& chosen, const std::string& ba
     if (backendName != "auto" || !chosen.context) throw;
     std::fprintf(stderr, "tessera: the Vulkan device failed (%s); falling back to the CPU backend\n",
                  e.what());
-    chosen.backend = makeCpuBackend();
+    chosen.backend = makeMirrorBackend();
     chosen.context.reset();
     return tessellate(patches, options, chosen.backend);
   }

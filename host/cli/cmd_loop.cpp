@@ -24,8 +24,8 @@ namespace {
 // A triangle control mesh from OBJ; topology errors name the file and the face's line.
 LoopShape readControlMesh(const std::string& path) {
   PolygonMesh polygons = readObj(path);
-  requireTriangles(polygons, path);
-  requireManifold(polygons, path);
+  validateTriangles(polygons, path);
+  validateManifold(polygons, path);
   LoopShape shape;
   shape.name = std::filesystem::path(path).stem().string();
   shape.positions = polygons.positions;
@@ -75,7 +75,7 @@ int runRefine(const LoopArgs& a) {
     for (int c = 0; c < 3; ++c) rows[3 * v + c] = float(shape.positions[v][c]);
   auto evaluator = chosen.context
                        ? makeVulkanStencilEvaluator(*chosen.context, toFloatStencils(stencils.table), 3)
-                       : makeCpuStencilEvaluator(stencils.table, 3);
+                       : makeReferenceStencilEvaluator(stencils.table, 3);
   evaluator->apply(rows);
   const LoopTopology& last = stencils.topology.back();
   auto rowsAt = [&](uint32_t first) {
@@ -105,7 +105,7 @@ int runFit(const LoopArgs& a) {
   checkMeshFormat(a.output);
   LoopShape cage = readControlMesh(a.input);
   const PolygonMesh target = readObj(a.target);
-  requireTriangles(target, a.target);
+  validateTriangles(target, a.target);
   std::vector<uint32_t> triangles;
   for (const auto& f : target.faces) triangles.insert(triangles.end(), f.begin(), f.end());
   const TriangleBvh bvh(target.positions, triangles);

@@ -44,7 +44,7 @@ PolygonMesh readObj(const std::string& path);
 PolygonMesh parseObj(std::istream& in, const std::string& nameForMessages);
 
 // Topology error naming the first face that is not a triangle and its line.
-void requireTriangles(const PolygonMesh& mesh, const std::string& nameForMessages);
+void validateTriangles(const PolygonMesh& mesh, const std::string& nameForMessages);
 
 // Topology error unless the faces form an oriented 2-manifold with boundary: no face uses a
 // vertex twice, no edge is shared by more than two faces (the message names the edge's
@@ -54,6 +54,6 @@ void requireTriangles(const PolygonMesh& mesh, const std::string& nameForMessage
 // "bow tie", make the surface touch itself: the message names the vertex and a face of each
 // fan). Holes — edges of only one face — are allowed. Not checked: faces that intersect
 // geometrically.
-void requireManifold(const PolygonMesh& mesh, const std::string& nameForMessages);
+void validateManifold(const PolygonMesh& mesh, const std::string& nameForMessages);
 
 }  // namespace tessera

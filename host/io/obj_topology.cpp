@@ -1,4 +1,4 @@
-// The topology checks over a parsed polygon mesh (requireTriangles, requireManifold); rules in
+// The topology checks over a parsed polygon mesh (validateTriangles, validateManifold); rules in
 // obj_reader.h.
 #include <algorithm>
 #include <cstdint>
@@ -47,7 +47,7 @@ struct CornerSets {
 
 }  // namespace
 
-void requireTriangles(const PolygonMesh& mesh, const std::string& nameForMessages) {
+void validateTriangles(const PolygonMesh& mesh, const std::string& nameForMessages) {
   for (size_t f = 0; f < mesh.faces.size(); ++f)
     if (mesh.faces[f].size() != 3)
       throw InputError(InputErrorKind::Topology, nameForMessages, faceLine(mesh, f),
@@ -56,7 +56,7 @@ void requireTriangles(const PolygonMesh& mesh, const std::string& nameForMessage
                            " corners; only triangles are accepted here");
 }
 
-void requireManifold(const PolygonMesh& mesh, const std::string& nameForMessages) {
+void validateManifold(const PolygonMesh& mesh, const std::string& nameForMessages) {
   struct EdgeUse {
     size_t firstFace = 0, secondFace = 0;
     size_t firstFromCorner = 0, firstToCorner = 0;  // the first face's corners on the edge

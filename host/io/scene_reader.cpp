@@ -92,7 +92,7 @@ class SceneParser {
     }
   }
 
-  void requireType(const JsonValue& v, JsonType type, const std::string& what) const {
+  void validateType(const JsonValue& v, JsonType type, const std::string& what) const {
     if (v.type != type)
       fail(InputErrorKind::Syntax, v.line,
            what + " must be " + jsonTypeName(type) + ", found " + jsonTypeName(v.type));
@@ -102,7 +102,7 @@ class SceneParser {
                             const std::string& what) const {
     const JsonValue* v = doc_.member(object, key);
     if (!v) fail(InputErrorKind::Syntax, object.line, what + " has no \"" + key + "\"");
-    requireType(*v, type, "\"" + std::string(key) + "\" of " + what);
+    validateType(*v, type, "\"" + std::string(key) + "\" of " + what);
     return *v;
   }
 
@@ -111,7 +111,7 @@ class SceneParser {
     if (v.type == JsonType::String && isNonFiniteSpelling(doc_.text(v)))
       fail(InputErrorKind::NonFinite, v.line,
            shown(v) + " is not a finite number (" + what + ")");
-    requireType(v, JsonType::Number, what);
+    validateType(v, JsonType::Number, what);
     // parseJsonDocument already turned NaN, Infinity and 1e400 into errors; kept for safety.
     if (!std::isfinite(v.number))
       fail(InputErrorKind::NonFinite, v.line, "a non-finite number (" + what + ")");
@@ -122,7 +122,7 @@ class SceneParser {
   }
 
   long long integer(const JsonValue& v, const std::string& what) const {
-    requireType(v, JsonType::Number, what);
+    validateType(v, JsonType::Number, what);
     if (!v.integer)
       fail(InputErrorKind::Syntax, v.line, what + " must be an integer, found " + shown(v));
     return static_cast<long long>(v.number);
@@ -249,7 +249,7 @@ class SceneParser {
     SceneSurfaceRef ref;
     ref.line = surface.line;
     if (const JsonValue* name = doc_.member(surface, "name")) {
-      requireType(*name, JsonType::String, "\"name\" of " + what);
+      validateType(*name, JsonType::String, "\"name\" of " + what);
       ref.name = doc_.text(*name);
       what += " (\"" + ref.name + "\")";
     }
@@ -264,7 +264,7 @@ class SceneParser {
                                 std::to_string(degree[1]) + "] (row by row, (n+1)(m+1))";
       std::vector<glm::dvec3> cp = points(surface, count, needs, what);
       if (const JsonValue* w = doc_.member(surface, "weights")) {
-        requireType(*w, JsonType::Array, "\"weights\" of " + what);
+        validateType(*w, JsonType::Array, "\"weights\" of " + what);
         const std::vector<double> weight = weights(*w, degree[0], degree[1], what);
         RationalBezierPatch patch;
         patch.degreeU = degree[0];

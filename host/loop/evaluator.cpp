@@ -8,9 +8,9 @@
 namespace tessera {
 namespace {
 
-class CpuStencilEvaluator final : public StencilEvaluator {
+class ReferenceStencilEvaluator final : public StencilEvaluator {
  public:
-  CpuStencilEvaluator(const StencilTable& table, uint32_t width) : table_(table), width_(width) {}
+  ReferenceStencilEvaluator(const StencilTable& table, uint32_t width) : table_(table), width_(width) {}
   std::string name() const override { return "cpu double"; }
   void apply(std::vector<float>& rows) override {
     checkStencilRows(table_.rowCount(), width_, rows.size());
@@ -53,9 +53,9 @@ void checkStencilRows(size_t rowCount, uint32_t width, size_t values) {
                                 std::to_string(width));
 }
 
-std::unique_ptr<StencilEvaluator> makeCpuStencilEvaluator(const StencilTable& table,
+std::unique_ptr<StencilEvaluator> makeReferenceStencilEvaluator(const StencilTable& table,
                                                           uint32_t width) {
-  return std::make_unique<CpuStencilEvaluator>(table, width);
+  return std::make_unique<ReferenceStencilEvaluator>(table, width);
 }
 
 std::unique_ptr<StencilEvaluator> makeMirrorStencilEvaluator(const FloatStencilTable& table,

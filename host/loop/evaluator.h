@@ -26,8 +26,8 @@ class StencilEvaluator {
 };
 
 // Double arithmetic, rows rounded to float at the end.
-std::unique_ptr<StencilEvaluator> makeCpuStencilEvaluator(const StencilTable& table,
-                                                          uint32_t width);
+std::unique_ptr<StencilEvaluator> makeReferenceStencilEvaluator(const StencilTable& table,
+                                                                uint32_t width);
 std::unique_ptr<StencilEvaluator> makeMirrorStencilEvaluator(const FloatStencilTable& table,
                                                              uint32_t width);
 // Uploads the table to `context`'s device; the context must outlive the evaluator. Throws

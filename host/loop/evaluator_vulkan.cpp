@@ -32,10 +32,10 @@ class VulkanStencilEvaluator final : public StencilEvaluator {
                             sizeof(kSpirv_loop_stencil_comp), 4, sizeof(gpu::LoopStencilPush),
                             {}}),
         timer_(context, 2),
-        table_rows_(table.rowCount()),
-        source_rows_(table.sourceRows),
+        tableRows_(table.rowCount()),
+        sourceRows_(table.sourceRows),
         width_(width),
-        batch_ends_(table.batchEnds) {
+        batchEnds_(table.batchEnds) {
     if (width == 0) throw std::invalid_argument("stencil evaluator: row width 0");
     const uint64_t valueBytes = uint64_t(table.rowCount()) * width * sizeof(float);
     const uint64_t limit = context.info().maxStorageBufferRange;
@@ -52,43 +52,43 @@ class VulkanStencilEvaluator final : public StencilEvaluator {
   std::string name() const override { return "vulkan:" + context_.info().name; }
 
   void apply(std::vector<float>& rows) override {
-    checkStencilRows(table_rows_, width_, rows.size());
-    const size_t sourceFloats = size_t(source_rows_) * width_;
+    checkStencilRows(tableRows_, width_, rows.size());
+    const size_t sourceFloats = size_t(sourceRows_) * width_;
     std::memcpy(values_.data(), rows.data(), sourceFloats * sizeof(float));
     context_.submitAndWait([&](VkCommandBuffer cmd) {
       timer_.reset(cmd);
       timer_.mark(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
       uint32_t first = 0;
-      for (size_t b = 0; b < batch_ends_.size(); ++b) {
-        gpu::LoopStencilPush push{first, batch_ends_[b] - first, source_rows_, width_};
+      for (size_t b = 0; b < batchEnds_.size(); ++b) {
+        gpu::LoopStencilPush push{first, batchEnds_[b] - first, sourceRows_, width_};
         if (push.stencilCount > 0) {
           if (b > 0) vk::computeToComputeBarrier(context_, cmd);
           pipeline_.dispatch(cmd, {&offsets_, &indices_, &weights_, &values_}, &push,
                              push.stencilCount);
         }
-        first = batch_ends_[b];
+        first = batchEnds_[b];
       }
       timer_.mark(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
       vk::computeToHostBarrier(context_, cmd);
     });
     const auto intervals = timer_.intervalsNs();
-    last_device_seconds_ = intervals.empty() ? 0.0 : intervals[0] * 1e-9;
+    lastDeviceSeconds_ = intervals.empty() ? 0.0 : intervals[0] * 1e-9;
     std::memcpy(rows.data() + sourceFloats, static_cast<const float*>(values_.data()) + sourceFloats,
                 (rows.size() - sourceFloats) * sizeof(float));
   }
 
-  double lastDeviceSeconds() const override { return last_device_seconds_; }
+  double lastDeviceSeconds() const override { return lastDeviceSeconds_; }
 
  private:
   vk::Context& context_;
   vk::ComputePipeline pipeline_;
   vk::GpuTimer timer_;
-  size_t table_rows_;
-  uint32_t source_rows_;
+  size_t tableRows_;
+  uint32_t sourceRows_;
   uint32_t width_;
-  std::vector<uint32_t> batch_ends_;
+  std::vector<uint32_t> batchEnds_;
   vk::Buffer offsets_, indices_, weights_, values_;
-  double last_device_seconds_ = 0.0;
+  double lastDeviceSeconds_ = 0.0;
 };
 
 }  // namespace

@@ -38,7 +38,7 @@ std::vector<uint32_t> weldIdenticalPositions(const std::vector<glm::vec3>& posit
 
 }  // namespace
 
-Backend makeCpuBackend() {
+Backend makeMirrorBackend() {
   return {"cpu", makeParallelMirrorClassifier(), makeMirrorEvaluator()};
 }
 

@@ -20,7 +20,7 @@ struct Backend {
   std::unique_ptr<PatchEvaluator> evaluator;
 };
 
-Backend makeCpuBackend();                       // fp32 mirror, all cores for the tree
+Backend makeMirrorBackend();                       // fp32 mirror, all cores for the tree
 Backend makeVulkanBackend(vk::Context& context);
 
 struct TessellationStats {

@@ -36,7 +36,7 @@ class VulkanClassifier final : public NodeClassifier {
   void classify(const std::vector<gpu::BicubicPatch>& patches,
                 const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
                 std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) override {
-    if (uploaded_count_ != patches.size() || uploadedGeneral_)
+    if (uploadedCount_ != patches.size() || uploadedGeneral_)
       throw std::logic_error("VulkanClassifier: classify() without beginTree() for these patches");
     run(false, {&patches_, &nodes_, &decisions_}, nodes, options, decisions, stats);
   }
@@ -44,14 +44,14 @@ class VulkanClassifier final : public NodeClassifier {
   void classifyGeneral(const GeneralPatchSet& patches, const std::vector<gpu::QuadNode>& nodes,
                        const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
                        LevelStats& stats) override {
-    if (uploaded_count_ != patches.size() || !uploadedGeneral_)
+    if (uploadedCount_ != patches.size() || !uploadedGeneral_)
       throw std::logic_error(
           "VulkanClassifier: classifyGeneral() without beginGeneralTree() for these patches");
     run(true, {&patches_, &nodes_, &decisions_, &points_}, nodes, options, decisions, stats);
   }
 
   void beginTree(const std::vector<gpu::BicubicPatch>& patches) override {
-    uploaded_count_ = patches.size();
+    uploadedCount_ = patches.size();
     uploadedGeneral_ = false;
     if (patches.empty()) return;
     vk::ensureCapacity(context_, patches_, patches.size() * sizeof(gpu::BicubicPatch),
@@ -60,7 +60,7 @@ class VulkanClassifier final : public NodeClassifier {
   }
 
   void beginGeneralTree(const GeneralPatchSet& patches) override {
-    uploaded_count_ = patches.size();
+    uploadedCount_ = patches.size();
     uploadedGeneral_ = true;
     if (patches.patches.empty()) return;
     vk::ensureCapacity(context_, patches_, patches.patches.size() * sizeof(gpu::GeneralPatch),
@@ -120,7 +120,7 @@ class VulkanClassifier final : public NodeClassifier {
   vk::GpuTimer timer_;
   std::map<std::tuple<bool, uint32_t, int>, std::unique_ptr<vk::ComputePipeline>> pipelines_;
   vk::Buffer patches_, nodes_, decisions_, points_;
-  size_t uploaded_count_ = 0;
+  size_t uploadedCount_ = 0;
   bool uploadedGeneral_ = false;
 };
 

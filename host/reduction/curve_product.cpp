@@ -8,7 +8,7 @@ namespace tessera {
 
 namespace {
 
-class CpuCurveProduct final : public CurveProduct {
+class ReferenceCurveProduct final : public CurveProduct {
  public:
   std::string name() const override { return "cpu (double)"; }
   std::vector<glm::dvec3> apply(const BandMatrix& m, const std::vector<glm::dvec3>& in,
@@ -33,7 +33,7 @@ class MirrorCurveProduct final : public CurveProduct {
 
 }  // namespace
 
-std::unique_ptr<CurveProduct> makeCpuCurveProduct() { return std::make_unique<CpuCurveProduct>(); }
+std::unique_ptr<CurveProduct> makeReferenceCurveProduct() { return std::make_unique<ReferenceCurveProduct>(); }
 std::unique_ptr<CurveProduct> makeMirrorCurveProduct() {
   return std::make_unique<MirrorCurveProduct>();
 }

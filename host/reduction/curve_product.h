@@ -27,7 +27,7 @@ class CurveProduct {
 };
 
 // applyBandToCurves in double.
-std::unique_ptr<CurveProduct> makeCpuCurveProduct();
+std::unique_ptr<CurveProduct> makeReferenceCurveProduct();
 
 // What the fp32 backends compute on: the band in fp32, and each curve relative to its own first
 // point (subtracted in double), so the rounding is relative to the curve's extent, not to its

@@ -26,7 +26,7 @@ int countOf(const BSplineSurface& s, ParamDirection d) {
   return d == ParamDirection::U ? s.countU : s.countV;
 }
 
-void requireFinite(const std::vector<glm::dvec3>& cp, const char* what) {
+void validateFinite(const std::vector<glm::dvec3>& cp, const char* what) {
   for (size_t k = 0; k < cp.size(); ++k) {
     if (!std::isfinite(cp[k].x) || !std::isfinite(cp[k].y) || !std::isfinite(cp[k].z)) {
       throw std::invalid_argument(std::string(what) + ": control point " + std::to_string(k) +
@@ -84,7 +84,7 @@ std::vector<glm::dvec3> inverseOslo(int degree, const std::vector<double>& coars
                                 " fine knots of degree " + std::to_string(degree) +
                                 " (expected " + std::to_string(fineCount) + ")");
   }
-  requireFinite(fineCp, "inverseOslo");
+  validateFinite(fineCp, "inverseOslo");
   return applyToControlPoints(pseudoInverse(osloMatrix(degree, coarseKnots, fineKnots)), fineCp);
 }
 
@@ -105,7 +105,7 @@ void validateReductionOptions(const ReductionOptions& o) {
 
 void validateSurfaceForReduction(const BSplineSurface& surface) {
   validateSurface(surface);
-  requireFinite(surface.cp, "B-spline surface");
+  validateFinite(surface.cp, "B-spline surface");
 }
 
 void recordAttempt(PassReport& report, int pass, int removable, bool removed, double measured,

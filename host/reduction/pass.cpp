@@ -126,7 +126,7 @@ ReductionPass::WindowChange ReductionPass::solveWindow(int pos, int a, int b, in
   }
   const BandCholesky cholesky = factorBand(g_, w, p);
   z_.resize(static_cast<size_t>(w) * k);
-  p_rows_.resize(static_cast<size_t>(rows) * k);
+  pRows_.resize(static_cast<size_t>(rows) * k);
 
   // Everything below is independent per column: split the columns (whole points) among the
   // threads, and walk each share in blocks that stay in cache from right-hand side to P.
@@ -181,7 +181,7 @@ ReductionPass::WindowChange ReductionPass::solveWindow(int pos, int a, int b, in
       for (int r = 0; r < rows; ++r) {
         const double* v = rowValues_.data() + static_cast<size_t>(r) * band;
         const int f = rowFirst_[static_cast<size_t>(r)];
-        double* out = p_rows_.data() + static_cast<size_t>(r) * k + s0;
+        double* out = pRows_.data() + static_cast<size_t>(r) * k + s0;
         std::fill_n(out, width, 0.0);
         for (int s = 0; s <= p; ++s) {
           if (v[s] == 0.0) continue;
@@ -259,7 +259,7 @@ bool ReductionPass::tryRemove(int knot, ErrorMeasure measure, double target, dou
   const int parts = static_cast<double>(rows) * static_cast<double>(error_.others) > 5e4 ? threads_ : 1;
   parallelParts(parts, [&](int part) {
     const int r0 = rows * part / parts, r1 = rows * (part + 1) / parts;
-    error_.measure(ja + r0, ja + r1, p_rows_.data() + static_cast<size_t>(r0) * k, columns_,
+    error_.measure(ja + r0, ja + r1, pRows_.data() + static_cast<size_t>(r0) * k, columns_,
                    newSum_.data() + r0, newMax_.data() + r0);
   });
   stats_.slabsMeasured += rows;

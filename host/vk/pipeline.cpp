@@ -19,13 +19,13 @@ SpecConstant specFloat(uint32_t id, float value) {
 ComputePipeline::ComputePipeline(Context& context, const ComputePipelineDesc& desc)
     : context_(context),
       name_(desc.name),
-      buffer_count_(desc.storageBufferCount),
-      push_bytes_(desc.pushConstantBytes) {
+      bufferCount_(desc.storageBufferCount),
+      pushBytes_(desc.pushConstantBytes) {
   const DeviceTable& vk = context.vk();
   VkDevice device = context.device();
 
-  std::vector<VkDescriptorSetLayoutBinding> bindings(buffer_count_);
-  for (uint32_t i = 0; i < buffer_count_; ++i) {
+  std::vector<VkDescriptorSetLayoutBinding> bindings(bufferCount_);
+  for (uint32_t i = 0; i < bufferCount_; ++i) {
     bindings[i].binding = i;
     bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     bindings[i].descriptorCount = 1;
@@ -33,15 +33,15 @@ ComputePipeline::ComputePipeline(Context& context, const ComputePipelineDesc& de
   }
   VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   setInfo.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
-  setInfo.bindingCount = buffer_count_;
+  setInfo.bindingCount = bufferCount_;
   setInfo.pBindings = bindings.data();
-  VK_CHECK(vk.vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &set_layout_));
+  VK_CHECK(vk.vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout_));
 
-  VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, push_bytes_};
+  VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes_};
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   layoutInfo.setLayoutCount = 1;
-  layoutInfo.pSetLayouts = &set_layout_;
-  layoutInfo.pushConstantRangeCount = push_bytes_ ? 1 : 0;
+  layoutInfo.pSetLayouts = &setLayout_;
+  layoutInfo.pushConstantRangeCount = pushBytes_ ? 1 : 0;
   layoutInfo.pPushConstantRanges = &range;
   VK_CHECK(vk.vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout_));
 
@@ -71,7 +71,7 @@ ComputePipeline::ComputePipeline(Context& context, const ComputePipelineDesc& de
   vk.vkDestroyShaderModule(device, module, nullptr);
   if (result != VK_SUCCESS) {
     vk.vkDestroyPipelineLayout(device, layout_, nullptr);
-    vk.vkDestroyDescriptorSetLayout(device, set_layout_, nullptr);
+    vk.vkDestroyDescriptorSetLayout(device, setLayout_, nullptr);
     throw VulkanError("vkCreateComputePipelines(" + name_ + ")", result);
   }
 }
@@ -80,13 +80,13 @@ ComputePipeline::~ComputePipeline() {
   const DeviceTable& vk = context_.vk();
   vk.vkDestroyPipeline(context_.device(), pipeline_, nullptr);
   vk.vkDestroyPipelineLayout(context_.device(), layout_, nullptr);
-  vk.vkDestroyDescriptorSetLayout(context_.device(), set_layout_, nullptr);
+  vk.vkDestroyDescriptorSetLayout(context_.device(), setLayout_, nullptr);
 }
 
 void ComputePipeline::dispatch(VkCommandBuffer cmd, std::initializer_list<const Buffer*> buffers,
                                const void* pushConstants, uint32_t invocations) const {
-  if (buffers.size() != buffer_count_)
-    throw std::invalid_argument(name_ + ": expected " + std::to_string(buffer_count_) +
+  if (buffers.size() != bufferCount_)
+    throw std::invalid_argument(name_ + ": expected " + std::to_string(bufferCount_) +
                                 " buffers, got " + std::to_string(buffers.size()));
   if (invocations == 0) return;
   const DeviceTable& vk = context_.vk();
@@ -104,8 +104,8 @@ void ComputePipeline::dispatch(VkCommandBuffer cmd, std::initializer_list<const 
   }
   vk.vkCmdPushDescriptorSetKHR(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0,
                                static_cast<uint32_t>(writes.size()), writes.data());
-  if (push_bytes_)
-    vk.vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, push_bytes_,
+  if (pushBytes_)
+    vk.vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes_,
                           pushConstants);
   const uint32_t localSize = gpu::kLocalSize;
   uint32_t groups = (invocations + localSize - 1) / localSize;
@@ -135,7 +135,7 @@ void computeToHostBarrier(const Context& context, VkCommandBuffer cmd) {
   memoryBarrier(context, cmd, VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
 }
 
-GpuTimer::GpuTimer(Context& context, uint32_t maxMarks) : context_(context), max_marks_(maxMarks) {
+GpuTimer::GpuTimer(Context& context, uint32_t maxMarks) : context_(context), maxMarks_(maxMarks) {
   if (!context.timestampsSupported() || maxMarks == 0) return;
   VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
   info.queryType = VK_QUERY_TYPE_TIMESTAMP;
@@ -149,12 +149,12 @@ GpuTimer::~GpuTimer() {
 
 void GpuTimer::reset(VkCommandBuffer cmd) {
   used_ = 0;
-  if (pool_) context_.vk().vkCmdResetQueryPool(cmd, pool_, 0, max_marks_);
+  if (pool_) context_.vk().vkCmdResetQueryPool(cmd, pool_, 0, maxMarks_);
 }
 
 void GpuTimer::mark(VkCommandBuffer cmd, VkPipelineStageFlagBits stage) {
   if (!pool_) return;
-  if (used_ >= max_marks_) throw std::out_of_range("GpuTimer: more marks than reserved");
+  if (used_ >= maxMarks_) throw std::out_of_range("GpuTimer: more marks than reserved");
   context_.vk().vkCmdWriteTimestamp(cmd, stage, pool_, used_++);
 }
 

@@ -47,9 +47,9 @@ class ComputePipeline {
  private:
   Context& context_;
   std::string name_;
-  uint32_t buffer_count_ = 0;
-  uint32_t push_bytes_ = 0;
-  VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
+  uint32_t bufferCount_ = 0;
+  uint32_t pushBytes_ = 0;
+  VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
   VkPipelineLayout layout_ = VK_NULL_HANDLE;
   VkPipeline pipeline_ = VK_NULL_HANDLE;
 };
@@ -76,7 +76,7 @@ class GpuTimer {
  private:
   Context& context_;
   VkQueryPool pool_ = VK_NULL_HANDLE;
-  uint32_t max_marks_ = 0;
+  uint32_t maxMarks_ = 0;
   uint32_t used_ = 0;
 };
 

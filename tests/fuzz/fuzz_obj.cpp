@@ -16,8 +16,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       fuzz::expect(face.size() >= 3);
       for (uint32_t v : face) fuzz::expect(v < mesh.positions.size());
     }
-    requireManifold(mesh, "fuzz.obj");
-    requireTriangles(mesh, "fuzz.obj");
+    validateManifold(mesh, "fuzz.obj");
+    validateTriangles(mesh, "fuzz.obj");
   });
   return 0;
 }

@@ -11,7 +11,7 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace tessera;
-  static Backend cpu = makeCpuBackend();
+  static Backend cpu = makeMirrorBackend();
   FuzzedDataProvider input(data, size);
   QuadtreeOptions options;
   const SplitRule rules[] = {SplitRule::Midpoint, SplitRule::SampledMax, SplitRule::TrueMax};

@@ -58,7 +58,7 @@ class ReductionPass {
 
  private:
   // Solves the window [a, b] of the candidate knots xNew_ (fine rows ja ≤ j < jb), leaving
-  // the window's rows of Q in z_ and the fine rows (A·Q)_j in p_rows_.
+  // the window's rows of Q in z_ and the fine rows (A·Q)_j in pRows_.
   WindowChange solveWindow(int pos, int a, int b, int ja, int jb);
 
   int p_, m_, columns_;
@@ -78,7 +78,7 @@ class ReductionPass {
   double total_ = 0.0;
 
   // Scratch of one removal.
-  std::vector<double> xNew_, rowValues_, g_, z_, p_rows_, newSum_, newMax_;
+  std::vector<double> xNew_, rowValues_, g_, z_, pRows_, newSum_, newMax_;
   std::vector<int> rowFirst_;
   std::vector<std::vector<double>> residual_;  // per thread
 };
