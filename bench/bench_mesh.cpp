@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
   bench::Report report("bench_mesh", argc, argv);
   int instances = argc > 1 ? std::atoi(argv[1]) : 1000;
   auto patches = bench::perturbedCopies(readBpt(TESSERA_BENCH_DATA "/teapot.bpt"), instances);
-  auto gpuPatches = toGpuPatches(patches);
+  const PatchSet gpuPatches(toGpuPatches(patches));
   vk::ContextOptions options;
   vk::Context context(options);
   report.setDevice(context);

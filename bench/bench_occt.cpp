@@ -174,7 +174,8 @@ Tessellation countedGrids(const std::vector<BezierPatch>& patches,
     const Divisions d = patchDivisions(toRationalPatch(patches[p]), counting);
     grid.gridU = d.nu;
     grid.gridV = d.nv;
-    for (QuadLeaf leaf : buildQuadtree({gpuPatches[p]}, grid, *unused).leaves) {
+    const PatchSet one(std::vector<gpu::BicubicPatch>{gpuPatches[p]});
+    for (QuadLeaf leaf : buildQuadtree(one, grid, *unused).leaves) {
       leaf.patchIndex = uint32_t(p);
       tree.leaves.push_back(leaf);
     }

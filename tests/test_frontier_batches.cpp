@@ -28,26 +28,23 @@ class LimitedClassifier : public NodeClassifier {
   std::string name() const override { return "limited mirror"; }
   size_t maxBatchNodes() const override { return batchNodes_; }
   size_t maxPatchBufferBytes() const override { return patchBytes_; }
-  void beginTree(const std::vector<gpu::BicubicPatch>& patches) override {
-    largestPatchBytes = std::max(largestPatchBytes, patches.size() * sizeof(gpu::BicubicPatch));
+  void beginTree(const PatchSet& patches) override {
+    if (patches.isBicubic()) {
+      largestPatchBytes =
+          std::max(largestPatchBytes, patches.size() * sizeof(gpu::BicubicPatch));
+    } else {
+      const GeneralPatchSet& general = patches.general();
+      largestPatchBytes = std::max({largestPatchBytes,
+                                    general.patches.size() * sizeof(gpu::GeneralPatch),
+                                    general.points.size() * sizeof(gpu::vec4)});
+    }
     inner_->beginTree(patches);
   }
-  void classify(const std::vector<gpu::BicubicPatch>& patches,
-                const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
-                std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) override {
+  void classify(const PatchSet& patches, const std::vector<gpu::QuadNode>& nodes,
+                const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
+                LevelStats& stats) override {
     largestBatch = std::max(largestBatch, nodes.size());
     inner_->classify(patches, nodes, options, decisions, stats);
-  }
-  void beginGeneralTree(const GeneralPatchSet& patches) override {
-    largestPatchBytes = std::max({largestPatchBytes, patches.patches.size() * sizeof(gpu::GeneralPatch),
-                                  patches.points.size() * sizeof(gpu::vec4)});
-    inner_->beginGeneralTree(patches);
-  }
-  void classifyGeneral(const GeneralPatchSet& patches, const std::vector<gpu::QuadNode>& nodes,
-                       const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
-                       LevelStats& stats) override {
-    largestBatch = std::max(largestBatch, nodes.size());
-    inner_->classifyGeneral(patches, nodes, options, decisions, stats);
   }
   size_t largestBatch = 0, largestPatchBytes = 0;
 

@@ -44,8 +44,8 @@ void checkGpuParity(const std::vector<BezierPatch>& input, const char* what) {
   vk::Context& context = test::gpuContext();
   GeneralPatchSet set = toGeneralPatchSet(input);
   auto queries = test::gridQueries(set.size(), 9, 64, 77);
-  auto gpu = makeVulkanEvaluator(context)->evaluateGeneral(set, queries);
-  auto cpu = makeMirrorEvaluator()->evaluateGeneral(set, queries);
+  auto gpu = makeVulkanEvaluator(context)->evaluate(set, queries);
+  auto cpu = makeMirrorEvaluator()->evaluate(set, queries);
   REQUIRE(gpu.size() == queries.size());
   auto [mismatches, worst] = bitDifferences(gpu, cpu);
   WARN(what << " on " << context.info().name << ": " << queries.size() << " queries, "
@@ -68,7 +68,7 @@ struct Accuracy {
 Accuracy accuracyOf(const std::vector<BezierPatch>& input) {
   GeneralPatchSet set = toGeneralPatchSet(input);
   auto queries = test::gridQueries(set.size(), 9, 32, 5);
-  auto fp32 = makeMirrorEvaluator()->evaluateGeneral(set, queries);
+  auto fp32 = makeMirrorEvaluator()->evaluate(set, queries);
   Accuracy a;
   for (size_t i = 0; i < queries.size(); ++i) {
     const gpu::GeneralPatch& g = set.patches[queries[i].patchIndex];
@@ -145,7 +145,7 @@ TEST_CASE("a degree-elevated bicubic is the same surface through the general pat
   for (const BezierPatch& p : bicubic) elevated.push_back(elevateDegreeTo(p, 5, 4));
   auto queries = test::gridQueries(bicubic.size(), 9, 16, 3);
   auto original = makeMirrorEvaluator()->evaluate(toGpuPatches(bicubic), queries);
-  auto general = makeMirrorEvaluator()->evaluateGeneral(toGeneralPatchSet(elevated), queries);
+  auto general = makeMirrorEvaluator()->evaluate(toGeneralPatchSet(elevated), queries);
   double posRel = 0, normal = 0;
   for (size_t i = 0; i < queries.size(); ++i) {
     const double size = std::max(1.0, double(glm::length(glm::vec3(original[i].position))));

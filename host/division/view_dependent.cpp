@@ -82,7 +82,7 @@ TriangleMesh uniformGridMesh(const std::vector<RationalBezierPatch>& patches,
   QuadtreeOptions grid;
   grid.rule = SplitRule::UniformGrid;
   const std::unique_ptr<NodeClassifier> unused = makeReferenceClassifier();
-  const std::vector<gpu::BicubicPatch> one(1);
+  const PatchSet one(std::vector<gpu::BicubicPatch>(1));
   std::vector<QuadLeaf> leaves;
   std::vector<BezierPatch> proxies(patches.size());
   for (size_t p = 0; p < patches.size(); ++p) {

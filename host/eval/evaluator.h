@@ -9,6 +9,7 @@
 
 #include "geometry/general_patch.h"
 #include "geometry/patch.h"
+#include "eval/patch_set.h"
 #include "shaders/layout.h"
 
 namespace tessera {
@@ -24,11 +25,10 @@ class PatchEvaluator {
   virtual ~PatchEvaluator() = default;
   virtual std::string name() const = 0;
   // One sample per query, in query order. Query patch indices must be < patches.size().
-  virtual std::vector<gpu::EvalSample> evaluate(const std::vector<gpu::BicubicPatch>& patches,
+  // Bicubic sets take the BicubicPatch kernel, general ones (degree 1..7, polynomial or
+  // rational; general_patch.h) the general kernel.
+  virtual std::vector<gpu::EvalSample> evaluate(const PatchSet& patches,
                                                 const std::vector<gpu::EvalQuery>& queries) = 0;
-  // The same for general patches (degree 1..7, polynomial or rational; general_patch.h).
-  virtual std::vector<gpu::EvalSample> evaluateGeneral(
-      const GeneralPatchSet& patches, const std::vector<gpu::EvalQuery>& queries) = 0;
 };
 
 std::unique_ptr<PatchEvaluator> makeMirrorEvaluator();

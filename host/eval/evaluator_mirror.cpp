@@ -38,8 +38,15 @@ namespace {
 class MirrorEvaluator final : public PatchEvaluator {
  public:
   std::string name() const override { return "cpu-fp32-mirror"; }
-  std::vector<gpu::EvalSample> evaluate(const std::vector<gpu::BicubicPatch>& patches,
+  std::vector<gpu::EvalSample> evaluate(const PatchSet& patches,
                                         const std::vector<gpu::EvalQuery>& queries) override {
+    return patches.isBicubic() ? evaluateBicubic(patches.bicubic(), queries)
+                               : evaluateGeneral(patches.general(), queries);
+  }
+
+ private:
+  std::vector<gpu::EvalSample> evaluateBicubic(const std::vector<gpu::BicubicPatch>& patches,
+                                               const std::vector<gpu::EvalQuery>& queries) {
     checkQueries(patches.size(), queries);
     std::vector<gpu::EvalSample> out(queries.size());
     for (size_t i = 0; i < queries.size(); ++i) {
@@ -50,7 +57,7 @@ class MirrorEvaluator final : public PatchEvaluator {
   }
 
   std::vector<gpu::EvalSample> evaluateGeneral(const GeneralPatchSet& patches,
-                                               const std::vector<gpu::EvalQuery>& queries) override {
+                                               const std::vector<gpu::EvalQuery>& queries) {
     checkQueries(patches.size(), queries);
     std::vector<gpu::EvalSample> out(queries.size());
     for (size_t i = 0; i < queries.size(); ++i) {

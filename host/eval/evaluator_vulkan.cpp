@@ -23,8 +23,15 @@ class VulkanEvaluator final : public PatchEvaluator {
 
   std::string name() const override { return "vulkan:" + context_.info().name; }
 
-  std::vector<gpu::EvalSample> evaluate(const std::vector<gpu::BicubicPatch>& patches,
+  std::vector<gpu::EvalSample> evaluate(const PatchSet& patches,
                                         const std::vector<gpu::EvalQuery>& queries) override {
+    return patches.isBicubic() ? evaluateBicubic(patches.bicubic(), queries)
+                               : evaluateGeneral(patches.general(), queries);
+  }
+
+ private:
+  std::vector<gpu::EvalSample> evaluateBicubic(const std::vector<gpu::BicubicPatch>& patches,
+                                               const std::vector<gpu::EvalQuery>& queries) {
     checkQueries(patches.size(), queries);
     if (queries.empty()) return {};
     vk::ensureCapacity(context_, patches_, patches.size() * sizeof(gpu::BicubicPatch),
@@ -38,7 +45,7 @@ class VulkanEvaluator final : public PatchEvaluator {
   }
 
   std::vector<gpu::EvalSample> evaluateGeneral(const GeneralPatchSet& patches,
-                                               const std::vector<gpu::EvalQuery>& queries) override {
+                                               const std::vector<gpu::EvalQuery>& queries) {
     checkQueries(patches.size(), queries);
     if (queries.empty()) return {};
     if (!general_)
@@ -59,7 +66,6 @@ class VulkanEvaluator final : public PatchEvaluator {
     return run(*general_, {&patches_, &queries_, &samples_, &points_}, queries);
   }
 
- private:
   std::vector<gpu::EvalSample> run(vk::ComputePipeline& pipeline,
                                    std::initializer_list<const vk::Buffer*> buffers,
                                    const std::vector<gpu::EvalQuery>& queries) {

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <unordered_map>
 
 #include "mesh/triangulate.h"
@@ -42,51 +43,14 @@ Backend makeMirrorBackend() {
   return {"cpu", makeParallelMirrorClassifier(), makeMirrorEvaluator()};
 }
 
-Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeOptions& options,
-                        Backend& backend) {
-  auto start = std::chrono::steady_clock::now();
-  for (size_t i = 0; i < patches.size(); ++i)
-    validateTessellationPatch(patches[i], "patch " + std::to_string(i));
-  // Bicubic polynomial patches take the BicubicPatch shaders; anything else sends the whole
-  // set through the general ones (a bicubic patch is a general patch too).
-  const bool bicubic = std::all_of(patches.begin(), patches.end(), isBicubicPolynomial);
-  auto t = std::chrono::steady_clock::now();
-  Tessellation result;
-  double treeMs = 0;
-  if (bicubic) {
-    std::vector<gpu::BicubicPatch> gpuPatches = toGpuPatches(patches);
-    QuadtreeResult tree = buildQuadtree(gpuPatches, options, *backend.classifier);
-    treeMs = msSince(t);
-    result = meshFromTree(patches, gpuPatches, std::move(tree), *backend.evaluator);
-  } else {
-    GeneralPatchSet gpuPatches = toGeneralPatchSet(patches);
-    QuadtreeResult tree = buildQuadtree(gpuPatches, options, *backend.classifier);
-    treeMs = msSince(t);
-    result = meshFromTree(patches, gpuPatches, std::move(tree), *backend.evaluator);
-  }
-  result.stats.treeMs = treeMs;
-  result.stats.totalMs = msSince(start);
-  return result;
-}
+namespace {
 
-Tessellation meshFromTree(const std::vector<BezierPatch>& patches,
-                          const std::vector<gpu::BicubicPatch>& gpuPatches, QuadtreeResult tree,
-                          PatchEvaluator& evaluator) {
-  return meshFromTree(patches, std::move(tree), [&](const std::vector<gpu::EvalQuery>& q) {
-    return evaluator.evaluate(gpuPatches, q);
-  });
-}
+// meshFromTree with any evaluation of the vertices' (patch, u, v) queries.
+using VertexEvaluation =
+    std::function<std::vector<gpu::EvalSample>(const std::vector<gpu::EvalQuery>&)>;
 
-Tessellation meshFromTree(const std::vector<BezierPatch>& patches,
-                          const GeneralPatchSet& gpuPatches, QuadtreeResult tree,
-                          PatchEvaluator& evaluator) {
-  return meshFromTree(patches, std::move(tree), [&](const std::vector<gpu::EvalQuery>& q) {
-    return evaluator.evaluateGeneral(gpuPatches, q);
-  });
-}
-
-Tessellation meshFromTree(const std::vector<BezierPatch>& patches, QuadtreeResult tree,
-                          const VertexEvaluation& evaluate) {
+Tessellation meshFromQueries(const std::vector<BezierPatch>& patches, QuadtreeResult tree,
+                             const VertexEvaluation& evaluate) {
   auto start = std::chrono::steady_clock::now();
   Tessellation result;
   result.tree = std::move(tree);
@@ -142,5 +106,32 @@ Tessellation meshFromTree(const std::vector<BezierPatch>& patches, QuadtreeResul
   s.totalMs = msSince(start);
   return result;
 }
+
+}  // namespace
+
+Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeOptions& options,
+                        Backend& backend) {
+  auto start = std::chrono::steady_clock::now();
+  for (size_t i = 0; i < patches.size(); ++i)
+    validateTessellationPatch(patches[i], "patch " + std::to_string(i));
+  // Bicubic polynomial patches take the BicubicPatch shaders; anything else sends the whole
+  // set through the general ones (a bicubic patch is a general patch too): toPatchSet.
+  auto t = std::chrono::steady_clock::now();
+  const PatchSet gpuPatches = toPatchSet(patches);
+  QuadtreeResult tree = buildQuadtree(gpuPatches, options, *backend.classifier);
+  const double treeMs = msSince(t);
+  Tessellation result = meshFromTree(patches, gpuPatches, std::move(tree), *backend.evaluator);
+  result.stats.treeMs = treeMs;
+  result.stats.totalMs = msSince(start);
+  return result;
+}
+
+Tessellation meshFromTree(const std::vector<BezierPatch>& patches, const PatchSet& gpuPatches,
+                          QuadtreeResult tree, PatchEvaluator& evaluator) {
+  return meshFromQueries(patches, std::move(tree), [&](const std::vector<gpu::EvalQuery>& q) {
+    return evaluator.evaluate(gpuPatches, q);
+  });
+}
+
 
 }  // namespace tessera

@@ -1,12 +1,12 @@
 // The whole job: patches → adaptive quad-tree → triangles → vertices evaluated on the
 // backend → an indexed mesh with positions, normals, (u, v) and patch ids.
 #pragma once
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "eval/evaluator.h"
+#include "eval/patch_set.h"
 #include "mesh/mesh.h"
 #include "geometry/patch.h"
 #include "quadtree/quadtree.h"
@@ -50,16 +50,7 @@ Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeO
 
 // The second half of tessellate(): a finished tree → watertight mesh, vertices evaluated by
 // `evaluator` (timings in stats.triangulateMs and stats.evaluateMs).
-Tessellation meshFromTree(const std::vector<BezierPatch>& patches,
-                          const std::vector<gpu::BicubicPatch>& gpuPatches, QuadtreeResult tree,
-                          PatchEvaluator& evaluator);
-Tessellation meshFromTree(const std::vector<BezierPatch>& patches,
-                          const GeneralPatchSet& gpuPatches, QuadtreeResult tree,
-                          PatchEvaluator& evaluator);
-// The same with any evaluation of the vertices' (patch, u, v) queries.
-using VertexEvaluation =
-    std::function<std::vector<gpu::EvalSample>(const std::vector<gpu::EvalQuery>&)>;
-Tessellation meshFromTree(const std::vector<BezierPatch>& patches, QuadtreeResult tree,
-                          const VertexEvaluation& evaluate);
+Tessellation meshFromTree(const std::vector<BezierPatch>& patches, const PatchSet& gpuPatches,
+                          QuadtreeResult tree, PatchEvaluator& evaluator);
 
 }  // namespace tessera

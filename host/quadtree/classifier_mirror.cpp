@@ -38,16 +38,13 @@ class MirrorClassifier final : public NodeClassifier {
     return threads_ == 1 ? "cpu-fp32" : "cpu-fp32-x" + std::to_string(threads_);
   }
 
-  void classify(const std::vector<gpu::BicubicPatch>& patches,
-                const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
-                std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) override {
-    run(patches, nodes, options, decisions, stats);
-  }
-
-  void classifyGeneral(const GeneralPatchSet& patches, const std::vector<gpu::QuadNode>& nodes,
-                       const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
-                       LevelStats& stats) override {
-    run(patches, nodes, options, decisions, stats);
+  void classify(const PatchSet& patches, const std::vector<gpu::QuadNode>& nodes,
+                const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
+                LevelStats& stats) override {
+    if (patches.isBicubic())
+      run(patches.bicubic(), nodes, options, decisions, stats);
+    else
+      run(patches.general(), nodes, options, decisions, stats);
   }
 
  private:

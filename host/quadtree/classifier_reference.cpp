@@ -229,7 +229,29 @@ class ReferenceClassifier final : public NodeClassifier {
  public:
   std::string name() const override { return "cpu-double"; }
 
-  void beginTree(const std::vector<gpu::BicubicPatch>& patches) override {
+  void beginTree(const PatchSet& patches) override {
+    if (patches.isBicubic())
+      beginBicubic(patches.bicubic());
+    else
+      beginGeneral(patches.general());
+  }
+
+  void classify(const PatchSet& patches, const std::vector<gpu::QuadNode>& nodes,
+                const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
+                LevelStats& stats) override {
+    if (contexts_.size() != patches.size())
+      throw std::logic_error("ReferenceClassifier: classify() without beginTree()");
+    auto start = std::chrono::steady_clock::now();
+    decisions.resize(nodes.size());
+    for (size_t i = 0; i < nodes.size(); ++i)
+      decisions[i] = classifyNode(contexts_[nodes[i].patchIndex], nodes[i], options);
+    stats.classifyMs +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+            .count();
+  }
+
+ private:
+  void beginBicubic(const std::vector<gpu::BicubicPatch>& patches) {
     contexts_.assign(patches.size(), PatchContext());
     for (size_t i = 0; i < patches.size(); ++i) {
       BezierPatch bp;
@@ -242,36 +264,9 @@ class ReferenceClassifier final : public NodeClassifier {
     }
   }
 
-  void beginGeneralTree(const GeneralPatchSet& patches) override {
+  void beginGeneral(const GeneralPatchSet& patches) {
     contexts_.clear();
     for (size_t i = 0; i < patches.size(); ++i) contexts_.push_back(generalContext(patches, i));
-  }
-
-  void classify(const std::vector<gpu::BicubicPatch>& patches,
-                const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
-                std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) override {
-    run(patches.size(), nodes, options, decisions, stats);
-  }
-
-  void classifyGeneral(const GeneralPatchSet& patches, const std::vector<gpu::QuadNode>& nodes,
-                       const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
-                       LevelStats& stats) override {
-    run(patches.size(), nodes, options, decisions, stats);
-  }
-
- private:
-  void run(size_t patchCount, const std::vector<gpu::QuadNode>& nodes,
-           const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
-           LevelStats& stats) {
-    if (contexts_.size() != patchCount)
-      throw std::logic_error("ReferenceClassifier: classify() without beginTree()");
-    auto start = std::chrono::steady_clock::now();
-    decisions.resize(nodes.size());
-    for (size_t i = 0; i < nodes.size(); ++i)
-      decisions[i] = classifyNode(contexts_[nodes[i].patchIndex], nodes[i], options);
-    stats.classifyMs +=
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-            .count();
   }
 
   std::vector<PatchContext> contexts_;

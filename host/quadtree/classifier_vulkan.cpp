@@ -33,42 +33,35 @@ class VulkanClassifier final : public NodeClassifier {
     return size_t(context_.info().maxStorageBufferRange);
   }
 
-  void classify(const std::vector<gpu::BicubicPatch>& patches,
-                const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
-                std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) override {
-    if (uploadedCount_ != patches.size() || uploadedGeneral_)
+  void beginTree(const PatchSet& patches) override {
+    uploadedCount_ = patches.size();
+    uploadedGeneral_ = !patches.isBicubic();
+    if (patches.size() == 0) return;
+    if (patches.isBicubic()) {
+      vk::ensureCapacity(context_, patches_, patches.size() * sizeof(gpu::BicubicPatch),
+                         vk::BufferUse::Upload);
+      patches_.upload(patches.bicubic());
+      return;
+    }
+    const GeneralPatchSet& general = patches.general();
+    vk::ensureCapacity(context_, patches_, general.patches.size() * sizeof(gpu::GeneralPatch),
+                       vk::BufferUse::Upload);
+    vk::ensureCapacity(context_, points_, general.points.size() * sizeof(gpu::vec4),
+                       vk::BufferUse::Upload);
+    patches_.upload(general.patches);
+    points_.upload(general.points);
+  }
+
+  void classify(const PatchSet& patches, const std::vector<gpu::QuadNode>& nodes,
+                const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
+                LevelStats& stats) override {
+    const bool general = !patches.isBicubic();
+    if (uploadedCount_ != patches.size() || uploadedGeneral_ != general)
       throw std::logic_error("VulkanClassifier: classify() without beginTree() for these patches");
-    run(false, {&patches_, &nodes_, &decisions_}, nodes, options, decisions, stats);
-  }
-
-  void classifyGeneral(const GeneralPatchSet& patches, const std::vector<gpu::QuadNode>& nodes,
-                       const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
-                       LevelStats& stats) override {
-    if (uploadedCount_ != patches.size() || !uploadedGeneral_)
-      throw std::logic_error(
-          "VulkanClassifier: classifyGeneral() without beginGeneralTree() for these patches");
-    run(true, {&patches_, &nodes_, &decisions_, &points_}, nodes, options, decisions, stats);
-  }
-
-  void beginTree(const std::vector<gpu::BicubicPatch>& patches) override {
-    uploadedCount_ = patches.size();
-    uploadedGeneral_ = false;
-    if (patches.empty()) return;
-    vk::ensureCapacity(context_, patches_, patches.size() * sizeof(gpu::BicubicPatch),
-                       vk::BufferUse::Upload);
-    patches_.upload(patches);
-  }
-
-  void beginGeneralTree(const GeneralPatchSet& patches) override {
-    uploadedCount_ = patches.size();
-    uploadedGeneral_ = true;
-    if (patches.patches.empty()) return;
-    vk::ensureCapacity(context_, patches_, patches.patches.size() * sizeof(gpu::GeneralPatch),
-                       vk::BufferUse::Upload);
-    vk::ensureCapacity(context_, points_, patches.points.size() * sizeof(gpu::vec4),
-                       vk::BufferUse::Upload);
-    patches_.upload(patches.patches);
-    points_.upload(patches.points);
+    if (general)
+      run(true, {&patches_, &nodes_, &decisions_, &points_}, nodes, options, decisions, stats);
+    else
+      run(false, {&patches_, &nodes_, &decisions_}, nodes, options, decisions, stats);
   }
 
  private:

@@ -111,48 +111,8 @@ size_t frontierBatchNodes(const QuadtreeOptions& options, size_t classifierLimit
 
 namespace {
 
-// The classifier's entry points for each patch representation.
-void beginTree(NodeClassifier& c, const std::vector<gpu::BicubicPatch>& p) { c.beginTree(p); }
-void beginTree(NodeClassifier& c, const GeneralPatchSet& p) { c.beginGeneralTree(p); }
-void classifyLevel(NodeClassifier& c, const std::vector<gpu::BicubicPatch>& p,
-                   const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& o,
-                   std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) {
-  c.classify(p, nodes, o, decisions, stats);
-}
-void classifyLevel(NodeClassifier& c, const GeneralPatchSet& p,
-                   const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& o,
-                   std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) {
-  c.classifyGeneral(p, nodes, o, decisions, stats);
-}
-
 // Patch groups: the patches one tree may take at once (what the classifier's patch buffer
 // holds, and no more roots than one batch). Usually one group, the whole set, uncopied.
-size_t patchBytes(const std::vector<gpu::BicubicPatch>& patches, size_t first, size_t last) {
-  (void)patches;
-  return (last - first) * sizeof(gpu::BicubicPatch);
-}
-size_t patchBytes(const GeneralPatchSet& set, size_t first, size_t last) {
-  size_t points = 0;
-  for (size_t p = first; p < last; ++p)
-    points += size_t(set.patches[p].degreeU + 1) * size_t(set.patches[p].degreeV + 1);
-  return std::max((last - first) * sizeof(gpu::GeneralPatch), points * sizeof(gpu::vec4));
-}
-std::vector<gpu::BicubicPatch> patchSubset(const std::vector<gpu::BicubicPatch>& patches,
-                                           size_t first, size_t last) {
-  return {patches.begin() + long(first), patches.begin() + long(last)};
-}
-GeneralPatchSet patchSubset(const GeneralPatchSet& set, size_t first, size_t last) {
-  GeneralPatchSet subset;
-  for (size_t p = first; p < last; ++p) {
-    gpu::GeneralPatch patch = set.patches[p];
-    const size_t count = size_t(patch.degreeU + 1) * size_t(patch.degreeV + 1);
-    const auto begin = set.points.begin() + long(patch.firstPoint);
-    patch.firstPoint = uint32_t(subset.points.size());
-    subset.points.insert(subset.points.end(), begin, begin + long(count));
-    subset.patches.push_back(patch);
-  }
-  return subset;
-}
 
 // Nodes of one level waiting for the classifier, with their paths.
 struct Batch {
@@ -194,8 +154,7 @@ void addLevelStats(LevelStats& total, const LevelStats& batch) {
 // One tree over `patches` (a group; leaves name patch firstPatch + local index). Levels are
 // classified whole while they fit in a batch — the level-synchronous algorithm of the paper —
 // and split into batches taken depth first when they do not, which bounds the frontier.
-template <class Patches>
-void buildGroupTree(const Patches& patches, uint32_t firstPatch, const QuadtreeOptions& options,
+void buildGroupTree(const PatchSet& patches, uint32_t firstPatch, const QuadtreeOptions& options,
                     NodeClassifier& classifier, size_t batchNodes, size_t& total,
                     QuadtreeResult& result) {
   std::vector<gpu::QuadNode> roots;
@@ -204,7 +163,7 @@ void buildGroupTree(const Patches& patches, uint32_t firstPatch, const QuadtreeO
     roots.push_back({gpu::vec4(0.0f, 0.0f, 1.0f, 1.0f), p, 0, 0, 0});
     rootPaths.push_back(0);
   }
-  beginTree(classifier, patches);
+  classifier.beginTree(patches);
   std::vector<Batch> stack;
   size_t waiting = roots.size();  // nodes in `stack`
   pushBatches(stack, 0, roots, rootPaths, batchNodes);
@@ -219,7 +178,7 @@ void buildGroupTree(const Patches& patches, uint32_t firstPatch, const QuadtreeO
     LevelStats stats;
     stats.level = level;
     stats.nodes = batch.nodes.size();
-    classifyLevel(classifier, patches, batch.nodes, options, decisions, stats);
+    classifier.classify(patches, batch.nodes, options, decisions, stats);
     ++result.batches;
 
     auto start = std::chrono::steady_clock::now();
@@ -268,8 +227,7 @@ void buildGroupTree(const Patches& patches, uint32_t firstPatch, const QuadtreeO
   }
 }
 
-template <class Patches>
-QuadtreeResult buildTree(const Patches& patches, const QuadtreeOptions& options,
+QuadtreeResult buildTree(const PatchSet& patches, const QuadtreeOptions& options,
                          NodeClassifier& classifier) {
   validateOptions(options);
   if (options.rule == SplitRule::UniformGrid) return uniformGrid(patches.size(), options);
@@ -285,11 +243,11 @@ QuadtreeResult buildTree(const Patches& patches, const QuadtreeOptions& options,
   for (size_t first = 0; first < patches.size();) {
     size_t last = first + 1;
     while (last < patches.size() && last - first < batchNodes &&
-           patchBytes(patches, first, last + 1) <= bufferBytes)
+           patches.bufferBytes(first, last + 1) <= bufferBytes)
       ++last;
-    if (patchBytes(patches, first, last) > bufferBytes)
+    if (patches.bufferBytes(first, last) > bufferBytes)
       throw TessellationLimitError("patch " + std::to_string(first) + " alone needs " +
-                                   std::to_string(patchBytes(patches, first, last)) +
+                                   std::to_string(patches.bufferBytes(first, last)) +
                                    " bytes, more than the device's largest storage buffer (" +
                                    std::to_string(bufferBytes) + " bytes)");
     total += last - first;
@@ -297,7 +255,7 @@ QuadtreeResult buildTree(const Patches& patches, const QuadtreeOptions& options,
     if (first == 0 && last == patches.size())
       buildGroupTree(patches, 0, options, classifier, batchNodes, total, result);
     else
-      buildGroupTree(patchSubset(patches, first, last), uint32_t(first), options, classifier,
+      buildGroupTree(patches.subset(first, last), uint32_t(first), options, classifier,
                      batchNodes, total, result);
     first = last;
   }
@@ -306,12 +264,7 @@ QuadtreeResult buildTree(const Patches& patches, const QuadtreeOptions& options,
 
 }  // namespace
 
-QuadtreeResult buildQuadtree(const std::vector<gpu::BicubicPatch>& patches,
-                             const QuadtreeOptions& options, NodeClassifier& classifier) {
-  return buildTree(patches, options, classifier);
-}
-
-QuadtreeResult buildQuadtree(const GeneralPatchSet& patches, const QuadtreeOptions& options,
+QuadtreeResult buildQuadtree(const PatchSet& patches, const QuadtreeOptions& options,
                              NodeClassifier& classifier) {
   return buildTree(patches, options, classifier);
 }

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/general_patch.h"
+#include "eval/patch_set.h"
 #include "shaders/layout.h"
 
 namespace tessera {
@@ -97,18 +97,14 @@ class NodeClassifier {
   virtual ~NodeClassifier() = default;
   virtual std::string name() const = 0;
   // Called once per tree before its first level (the GPU backend uploads the patches here).
-  virtual void beginTree(const std::vector<gpu::BicubicPatch>& patches) { (void)patches; }
-  virtual void classify(const std::vector<gpu::BicubicPatch>& patches,
-                        const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
-                        std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) = 0;
-  // The same for general patches (degree 1..7, polynomial or rational; general_patch.h).
-  virtual void beginGeneralTree(const GeneralPatchSet& patches) { (void)patches; }
-  virtual void classifyGeneral(const GeneralPatchSet& patches,
-                               const std::vector<gpu::QuadNode>& nodes,
-                               const QuadtreeOptions& options,
-                               std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) = 0;
+  virtual void beginTree(const PatchSet& patches) { (void)patches; }
+  // Decides each node of one level: bicubic sets on the BicubicPatch fast path, general ones
+  // (degree 1..7, polynomial or rational; general_patch.h) on the general path.
+  virtual void classify(const PatchSet& patches, const std::vector<gpu::QuadNode>& nodes,
+                        const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
+                        LevelStats& stats) = 0;
   // Most nodes one classify call may take, and most bytes of one patch array (BicubicPatch,
-  // GeneralPatch or control points) one tree may use: a GPU's largest storage buffer. The
+  // GeneralPatch or control points: PatchSet::bufferBytes) one tree may use: a GPU's largest storage buffer. The
   // frontier splits levels and patch sets to stay within them.
   virtual size_t maxBatchNodes() const { return SIZE_MAX; }
   virtual size_t maxPatchBufferBytes() const { return SIZE_MAX; }
@@ -119,9 +115,7 @@ std::unique_ptr<NodeClassifier> makeParallelMirrorClassifier();    // the same o
 std::unique_ptr<NodeClassifier> makeReferenceClassifier();         // double precision
 std::unique_ptr<NodeClassifier> makeVulkanClassifier(vk::Context& context);
 
-QuadtreeResult buildQuadtree(const std::vector<gpu::BicubicPatch>& patches,
-                             const QuadtreeOptions& options, NodeClassifier& classifier);
-QuadtreeResult buildQuadtree(const GeneralPatchSet& patches, const QuadtreeOptions& options,
+QuadtreeResult buildQuadtree(const PatchSet& patches, const QuadtreeOptions& options,
                              NodeClassifier& classifier);
 
 // The push-constant block for `options` (shared by every backend).
