@@ -3,9 +3,10 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
-#include <filesystem>
+#include <sstream>
 
 #include "cli/commands.h"
+#include "cli/stdio.h"
 #include "io/errors.h"
 #include "io/gltf_writer.h"
 #include "io/obj_writer.h"
@@ -85,22 +86,29 @@ Tessellation tessellateWithFallback(ChosenBackend& chosen, const std::string& ba
   }
 }
 
-void checkMeshFormat(const std::string& path) {
-  const std::string ext = std::filesystem::path(path).extension().string();
-  if (ext != ".obj" && ext != ".ply" && ext != ".glb")
-    throw CLI::ValidationError("--output",
-                               "unknown output format '" + ext + "' (use .obj, .ply or .glb)");
+void checkMeshFormat(const std::string& path, const std::string& format) {
+  meshFormat(path, format);
 }
 
-void writeMesh(const std::string& path, const TriangleMesh& mesh) {
-  checkMeshFormat(path);
-  const std::string ext = std::filesystem::path(path).extension().string();
-  if (ext == ".obj")
+void writeMesh(const std::string& path, const TriangleMesh& mesh, const std::string& format) {
+  const std::string chosen = meshFormat(path, format);
+  if (path == kStdioPath) {
+    // Built whole first, so a failing writer leaves standard output empty.
+    std::ostringstream bytes(std::ios::binary);
+    if (chosen == "obj")
+      writeObj(bytes, mesh);
+    else if (chosen == "ply")
+      writePly(bytes, mesh);
+    else
+      writeGlb(bytes, mesh);
+    writeStdout(bytes.str());
+  } else if (chosen == "obj") {
     writeObjFile(path, mesh);
-  else if (ext == ".ply")
+  } else if (chosen == "ply") {
     writePlyFile(path, mesh);
-  else
+  } else {
     writeGlbFile(path, mesh);
+  }
 }
 
 }  // namespace tessera::cli

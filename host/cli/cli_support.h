@@ -11,11 +11,13 @@
 
 namespace tessera::cli {
 
-// Throws CLI::ValidationError naming --output unless `path` ends in .obj, .ply or .glb.
-// Called before any work, so a typo costs nothing.
-void checkMeshFormat(const std::string& path);
-// Writes `mesh` atomically in the format of `path`'s extension (checked as above).
-void writeMesh(const std::string& path, const TriangleMesh& mesh);
+// Throws CLI::ValidationError naming --output unless `path` ends in .obj, .ply or .glb, or
+// `format` (--format: obj, ply or glb) says which; `-` (standard output) needs `format`
+// (an InputError, exit 2, otherwise). Called before any work, so a typo costs nothing.
+void checkMeshFormat(const std::string& path, const std::string& format = "");
+// Writes `mesh` atomically in `format`, or that of `path`'s extension (checked as above);
+// to `-`, the whole mesh is built in memory and then written to standard output.
+void writeMesh(const std::string& path, const TriangleMesh& mesh, const std::string& format = "");
 
 // Runs `body`; prints any exception as "tessera: <message>" on stderr and returns its exit code
 // (commands.h). An Io error on one of `outputs` is kExitOutput; `vulkanHint` prefixes a

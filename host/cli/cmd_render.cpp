@@ -12,6 +12,7 @@
 
 #include "cli/cli_support.h"
 #include "cli/commands.h"
+#include "cli/stdio.h"
 #include "io/surface_reader.h"
 #include "io/errors.h"
 #include "io/png_writer.h"
@@ -192,13 +193,22 @@ int run(const RenderArgs& a) {
       std::copy_n(&panels[k].pixels[size_t(y) * options.width * 4], size_t(options.width) * 4,
                   &picture[(size_t(y) * width + x0) * 4]);
   }
-  writePngFile(a.output, picture, width, height);
+  const bool toStdout = a.output == kStdioPath;
+  if (toStdout) {
+    std::ostringstream png(std::ios::binary);  // whole, so a failure leaves stdout empty
+    writePng(png, picture, width, height);
+    writeStdout(png.str());
+  } else {
+    writePngFile(a.output, picture, width, height);
+  }
 
   if (!a.quiet) {
-    std::printf("%s: %zu patches, linearity %g, flatness %g, on %s\n", a.input.c_str(),
-                patches.size(), a.linearity, a.flatness, context.info().name.c_str());
-    for (const Panel& panel : panels) std::printf("%s\n", panelLabel(panel).c_str());
-    std::printf("wrote %s (%dx%d)\n", a.output.c_str(), width, height);
+    FILE* const to = toStdout ? stderr : stdout;  // never into the picture
+    std::fprintf(to, "%s: %zu patches, linearity %g, flatness %g, on %s\n", a.input.c_str(),
+                 patches.size(), a.linearity, a.flatness, context.info().name.c_str());
+    for (const Panel& panel : panels) std::fprintf(to, "%s\n", panelLabel(panel).c_str());
+    std::fprintf(to, "wrote %s (%dx%d)\n", toStdout ? kStdoutName : a.output.c_str(), width,
+                 height);
   }
   return kExitOk;
 }
@@ -210,7 +220,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   CLI::App* cmd = app.add_subcommand(
       "render", "Tessellate a surface file on the GPU and draw it offscreen to a PNG (needs Vulkan)");
   cmd->add_option("input", args.input, "input surface file (.bpt or .grid)")->required();
-  cmd->add_option("-o,--output", args.output, "output picture (.png)")->required();
+  cmd->add_option("-o,--output", args.output, "output picture (.png); - writes it to standard output")->required();
   cmd->add_option("-m,--method", args.method,
                   "split rule: A uniform grid, B midpoint, C sampled κ max, D true κ max")
       ->capture_default_str();
@@ -230,7 +240,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--device", args.device, "Vulkan device index or part of its name");
   cmd->add_flag("-q,--quiet", args.quiet, "print nothing on success");
   cmd->callback([&exitCode] {
-    exitCode = runReportingErrors([] { return run(args); }, {args.output},
+    exitCode = runReportingErrors([] { return run(args); }, {args.output, kStdoutName},
                                   "render needs a Vulkan device that draws");
   });
 }

@@ -2,10 +2,15 @@
 #include <cstdio>
 
 #include "cli/commands.h"
+#include "cli/help_text.h"
+#include "common/version.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"tessera: adaptive tessellation of free-form surfaces on Vulkan compute"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("tessera ") + tessera::versionString(),
+                       "print the version and exit");
+  app.footer(tessera::cli::helpFooter());
   int exitCode = tessera::cli::kExitOk;
   tessera::cli::addTessellateCommand(app, exitCode);
   tessera::cli::addStatsCommand(app, exitCode);
@@ -16,6 +21,9 @@ int main(int argc, char** argv) {
   tessera::cli::addReduceCommand(app, exitCode);
   tessera::cli::addDivisionsCommand(app, exitCode);
   tessera::cli::addLoopCommands(app, exitCode);
+  // Every command's --help ends with the environment variables, exit codes and docs.
+  for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; }))
+    command->footer(tessera::cli::helpFooter());
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

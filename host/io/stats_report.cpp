@@ -98,6 +98,12 @@ void addGeometricDeviation(nlohmann::json& report, const PatchDeviation& geometr
   report["timings"]["geometricDeviationMs"] = geometric.ms;
 }
 
+void addUnmeasuredGeometricDeviation(nlohmann::json& report) {
+  report["totals"]["geometricDeviation"] = nullptr;
+  for (nlohmann::json& patch : report["patches"]) patch["geometricDeviation"] = nullptr;
+  report["timings"]["geometricDeviationMs"] = nullptr;
+}
+
 nlohmann::json statsToJson(const TessellationStats& s) {
   nlohmann::json levels = nlohmann::json::array();
   for (const LevelStats& l : s.levels)

@@ -39,6 +39,9 @@ PatchDeviation measureDeviationPerPatch(const Tessellation& tessellation,
 // totals.geometricDeviation and patches[].geometricDeviation ({max, mean, samples,
 // worstTriangle}), and timings.geometricDeviationMs.
 void addGeometricDeviation(nlohmann::json& report, const PatchDeviation& geometric);
+// The same keys as null, for a report whose deviation was not measured (the CLI without
+// --deviation), so a reader finds every key whether or not it was measured.
+void addUnmeasuredGeometricDeviation(nlohmann::json& report);
 
 // Totals, timings and per-level numbers only (no per-patch section).
 nlohmann::json statsToJson(const TessellationStats& stats);

@@ -20,4 +20,13 @@ std::vector<BezierPatch> readSurfaceFile(const std::string& path) {
                    "unknown surface format '" + ext + "' (expected .bpt, .grid or .json)");
 }
 
+std::vector<BezierPatch> parseSurface(std::istream& in, const std::string& format,
+                                      const std::string& nameForMessages) {
+  if (format == "bpt") return parseBpt(in, nameForMessages);
+  if (format == "grid") return interpolateGrid(parseGrid(in, nameForMessages));
+  if (format == "json") return sceneToPatches(parseScene(in, nameForMessages));
+  throw InputError(InputErrorKind::Syntax, nameForMessages, 0,
+                   "unknown surface format '" + format + "' (expected bpt, grid or json)");
+}
+
 }  // namespace tessera

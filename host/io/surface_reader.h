@@ -2,6 +2,7 @@
 // (point data, interpolated into bicubic patches as in the quad-tree paper), .json (a scene,
 // docs/scene_format.md, converted to patches by sceneToPatches).
 #pragma once
+#include <istream>
 #include <string>
 #include <vector>
 
@@ -11,5 +12,11 @@ namespace tessera {
 
 // Throws InputError (host/io/errors.h) naming the file, line and reason.
 std::vector<BezierPatch> readSurfaceFile(const std::string& path);
+
+// Parses a surface from `in` in `format` ("bpt", "grid" or "json"), e.g. standard input read
+// into memory; `nameForMessages` stands for the file in errors ("<stdin>:12: ..."). An unknown
+// format is an InputError of kind Syntax.
+std::vector<BezierPatch> parseSurface(std::istream& in, const std::string& format,
+                                      const std::string& nameForMessages);
 
 }  // namespace tessera
