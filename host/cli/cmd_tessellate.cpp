@@ -95,7 +95,7 @@ int run(const TessellateArgs& a) {
   const Backend& backend = chosen.backend;
   if (!a.output.empty() && !meshToStdout) writeMesh(a.output, t.mesh, formats.output);
   // The deviation from the true surface (both metrics, host/mesh/deviation.h) is what the
-  // thresholds are for, but measuring it costs several times the tessellation (89% of a
+  // thresholds are for, but measuring it can cost more than the tessellation (89% of a
   // 2000-teapot run), so it is measured only with --deviation; reports then show null.
   const bool wantReport = !a.stats.empty() || a.json;
   const bool summary = !a.quiet && !a.json;
@@ -184,7 +184,7 @@ void addTessellateOptions(CLI::App* cmd, TessellateArgs& args) {
   cmd->add_flag("-q,--quiet", args.quiet, "print nothing on success (no progress either)");
   cmd->add_flag("--deviation,!--no-deviation", args.deviation,
                 "measure the mesh's deviation from the true surface, geometric and parametric. "
-                "Off by default: it costs several times the tessellation (89% of a 2000-teapot "
+                "Off by default: it can cost more than the tessellation (89% of a 2000-teapot "
                 "run); without it the summary omits it and reports show null");
 }
 
