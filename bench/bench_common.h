@@ -1,9 +1,10 @@
 // Small helpers shared by the benchmarks: timing with min/median over repeats.
 #pragma once
 #include <algorithm>
-#include <chrono>
 #include <functional>
 #include <vector>
+
+#include "common/stopwatch.h"
 
 namespace tessera::bench {
 
@@ -16,10 +17,6 @@ struct Timing {
   int runs = 0;
 };
 
-inline double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 // Runs `work` once to warm up (pipeline JIT, page faults), then `repeats` (at least
 // kMinRuns) times.
 inline Timing timeRepeated(int repeats, const std::function<void()>& work) {
@@ -27,9 +24,9 @@ inline Timing timeRepeated(int repeats, const std::function<void()>& work) {
   work();
   std::vector<double> seconds;
   for (int r = 0; r < repeats; ++r) {
-    auto start = std::chrono::steady_clock::now();
+    const Stopwatch stopwatch;
     work();
-    seconds.push_back(secondsSince(start));
+    seconds.push_back(stopwatch.elapsedSeconds());
   }
   std::sort(seconds.begin(), seconds.end());
   return {seconds.front(), seconds[seconds.size() / 2], repeats};

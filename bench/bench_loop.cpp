@@ -14,6 +14,7 @@
 #include <cstdlib>
 
 #include "bench_report.h"
+#include "common/stopwatch.h"
 #include "loop/bvh.h"
 #include "loop/evaluator.h"
 #include "loop/join.h"
@@ -123,9 +124,9 @@ void joinTable(bench::Report& report, int frequency) {
     a.forEachIntersecting(b, [&](uint32_t, uint32_t) { ++fastPairs; });
   });
   // All pairs: 1e8 triangle tests; timed once (after no warm-up) to keep the run short.
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch stopwatch;
   forEachIntersectingBruteForce(a, b, [&](uint32_t, uint32_t) { ++slowPairs; });
-  const double slowSeconds = bench::secondsSince(start);
+  const double slowSeconds = stopwatch.elapsedSeconds();
   LoopJoinResult joined;
   const auto whole = bench::timeRepeated(bench::kMinRuns, [&] { joined = joinLoopMeshes(ball, torus); });
   const double pairs = double(a.triangleCount()) * double(b.triangleCount());

@@ -26,7 +26,6 @@
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -34,6 +33,7 @@
 #include <stdexcept>
 
 #include "bench_report.h"
+#include "common/stopwatch.h"
 #include "mesh/deviation.h"
 #include "division/count.h"
 #include "eval/evaluator.h"
@@ -260,10 +260,10 @@ int main(int argc, char** argv) {
       std::vector<double> seconds;
       for (int run = 0; run <= bench::kMinRuns; ++run) {  // run 0 warms up
         BRepTools::Clean(model.shape);
-        auto start = std::chrono::steady_clock::now();
+        const Stopwatch stopwatch;
         BRepMesh_IncrementalMesh mesher(model.shape, deflection, Standard_False, 0.5,
                                         parallel ? Standard_True : Standard_False);
-        if (run > 0) seconds.push_back(bench::secondsSince(start));
+        if (run > 0) seconds.push_back(stopwatch.elapsedSeconds());
       }
       std::sort(seconds.begin(), seconds.end());
       occtTime[parallel] = {seconds.front(), seconds[seconds.size() / 2], int(seconds.size())};

@@ -7,13 +7,13 @@
 // Usage: bench_realtime [frames=300] [teapots=100] [tolerancePx=1] [q=4] [--json file]
 #include <glm/gtc/matrix_transform.hpp>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
 #include "bench_report.h"
 #include "bench_scenes.h"
+#include "common/stopwatch.h"
 #include "eval/evaluator.h"
 #include "io/bpt_reader.h"
 #include "realtime/frame.h"
@@ -76,11 +76,11 @@ int main(int argc, char** argv) {
   std::vector<double> seconds;
   double triangles = 0, counted = 0, vertices = 0, prepare = 0, count = 0, bucket = 0, grid = 0;
   double culled = 0, fallback = 0, capped = 0, dispatches = 0;
-  auto start = std::chrono::steady_clock::now();
+  const Stopwatch stopwatch;
   for (int f = 0; f < frames; ++f) {
-    auto frameStart = std::chrono::steady_clock::now();
+    const Stopwatch frameStopwatch;
     const RealtimeFrame& frame = tessellator.tessellate(path.camera(f));
-    seconds.push_back(bench::secondsSince(frameStart));
+    seconds.push_back(frameStopwatch.elapsedSeconds());
     triangles += double(frame.triangles);
     vertices += double(frame.vertices);
     counted += double(frame.countedTriangles);
@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
     capped += double(frame.capped);
     dispatches += double(frame.dispatches);
   }
-  const double total = bench::secondsSince(start);
+  const double total = stopwatch.elapsedSeconds();
 
   // The screen-space error of a few frames, outside the timing (the double surface is slow).
   double maxAffine = 0, maxPerspective = 0;
@@ -117,13 +117,13 @@ int main(int argc, char** argv) {
     TessShaderPeer peer(context, toGpuPatches(patches),
                         {1920, 1080, float(tolerance), 64.0f});
     peer.drawFrame(path.peerMatrix(0));
-    auto peerStart = std::chrono::steady_clock::now();
+    const Stopwatch peerStopwatch;
     for (int f = 0; f < frames; ++f) {
-      auto frameStart = std::chrono::steady_clock::now();
+      const Stopwatch frameStopwatch;
       peerTriangles += double(peer.drawFrame(path.peerMatrix(f)));
-      peerSeconds.push_back(bench::secondsSince(frameStart));
+      peerSeconds.push_back(frameStopwatch.elapsedSeconds());
     }
-    peerTotal = bench::secondsSince(peerStart);
+    peerTotal = peerStopwatch.elapsedSeconds();
     peerCounts = peer.countsTriangles();
   }
 

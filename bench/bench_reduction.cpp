@@ -9,7 +9,6 @@
 #include <sisl.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -17,6 +16,7 @@
 #include <string>
 
 #include "bench_report.h"
+#include "common/stopwatch.h"
 #include "reduction/curve_product.h"
 #include "reduction/fast.h"
 #include "experiments/synthetic_surfaces.h"
@@ -27,9 +27,9 @@ using namespace tessera;
 namespace {
 
 double secondsOf(const std::function<void()>& work) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch stopwatch;
   work();
-  return bench::secondsSince(start);
+  return stopwatch.elapsedSeconds();
 }
 
 // Largest distance between two curves on the same domain, sampled at 20,000 parameters.

@@ -7,12 +7,12 @@
 // Usage: bench_scale [patches] [frontier budget MiB] [--json file]
 #include <sys/resource.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
 #include "bench_report.h"
+#include "common/stopwatch.h"
 #include "mesh/tessellate.h"
 #include "vk/context.h"
 
@@ -66,9 +66,9 @@ int main(int argc, char** argv) {
   options.rule = SplitRule::Midpoint;
   options.linearity = options.flatness = 0.02f;
   options.frontierBudgetBytes = size_t(budgetMiB * 1024 * 1024);
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch stopwatch;
   Tessellation t = tessellate(patches, options, vulkan);
-  const double seconds = bench::secondsSince(start);
+  const double seconds = stopwatch.elapsedSeconds();
 
   const QuadtreeResult& tree = t.tree;
   const size_t batchNodes = frontierBatchNodes(options, vulkan.classifier->maxBatchNodes());

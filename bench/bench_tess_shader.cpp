@@ -5,13 +5,13 @@
 // Usage: bench_tess_shader [frames=300] [teapots=100] [tolerancePx=1] [--json file]
 #include <glm/gtc/matrix_transform.hpp>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
 #include "bench_report.h"
 #include "bench_scenes.h"
+#include "common/stopwatch.h"
 #include "eval/evaluator.h"
 #include "io/bpt_reader.h"
 #include "realtime/tess_shader_peer.h"
@@ -51,13 +51,13 @@ int main(int argc, char** argv) {
   peer.drawFrame(camera(0));  // warm-up: pipeline compile, first touch of the targets
   std::vector<double> seconds;
   double triangles = 0;
-  auto start = std::chrono::steady_clock::now();
+  const Stopwatch stopwatch;
   for (int f = 0; f < frames; ++f) {
-    auto frameStart = std::chrono::steady_clock::now();
+    const Stopwatch frameStopwatch;
     triangles += double(peer.drawFrame(camera(f)));
-    seconds.push_back(bench::secondsSince(frameStart));
+    seconds.push_back(frameStopwatch.elapsedSeconds());
   }
-  double total = bench::secondsSince(start);
+  double total = stopwatch.elapsedSeconds();
   std::sort(seconds.begin(), seconds.end());
   bench::Timing perFrame{seconds.front(), seconds[seconds.size() / 2], frames};
 

@@ -1,9 +1,9 @@
 #include "experiments/division_table.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 
+#include "common/stopwatch.h"
 #include "division/count.h"
 #include "division/deviation.h"
 #include "geometry/homogeneous_net.h"
@@ -63,11 +63,10 @@ DivisionTable divisionComparison(const DivisionTableOptions& options) {
       o.method = c.method;
       o.tolerance = tol;
       o.maxPerDirection = kUncapped;
-      const auto start = std::chrono::steady_clock::now();
+      const Stopwatch stopwatch;
       grid[c.column] =
           patchDivisions(c.zeroWeight > 0 ? substituteZeroWeights(screen, c.zeroWeight) : screen, o);
-      table.seconds[c.column] +=
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      table.seconds[c.column] += stopwatch.elapsedSeconds();
       row.faces[c.column] = grid[c.column].divisionNumber();
     }
     // Measure the bounds' grids; search the true value below the smallest of them.

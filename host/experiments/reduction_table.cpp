@@ -1,9 +1,9 @@
 #include "experiments/reduction_table.h"
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 
+#include "common/stopwatch.h"
 #include "reduction/fast.h"
 
 namespace tessera {
@@ -64,9 +64,9 @@ std::vector<ReductionTableRow> reductionTable(const BSplineSurface& surface,
       ReductionTableRow row;
       row.threshold = threshold;
       row.choice = choice;
-      const auto start = std::chrono::steady_clock::now();
+      const Stopwatch stopwatch;
       row.result = reduceSurface(surface, o, product);
-      row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      row.seconds = stopwatch.elapsedSeconds();
       row.waviness = waviness(row.result.surface);
       rows.push_back(std::move(row));
     }

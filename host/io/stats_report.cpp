@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <charconv>
-#include <chrono>
 #include <stdexcept>
 
+#include "common/stopwatch.h"
 #include "io/atomic_file.h"
 
 namespace tessera {
@@ -67,7 +67,7 @@ double shortestDecimal(float value) {
 PatchDeviation measureDeviationPerPatch(const Tessellation& t,
                                         const std::vector<BezierPatch>& patches,
                                         int subdivisions, DeviationMetric metric) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch stopwatch;
   // One pass over the whole mesh (on all cores) already gathers every patch's numbers.
   const DeviationReport whole = measureDeviation(t, patches, subdivisions, metric);
   PatchDeviation result;
@@ -82,8 +82,7 @@ PatchDeviation measureDeviationPerPatch(const Tessellation& t,
     d.worstTriangle = whole.perPatchWorstTriangle[p];
   }
   result.total = whole;
-  result.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                  .count();
+  result.ms = stopwatch.elapsedMs();
   return result;
 }
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
-#include <thread>
 
+#include "common/parallel_for.h"
 #include "geometry/bezier.h"
 #include "geometry/bicubic.h"
 #include "geometry/closest_point.h"
@@ -61,13 +61,7 @@ DeviationReport measureDeviation(const Tessellation& tessellation,
     }
   };
   // Small meshes are not worth a thread start (the per-patch report measures each patch apart).
-  const unsigned threads =
-      triangles < 2048 ? 1u : std::max(1u, std::thread::hardware_concurrency());
-  std::vector<std::thread> pool;
-  for (unsigned k = 1; k < threads; ++k)
-    pool.emplace_back(measureRange, triangles * k / threads, triangles * (k + 1) / threads);
-  measureRange(0, triangles / threads);
-  for (auto& thread : pool) thread.join();
+  parallelFor(triangles, triangles < 2048 ? 1u : 0u, measureRange);
 
   DeviationReport report;
   report.perPatchMax.assign(patches.size(), 0.0);

@@ -2,20 +2,16 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <functional>
 #include <unordered_map>
 
+#include "common/stopwatch.h"
 #include "mesh/triangulate.h"
 
 namespace tessera {
 namespace {
-
-double msSince(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
-}
 
 // For each vertex, the first vertex with bit-identical position.
 std::vector<uint32_t> weldIdenticalPositions(const std::vector<glm::vec3>& positions) {
@@ -51,19 +47,19 @@ using VertexEvaluation =
 
 Tessellation meshFromQueries(const std::vector<BezierPatch>& patches, QuadtreeResult tree,
                              const VertexEvaluation& evaluate) {
-  auto start = std::chrono::steady_clock::now();
+  const Stopwatch total;
   Tessellation result;
   result.tree = std::move(tree);
-  auto t = std::chrono::steady_clock::now();
+  Stopwatch step;
   ParamMesh param = triangulateLeaves(result.tree.leaves, patches);
-  result.stats.triangulateMs = msSince(t);
+  result.stats.triangulateMs = step.elapsedMs();
 
-  t = std::chrono::steady_clock::now();
+  step.restart();
   std::vector<gpu::EvalQuery> queries(param.vertices.size());
   for (size_t i = 0; i < queries.size(); ++i)
     queries[i] = {param.vertices[i].patchIndex, param.vertices[i].u, param.vertices[i].v, 0};
   std::vector<gpu::EvalSample> samples = evaluate(queries);
-  result.stats.evaluateMs = msSince(t);
+  result.stats.evaluateMs = step.elapsedMs();
 
   TriangleMesh& mesh = result.mesh;
   mesh.positions.resize(samples.size());
@@ -103,7 +99,7 @@ Tessellation meshFromQueries(const std::vector<BezierPatch>& patches, QuadtreeRe
   s.levels = result.tree.levels;
   s.triangles = mesh.triangleCount();
   s.vertices = mesh.vertexCount();
-  s.totalMs = msSince(start);
+  s.totalMs = total.elapsedMs();
   return result;
 }
 
@@ -111,18 +107,18 @@ Tessellation meshFromQueries(const std::vector<BezierPatch>& patches, QuadtreeRe
 
 Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeOptions& options,
                         Backend& backend) {
-  auto start = std::chrono::steady_clock::now();
+  const Stopwatch total;
   for (size_t i = 0; i < patches.size(); ++i)
     validateTessellationPatch(patches[i], "patch " + std::to_string(i));
   // Bicubic polynomial patches take the BicubicPatch shaders; anything else sends the whole
   // set through the general ones (a bicubic patch is a general patch too): toPatchSet.
-  auto t = std::chrono::steady_clock::now();
+  const Stopwatch treeStep;
   const PatchSet gpuPatches = toPatchSet(patches);
   QuadtreeResult tree = buildQuadtree(gpuPatches, options, *backend.classifier);
-  const double treeMs = msSince(t);
+  const double treeMs = treeStep.elapsedMs();
   Tessellation result = meshFromTree(patches, gpuPatches, std::move(tree), *backend.evaluator);
   result.stats.treeMs = treeMs;
-  result.stats.totalMs = msSince(start);
+  result.stats.totalMs = total.elapsedMs();
   return result;
 }
 

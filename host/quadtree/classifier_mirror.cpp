@@ -1,8 +1,8 @@
 // CPU backends of NodeClassifier: the fp32 mirror of the shader, on one thread or on all.
 #include <algorithm>
-#include <chrono>
-#include <thread>
 
+#include "common/parallel_for.h"
+#include "common/stopwatch.h"
 #include "eval/general_mirror.h"
 #include "quadtree/detail/classify_mirror.h"
 #include "quadtree/quadtree.h"
@@ -52,26 +52,16 @@ class MirrorClassifier final : public NodeClassifier {
   void run(const Patches& patches, const std::vector<gpu::QuadNode>& nodes,
            const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
            LevelStats& stats) {
-    auto start = std::chrono::steady_clock::now();
+    const Stopwatch stopwatch;
     decisions.resize(nodes.size());
     gpu::ClassifyPush params = classifyParams(options, uint32_t(nodes.size()));
     uint32_t rule = ruleConstant(options.rule);
-    size_t workers = std::min<size_t>(threads_, (nodes.size() + 255) / 256);
-    if (workers <= 1) {
-      classifyRange(patches, nodes, rule, options.samples, params, decisions, 0, nodes.size());
-    } else {
-      std::vector<std::thread> pool;
-      size_t chunk = (nodes.size() + workers - 1) / workers;
-      for (size_t w = 0; w < workers; ++w) {
-        size_t begin = w * chunk, end = std::min(nodes.size(), begin + chunk);
-        pool.emplace_back(classifyRange<Patches>, std::cref(patches), std::cref(nodes), rule,
-                          options.samples, std::cref(params), std::ref(decisions), begin, end);
-      }
-      for (auto& t : pool) t.join();
-    }
-    stats.classifyMs +=
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-            .count();
+    // At least 256 nodes a thread: fewer are not worth a thread start.
+    const auto workers = unsigned(std::clamp<size_t>((nodes.size() + 255) / 256, 1, threads_));
+    parallelFor(nodes.size(), workers, [&](size_t begin, size_t end) {
+      classifyRange(patches, nodes, rule, options.samples, params, decisions, begin, end);
+    });
+    stats.classifyMs += stopwatch.elapsedMs();
   }
 
   unsigned threads_;
@@ -84,7 +74,7 @@ std::unique_ptr<NodeClassifier> makeMirrorClassifier() {
 }
 
 std::unique_ptr<NodeClassifier> makeParallelMirrorClassifier() {
-  return std::make_unique<MirrorClassifier>(std::thread::hardware_concurrency());
+  return std::make_unique<MirrorClassifier>(resolveThreadCount(0));
 }
 
 }  // namespace tessera

@@ -4,9 +4,9 @@
 // curvature.h), so that it checks the shared fp32 text rather than repeating it. Bicubic and
 // general patches (any degree, rational) alike.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
+#include "common/stopwatch.h"
 #include "geometry/bezier.h"
 #include "geometry/bicubic.h"
 #include "geometry/curvature.h"
@@ -241,13 +241,11 @@ class ReferenceClassifier final : public NodeClassifier {
                 LevelStats& stats) override {
     if (contexts_.size() != patches.size())
       throw std::logic_error("ReferenceClassifier: classify() without beginTree()");
-    auto start = std::chrono::steady_clock::now();
+    const Stopwatch stopwatch;
     decisions.resize(nodes.size());
     for (size_t i = 0; i < nodes.size(); ++i)
       decisions[i] = classifyNode(contexts_[nodes[i].patchIndex], nodes[i], options);
-    stats.classifyMs +=
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-            .count();
+    stats.classifyMs += stopwatch.elapsedMs();
   }
 
  private:

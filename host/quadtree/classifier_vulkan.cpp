@@ -1,13 +1,13 @@
 // The Vulkan backend of NodeClassifier: one dispatch of shaders/quadtree.comp.glsl (bicubic)
 // or quadtree_general.comp.glsl (general patches) per level. Pipelines are made once per
 // (shader, rule, S) and buffers grow and are kept between levels.
-#include <chrono>
 #include <cstdint>  // before the generated SPIR-V array, which uses uint32_t
 #include <map>
 #include <tuple>
 #include <stdexcept>
 #include <utility>
 
+#include "common/stopwatch.h"
 #include "quadtree/quadtree.h"
 #include "quadtree_comp.h"
 #include "quadtree_general_comp.h"
@@ -68,7 +68,7 @@ class VulkanClassifier final : public NodeClassifier {
   void run(bool general, std::initializer_list<const vk::Buffer*> buffers,
            const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
            std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) {
-    auto start = std::chrono::steady_clock::now();
+    const Stopwatch stopwatch;
     decisions.resize(nodes.size());
     if (nodes.empty()) return;
     vk::ComputePipeline& pipeline = pipelineFor(general, ruleConstant(options.rule), options.samples);
@@ -88,9 +88,7 @@ class VulkanClassifier final : public NodeClassifier {
     decisions_.download(decisions.data(), nodes.size() * sizeof(gpu::NodeDecision));
     auto intervals = timer_.intervalsNs();
     if (!intervals.empty()) stats.gpuMs += intervals[0] * 1e-6;
-    stats.classifyMs +=
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-            .count();
+    stats.classifyMs += stopwatch.elapsedMs();
   }
 
   vk::ComputePipeline& pipelineFor(bool general, uint32_t rule, int samples) {

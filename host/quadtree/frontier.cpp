@@ -1,20 +1,15 @@
 // The level-synchronous frontier of the adaptive quad-tree (CPU side).
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <unordered_map>
 
+#include "common/stopwatch.h"
 #include "eval/evaluator.h"
 #include "geometry/general_patch.h"
 #include "quadtree/quadtree.h"
 
 namespace tessera {
 namespace {
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
-}
 
 void validateOptions(const QuadtreeOptions& o) {
   auto positiveFinite = [](float x) { return std::isfinite(x) && x > 0.0f; };
@@ -181,7 +176,7 @@ void buildGroupTree(const PatchSet& patches, uint32_t firstPatch, const Quadtree
     classifier.classify(patches, batch.nodes, options, decisions, stats);
     ++result.batches;
 
-    auto start = std::chrono::steady_clock::now();
+    const Stopwatch stopwatch;
     next.clear();
     nextPaths.clear();
     for (size_t i = 0; i < batch.nodes.size(); ++i) {
@@ -219,7 +214,7 @@ void buildGroupTree(const PatchSet& patches, uint32_t firstPatch, const Quadtree
         std::max(result.peakFrontierNodes, waiting + batch.nodes.size() + next.size());
     waiting += next.size();
     pushBatches(stack, level + 1, next, nextPaths, batchNodes);
-    stats.frontierMs = millisecondsSince(start);
+    stats.frontierMs = stopwatch.elapsedMs();
     if (result.levels.size() <= level) result.levels.resize(level + 1);
     result.levels[level].level = level;
     addLevelStats(result.levels[level], stats);

@@ -3,20 +3,16 @@
 #include "realtime/frame.h"
 
 #include <algorithm>
-#include <chrono>
 #include <stdexcept>
 #include <string>
 
+#include "common/stopwatch.h"
 #include "division/counter.h"
 #include "eval/evaluator.h"
 #include "geometry/rational.h"
 
 namespace tessera {
 namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // Convex-hull test in screen-space homogeneous coordinates (X, Y, ·, W): the patch is a convex
 // combination of its control points there (the projection is linear before the divide), so
@@ -76,7 +72,7 @@ RealtimeTessellator::~RealtimeTessellator() = default;
 
 const RealtimeFrame& RealtimeTessellator::tessellate(const Camera& camera) {
   frame_ = RealtimeFrame{};
-  auto start = std::chrono::steady_clock::now();
+  Stopwatch stopwatch;
   std::vector<RationalBezierPatch> visible;
   std::vector<uint32_t> visibleIndex;
   for (size_t p = 0; p < patches_.size(); ++p) {
@@ -89,17 +85,17 @@ const RealtimeFrame& RealtimeTessellator::tessellate(const Camera& camera) {
     visibleIndex.push_back(uint32_t(p));
   }
   const DivisionBatch batch = packDivisionBatch(visible);
-  frame_.prepareSeconds = secondsSince(start);
+  frame_.prepareSeconds = stopwatch.elapsedSeconds();
 
-  start = std::chrono::steady_clock::now();
+  stopwatch.restart();
   DivisionOptions counting;
   counting.tolerance = options_.tolerancePixels;
   counting.maxPerDirection = options_.maxPerDirection;
   counting.ratioPieces = options_.ratioPieces;
   const std::vector<gpu::DivisionResult> counts = counter_->count(batch, counting);
-  frame_.countSeconds = secondsSince(start);
+  frame_.countSeconds = stopwatch.elapsedSeconds();
 
-  start = std::chrono::steady_clock::now();
+  stopwatch.restart();
   for (auto& b : bucketPatches_) b.clear();
   for (auto& b : bucketGrids_) b.clear();
   for (size_t k = 0; k < visible.size(); ++k) {
@@ -125,9 +121,9 @@ const RealtimeFrame& RealtimeTessellator::tessellate(const Camera& camera) {
     bucketPatches_[b].push_back(gpuPatches_[visibleIndex[k]]);
     frame_.grids.push_back({visibleIndex[k], rung + 1, nu, nv, nullptr});
   }
-  frame_.bucketSeconds = secondsSince(start);
+  frame_.bucketSeconds = stopwatch.elapsedSeconds();
 
-  start = std::chrono::steady_clock::now();
+  stopwatch.restart();
   for (size_t b = 0; b < ladder_.size(); ++b) {
     if (bucketPatches_[b].empty()) continue;
     const uint32_t side = ladder_[b] + 1;
@@ -138,7 +134,7 @@ const RealtimeFrame& RealtimeTessellator::tessellate(const Camera& camera) {
     frame_.vertices += bucketPatches_[b].size() * side * side;
     frame_.triangles += bucketPatches_[b].size() * 2 * size_t(ladder_[b]) * ladder_[b];
   }
-  frame_.gridSeconds = secondsSince(start);
+  frame_.gridSeconds = stopwatch.elapsedSeconds();
   return frame_;
 }
 

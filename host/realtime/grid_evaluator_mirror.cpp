@@ -2,11 +2,10 @@
 // shaders/grid_eval.comp.glsl.
 #include "realtime/grid_evaluator.h"
 
-#include <algorithm>
 #include <stdexcept>
 #include <string>
-#include <thread>
 
+#include "common/parallel_for.h"
 #include "eval/evaluator.h"
 #include "realtime/detail/grid_mirror.h"
 
@@ -22,8 +21,7 @@ namespace {
 
 class MirrorGridEvaluator final : public GridEvaluator {
  public:
-  explicit MirrorGridEvaluator(unsigned threads)
-      : threads_(threads ? threads : std::max(1u, std::thread::hardware_concurrency())) {}
+  explicit MirrorGridEvaluator(unsigned threads) : threads_(resolveThreadCount(threads)) {}
 
   std::string name() const override {
     return threads_ == 1 ? "mirror" : "mirror x" + std::to_string(threads_);
@@ -39,14 +37,7 @@ class MirrorGridEvaluator final : public GridEvaluator {
         mirror::evalGridRow(patches[r / pointsPerSide], uint32_t(r % pointsPerSide),
                             pointsPerSide, kDegenerateEpsFp32, &out_[r * pointsPerSide]);
     };
-    if (threads_ == 1 || rows < 2) {
-      work(0, rows);
-      return out_.data();
-    }
-    std::vector<std::thread> pool;
-    for (unsigned t = 0; t < threads_; ++t)
-      pool.emplace_back(work, rows * t / threads_, rows * (t + 1) / threads_);
-    for (auto& thread : pool) thread.join();
+    parallelFor(rows, threads_, work);
     return out_.data();
   }
 

@@ -1,21 +1,15 @@
 #include "reduction/fast.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
+#include "common/stopwatch.h"
 #include "reduction/detail/order.h"
 #include "reduction/detail/pass.h"
 
 namespace tessera {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 ParamDirection otherDirection(ParamDirection d) {
   return d == ParamDirection::U ? ParamDirection::V : ParamDirection::U;
@@ -110,7 +104,7 @@ ReductionResult reduceSurface(const BSplineSurface& original, const ReductionOpt
   result.originalControlPoints = static_cast<long long>(original.cp.size());
   const ParamDirection dirs[2] = {options.firstDirection, otherDirection(options.firstDirection)};
   for (int pass = 0; pass < 2; ++pass) {
-    const auto start = Clock::now();
+    const Stopwatch stopwatch;
     const ParamDirection dir = dirs[pass];
     const bool alongU = dir == ParamDirection::U;
     PassReport& report = result.passes[pass];
@@ -142,12 +136,12 @@ ReductionResult reduceSurface(const BSplineSurface& original, const ReductionOpt
       schedule.record(knot, removed);
       recordAttempt(report, pass, schedule.size(), removed, measured, options);
     }
-    st.searchSeconds[pass] = secondsSince(start);
+    st.searchSeconds[pass] = stopwatch.elapsedSeconds();
 
-    const auto productStart = Clock::now();
+    const Stopwatch productStopwatch;
     const BandMatrix a = osloBand(p, engine.knots(), y);
     const std::vector<double> q = finalNet(a, p, data, columns, product);
-    st.productSeconds[pass] = secondsSince(productStart);
+    st.productSeconds[pass] = productStopwatch.elapsedSeconds();
     const std::vector<double> kept = engine.net();
     double drift = 0.0;
     for (size_t i = 0; i < q.size(); ++i) drift = std::max(drift, std::abs(q[i] - kept[i]));
@@ -165,7 +159,7 @@ ReductionResult reduceSurface(const BSplineSurface& original, const ReductionOpt
     (alongU ? current.knotsU : current.knotsV) = engine.knots();
     fromPassLayout(q, dir, a.cols, current);
     report.keptCount = a.cols;
-    report.seconds = secondsSince(start);
+    report.seconds = stopwatch.elapsedSeconds();
   }
   result.error = result.passes[1].error;
   result.keptControlPoints = static_cast<long long>(result.surface.cp.size());

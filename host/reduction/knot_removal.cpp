@@ -1,7 +1,6 @@
 #include "reduction/knot_removal.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -10,6 +9,7 @@
 #include <string>
 
 #include "bspline/knots.h"
+#include "common/stopwatch.h"
 #include "reduction/detail/order.h"
 
 namespace tessera {
@@ -33,10 +33,6 @@ void validateFinite(const std::vector<glm::dvec3>& cp, const char* what) {
                                   " is not finite");
     }
   }
-}
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace
@@ -223,7 +219,7 @@ ReductionResult reduceSurfaceReference(const BSplineSurface& original,
                                   options.firstDirection == ParamDirection::U ? ParamDirection::V
                                                                               : ParamDirection::U};
   for (int pass = 0; pass < 2; ++pass) {
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch stopwatch;
     const ParamDirection dir = dirs[pass];
     PassReport& report = result.passes[pass];
     report.direction = dir;
@@ -268,7 +264,7 @@ ReductionResult reduceSurfaceReference(const BSplineSurface& original,
       report.error = error;
     }
     report.keptCount = countOf(result.surface, dir);
-    report.seconds = secondsSince(start);
+    report.seconds = stopwatch.elapsedSeconds();
   }
   result.error = result.passes[1].error;
   result.keptControlPoints = static_cast<long long>(result.surface.cp.size());

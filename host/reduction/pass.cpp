@@ -5,24 +5,11 @@
 #include <limits>
 #include <cmath>
 #include <cstring>
-#include <functional>
-#include <thread>
 
 #include "bspline/oslo.h"
+#include "common/parallel_for.h"
 
 namespace tessera {
-
-namespace {
-
-// Runs body(0 … parts − 1), part 0 on the calling thread.
-void parallelParts(int parts, const std::function<void(int)>& body) {
-  std::vector<std::thread> workers;
-  for (int part = 1; part < parts; ++part) workers.emplace_back(body, part);
-  body(0);
-  for (std::thread& t : workers) t.join();
-}
-
-}  // namespace
 
 void SlabError::measure(int ja, int jb, const double* p, int columns, double* sum,
                         double* max) const {
@@ -68,8 +55,7 @@ ReductionPass::ReductionPass(int degree, const std::vector<double>& fineKnots, c
       stats_(stats),
       minWindow_(std::max(options.minWindow, degree + 1)),
       window_(minWindow_),
-      threads_(options.threads > 0 ? options.threads
-                                   : std::max(1, static_cast<int>(std::thread::hardware_concurrency()))),
+      threads_(options.threads > 0 ? options.threads : static_cast<int>(resolveThreadCount(0))),
       x_(fineKnots) {
   residual_.resize(static_cast<size_t>(threads_));
   const size_t k = static_cast<size_t>(columns_);
@@ -138,7 +124,7 @@ ReductionPass::WindowChange ReductionPass::solveWindow(int pos, int a, int b, in
   const std::array<int, 4> probes = {a > 0 ? a : -1, a > 0 && leftIn > a ? leftIn : -1,
                                      b < n1 - 1 ? b : -1, b < n1 - 1 && rightIn < b ? rightIn : -1};
   std::vector<std::array<double, 4>> changes(static_cast<size_t>(parts), std::array<double, 4>{});
-  parallelParts(parts, [&](int part) {
+  parallelParts(static_cast<unsigned>(parts), [&](int part) {
     const size_t points = k / 3;
     const size_t c0 = 3 * (points * static_cast<size_t>(part) / static_cast<size_t>(parts));
     const size_t c1 = 3 * (points * static_cast<size_t>(part + 1) / static_cast<size_t>(parts));
@@ -147,7 +133,8 @@ ReductionPass::WindowChange ReductionPass::solveWindow(int pos, int a, int b, in
     std::array<double, 4>& change = changes[static_cast<size_t>(part)];
     for (size_t s0 = c0; s0 < c1; s0 += kBlock) {
       const size_t s1 = std::min(c1, s0 + kBlock), width = s1 - s0;
-      for (int i = 0; i < w; ++i) std::fill_n(z_.data() + static_cast<size_t>(i) * k + s0, width, 0.0);
+      for (int i = 0; i < w; ++i)
+        std::fill_n(z_.data() + static_cast<size_t>(i) * k + s0, width, 0.0);
       for (int r = 0; r < rows; ++r) {
         const double* v = rowValues_.data() + static_cast<size_t>(r) * band;
         const int f = rowFirst_[static_cast<size_t>(r)];
@@ -257,7 +244,7 @@ bool ReductionPass::tryRemove(int knot, ErrorMeasure measure, double target, dou
   newSum_.resize(static_cast<size_t>(rows));
   newMax_.resize(static_cast<size_t>(rows));
   const int parts = static_cast<double>(rows) * static_cast<double>(error_.others) > 5e4 ? threads_ : 1;
-  parallelParts(parts, [&](int part) {
+  parallelParts(static_cast<unsigned>(parts), [&](int part) {
     const int r0 = rows * part / parts, r1 = rows * (part + 1) / parts;
     error_.measure(ja + r0, ja + r1, pRows_.data() + static_cast<size_t>(r0) * k, columns_,
                    newSum_.data() + r0, newMax_.data() + r0);

@@ -1,0 +1,48 @@
+#include "common/parallel_for.h"
+
+#include <algorithm>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace tessera {
+
+unsigned resolveThreadCount(unsigned requested) {
+  return requested ? requested : std::max(1u, std::thread::hardware_concurrency());
+}
+
+void parallelParts(unsigned parts, const std::function<void(unsigned part)>& body) {
+  std::mutex firstErrorMutex;
+  std::exception_ptr firstError;
+  // A thrown exception must not leave a thread (std::terminate) or cut the others short.
+  auto guarded = [&](unsigned part) {
+    try {
+      body(part);
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(firstErrorMutex);
+      if (!firstError) firstError = std::current_exception();
+    }
+  };
+  std::vector<std::thread> workers;
+  try {
+    for (unsigned part = 1; part < parts; ++part) workers.emplace_back(guarded, part);
+  } catch (...) {
+    // A thread could not start: finish the started ones before reporting it.
+    for (std::thread& worker : workers) worker.join();
+    throw;
+  }
+  if (parts > 0) guarded(0);
+  for (std::thread& worker : workers) worker.join();
+  if (firstError) std::rethrow_exception(firstError);
+}
+
+void parallelFor(size_t count, unsigned threads,
+                 const std::function<void(size_t begin, size_t end)>& body) {
+  if (count == 0) return;
+  const size_t shares = std::min<size_t>(resolveThreadCount(threads), count);
+  parallelParts(unsigned(shares),
+                [&](unsigned part) { body(count * part / shares, count * (part + 1) / shares); });
+}
+
+}  // namespace tessera

@@ -1,0 +1,24 @@
+// The one thread fan-out: a range of independent items split into even contiguous shares, one
+// per thread, the calling thread taking the first share.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+
+namespace tessera {
+
+// Threads to use for `requested`: requested itself, or all hardware threads (at least 1) when 0.
+unsigned resolveThreadCount(unsigned requested);
+
+// Runs body(part) for part 0 … parts − 1 at once, part 0 on the calling thread. Returns after
+// every part has finished; the first exception any part threw is then rethrown here.
+void parallelParts(unsigned parts, const std::function<void(unsigned part)>& body);
+
+// Splits [0, count) into min(threads, count) shares [count·k/n, count·(k+1)/n) and runs
+// body(begin, end) on each through parallelParts (threads 0: all hardware threads). Nothing
+// runs for count 0. Items must be independent: which thread gets which share is not fixed
+// beyond that rule, so results must not depend on the split.
+void parallelFor(size_t count, unsigned threads,
+                 const std::function<void(size_t begin, size_t end)>& body);
+
+}  // namespace tessera

@@ -1,0 +1,72 @@
+// The shared helpers in host/common/: parallelFor hands out every index exactly once and
+// reports a worker's exception in the caller; Stopwatch never reads negative or backwards.
+#include <catch2/catch.hpp>
+
+#include <atomic>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include "common/parallel_for.h"
+#include "common/stopwatch.h"
+
+using namespace tessera;
+
+TEST_CASE("parallelFor covers every index exactly once", "[common]") {
+  for (size_t count : {size_t(0), size_t(1), size_t(7), size_t(1000)}) {
+    for (unsigned threads = 1; threads <= 8; ++threads) {
+      std::vector<std::atomic<int>> visits(count);
+      std::atomic<int> calls{0};
+      parallelFor(count, threads, [&](size_t begin, size_t end) {
+        ++calls;
+        CHECK(begin < end);
+        for (size_t i = begin; i < end; ++i) ++visits[i];
+      });
+      INFO("count " << count << ", threads " << threads);
+      for (size_t i = 0; i < count; ++i) REQUIRE(visits[i] == 1);
+      // One share per thread, never more shares than items, none for an empty range.
+      CHECK(calls == int(std::min<size_t>(threads, count)));
+    }
+  }
+}
+
+TEST_CASE("parallelFor with 0 threads uses every hardware thread", "[common]") {
+  CHECK(resolveThreadCount(0) == std::max(1u, std::thread::hardware_concurrency()));
+  CHECK(resolveThreadCount(3) == 3u);
+  std::vector<std::atomic<int>> visits(100);
+  parallelFor(visits.size(), 0, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) ++visits[i];
+  });
+  for (auto& v : visits) REQUIRE(v == 1);
+}
+
+TEST_CASE("parallelFor rethrows a worker's exception after all shares finish", "[common]") {
+  for (unsigned threads : {1u, 4u}) {
+    std::atomic<int> finished{0};
+    auto failLast = [&](size_t begin, size_t end) {
+      if (end == 100) throw std::runtime_error("share ending at 100 failed");
+      (void)begin;
+      ++finished;
+    };
+    CHECK_THROWS_WITH(parallelFor(100, threads, failLast), "share ending at 100 failed");
+    // The other shares still ran to completion before the exception reached the caller.
+    CHECK(finished == int(threads) - 1);
+  }
+}
+
+TEST_CASE("Stopwatch is non-negative and monotonic", "[common]") {
+  Stopwatch stopwatch;
+  double previousMs = 0.0;
+  for (int i = 0; i < 1000; ++i) {
+    const double ms = stopwatch.elapsedMs();
+    REQUIRE(ms >= previousMs);
+    previousMs = ms;
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  const double seconds = stopwatch.elapsedSeconds();
+  CHECK(seconds >= 0.005);
+  CHECK(stopwatch.elapsedMs() >= seconds * 1000.0);
+  stopwatch.restart();
+  CHECK(stopwatch.elapsedSeconds() >= 0.0);
+  CHECK(stopwatch.elapsedSeconds() < seconds);
+}
