@@ -48,7 +48,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL debugCallback(VkDebugUtilsMessageSeverityFlagBits
 }  // namespace
 
 Context::Context(const ContextOptions& options) {
-  on_validation_message_ = options.onValidationMessage;
+  onValidationMessage_ = options.onValidationMessage;
   try {
     createInstance(options);
     std::string selector = options.device;
@@ -69,23 +69,23 @@ Context::~Context() { release(); }
 void Context::release() {
   // Without its table (loading failed) a handle cannot be destroyed; that only happens when
   // Vulkan itself is broken.
-  if (device_ && device_table_) {
-    device_table_->vkDeviceWaitIdle(device_);
-    if (pipeline_cache_) {
+  if (device_ && deviceTable_) {
+    deviceTable_->vkDeviceWaitIdle(device_);
+    if (pipelineCache_) {
       savePipelineCache();
-      device_table_->vkDestroyPipelineCache(device_, pipeline_cache_, nullptr);
+      deviceTable_->vkDestroyPipelineCache(device_, pipelineCache_, nullptr);
     }
-    if (fence_) device_table_->vkDestroyFence(device_, fence_, nullptr);
-    if (command_pool_) device_table_->vkDestroyCommandPool(device_, command_pool_, nullptr);
-    device_table_->vkDestroyDevice(device_, nullptr);
+    if (fence_) deviceTable_->vkDestroyFence(device_, fence_, nullptr);
+    if (commandPool_) deviceTable_->vkDestroyCommandPool(device_, commandPool_, nullptr);
+    deviceTable_->vkDestroyDevice(device_, nullptr);
     device_ = VK_NULL_HANDLE;
   }
-  if (messenger_ && instance_table_) {
-    instance_table_->vkDestroyDebugUtilsMessengerEXT(instance_, messenger_, nullptr);
+  if (messenger_ && instanceTable_) {
+    instanceTable_->vkDestroyDebugUtilsMessengerEXT(instance_, messenger_, nullptr);
     messenger_ = VK_NULL_HANDLE;
   }
-  if (instance_ && instance_table_) {
-    instance_table_->vkDestroyInstance(instance_, nullptr);
+  if (instance_ && instanceTable_) {
+    instanceTable_->vkDestroyInstance(instance_, nullptr);
     instance_ = VK_NULL_HANDLE;
   }
 }
@@ -97,17 +97,16 @@ void Context::createInstance(const ContextOptions& options) {
   if (options.validation != Validation::Off) {
     if (hasInstanceLayer(kValidationLayer)) {
       layers.push_back(kValidationLayer);
-      validation_enabled_ = true;
+      validationEnabled_ = true;
     } else if (options.validation == Validation::Required) {
       throw VulkanUnavailable(std::string(kValidationLayer) +
                               " is required but not installed: `apt-get install "
                               "vulkan-validationlayers`");
     }
   }
-  bool debugUtils = validation_enabled_ &&
+  bool debugUtils = validationEnabled_ &&
                     (hasInstanceExtension(nullptr, VK_EXT_DEBUG_UTILS_EXTENSION_NAME) ||
-                     hasInstanceExtension(kValidationLayer,
-                                          VK_EXT_DEBUG_UTILS_EXTENSION_NAME));
+                     hasInstanceExtension(kValidationLayer, VK_EXT_DEBUG_UTILS_EXTENSION_NAME));
   if (debugUtils) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
 
   // Messages during vkCreateInstance itself reach this messenger through pNext.
@@ -128,34 +127,34 @@ void Context::createInstance(const ContextOptions& options) {
   features.pEnabledValidationFeatures = enables;
   features.pNext = debugUtils ? &messengerInfo : nullptr;
 
-  instance_ = vk::createInstance(layers, extensions,
-                                 validation_enabled_ ? static_cast<const void*>(&features) : nullptr);
-  instance_table_ = std::make_unique<InstanceTable>(loadInstanceTable(instance_));
-  if (debugUtils && instance_table_->vkCreateDebugUtilsMessengerEXT)
-    VK_CHECK(instance_table_->vkCreateDebugUtilsMessengerEXT(instance_, &messengerInfo, nullptr,
-                                                             &messenger_));
+  instance_ = vk::createInstance(
+      layers, extensions, validationEnabled_ ? static_cast<const void*>(&features) : nullptr);
+  instanceTable_ = std::make_unique<InstanceTable>(loadInstanceTable(instance_));
+  if (debugUtils && instanceTable_->vkCreateDebugUtilsMessengerEXT)
+    VK_CHECK(instanceTable_->vkCreateDebugUtilsMessengerEXT(instance_, &messengerInfo, nullptr,
+                                                            &messenger_));
 }
 
 void Context::choosePhysicalDevice(const std::string& selector) {
   uint32_t count = 0;
-  VK_CHECK(instance_table_->vkEnumeratePhysicalDevices(instance_, &count, nullptr));
+  VK_CHECK(instanceTable_->vkEnumeratePhysicalDevices(instance_, &count, nullptr));
   std::vector<VkPhysicalDevice> physical(count);
-  VK_CHECK(instance_table_->vkEnumeratePhysicalDevices(instance_, &count, physical.data()));
+  VK_CHECK(instanceTable_->vkEnumeratePhysicalDevices(instance_, &count, physical.data()));
   std::vector<DeviceInfo> devices;
   for (uint32_t i = 0; i < count; ++i)
-    devices.push_back(describeDevice(*instance_table_, physical[i], i));
+    devices.push_back(describeDevice(*instanceTable_, physical[i], i));
   size_t chosen = selectDevice(devices, selector);
   physical_ = physical[chosen];
   info_ = devices[chosen];
-  instance_table_->vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
+  instanceTable_->vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
 }
 
 void Context::createDevice() {
   uint32_t familyCount = 0;
-  instance_table_->vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount, nullptr);
+  instanceTable_->vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount, nullptr);
   std::vector<VkQueueFamilyProperties> families(familyCount);
-  instance_table_->vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount,
-                                                            families.data());
+  instanceTable_->vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount,
+                                                           families.data());
   // One queue for everything: prefer a family that also draws (tessera render).
   int chosen = -1;
   for (uint32_t i = 0; i < familyCount; ++i) {
@@ -166,13 +165,13 @@ void Context::createDevice() {
       chosen = static_cast<int>(i);
   }
   if (chosen < 0) throw VulkanUnavailable("device '" + info_.name + "' has no compute queue");
-  queue_family_ = static_cast<uint32_t>(chosen);
-  queue_graphics_ = families[chosen].queueFlags & VK_QUEUE_GRAPHICS_BIT;
-  timestamp_valid_bits_ = families[chosen].timestampValidBits;
+  queueFamily_ = static_cast<uint32_t>(chosen);
+  queueGraphics_ = families[chosen].queueFlags & VK_QUEUE_GRAPHICS_BIT;
+  timestampValidBits_ = families[chosen].timestampValidBits;
 
   float priority = 1.0f;
   VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-  queueInfo.queueFamilyIndex = queue_family_;
+  queueInfo.queueFamilyIndex = queueFamily_;
   queueInfo.queueCount = 1;
   queueInfo.pQueuePriorities = &priority;
   const auto& extensions = requiredDeviceExtensions();
@@ -182,87 +181,88 @@ void Context::createDevice() {
   info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
   info.ppEnabledExtensionNames = extensions.data();
   VkPhysicalDeviceFeatures available{};
-  instance_table_->vkGetPhysicalDeviceFeatures(physical_, &available);
-  enabled_features_.tessellationShader = available.tessellationShader;
-  enabled_features_.pipelineStatisticsQuery = available.pipelineStatisticsQuery;
-  info.pEnabledFeatures = &enabled_features_;
-  VK_CHECK(instance_table_->vkCreateDevice(physical_, &info, nullptr, &device_));
-  device_table_ = std::make_unique<DeviceTable>(loadDeviceTable(instance_, device_));
-  if (!device_table_->vkCmdPushDescriptorSetKHR)
+  instanceTable_->vkGetPhysicalDeviceFeatures(physical_, &available);
+  enabledFeatures_.tessellationShader = available.tessellationShader;
+  enabledFeatures_.pipelineStatisticsQuery = available.pipelineStatisticsQuery;
+  info.pEnabledFeatures = &enabledFeatures_;
+  VK_CHECK(instanceTable_->vkCreateDevice(physical_, &info, nullptr, &device_));
+  deviceTable_ = std::make_unique<DeviceTable>(loadDeviceTable(instance_, device_));
+  if (!deviceTable_->vkCmdPushDescriptorSetKHR)
     throw VulkanUnavailable("device '" + info_.name + "' lacks vkCmdPushDescriptorSetKHR");
-  device_table_->vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
+  deviceTable_->vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
 
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-  poolInfo.queueFamilyIndex = queue_family_;
-  VK_CHECK(device_table_->vkCreateCommandPool(device_, &poolInfo, nullptr, &command_pool_));
+  poolInfo.queueFamilyIndex = queueFamily_;
+  VK_CHECK(deviceTable_->vkCreateCommandPool(device_, &poolInfo, nullptr, &commandPool_));
   VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  VK_CHECK(device_table_->vkCreateFence(device_, &fenceInfo, nullptr, &fence_));
+  VK_CHECK(deviceTable_->vkCreateFence(device_, &fenceInfo, nullptr, &fence_));
   VkPhysicalDeviceProperties properties{};
-  instance_table_->vkGetPhysicalDeviceProperties(physical_, &properties);
-  pipeline_cache_path_ = vk::pipelineCachePath(properties);
-  std::vector<char> cached = readPipelineCache(pipeline_cache_path_);
-  pipeline_cache_loaded_bytes_ = cached.size();
+  instanceTable_->vkGetPhysicalDeviceProperties(physical_, &properties);
+  pipelineCachePath_ = vk::pipelineCachePath(properties);
+  std::vector<char> cached = readPipelineCache(pipelineCachePath_);
+  pipelineCacheLoadedBytes_ = cached.size();
   VkPipelineCacheCreateInfo cacheInfo{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
   cacheInfo.initialDataSize = cached.size();
   cacheInfo.pInitialData = cached.empty() ? nullptr : cached.data();
-  VK_CHECK(device_table_->vkCreatePipelineCache(device_, &cacheInfo, nullptr, &pipeline_cache_));
+  VK_CHECK(deviceTable_->vkCreatePipelineCache(device_, &cacheInfo, nullptr, &pipelineCache_));
 }
 
 void Context::savePipelineCache() {
-  if (pipeline_cache_path_.empty() || !device_table_->vkGetPipelineCacheData) return;
+  if (pipelineCachePath_.empty() || !deviceTable_->vkGetPipelineCacheData) return;
   size_t bytes = 0;
-  if (device_table_->vkGetPipelineCacheData(device_, pipeline_cache_, &bytes, nullptr) !=
-          VK_SUCCESS || bytes == 0)
+  if (deviceTable_->vkGetPipelineCacheData(device_, pipelineCache_, &bytes, nullptr) !=
+          VK_SUCCESS ||
+      bytes == 0)
     return;
   std::vector<char> data(bytes);
-  if (device_table_->vkGetPipelineCacheData(device_, pipeline_cache_, &bytes, data.data()) !=
+  if (deviceTable_->vkGetPipelineCacheData(device_, pipelineCache_, &bytes, data.data()) !=
       VK_SUCCESS)
     return;
   data.resize(bytes);
   // Only when it grew: a run that compiled nothing new leaves the file alone.
-  if (bytes > pipeline_cache_loaded_bytes_) writePipelineCache(pipeline_cache_path_, data);
+  if (bytes > pipelineCacheLoadedBytes_) writePipelineCache(pipelineCachePath_, data);
 }
 
 void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {
-  VK_CHECK(device_table_->vkResetCommandPool(device_, command_pool_, 0));
+  VK_CHECK(deviceTable_->vkResetCommandPool(device_, commandPool_, 0));
   VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  allocInfo.commandPool = command_pool_;
+  allocInfo.commandPool = commandPool_;
   allocInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
   allocInfo.commandBufferCount = 1;
   VkCommandBuffer cmd = VK_NULL_HANDLE;
-  VK_CHECK(device_table_->vkAllocateCommandBuffers(device_, &allocInfo, &cmd));
+  VK_CHECK(deviceTable_->vkAllocateCommandBuffers(device_, &allocInfo, &cmd));
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  VK_CHECK(device_table_->vkBeginCommandBuffer(cmd, &begin));
+  VK_CHECK(deviceTable_->vkBeginCommandBuffer(cmd, &begin));
   record(cmd);
-  VK_CHECK(device_table_->vkEndCommandBuffer(cmd));
+  VK_CHECK(deviceTable_->vkEndCommandBuffer(cmd));
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &cmd;
-  VK_CHECK(device_table_->vkResetFences(device_, 1, &fence_));
-  VK_CHECK(device_table_->vkQueueSubmit(queue_, 1, &submit, fence_));
-  VK_CHECK(device_table_->vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX));
+  VK_CHECK(deviceTable_->vkResetFences(device_, 1, &fence_));
+  VK_CHECK(deviceTable_->vkQueueSubmit(queue_, 1, &submit, fence_));
+  VK_CHECK(deviceTable_->vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX));
 }
 
 void Context::reportValidationMessage(const std::string& message) {
   {
-    std::lock_guard<std::mutex> lock(messages_mutex_);
+    std::lock_guard<std::mutex> lock(messagesMutex_);
     messages_.push_back(message);
   }
-  if (on_validation_message_)
-    on_validation_message_(message);
+  if (onValidationMessage_)
+    onValidationMessage_(message);
   else
     std::fprintf(stderr, "%s\n", message.c_str());
 }
 
 std::vector<std::string> Context::validationMessages() const {
-  std::lock_guard<std::mutex> lock(messages_mutex_);
+  std::lock_guard<std::mutex> lock(messagesMutex_);
   return messages_;
 }
 
 size_t Context::validationMessageCount() const {
-  std::lock_guard<std::mutex> lock(messages_mutex_);
+  std::lock_guard<std::mutex> lock(messagesMutex_);
   return messages_.size();
 }
 

@@ -64,25 +64,25 @@ class Context {
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
 
-  const DeviceTable& vk() const { return *device_table_; }
+  const DeviceTable& vk() const { return *deviceTable_; }
   VkDevice device() const { return device_; }
   VkPhysicalDevice physicalDevice() const { return physical_; }
   VkQueue queue() const { return queue_; }
-  uint32_t queueFamily() const { return queue_family_; }
+  uint32_t queueFamily() const { return queueFamily_; }
   const DeviceInfo& info() const { return info_; }
   const VkPhysicalDeviceMemoryProperties& memoryProperties() const { return memory_; }
-  bool validationEnabled() const { return validation_enabled_; }
-  bool timestampsSupported() const { return timestamp_valid_bits_ > 0; }
-  uint32_t timestampValidBits() const { return timestamp_valid_bits_; }
-  bool queueSupportsGraphics() const { return queue_graphics_; }
-  VkPipelineCache pipelineCache() const { return pipeline_cache_; }
+  bool validationEnabled() const { return validationEnabled_; }
+  bool timestampsSupported() const { return timestampValidBits_ > 0; }
+  uint32_t timestampValidBits() const { return timestampValidBits_; }
+  bool queueSupportsGraphics() const { return queueGraphics_; }
+  VkPipelineCache pipelineCache() const { return pipelineCache_; }
   // Where the pipeline cache is loaded from and saved to on destruction ("" = none), and how
   // many bytes were loaded (host/vk/pipeline_cache.h).
-  const std::string& pipelineCachePath() const { return pipeline_cache_path_; }
-  size_t pipelineCacheLoadedBytes() const { return pipeline_cache_loaded_bytes_; }
+  const std::string& pipelineCachePath() const { return pipelineCachePath_; }
+  size_t pipelineCacheLoadedBytes() const { return pipelineCacheLoadedBytes_; }
   // Optional features enabled when the device has them: tessellationShader and
   // pipelineStatisticsQuery (the tessellation-shader benchmark peer uses both).
-  const VkPhysicalDeviceFeatures& enabledFeatures() const { return enabled_features_; }
+  const VkPhysicalDeviceFeatures& enabledFeatures() const { return enabledFeatures_; }
 
   // Records commands into a fresh command buffer, submits, and waits for completion.
   void submitAndWait(const std::function<void(VkCommandBuffer)>& record);
@@ -102,27 +102,27 @@ class Context {
   void savePipelineCache();
 
   // Per context, so two contexts live side by side (vk/loader.h).
-  std::unique_ptr<InstanceTable> instance_table_;
-  std::unique_ptr<DeviceTable> device_table_;
+  std::unique_ptr<InstanceTable> instanceTable_;
+  std::unique_ptr<DeviceTable> deviceTable_;
   VkInstance instance_ = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
   VkPhysicalDevice physical_ = VK_NULL_HANDLE;
   VkDevice device_ = VK_NULL_HANDLE;
   VkQueue queue_ = VK_NULL_HANDLE;
-  uint32_t queue_family_ = 0;
-  bool queue_graphics_ = false;
-  uint32_t timestamp_valid_bits_ = 0;
+  uint32_t queueFamily_ = 0;
+  bool queueGraphics_ = false;
+  uint32_t timestampValidBits_ = 0;
   DeviceInfo info_;
   VkPhysicalDeviceMemoryProperties memory_{};
-  VkCommandPool command_pool_ = VK_NULL_HANDLE;
+  VkCommandPool commandPool_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;
-  VkPipelineCache pipeline_cache_ = VK_NULL_HANDLE;
-  std::string pipeline_cache_path_;
-  size_t pipeline_cache_loaded_bytes_ = 0;
-  VkPhysicalDeviceFeatures enabled_features_{};
-  bool validation_enabled_ = false;
-  std::function<void(const std::string&)> on_validation_message_;
-  mutable std::mutex messages_mutex_;
+  VkPipelineCache pipelineCache_ = VK_NULL_HANDLE;
+  std::string pipelineCachePath_;
+  size_t pipelineCacheLoadedBytes_ = 0;
+  VkPhysicalDeviceFeatures enabledFeatures_{};
+  bool validationEnabled_ = false;
+  std::function<void(const std::string&)> onValidationMessage_;
+  mutable std::mutex messagesMutex_;
   std::vector<std::string> messages_;
 };
 
