@@ -17,13 +17,12 @@ double progressIntervalSeconds() {
 }
 
 Progress::Progress(bool enabled, double intervalSeconds)
-    : enabled_(enabled), interval_(intervalSeconds), last_(std::chrono::steady_clock::now()) {}
+    : enabled_(enabled), intervalSeconds_(intervalSeconds) {}
 
 void Progress::update(const std::string& message) {
   if (!enabled_) return;
-  const auto now = std::chrono::steady_clock::now();
-  if (now - last_ < interval_) return;
-  last_ = now;
+  if (sinceLastLine_.elapsedSeconds() < intervalSeconds_) return;
+  sinceLastLine_.restart();
   std::fprintf(stderr, "tessera: %s\n", message.c_str());
   std::fflush(stderr);
 }

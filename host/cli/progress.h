@@ -2,11 +2,11 @@
 // patches settled, 81234 nodes classified"), at most one every few seconds, whether or not
 // stderr is a terminal (a log file or CI output shows that the run is alive). Quiet with -q.
 #pragma once
-#include <chrono>
 #include <functional>
 #include <string>
 #include <vector>
 
+#include "common/stopwatch.h"
 #include "quadtree/quadtree.h"
 
 namespace tessera::cli {
@@ -33,8 +33,8 @@ class Progress {
 
  private:
   bool enabled_;
-  std::chrono::duration<double> interval_;
-  std::chrono::steady_clock::time_point last_;
+  double intervalSeconds_;
+  Stopwatch sinceLastLine_;
   std::vector<LevelStats> seen_;  // per level, the totals already counted
   double settled_ = 0;            // Σ leaf weights, in root units
   size_t classified_ = 0;         // nodes classified, all levels
