@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "eval/patch_set.h"
+#include "tessera/errors.h"
 #include "shaders/layout.h"
 
 namespace tessera {
@@ -86,9 +87,10 @@ constexpr size_t kFrontierBytesPerNode = sizeof(gpu::QuadNode) + sizeof(uint64_t
 size_t frontierBatchNodes(const QuadtreeOptions& options, size_t classifierLimit);
 
 // The node budget would be exceeded: names the patch with the most frontier nodes and the level.
-class TessellationLimitError : public std::runtime_error {
+// A LimitError of the public API (include/tessera/errors.h).
+class TessellationLimitError : public LimitError {
  public:
-  using std::runtime_error::runtime_error;
+  using LimitError::LimitError;
 };
 
 // One level's classification, behind one interface so tests can swap backends.
