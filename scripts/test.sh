@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # README command 2: install what is missing, build, and run the whole test suite through
-# CTest. GPU tests run on the Vulkan device (lavapipe in CI) with validation layers on.
+# CTest. GPU tests run on the Vulkan device (lavapipe in CI) with validation layers on. Then
+# scripts/check-install.sh: install, build examples/consumer against the install, run it.
 # Then the hardening step, scripts/sanitize.sh (docs/hardening.md): a clang build with
 # AddressSanitizer, UndefinedBehaviorSanitizer and libFuzzer runs the CPU tests again and every
 # fuzz target for a few seconds.
@@ -20,6 +21,9 @@ done
 scripts/deps.sh
 scripts/build.sh
 (cd "${BUILD_DIR:-build}" && ctest --output-on-failure -j "$(nproc)" "${labels[@]}")
+# The library as a user takes it: install to a prefix, build examples/consumer against it with
+# find_package and with pkg-config, run both.
+scripts/check-install.sh
 if [[ $sanitize == 1 ]]; then
   if [[ ${#labels[@]} -gt 0 ]]; then scripts/sanitize.sh --cpu-only; else scripts/sanitize.sh; fi
 fi

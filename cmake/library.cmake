@@ -1,0 +1,39 @@
+# The public API and the one library a consumer links, tessera::tessera (docs/api.md).
+#
+# One combined static library, libtessera.a: the objects of tessera_core, tessera_vulkan (with
+# volk, which Debian ships as source and third_party/ compiles), tessera_io and the API
+# (host/api/). One archive because a consumer should link one thing,
+# and because the internal layers' usage requirements (glm and Vulkan defines, the host/
+# include path, -ffp-contract=off) must stay inside Tessera's build: the combined target is
+# built from objects only, so its interface is just include/, C++17, Threads and dl.
+# Everything in it is position independent, so it can go into a shared library or a Python
+# module.
+include(GNUInstallDirs)
+set(THREADS_PREFER_PTHREAD_FLAG ON)
+find_package(Threads REQUIRED)  # imported targets are per directory: third_party's is not seen here
+
+set_target_properties(tessera_core tessera_vulkan tessera_volk tessera_io PROPERTIES
+  POSITION_INDEPENDENT_CODE ON)
+
+# The API's own code, compiled against the internal layers. The tests link these objects
+# beside the layers' static libraries (the combined archive would duplicate them).
+file(GLOB TESSERA_API_SOURCES CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/host/api/*.cpp)
+add_library(tessera_api OBJECT ${TESSERA_API_SOURCES})
+target_link_libraries(tessera_api PUBLIC tessera_vulkan tessera_io tessera_core)
+target_compile_definitions(tessera_api PRIVATE TESSERA_VERSION="${PROJECT_VERSION}")
+set_target_properties(tessera_api PROPERTIES POSITION_INDEPENDENT_CODE ON)
+
+add_library(tessera_lib STATIC
+  $<TARGET_OBJECTS:tessera_api> $<TARGET_OBJECTS:tessera_core>
+  $<TARGET_OBJECTS:tessera_vulkan> $<TARGET_OBJECTS:tessera_volk> $<TARGET_OBJECTS:tessera_io>)
+set_target_properties(tessera_lib PROPERTIES OUTPUT_NAME tessera EXPORT_NAME tessera
+  LINKER_LANGUAGE CXX)
+target_include_directories(tessera_lib INTERFACE
+  $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
+  $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+target_compile_features(tessera_lib INTERFACE cxx_std_17)
+# What the objects need at link time: threads (the parallel CPU backend) and dlopen (volk
+# opens the Vulkan loader at run time, nothing links libvulkan). volk itself is inside, so
+# the package config needs no find_dependency for it.
+target_link_libraries(tessera_lib INTERFACE Threads::Threads ${CMAKE_DL_LIBS})
+add_library(tessera::tessera ALIAS tessera_lib)

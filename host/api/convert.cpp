@@ -1,0 +1,78 @@
+#include "api/convert.h"
+
+#include <string>
+
+namespace tessera::api {
+
+std::vector<BezierPatch> toBezierPatches(const std::vector<Patch>& patches) {
+  std::vector<BezierPatch> result(patches.size());
+  for (size_t k = 0; k < patches.size(); ++k) {
+    const Patch& in = patches[k];
+    const std::string what = "patch " + std::to_string(k);
+    if (in.degreeU < 1 || in.degreeU > kMaxDegree || in.degreeV < 1 || in.degreeV > kMaxDegree)
+      throw ArgumentError(what + ": degree " + std::to_string(in.degreeU) + "x" +
+                          std::to_string(in.degreeV) + " is outside 1..7");
+    const size_t count = size_t(in.degreeU + 1) * size_t(in.degreeV + 1);
+    if (in.points.size() != 3 * count)
+      throw ArgumentError(what + ": " + std::to_string(in.points.size()) +
+                          " coordinates, expected " + std::to_string(3 * count) + " (" +
+                          std::to_string(count) + " control points x y z)");
+    if (!in.weights.empty() && in.weights.size() != count)
+      throw ArgumentError(what + ": " + std::to_string(in.weights.size()) + " weights, expected " +
+                          std::to_string(count) + " or none");
+    BezierPatch& out = result[k];
+    out.degreeU = in.degreeU;
+    out.degreeV = in.degreeV;
+    out.cp.resize(count);
+    for (size_t i = 0; i < count; ++i)
+      out.cp[i] = glm::dvec3(in.points[3 * i], in.points[3 * i + 1], in.points[3 * i + 2]);
+    out.weights = in.weights;
+  }
+  return result;
+}
+
+std::vector<Patch> toPatches(const std::vector<BezierPatch>& patches) {
+  std::vector<Patch> result(patches.size());
+  for (size_t k = 0; k < patches.size(); ++k) {
+    const BezierPatch& in = patches[k];
+    Patch& out = result[k];
+    out.degreeU = in.degreeU;
+    out.degreeV = in.degreeV;
+    out.points.reserve(3 * in.cp.size());
+    for (const glm::dvec3& p : in.cp) out.points.insert(out.points.end(), {p.x, p.y, p.z});
+    out.weights = in.weights;
+  }
+  return result;
+}
+
+Mesh toMesh(const TriangleMesh& mesh) {
+  Mesh out;
+  out.positions.reserve(3 * mesh.positions.size());
+  for (const glm::vec3& p : mesh.positions)
+    out.positions.insert(out.positions.end(), {p.x, p.y, p.z});
+  out.normals.reserve(3 * mesh.normals.size());
+  for (const glm::vec3& n : mesh.normals) out.normals.insert(out.normals.end(), {n.x, n.y, n.z});
+  out.uvs.reserve(2 * mesh.uvs.size());
+  for (const glm::vec2& uv : mesh.uvs) out.uvs.insert(out.uvs.end(), {uv.x, uv.y});
+  out.patchIds = mesh.patchIds;
+  out.indices = mesh.indices;
+  return out;
+}
+
+QuadtreeOptions toQuadtreeOptions(const RuleOptions& options) {
+  static_assert(
+      int(Rule::A) == int(SplitRule::UniformGrid) && int(Rule::D) == int(SplitRule::TrueMax),
+      "Rule and SplitRule list the rules in the same order");
+  QuadtreeOptions q;
+  q.rule = static_cast<SplitRule>(options.rule);
+  q.linearity = options.linearity;
+  q.flatness = options.flatness;
+  q.gridU = options.gridU;
+  q.gridV = options.gridV;
+  q.samples = options.samples;
+  q.maxDepth = options.maxDepth;
+  q.nodeBudget = options.maxNodes;
+  return q;
+}
+
+}  // namespace tessera::api

@@ -1,0 +1,160 @@
+// tessera::Tessellator (include/tessera/tessera.h): owns the backend (a Vulkan context or the
+// CPU mirror) and turns the library's exceptions into the public ones.
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "api/convert.h"
+#include "division/count.h"
+#include "eval/patch_set.h"
+#include "geometry/rational.h"
+#include "mesh/tessellate.h"
+#include "vk/context.h"
+#include "vk/errors.h"
+
+namespace tessera {
+namespace {
+
+// Rule A with each patch's grid from Filip's bound at `tolerance` (host/division/count.h), the
+// grids made watertight across patches by meshFromTree (as bench/bench_occt.cpp's countedGrids).
+Tessellation countedGrids(const std::vector<BezierPatch>& patches, double tolerance,
+                          int maxPerDirection, size_t maxNodes, Backend& backend) {
+  for (size_t i = 0; i < patches.size(); ++i)
+    validateTessellationPatch(patches[i], "patch " + std::to_string(i));
+  DivisionOptions counting;
+  counting.tolerance = tolerance;
+  counting.maxPerDirection = maxPerDirection;
+  QuadtreeOptions grid;
+  grid.rule = SplitRule::UniformGrid;
+  const PatchSet set = toPatchSet(patches);
+  QuadtreeResult tree;
+  size_t cells = 0;
+  for (size_t p = 0; p < patches.size(); ++p) {
+    const Divisions d = patchDivisions(toRationalPatch(patches[p]), counting);
+    cells += size_t(d.nu) * size_t(d.nv);
+    if (cells > maxNodes)
+      throw LimitError("tolerance " + std::to_string(tolerance) + ": the grids reach " +
+                       std::to_string(cells) + " cells by patch " + std::to_string(p) +
+                       ", more than " + std::to_string(maxNodes));
+    grid.gridU = d.nu;
+    grid.gridV = d.nv;
+    // One patch's tree at a time (each has its own grid), renumbered to its place.
+    QuadtreeResult one = buildQuadtree(set.subset(p, p + 1), grid, *backend.classifier);
+    for (QuadLeaf leaf : one.leaves) {
+      leaf.patchIndex = uint32_t(p);
+      tree.leaves.push_back(leaf);
+    }
+    tree.depth = std::max(tree.depth, one.depth);
+  }
+  return meshFromTree(patches, set, std::move(tree), *backend.evaluator);
+}
+
+// Runs `work`, turning the library's std::invalid_argument (a patch or option it cannot take)
+// and Vulkan failures into the public exception types.
+template <class Work>
+auto translatingErrors(Work&& work) -> decltype(work()) {
+  try {
+    return work();
+  } catch (const std::invalid_argument& e) {
+    throw ArgumentError(e.what());
+  } catch (const vk::VulkanUnavailable& e) {
+    throw DeviceError(std::string("no usable Vulkan device: ") + e.what());
+  } catch (const vk::VulkanError& e) {
+    throw DeviceError(std::string("the Vulkan device failed: ") + e.what());
+  }
+}
+
+}  // namespace
+
+struct Tessellator::Impl {
+  TessellatorOptions options;
+  std::unique_ptr<vk::Context> context;  // null on the CPU
+  Backend backend;
+
+  explicit Impl(const TessellatorOptions& o) : options(o) {
+    if (options.device == Device::Cpu) {
+      backend = makeMirrorBackend();
+      return;
+    }
+    try {
+      vk::ContextOptions contextOptions;
+      contextOptions.device = options.deviceName;
+      context = std::make_unique<vk::Context>(contextOptions);
+      backend = makeVulkanBackend(*context);
+    } catch (const vk::VulkanUnavailable&) {
+      if (options.device == Device::Vulkan) throw;
+      useCpu();
+    } catch (const vk::VulkanError&) {  // the device failed while being set up
+      if (options.device == Device::Vulkan) throw;
+      useCpu();
+    }
+  }
+
+  void useCpu() {
+    backend = makeMirrorBackend();  // drops the Vulkan classifier and evaluator first
+    context.reset();
+  }
+
+  // `run(backend)`; under Device::Auto a Vulkan failure moves to the CPU and runs it again.
+  template <class Run>
+  Tessellation withFallback(Run&& run) {
+    try {
+      return run(backend);
+    } catch (const vk::VulkanError&) {
+      if (options.device != Device::Auto || !context) throw;
+      useCpu();
+      return run(backend);
+    }
+  }
+};
+
+Tessellator::Tessellator(const TessellatorOptions& options)
+    : impl_(translatingErrors([&] { return std::make_unique<Impl>(options); })) {}
+Tessellator::~Tessellator() = default;
+Tessellator::Tessellator(Tessellator&&) noexcept = default;
+Tessellator& Tessellator::operator=(Tessellator&&) noexcept = default;
+
+bool Tessellator::usesVulkan() const { return impl_->context != nullptr; }
+
+std::string Tessellator::deviceName() const {
+  return impl_->context ? impl_->context->info().name : "cpu";
+}
+
+Mesh Tessellator::tessellate(const std::vector<Patch>& patches, const RuleOptions& options) {
+  const std::vector<BezierPatch> internal = api::toBezierPatches(patches);
+  const QuadtreeOptions quadtree = api::toQuadtreeOptions(options);
+  return translatingErrors([&] {
+    return api::toMesh(impl_
+                           ->withFallback([&](Backend& backend) {
+                             return tessera::tessellate(internal, quadtree, backend);
+                           })
+                           .mesh);
+  });
+}
+
+Mesh Tessellator::tessellateToTolerance(const std::vector<Patch>& patches, double tolerance,
+                                        int maxPerDirection) {
+  if (!std::isfinite(tolerance) || !(tolerance > 0))
+    throw ArgumentError("the tolerance must be finite and > 0, got " + std::to_string(tolerance));
+  // Rule A's grids take at most 4096 cells per side (quadtree.h).
+  if (maxPerDirection < 1 || maxPerDirection > 4096)
+    throw ArgumentError("maxPerDirection must be 1..4096, got " + std::to_string(maxPerDirection));
+  const std::vector<BezierPatch> internal = api::toBezierPatches(patches);
+  const size_t maxNodes = RuleOptions{}.maxNodes;
+  return translatingErrors([&] {
+    return api::toMesh(impl_
+                           ->withFallback([&](Backend& backend) {
+                             return countedGrids(internal, tolerance, maxPerDirection, maxNodes,
+                                                 backend);
+                           })
+                           .mesh);
+  });
+}
+
+Mesh tessellateFile(const std::string& path, const RuleOptions& options,
+                    const TessellatorOptions& device) {
+  std::vector<Patch> patches = loadPatches(path);
+  return Tessellator(device).tessellate(patches, options);
+}
+
+}  // namespace tessera

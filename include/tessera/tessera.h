@@ -1,0 +1,127 @@
+// Tessera's public API: free-form surfaces in, triangle meshes out, as plain arrays.
+//
+//   #include <tessera/tessera.h>
+//   tessera::Tessellator tessellator;                        // Vulkan if usable, else the CPU
+//   tessera::Mesh mesh = tessellator.tessellate(tessera::loadPatches("teapot.bpt"));
+//   // mesh.positions: x y z per vertex, mesh.indices: three per triangle
+//
+// Everything here is plain C++17 and the standard library: no Vulkan, glm or internal types.
+// Errors are exceptions derived from tessera::Error (tessera/errors.h). docs/api.md.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tessera/errors.h"
+
+namespace tessera {
+
+// The library's version, "major.minor.patch".
+const char* version();
+
+// One tensor-product Bézier patch of degree 1..7 each way, polynomial or rational.
+struct Patch {
+  int degreeU = 3;
+  int degreeV = 3;
+  // (degreeU+1)·(degreeV+1) control points as x y z triples, b_ij at 3·(i·(degreeV+1) + j),
+  // i along u (the order of .bpt files; docs/conventions.md).
+  std::vector<double> points;
+  // Empty: polynomial. Else one weight per control point, same order (weights ≥ 0, corner
+  // weights > 0): the patch is Σ B w b / Σ B w.
+  std::vector<double> weights;
+};
+
+// Reads a surface file by extension: .bpt (Bézier patches), .grid (points, interpolated by
+// bicubic patches), .json (a scene of Bézier, rational and B-spline surfaces, B-splines split
+// into their Bézier pieces; docs/scene_format.md). Throws InputError naming file and line.
+std::vector<Patch> loadPatches(const std::string& path);
+
+// `patchCount` patches of one degree from flat arrays: `xyz` holds
+// patchCount·(degreeU+1)·(degreeV+1)·3 coordinates, patch after patch, each in Patch::points
+// order; `weights` (may be null: polynomial) one per control point. Throws ArgumentError for a
+// degree outside 1..7.
+std::vector<Patch> patchesFromArrays(int degreeU, int degreeV, size_t patchCount, const double* xyz,
+                                     const double* weights = nullptr);
+
+// How the adaptive quad-tree splits (docs/quadtree.md): A a uniform gridU×gridV grid per
+// patch, B at the midpoint, C at the sampled curvature maximum, D at the true one.
+enum class Rule { A, B, C, D };
+
+struct RuleOptions {
+  Rule rule = Rule::B;
+  float linearity = 0.1f;             // a node is a leaf when every 1 − Ti·Tj < linearity ...
+  float flatness = 0.1f;              // ... and every 1 − Ni·Nj < flatness (rules B–D)
+  int gridU = 8, gridV = 8;           // rule A's grid
+  int samples = 5;                    // rules C and D: samples per direction
+  uint32_t maxDepth = 12;             // nodes at this depth are leaves
+  size_t maxNodes = size_t(1) << 24;  // more nodes in a tree: LimitError
+};
+
+// An indexed triangle mesh in fp32. Per vertex: positions and normals (3 floats each), uvs
+// (2 floats: the vertex's (u, v) on its patch), patchIds (the index of its patch in the input).
+// indices: 3 per triangle, counter-clockwise seen from the side the normals point to.
+// Vertices on a seam between patches are shared (welded), so the mesh is watertight.
+struct Mesh {
+  std::vector<float> positions;
+  std::vector<float> normals;
+  std::vector<float> uvs;
+  std::vector<uint32_t> patchIds;
+  std::vector<uint32_t> indices;
+
+  size_t vertexCount() const { return positions.size() / 3; }
+  size_t triangleCount() const { return indices.size() / 3; }
+};
+
+// Where the work runs. Auto: Vulkan when a usable device exists, else the CPU; a device that
+// fails during a call (lost, out of memory) is dropped and the call runs again on the CPU.
+// Cpu: the fp32 mirror of the shaders on all cores (the same bits as the GPU on lavapipe).
+enum class Device { Auto, Vulkan, Cpu };
+
+struct TessellatorOptions {
+  Device device = Device::Auto;
+  // Vulkan only: "" picks the best device (discrete > integrated > CPU; the environment
+  // variable TESSERA_DEVICE overrides), else an index from `tessera devices` or part of a name.
+  std::string deviceName;
+};
+
+// Owns the device (the Vulkan instance, queues, pipelines), so repeated calls are cheap: make
+// one and keep it. Not for use by two threads at once; separate Tessellators are independent.
+class Tessellator {
+ public:
+  // Throws DeviceError when Device::Vulkan was asked for and no usable device exists.
+  explicit Tessellator(const TessellatorOptions& options = {});
+  ~Tessellator();
+  Tessellator(Tessellator&&) noexcept;
+  Tessellator& operator=(Tessellator&&) noexcept;
+  Tessellator(const Tessellator&) = delete;
+  Tessellator& operator=(const Tessellator&) = delete;
+
+  // True while the work runs on Vulkan; deviceName() is then the GPU's name, else "cpu".
+  bool usesVulkan() const;
+  std::string deviceName() const;
+
+  // Adaptive tessellation by a split rule. Throws ArgumentError for a patch or option it
+  // cannot take (naming which), LimitError past maxNodes, DeviceError on Device::Vulkan when
+  // the device fails.
+  Mesh tessellate(const std::vector<Patch>& patches, const RuleOptions& options = {});
+
+  // Tessellation to a tolerance in model units: each patch gets its own uniform grid (rule A),
+  // sized by Filip's bound of the second derivatives (rational too, zero weights included;
+  // docs/rational_division.md) so that every triangle stays within `tolerance` of the surface
+  // at the same (u, v). Counts per direction are capped at `maxPerDirection`. The adaptive
+  // tolerance mode (a quad-tree that stops on a proven deviation) comes with issue 15.
+  Mesh tessellateToTolerance(const std::vector<Patch>& patches, double tolerance,
+                             int maxPerDirection = 1024);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// One call: loadPatches(path), tessellated by `options` on a Tessellator made for the call.
+Mesh tessellateFile(const std::string& path, const RuleOptions& options = {},
+                    const TessellatorOptions& device = {});
+
+}  // namespace tessera

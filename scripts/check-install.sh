@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# Installs Tessera from ${BUILD_DIR:-build} into a temporary prefix, builds examples/consumer
+# against the installed copy twice (CMake find_package(tessera) and pkg-config), runs both on
+# data/teapot.bpt and checks that they print the same triangle count. Also checks that the
+# exported interface carries none of Tessera's build defines and that a consumer can include
+# <tessera/tessera.h> beside <vulkan/vulkan.h> and glm with their normal definitions, and
+# that add_subdirectory leaves the caller's build type alone and configures no tests.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build_dir=${BUILD_DIR:-build}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+prefix=$work/prefix
+
+cmake --install "$build_dir" --prefix "$prefix" >/dev/null
+config=$(find "$prefix" -name tesseraConfig.cmake)
+pc=$(find "$prefix" -name tessera.pc)
+[[ -n $config && -n $pc && -f $prefix/include/tessera/tessera.h ]] || {
+  echo "check-install: the install lacks tesseraConfig.cmake, tessera.pc or the headers" >&2
+  exit 1
+}
+if grep -rnE "VK_NO_PROTOTYPES|GLM_FORCE|GLM_ENABLE|ffp-contract|TESSERA_VULKAN_BACKEND|/host" \
+    "$(dirname "$config")" "$pc"; then
+  echo "check-install: a build-internal setting leaks into the exported interface (above)" >&2
+  exit 1
+fi
+
+# 1. CMake: find_package(tessera) and tessera::tessera.
+cmake -S examples/consumer -B "$work/cmake-build" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
+cmake --build "$work/cmake-build" >/dev/null
+# 2. pkg-config.
+export PKG_CONFIG_PATH=$(dirname "$pc")
+c++ -std=c++17 -O2 examples/consumer/main.cpp -o "$work/consumer-pc" \
+  $(pkg-config --cflags --libs tessera)
+
+# The public header next to Vulkan's and glm's, as an engine includes them: prototypes and
+# glm's colour swizzles must be there.
+cat > "$work/beside.cpp" <<'CPP'
+#include <tessera/tessera.h>
+#include <vulkan/vulkan.h>
+#include <glm/glm.hpp>
+PFN_vkEnumerateInstanceVersion enumerate = &vkEnumerateInstanceVersion;
+float red(const glm::vec4& colour) { return colour.r; }
+CPP
+c++ -std=c++17 -fsyntax-only $(pkg-config --cflags tessera) "$work/beside.cpp"
+
+# As a subproject: the caller's build type stands (here none), and the tests, with spirv-val,
+# are not configured.
+mkdir -p "$work/parent"
+cat > "$work/parent/CMakeLists.txt" <<CMAKE
+cmake_minimum_required(VERSION 3.22)
+project(parent LANGUAGES C CXX)
+add_subdirectory("$PWD" tessera)
+if(NOT TARGET tessera::tessera OR TARGET tessera_tests OR TARGET tessera)
+  message(FATAL_ERROR "as a subproject: want tessera::tessera and no tests or CLI")
+endif()
+CMAKE
+cmake -S "$work/parent" -B "$work/parent/build" >/dev/null
+if grep -E "^(CMAKE_BUILD_TYPE:STRING=.+|SPIRV_VAL:)" "$work/parent/build/CMakeCache.txt"; then
+  echo "check-install: as a subproject Tessera set a build type or looked for spirv-val" >&2
+  exit 1
+fi
+
+counts=()
+for consumer in "$work/cmake-build/consumer" "$work/consumer-pc"; do
+  out=$("$consumer" data/teapot.bpt)
+  echo "check-install: $(basename "$consumer"): ${out%%$'\n'*}"
+  [[ $out =~ :\ ([0-9]+)\ triangles ]] || { echo "check-install: no triangle count in: $out" >&2; exit 1; }
+  counts+=("${BASH_REMATCH[1]}")
+done
+if [[ ${counts[0]} -eq 0 || ${counts[0]} != "${counts[1]}" ]]; then
+  echo "check-install: the two builds disagree or made nothing: ${counts[*]}" >&2
+  exit 1
+fi
+echo "check-install: OK (installed to a prefix, find_package and pkg-config builds agree: ${counts[0]} triangles)"

@@ -1,0 +1,232 @@
+// The public API (include/tessera/tessera.h) against the library's own path, the one the CLI
+// takes: the same mesh on the teapot, consistent arrays, typed errors, and tessellation to a
+// tolerance that keeps its promise.
+#include <tessera/tessera.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/bezier.h"
+#include "io/bpt_reader.h"
+#include "mesh/tessellate.h"
+
+namespace {
+
+const std::string kTeapot = std::string(TESSERA_SOURCE_DIR) + "/data/teapot.bpt";
+
+void requireConsistent(const tessera::Mesh& mesh, size_t patchCount) {
+  const size_t n = mesh.vertexCount();
+  REQUIRE(n > 0);
+  REQUIRE(mesh.positions.size() == 3 * n);
+  REQUIRE(mesh.normals.size() == 3 * n);
+  REQUIRE(mesh.uvs.size() == 2 * n);
+  REQUIRE(mesh.patchIds.size() == n);
+  REQUIRE(mesh.indices.size() % 3 == 0);
+  REQUIRE(mesh.triangleCount() > 0);
+  REQUIRE(*std::max_element(mesh.indices.begin(), mesh.indices.end()) < n);
+  REQUIRE(*std::max_element(mesh.patchIds.begin(), mesh.patchIds.end()) < patchCount);
+  for (float uv : mesh.uvs) REQUIRE((uv >= 0.0f && uv <= 1.0f));
+}
+
+// A curved bicubic patch over the unit square (z a bump and a twist), as flat arrays.
+std::vector<double> bumpPatchPoints() {
+  std::vector<double> xyz;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const double z = (i == 1 || i == 2) && (j == 1 || j == 2) ? 0.8 : 0.1 * (i - j);
+      xyz.insert(xyz.end(), {i / 3.0, j / 3.0, z});
+    }
+  return xyz;
+}
+
+}  // namespace
+
+TEST_CASE("public API: the teapot on the CPU is the CLI's mesh, bit for bit", "[api]") {
+  const std::vector<tessera::Patch> patches = tessera::loadPatches(kTeapot);
+  REQUIRE(patches.size() == 32);
+  tessera::Tessellator tessellator({tessera::Device::Cpu});
+  REQUIRE_FALSE(tessellator.usesVulkan());
+  REQUIRE(tessellator.deviceName() == "cpu");
+
+  for (tessera::Rule rule : {tessera::Rule::A, tessera::Rule::B, tessera::Rule::D}) {
+    tessera::RuleOptions options;
+    options.rule = rule;
+    options.flatness = options.linearity = 0.05f;
+    const tessera::Mesh mesh = tessellator.tessellate(patches, options);
+    requireConsistent(mesh, patches.size());
+
+    tessera::QuadtreeOptions internalOptions;
+    internalOptions.rule = static_cast<tessera::SplitRule>(rule);
+    internalOptions.flatness = internalOptions.linearity = 0.05f;
+    tessera::Backend backend = tessera::makeMirrorBackend();
+    const tessera::TriangleMesh expected =
+        tessera::tessellate(tessera::readBpt(kTeapot), internalOptions, backend).mesh;
+    INFO("rule "
+         << "ABCD"[int(rule)]);
+    REQUIRE(mesh.triangleCount() == expected.triangleCount());
+    REQUIRE(mesh.vertexCount() == expected.vertexCount());
+    REQUIRE(mesh.indices == expected.indices);
+    REQUIRE(mesh.patchIds == expected.patchIds);
+    for (size_t v = 0; v < expected.vertexCount(); ++v)
+      for (int c = 0; c < 3; ++c) {
+        REQUIRE(mesh.positions[3 * v + c] == expected.positions[v][c]);
+        REQUIRE(mesh.normals[3 * v + c] == expected.normals[v][c]);
+      }
+  }
+}
+
+TEST_CASE("public API: tessellateFile is loadPatches then tessellate", "[api]") {
+  const tessera::Mesh once = tessera::tessellateFile(kTeapot, {}, {tessera::Device::Cpu});
+  tessera::Tessellator tessellator({tessera::Device::Cpu});
+  const tessera::Mesh twice = tessellator.tessellate(tessera::loadPatches(kTeapot));
+  REQUIRE(once.indices == twice.indices);
+  REQUIRE(once.positions == twice.positions);
+}
+
+TEST_CASE("public API: patches from arrays, polynomial and rational", "[api]") {
+  const std::vector<double> xyz = bumpPatchPoints();
+  std::vector<double> twice = xyz;
+  twice.insert(twice.end(), xyz.begin(), xyz.end());
+  for (size_t k = 48; k < twice.size(); k += 3) twice[k] += 1.0;  // the second beside the first
+  const std::vector<tessera::Patch> patches = tessera::patchesFromArrays(3, 3, 2, twice.data());
+  REQUIRE(patches.size() == 2);
+  REQUIRE(patches[1].points[0] == 1.0);
+  REQUIRE(patches[1].weights.empty());
+
+  tessera::Tessellator tessellator({tessera::Device::Cpu});
+  const tessera::Mesh mesh = tessellator.tessellate(patches);
+  requireConsistent(mesh, 2);
+  // Both patches have triangles.
+  REQUIRE(std::count(mesh.patchIds.begin(), mesh.patchIds.end(), 1u) > 0);
+
+  // Rational (weights not all equal): the general path.
+  std::vector<double> weights(16, 1.0);
+  weights[5] = 3.0;
+  const std::vector<tessera::Patch> rational =
+      tessera::patchesFromArrays(3, 3, 1, xyz.data(), weights.data());
+  REQUIRE(rational[0].weights == weights);
+  requireConsistent(tessellator.tessellate(rational), 1);
+}
+
+TEST_CASE("public API: errors are typed", "[api]") {
+  SECTION("a missing file is an InputError naming it") {
+    try {
+      tessera::loadPatches("no_such_file.bpt");
+      FAIL("no exception");
+    } catch (const tessera::InputError& e) {
+      REQUIRE(e.kind() == tessera::InputErrorKind::Io);
+      REQUIRE(e.file() == "no_such_file.bpt");
+    }
+  }
+  SECTION("a malformed file is an InputError with its line, and a tessera::Error") {
+    const std::string bad =
+        std::string(TESSERA_SOURCE_DIR) + "/tests/bad_inputs/bpt_truncated_points.bpt";
+    try {
+      tessera::loadPatches(bad);
+      FAIL("no exception");
+    } catch (const tessera::Error& e) {
+      const auto* input = dynamic_cast<const tessera::InputError*>(&e);
+      REQUIRE(input != nullptr);
+      REQUIRE(input->line() == 13);
+      REQUIRE(std::string(e.what()).find(":13: ") != std::string::npos);
+    }
+  }
+  tessera::Tessellator tessellator({tessera::Device::Cpu});
+  const std::vector<double> xyz = bumpPatchPoints();
+  SECTION("bad arrays and options are ArgumentErrors") {
+    REQUIRE_THROWS_AS(tessera::patchesFromArrays(8, 3, 1, xyz.data()), tessera::ArgumentError);
+    tessera::Patch shortPatch;
+    shortPatch.points.assign(xyz.begin(), xyz.end() - 3);
+    REQUIRE_THROWS_AS(tessellator.tessellate({shortPatch}), tessera::ArgumentError);
+    std::vector<double> weights(16, 1.0);
+    weights[3] = -1.0;
+    REQUIRE_THROWS_WITH(
+        tessellator.tessellate(tessera::patchesFromArrays(3, 3, 1, xyz.data(), weights.data())),
+        Catch::Contains("patch 0"));
+    tessera::RuleOptions zero;
+    zero.flatness = 0.0f;
+    REQUIRE_THROWS_AS(tessellator.tessellate(tessera::patchesFromArrays(3, 3, 1, xyz.data()), zero),
+                      tessera::ArgumentError);
+    REQUIRE_THROWS_AS(
+        tessellator.tessellateToTolerance(tessera::patchesFromArrays(3, 3, 1, xyz.data()), -1.0),
+        tessera::ArgumentError);
+  }
+  SECTION("a node budget too small is a LimitError") {
+    tessera::RuleOptions tiny;
+    tiny.flatness = tiny.linearity = 0.001f;
+    tiny.maxNodes = 50;
+    REQUIRE_THROWS_AS(tessellator.tessellate(tessera::loadPatches(kTeapot), tiny),
+                      tessera::LimitError);
+  }
+}
+
+TEST_CASE("public API: a tolerance is kept at every sampled point of every triangle", "[api]") {
+  const std::vector<double> xyz = bumpPatchPoints();
+  std::vector<double> weights(16, 1.0);
+  weights[6] = 2.5;  // rational: the general path and the rational division bound
+  tessera::Tessellator tessellator({tessera::Device::Cpu});
+  const double* const weightChoices[] = {nullptr, weights.data()};  // polynomial, rational
+  for (const double* w : weightChoices) {
+    const std::vector<tessera::Patch> patches = tessera::patchesFromArrays(3, 3, 1, xyz.data(), w);
+    tessera::BezierPatch exact;
+    exact.degreeU = exact.degreeV = 3;
+    for (int k = 0; k < 16; ++k) exact.cp.push_back({xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]});
+    if (w) exact.weights = weights;
+
+    size_t previousTriangles = 0;
+    for (double tolerance : {1e-2, 1e-3}) {
+      const tessera::Mesh mesh = tessellator.tessellateToTolerance(patches, tolerance);
+      requireConsistent(mesh, 1);
+      REQUIRE(mesh.triangleCount() > previousTriangles);  // tighter: more triangles
+      previousTriangles = mesh.triangleCount();
+      // One patch, so every vertex's uv is on it: the triangle at barycentric (a, b, c) against
+      // the surface at the same mix of parameters (what Filip's bound controls).
+      double worst = 0;
+      for (size_t t = 0; t < mesh.triangleCount(); ++t)
+        for (double a : {1 / 3.0, 0.5, 0.25})
+          for (double b : {1 / 3.0, 0.5, 0.25}) {
+            const double c = 1 - a - b;
+            if (c < 0) continue;
+            double u = 0, v = 0, p[3] = {0, 0, 0};
+            const double bary[3] = {a, b, c};
+            for (int k = 0; k < 3; ++k) {
+              const uint32_t i = mesh.indices[3 * t + k];
+              u += bary[k] * mesh.uvs[2 * i];
+              v += bary[k] * mesh.uvs[2 * i + 1];
+              for (int d = 0; d < 3; ++d) p[d] += bary[k] * mesh.positions[3 * i + d];
+            }
+            const glm::dvec3 s = tessera::patchPoint(exact, u, v);
+            worst = std::max(worst, std::hypot(p[0] - s.x, p[1] - s.y, p[2] - s.z));
+          }
+      INFO("tolerance " << tolerance << (w ? " rational" : " polynomial"));
+      REQUIRE(worst <= tolerance + 1e-6);  // fp32 positions
+      REQUIRE(worst > tolerance / 50);     // and the grid is not absurdly fine
+    }
+  }
+}
+
+TEST_CASE("public API: Vulkan gives the CPU's mesh on the teapot", "[gpu][api]") {
+  tessera::Tessellator gpu({tessera::Device::Vulkan});
+  REQUIRE(gpu.usesVulkan());
+  REQUIRE(gpu.deviceName() != "cpu");
+  tessera::Tessellator cpu({tessera::Device::Cpu});
+  const std::vector<tessera::Patch> patches = tessera::loadPatches(kTeapot);
+  tessera::RuleOptions options;
+  options.rule = tessera::Rule::D;
+  const tessera::Mesh a = gpu.tessellate(patches, options);
+  const tessera::Mesh b = cpu.tessellate(patches, options);
+  requireConsistent(a, patches.size());
+  REQUIRE(a.triangleCount() == b.triangleCount());
+  REQUIRE(a.indices == b.indices);
+  float largest = 0;
+  for (size_t k = 0; k < a.positions.size(); ++k)
+    largest = std::max(largest, std::abs(a.positions[k] - b.positions[k]));
+  REQUIRE(largest <= 1e-5f);
+  // The same Tessellator again (the context is kept): the same answer.
+  REQUIRE(gpu.tessellate(patches, options).positions == a.positions);
+  // And to a tolerance on the device.
+  const tessera::Mesh t = gpu.tessellateToTolerance(patches, 0.01);
+  REQUIRE(t.triangleCount() == cpu.tessellateToTolerance(patches, 0.01).triangleCount());
+}
