@@ -1,0 +1,63 @@
+"""The Python module against the C++ path: python3 test_tessera.py <teapot.bpt> <tessera CLI>.
+
+Run by CTest with PYTHONPATH=<build>/python. Exits non-zero on the first failed check."""
+import re
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+import tessera
+
+teapot, cli = sys.argv[1], sys.argv[2]
+
+# The file path on the CPU: the triangle and vertex counts the CLI reports for the same work.
+t = tessera.Tessellator(device="cpu")
+assert t.device_name == "cpu" and not t.uses_vulkan
+mesh = t.tessellate(teapot, rule="D", flatness=0.05, linearity=0.05)
+n, m = mesh.positions.shape[0], mesh.indices.shape[0]
+assert mesh.positions.shape == (n, 3) and mesh.positions.dtype == np.float32
+assert mesh.normals.shape == (n, 3) and mesh.normals.dtype == np.float32
+assert mesh.uvs.shape == (n, 2) and mesh.uvs.dtype == np.float32
+assert mesh.patch_ids.shape == (n,) and mesh.patch_ids.dtype == np.uint32
+assert mesh.indices.shape == (m, 3) and mesh.indices.dtype == np.uint32
+assert mesh.indices.max() < n and mesh.patch_ids.max() < 32
+with tempfile.TemporaryDirectory() as out:
+    printed = subprocess.run(
+        [cli, "tessellate", teapot, "--backend", "cpu", "-m", "D", "--flatness", "0.05",
+         "--linearity", "0.05", "-o", out + "/teapot.ply"],
+        check=True, capture_output=True, text=True).stdout
+found = re.search(r"triangles (\d+)", printed)
+assert found, printed
+assert int(found.group(1)) == m, (found.group(1), m)
+
+# The same patches as a numpy array (32, 4, 4, 3): the same mesh, bit for bit.
+patches = tessera.load_patches(teapot)
+assert len(patches) == 32 and all(w is None for _, w in patches)
+points = np.stack([p for p, _ in patches])
+assert points.shape == (32, 4, 4, 3)
+again = t.tessellate(points, rule="D", flatness=0.05, linearity=0.05)
+assert np.array_equal(again.indices, mesh.indices)
+assert np.array_equal(again.positions, mesh.positions)
+
+# Rational control points and a tolerance: more triangles for a tighter one.
+weights = np.ones((32, 4, 4))
+weights[:, 1, 1] = 2.0
+coarse = t.tessellate_to_tolerance(points, 0.05, weights=weights)
+fine = t.tessellate_to_tolerance(points, 0.005, weights=weights)
+assert 0 < coarse.indices.shape[0] < fine.indices.shape[0]
+
+# Typed errors.
+for call, error in [
+        (lambda: tessera.load_patches("no_such_file.bpt"), tessera.InputError),
+        (lambda: t.tessellate(points[:, :, :, :2]), tessera.ArgumentError),
+        (lambda: t.tessellate(points, rule="E"), tessera.ArgumentError),
+        (lambda: t.tessellate_to_tolerance(points, -1.0), tessera.ArgumentError)]:
+    try:
+        call()
+    except error as e:
+        assert isinstance(e, tessera.Error) and isinstance(e, RuntimeError)
+    else:
+        raise AssertionError(f"expected {error.__name__}")
+print(f"python: {m} triangles, {n} vertices, as the CLI; numpy input identical; errors typed")
