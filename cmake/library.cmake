@@ -20,7 +20,6 @@ set_target_properties(tessera_core tessera_vulkan tessera_volk tessera_io PROPER
 file(GLOB TESSERA_API_SOURCES CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/host/api/*.cpp)
 add_library(tessera_api OBJECT ${TESSERA_API_SOURCES})
 target_link_libraries(tessera_api PUBLIC tessera_vulkan tessera_io tessera_core)
-target_compile_definitions(tessera_api PRIVATE TESSERA_VERSION="${PROJECT_VERSION}")
 set_target_properties(tessera_api PROPERTIES POSITION_INDEPENDENT_CODE ON)
 
 add_library(tessera_lib STATIC

@@ -2,12 +2,13 @@
 #include <stdexcept>
 
 #include "api/convert.h"
+#include "common/version.h"
 #include "io/surface_reader.h"
 #include "tessera/tessera.h"
 
 namespace tessera {
 
-const char* version() { return TESSERA_VERSION; }
+const char* version() { return versionString(); }  // the project() version
 
 std::vector<Patch> loadPatches(const std::string& path) {
   try {
