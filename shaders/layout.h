@@ -61,6 +61,7 @@ struct EvalPush {
 TESSERA_CONST(uint, kSplitRuleMidpoint, 1u);    // (B) parameter midpoint
 TESSERA_CONST(uint, kSplitRuleSampledMax, 2u);  // (C) largest κ among S×S samples
 TESSERA_CONST(uint, kSplitRuleTrueMax, 3u);     // (D) κu = κv = 0 by Newton, plus the boundary
+TESSERA_CONST(uint, kSplitRuleTolerance, 4u);   // (T) the node's proven deviation bound ≤ δ (issue 15)
 
 // Why a node ended (NodeDecision.cause).
 TESSERA_CONST(uint, kCauseSplit, 0u);     // not a leaf: split at NodeDecision.split
@@ -68,6 +69,11 @@ TESSERA_CONST(uint, kCauseFlat, 1u);      // every linearity and flatness test p
 TESSERA_CONST(uint, kCauseMaxDepth, 2u);  // reached the maximum depth
 TESSERA_CONST(uint, kCauseMinSize, 3u);   // smaller than the minimum parameter size
 TESSERA_CONST(uint, kCauseUniform, 4u);   // a cell of rule (A)'s uniform grid
+// Rule T splits only where the bound needs it: along u alone, along v alone, or both
+// (kCauseSplit), always at the node's midpoint.
+TESSERA_CONST(uint, kCauseSplitU, 5u);    // not a leaf: two children, split at u = NodeDecision.split.x
+TESSERA_CONST(uint, kCauseSplitV, 6u);    // not a leaf: two children, split at v = NodeDecision.split.y
+TESSERA_CONST(uint, kCauseWithinTolerance, 7u);  // rule T: the proven bound is ≤ δ
 
 // C and D keep the split point at least this fraction of the node's width from its edges,
 // so a child is at least a quarter of its parent in each direction. A small margin lets a κ
@@ -104,7 +110,7 @@ struct ClassifyPush {
   float degenerateEps;
   uint maxDepth;
   uint nodeCount;
-  uint pad0;
+  float tolerance;  // δ of rule T (model units); 0 for rules A-D
   uint pad1;
 };
 

@@ -24,6 +24,11 @@ void validateOptions(const QuadtreeOptions& o) {
   if (o.gridU < 1 || o.gridV < 1 || o.gridU > 4096 || o.gridV > 4096)
     throw std::invalid_argument("the uniform grid of rule A must be 1..4096 cells per side");
   if (o.nodeBudget == 0) throw std::invalid_argument("the node budget must be > 0");
+  if (o.rule == SplitRule::Tolerance && !(o.tolerance > 0 && std::isfinite(o.tolerance)))
+    throw std::invalid_argument("the tolerance of rule T must be finite and > 0");
+  // Interface of issue 15, landing in parts: the classifiers take rule T in the next commit.
+  if (o.rule == SplitRule::Tolerance)
+    throw std::invalid_argument("rule T (tolerance) is not available yet");
 }
 
 QuadtreeResult uniformGrid(size_t patchCount, const QuadtreeOptions& o) {
@@ -72,21 +77,24 @@ SplitRule parseSplitRule(const std::string& name) {
   if (name == "B" || name == "b" || name == "midpoint") return SplitRule::Midpoint;
   if (name == "C" || name == "c" || name == "sampled") return SplitRule::SampledMax;
   if (name == "D" || name == "d" || name == "true") return SplitRule::TrueMax;
-  throw std::invalid_argument("unknown split rule '" + name + "' (expected A, B, C or D)");
+  if (name == "T" || name == "t" || name == "tolerance") return SplitRule::Tolerance;
+  throw std::invalid_argument("unknown split rule '" + name + "' (expected A, B, C, D or T)");
 }
 
-char splitRuleLetter(SplitRule rule) { return "ABCD"[static_cast<int>(rule)]; }
+char splitRuleLetter(SplitRule rule) { return "ABCDT"[static_cast<int>(rule)]; }
 
 uint32_t ruleConstant(SplitRule rule) {
   switch (rule) {
     case SplitRule::SampledMax: return gpu::kSplitRuleSampledMax;
     case SplitRule::TrueMax: return gpu::kSplitRuleTrueMax;
+    case SplitRule::Tolerance: return gpu::kSplitRuleTolerance;
     default: return gpu::kSplitRuleMidpoint;
   }
 }
 
 gpu::ClassifyPush classifyParams(const QuadtreeOptions& o, uint32_t nodeCount) {
-  return {o.linearity, o.flatness, o.minSize, kDegenerateEpsFp32, o.maxDepth, nodeCount, 0, 0};
+  return {o.linearity, o.flatness, o.minSize, kDegenerateEpsFp32, o.maxDepth, nodeCount,
+          static_cast<float>(o.tolerance), 0};
 }
 
 size_t frontierBatchNodes(const QuadtreeOptions& options, size_t classifierLimit) {

@@ -22,7 +22,9 @@ namespace vk {
 class Context;
 }
 
-enum class SplitRule { UniformGrid, Midpoint, SampledMax, TrueMax };  // A, B, C, D
+// A, B, C, D of the paper; T (beyond it, issue 15): leaf when the node's proven deviation
+// bound is within QuadtreeOptions::tolerance, anisotropic midpoint splits otherwise.
+enum class SplitRule { UniformGrid, Midpoint, SampledMax, TrueMax, Tolerance };
 
 // Parses "A".."D" (or "uniform", "midpoint", "sampled", "true"); throws std::invalid_argument.
 SplitRule parseSplitRule(const std::string& name);
@@ -44,6 +46,7 @@ struct QuadtreeOptions {
   float minSize = 1.0f / 65536.0f; // nodes narrower than this (in u or v) are leaves
   int samples = 5;                 // S of rules C and D
   int gridU = 8, gridV = 8;        // N×M of rule A
+  double tolerance = 0;            // δ of rule T in model units: every emitted triangle within δ
   size_t nodeBudget = 1u << 24;    // most nodes in the tree, all levels together
   // Most bytes the frontier may hold at once: nodes waiting for classification, the batch in
   // flight with its decisions, and that batch's children. A level larger than that is
