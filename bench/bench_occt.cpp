@@ -9,6 +9,8 @@
 // The threshold pair is searched along linearity = ratio · flatness for each ratio asked for
 // (1: the two equal; inf: flatness only, linearity 2 so that it never splits).
 // Rule A means grids per patch from Filip's bound (countedGrids below), matched on its TOL.
+// Per model, the asymptotic lower bound N_min(δ) on an interpolating mesh's triangles at the
+// deflection δ (host/mesh/lower_bound.h) and each mesh's triangles over it.
 // Usage: bench_occt [deflections=0.01,0.001] [rules=B] [ratios=1] [--json file]
 //   (rules e.g. ABCD, ratios e.g. 1,4,inf)
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -35,6 +37,7 @@
 #include "bench_report.h"
 #include "common/stopwatch.h"
 #include "mesh/deviation.h"
+#include "mesh/lower_bound.h"
 #include "division/count.h"
 #include "eval/evaluator.h"
 #include "geometry/rational.h"
@@ -105,17 +108,50 @@ Tessellation readTriangulation(const OcctModel& model) {
 struct Measured {
   size_t triangles = 0;
   double surfaceMax = 0, parametricMax = 0;
+  std::vector<size_t> perModel;  // triangles on each model's patches
 };
 
-Measured measure(const Tessellation& t, const std::vector<BezierPatch>& patches) {
-  return {t.mesh.triangleCount(), measureDeviation(t, patches, 4, DeviationMetric::Geometric).maxDeviation,
-          measureDeviation(t, patches).maxDeviation};
+// parts: patch counts of the models, in the order their patches were appended.
+Measured measure(const Tessellation& t, const std::vector<BezierPatch>& patches,
+                 const std::vector<size_t>& parts) {
+  Measured m{t.mesh.triangleCount(),
+             measureDeviation(t, patches, 4, DeviationMetric::Geometric).maxDeviation,
+             measureDeviation(t, patches).maxDeviation, std::vector<size_t>(parts.size(), 0)};
+  for (uint32_t patch : t.trianglePatch) {
+    size_t model = 0;
+    for (size_t first = parts[0]; patch >= first; first += parts[++model]) {}
+    ++m.perModel[model];
+  }
+  return m;
 }
 
 nlohmann::json toJson(const Measured& m) {
   return {{"triangles", m.triangles},
+          {"trianglesPerModel", m.perModel},
           {"maxDistanceToSurface", m.surfaceMax},
           {"maxParametricDeviation", m.parametricMax}};
+}
+
+// One line per model: N_min at `deflection` and every case's triangles over it (also put in
+// each case's JSON as lowerBoundPerModel and lowerBoundRatioPerModel).
+void printLowerBounds(bench::Table& table, const std::vector<const char*>& names,
+                      const std::vector<CurvatureRootIntegral>& integrals, double deflection) {
+  std::printf("\n| model | N_min(%g) |", deflection);
+  for (const bench::Case& c : table.cases) std::printf(" %s |", c.path.c_str());
+  std::printf("\n|---|---|");
+  for (size_t i = 0; i < table.cases.size(); ++i) std::printf("---|");
+  std::printf("\n");
+  for (size_t model = 0; model < names.size(); ++model) {
+    const double bound = lowerBoundTriangles(integrals[model], deflection);
+    std::printf("| %s | %.0f |", names[model], bound);
+    for (bench::Case& c : table.cases) {
+      const double triangles = c.extra["trianglesPerModel"][model].get<double>();
+      std::printf(" %.0f (%.2fx) |", triangles, triangles / bound);
+      c.extra["lowerBoundPerModel"].push_back(bound);
+      c.extra["lowerBoundRatioPerModel"].push_back(triangles / bound);
+    }
+    std::printf("\n");
+  }
 }
 
 // Linearity = ratio · flatness, capped at 2 (1 − cos never exceeds 2: that test never splits).
@@ -235,8 +271,14 @@ int main(int argc, char** argv) {
   }
   std::vector<BezierPatch> patches;
   std::vector<size_t> parts;
-  for (const char* name : {"teapot", "teacup", "teaspoon"}) {
+  const std::vector<const char*> names = {"teapot", "teacup", "teaspoon"};
+  std::vector<CurvatureRootIntegral> integrals;  // ∫√|K| dA per model, for N_min at every δ
+  for (const char* name : names) {
     auto model = readBpt(std::string(TESSERA_BENCH_DATA "/") + name + ".bpt");
+    const TriangleLowerBound bound = asymptoticTriangleLowerBound(model, 1.0);
+    std::fprintf(stderr, "%s: N_min = %.4g/δ (k = %d, %.1f ms)\n", name, bound.triangles,
+                 bound.cells, bound.ms);
+    integrals.push_back(bound.integral);
     // Side by side, 10 units apart, so no face of one touches another's.
     for (auto& p : model) {
       for (auto& c : p.cp) c.x += 10.0 * double(parts.size());
@@ -269,7 +311,7 @@ int main(int argc, char** argv) {
       occtTime[parallel] = {seconds.front(), seconds[seconds.size() / 2], int(seconds.size())};
     }
     occtMesh = readTriangulation(model);
-    Measured occt = measure(occtMesh, patches);
+    Measured occt = measure(occtMesh, patches, parts);
     std::fprintf(stderr, "OCCT %g: %.3f s serial, %.3f s parallel, %zu triangles, distance %.3g\n",
                  deflection, occtTime[0].minSeconds, occtTime[1].minSeconds, occt.triangles,
                  occt.surfaceMax);
@@ -303,7 +345,7 @@ int main(int argc, char** argv) {
         c.timing = bench::timeRepeated(bench::kMinRuns, [&] {
           t = countedGrids(patches, gpuPatches, tolerance, *backend->evaluator);
         });
-        Measured m = measure(t, patches);
+        Measured m = measure(t, patches, parts);
         c.workSize = double(m.triangles);
         c.throughput = 1.0 / c.timing.minSeconds;
         c.extra = toJson(m);
@@ -327,7 +369,7 @@ int main(int argc, char** argv) {
                         0};
           c.timing = bench::timeRepeated(bench::kMinRuns,
                                          [&] { t = tessellate(patches, o, *backend); });
-          Measured m = measure(t, patches);
+          Measured m = measure(t, patches, parts);
           c.workSize = double(m.triangles);
           c.throughput = 1.0 / c.timing.minSeconds;
           c.extra = toJson(m);
@@ -346,6 +388,7 @@ int main(int argc, char** argv) {
       std::printf("| %s | %.0f | %.3g | %.3g |\n", c.path.c_str(), c.workSize,
                   c.extra["maxDistanceToSurface"].get<double>(),
                   c.extra["maxParametricDeviation"].get<double>());
+    printLowerBounds(table, names, integrals, deflection);
   }
   report.finish();
   return 0;

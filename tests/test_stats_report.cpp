@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -167,4 +168,31 @@ TEST_CASE("stats: writeStatsFile writes the report as JSON text", "[stats]") {
   CHECK(back.at("run").at("badly encoded") == "\xEF\xBF\xBD");  // U+FFFD, not an exception
   std::error_code ec;
   fs::remove_all(dir, ec);
+}
+
+TEST_CASE("stats: the lower bound and the ratio", "[stats][lower_bound]") {
+  const TeapotRun& run = teapot();
+  json report = statsToJson(run.tessellation);
+  addUncomputedLowerBound(report);
+  for (const char* key : {"lowerBoundTriangles", "lowerBoundTolerance", "lowerBoundRatio"})
+    CHECK(report.at("totals").at(key).is_null());
+  CHECK(report.at("timings").at("lowerBoundMs").is_null());
+
+  const TriangleLowerBound bound = asymptoticTriangleLowerBound(run.patches, 0.01);
+  addLowerBound(report, bound);
+  report = json::parse(report.dump());
+  const json& totals = report.at("totals");
+  const double ratio = totals.at("lowerBoundRatio").get<double>();
+  std::printf("teapot rule C: %zu triangles, N_min(0.01) %.1f, ratio %.3f\n",
+              run.tessellation.mesh.triangleCount(), bound.triangles, ratio);
+  CHECK(totals.at("lowerBoundTriangles").get<double>() == bound.triangles);
+  CHECK(totals.at("lowerBoundTolerance").get<double>() == 0.01);
+  CHECK(ratio == Approx(double(run.tessellation.mesh.triangleCount()) / bound.triangles));
+  CHECK(report.at("timings").at("lowerBoundMs").get<double>() >= 0.0);
+
+  // A flat surface has N_min = 0: the ratio is null, not infinite.
+  TriangleLowerBound flat;
+  flat.tolerance = 0.01;
+  addLowerBound(report, flat);
+  CHECK(report.at("totals").at("lowerBoundRatio").is_null());
 }

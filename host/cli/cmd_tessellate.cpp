@@ -15,6 +15,7 @@
 #include "io/obj_writer.h"
 #include "io/ply_writer.h"
 #include "io/stats_report.h"
+#include "mesh/lower_bound.h"
 #include "mesh/tessellate.h"
 #include "vk/context.h"
 
@@ -38,6 +39,7 @@ struct TessellateArgs {
   std::string stats;  // --stats: the JSON report into this file
   bool json = false;  // --json: the JSON report on stdout instead of the summary
   bool deviation = false;  // --deviation: measure the deviation (--no-deviation: don't)
+  bool lowerBound = false;  // --lower-bound: N_min and triangles / N_min (always with rule T)
   std::vector<std::string> formats;  // --format: for `-`, or a path whose extension cannot tell
 };
 
@@ -99,17 +101,29 @@ int run(const TessellateArgs& a) {
   // 2000-teapot run), so it is measured only with --deviation; reports then show null.
   const bool wantReport = !a.stats.empty() || a.json;
   const bool summary = !a.quiet && !a.json;
+  // The lower bound's δ: rule T's requested one, else the measured distance to the surface
+  // (the mesh is within it), so --lower-bound with another rule measures the deviation.
+  const bool toleranceRule = options.rule == SplitRule::Tolerance;
+  const bool wantBound = (toleranceRule || a.lowerBound) && (wantReport || summary);
   std::optional<PatchDeviation> deviation, geometric;
-  if (a.deviation && (wantReport || summary)) {
+  if ((a.deviation || (wantBound && !toleranceRule)) && (wantReport || summary)) {
     progress.update("measuring the deviation from the surface");
     deviation = measureDeviationPerPatch(t, patches);
     geometric =
         measureDeviationPerPatch(t, patches, deviation->subdivisions, DeviationMetric::Geometric);
   }
+  std::optional<TriangleLowerBound> bound;
+  if (wantBound) {
+    const double delta = toleranceRule ? options.tolerance : geometric->total.maxDeviation;
+    progress.update("integrating the triangle lower bound");
+    if (delta > 0.0) bound = asymptoticTriangleLowerBound(patches, delta);  // 0: an exact mesh
+  }
   if (wantReport) {
     nlohmann::json report = statsToJson(t, deviation ? &*deviation : nullptr);
     if (geometric) addGeometricDeviation(report, *geometric);
     else addUnmeasuredGeometricDeviation(report);
+    if (bound) addLowerBound(report, *bound);
+    else addUncomputedLowerBound(report);
     report["run"] = {{"input", inputName},
                      {"output", a.output.empty() ? nlohmann::json() : nlohmann::json(a.output)},
                      {"backend", backend.name},
@@ -137,6 +151,13 @@ int run(const TessellateArgs& a) {
                    geometric->total.maxDeviation, geometric->total.meanDeviation,
                    deviation->total.maxDeviation, deviation->total.meanDeviation,
                    deviation->total.samples);
+    if (bound)
+      std::fprintf(to,
+                   "lower bound at δ %.3g: %.0f triangles (asymptotic, any interpolating mesh); "
+                   "this mesh has %.2fx that (%.1f ms)\n",
+                   bound->tolerance, bound->triangles,
+                   bound->triangles > 0.0 ? double(s.triangles) / bound->triangles : 0.0,
+                   bound->ms);
     std::fprintf(to, "time: tree %.1f ms, triangulation %.1f ms, vertices %.1f ms, total %.1f ms\n",
                  s.treeMs, s.triangulateMs, s.evaluateMs, s.totalMs);
     if (deviation)
@@ -186,6 +207,11 @@ void addTessellateOptions(CLI::App* cmd, TessellateArgs& args) {
                 "measure the mesh's deviation from the true surface, geometric and parametric. "
                 "Off by default: it can cost more than the tessellation (89% of a 2000-teapot "
                 "run); without it the summary omits it and reports show null");
+  cmd->add_flag("--lower-bound", args.lowerBound,
+                "report the asymptotic lower bound on the triangles of any mesh within δ and "
+                "this mesh's triangles over it (docs/lower_bound.md). δ is rule T's tolerance, "
+                "else the measured distance to the surface (measures the deviation). Always on "
+                "with rule T");
 }
 
 }  // namespace

@@ -103,6 +103,22 @@ void addUnmeasuredGeometricDeviation(nlohmann::json& report) {
   report["timings"]["geometricDeviationMs"] = nullptr;
 }
 
+void addLowerBound(nlohmann::json& report, const TriangleLowerBound& bound) {
+  nlohmann::json& totals = report["totals"];
+  const double triangles = totals.at("triangles").get<double>();
+  totals["lowerBoundTriangles"] = bound.triangles;
+  totals["lowerBoundTolerance"] = bound.tolerance;
+  totals["lowerBoundRatio"] =
+      bound.triangles > 0.0 ? nlohmann::json(triangles / bound.triangles) : nlohmann::json();
+  report["timings"]["lowerBoundMs"] = bound.ms;
+}
+
+void addUncomputedLowerBound(nlohmann::json& report) {
+  for (const char* key : {"lowerBoundTriangles", "lowerBoundTolerance", "lowerBoundRatio"})
+    report["totals"][key] = nullptr;
+  report["timings"]["lowerBoundMs"] = nullptr;
+}
+
 nlohmann::json statsToJson(const TessellationStats& s) {
   nlohmann::json levels = nlohmann::json::array();
   for (const LevelStats& l : s.levels)

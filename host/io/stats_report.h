@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mesh/deviation.h"
+#include "mesh/lower_bound.h"
 #include "geometry/patch.h"
 #include "quadtree/quadtree.h"
 #include "mesh/tessellate.h"
@@ -42,6 +43,14 @@ void addGeometricDeviation(nlohmann::json& report, const PatchDeviation& geometr
 // The same keys as null, for a report whose deviation was not measured (the CLI without
 // --deviation), so a reader finds every key whether or not it was measured.
 void addUnmeasuredGeometricDeviation(nlohmann::json& report);
+
+// The asymptotic lower bound (host/mesh/lower_bound.h) beside a full report:
+// totals.lowerBoundTriangles (N_min at bound.tolerance), totals.lowerBoundTolerance (that δ),
+// totals.lowerBoundRatio (totals.triangles / N_min; null where N_min is 0, a flat surface) and
+// timings.lowerBoundMs.
+void addLowerBound(nlohmann::json& report, const TriangleLowerBound& bound);
+// The same keys as null, for a report without the bound.
+void addUncomputedLowerBound(nlohmann::json& report);
 
 // Totals, timings and per-level numbers only (no per-patch section).
 nlohmann::json statsToJson(const TessellationStats& stats);

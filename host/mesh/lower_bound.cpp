@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/parallel_for.h"
 #include "common/stopwatch.h"
 #include "geometry/bezier.h"
 #include "geometry/rational.h"
@@ -126,8 +127,13 @@ TriangleLowerBound asymptoticTriangleLowerBound(const std::vector<BezierPatch>& 
   for (int cells = 1; cells <= options.maxCells; cells *= 2) {
     LowerBoundStep step;
     step.cells = cells;
-    for (const BezierPatch& patch : patches) {
-      const CurvatureRootIntegral one = integrateCurvatureRoot(patch, cells, options.points);
+    // Patches on all threads; summed in input order, so the result does not depend on them.
+    std::vector<CurvatureRootIntegral> perPatch(patches.size());
+    parallelFor(patches.size(), options.threads, [&](size_t begin, size_t end) {
+      for (size_t p = begin; p < end; ++p)
+        perPatch[p] = integrateCurvatureRoot(patches[p], cells, options.points);
+    });
+    for (const CurvatureRootIntegral& one : perPatch) {
       step.integral.positive += one.positive;
       step.integral.negative += one.negative;
     }

@@ -33,6 +33,7 @@ struct LowerBoundOptions {
   int points = 4;                 // Gauss–Legendre points per direction per cell
   int maxCells = 64;              // the largest k tried (cells per direction)
   double relativeChange = 1e-3;   // stop when |N_k − N_{k/2}| ≤ this · N_k
+  unsigned threads = 0;           // patches in parallel on this many threads, 0: all
 };
 
 struct LowerBoundStep {
