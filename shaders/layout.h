@@ -74,6 +74,9 @@ TESSERA_CONST(uint, kCauseUniform, 4u);   // a cell of rule (A)'s uniform grid
 TESSERA_CONST(uint, kCauseSplitU, 5u);    // not a leaf: two children, split at u = NodeDecision.split.x
 TESSERA_CONST(uint, kCauseSplitV, 6u);    // not a leaf: two children, split at v = NodeDecision.split.y
 TESSERA_CONST(uint, kCauseWithinTolerance, 7u);  // rule T: the proven bound is ≤ δ
+// Rule T on rational patches: the pieces per direction on which the `split` bounds take the
+// weight ratios where a weight of the node's net vanishes (DivisionOptions::ratioPieces).
+TESSERA_CONST(int, kToleranceRatioPieces, 4);
 
 // C and D keep the split point at least this fraction of the node's width from its edges,
 // so a child is at least a quarter of its parent in each direction. A small margin lets a κ
@@ -97,6 +100,9 @@ struct QuadNode {
 struct NodeDecision {
   vec4 split;       // us, vs (patch parameters), κ there, 0
   uint cause;       // kCause*
+  // Rules B-D: the tests' values. Rule T: linearity = A/(A + B), the u share of the bound
+  // (A = M_ss + M_st, B = M_tt + M_st), and flatness = the node's proven deviation bound
+  // (A + B)/8 with its fp32 guard (lib/tolerance_bound.h); split = the node's midpoint.
   float linearity;  // largest 1 − Ti·Tj over the 4 edges (0 where a tangent is missing)
   float flatness;   // largest 1 − Ni·Nj over the 8 normal pairs (0 where a normal is missing)
   uint pad;

@@ -1,11 +1,13 @@
 #version 450
 // Classifies one frontier level of the quad-tree: one invocation per node finds the split
-// point (rule B, C or D: specialization constant 0) and decides leaf or split. The arithmetic
+// point (rule B, C or D: specialization constant 0) and decides leaf or split, or
+// by rule T its proven deviation bound (lib/tolerance_bound.h) against δ. The arithmetic
 // lives in lib/quadtree_classify.h, shared with the fp32 mirror.
 #extension GL_GOOGLE_include_directive : require
 #include "layout.h"
 #include "lib/shared_glsl_cpp.h"
 #include "lib/bicubic_eval.h"
+#include "lib/tolerance_bound.h"
 #include "lib/quadtree_classify.h"
 #include "lib/dispatch.glsl"
 

@@ -1,7 +1,8 @@
 #version 450
 // quadtree.comp.glsl for general patches (degree 1..7 each way, polynomial or rational): one
 // invocation per node finds the split point (rule B, C or D: specialization constant 0) and
-// decides leaf or split. The same lib/quadtree_classify.h, evaluating by lib/general_eval.h.
+// decides leaf or split, or by rule T its proven deviation bound (lib/tolerance_net.h). The
+// same lib/quadtree_classify.h, evaluating by lib/general_eval.h.
 #extension GL_GOOGLE_include_directive : require
 #include "layout.h"
 #include "lib/shared_glsl_cpp.h"
@@ -16,9 +17,14 @@ layout(std430, binding = 3) readonly buffer Points { vec4 controlPoints[]; };
 
 #include "lib/bicubic_eval.h"
 #include "lib/general_eval.h"
+#include "lib/division_count.h"
+#include "lib/tolerance_bound.h"
+#include "lib/tolerance_net.h"
+#include "lib/tolerance_general.h"
 #define CLASSIFY_PATCH GeneralPatch
 #define CLASSIFY_EVAL evalGeneral
 #define CLASSIFY_SCALE generalScale
+#define CLASSIFY_SECOND_BOUNDS generalSecondBounds
 #include "lib/quadtree_classify.h"
 #include "lib/dispatch.glsl"
 

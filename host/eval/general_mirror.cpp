@@ -9,15 +9,21 @@ namespace {  // each mirror translation unit gets its own copy of the shared fun
 #pragma GCC diagnostic ignored "-Wunused-function"  // the bicubic entry points are unused here
 #include "shaders/lib/shared_glsl_cpp.h"
 #include "shaders/lib/bicubic_eval.h"
+using glm::ceil;
+#include "shaders/lib/division_count.h"  // gNet: thread_local, so outside the kernel struct
+#include "shaders/lib/tolerance_bound.h"
+#include "shaders/lib/tolerance_net.h"
 
 // The shaders' control-point buffer as a member of the same name, so that the shared text
 // reads it unchanged (as stencil_mirror.cpp does).
 struct GeneralKernel {
   const vec4* controlPoints;
 #include "shaders/lib/general_eval.h"
+#include "shaders/lib/tolerance_general.h"
 #define CLASSIFY_PATCH GeneralPatch
 #define CLASSIFY_EVAL evalGeneral
 #define CLASSIFY_SCALE generalScale
+#define CLASSIFY_SECOND_BOUNDS generalSecondBounds
 #include "shaders/lib/quadtree_classify.h"
 };
 #pragma GCC diagnostic pop

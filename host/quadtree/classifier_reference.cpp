@@ -2,11 +2,15 @@
 // shaders/lib/quadtree_classify.h (same samples, same Newton steps, same tests), written
 // again on the independent double kernel (bicubic.h, bezier.h, rational.h, surface_normal.h,
 // curvature.h), so that it checks the shared fp32 text rather than repeating it. Bicubic and
-// general patches (any degree, rational) alike.
+// general patches (any degree, rational) alike. Rule T: the same bound in double, on the
+// sub-net of geometry/homogeneous_net.h and, for rational patches, the `split` bounds of
+// division/count.h (no fp32 guard: this is the exact value the guard protects).
 #include <algorithm>
 #include <cmath>
 
 #include "common/stopwatch.h"
+#include "division/count.h"
+#include "geometry/homogeneous_net.h"
 #include "geometry/bezier.h"
 #include "geometry/bicubic.h"
 #include "geometry/curvature.h"
@@ -197,8 +201,79 @@ dvec2 splitPointLocal(const PatchContext& p, const Rect& r, SplitRule rule, int 
   return glm::clamp(dvec2(best.x, best.y), dvec2(m), dvec2(1.0 - m));
 }
 
+// Rule T: (M_ss, M_st, M_tt) of the node in local coordinates (docs/quadtree.md, "Rule T").
+struct SecondBounds {
+  double ss = 0, st = 0, tt = 0;
+};
+
+SecondBounds polynomialBounds(const HomogeneousNet& net) {
+  SecondBounds b;
+  const int n = net.n, m = net.m;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= m; ++j) {
+      const dvec3 p(net.at(i, j));
+      if (i + 2 <= n)
+        b.ss = std::max(b.ss, glm::length(dvec3(net.at(i + 2, j)) - 2.0 * dvec3(net.at(i + 1, j)) + p));
+      if (j + 2 <= m)
+        b.tt = std::max(b.tt, glm::length(dvec3(net.at(i, j + 2)) - 2.0 * dvec3(net.at(i, j + 1)) + p));
+      if (i < n && j < m)
+        b.st = std::max(b.st, glm::length(dvec3(net.at(i + 1, j + 1)) - dvec3(net.at(i + 1, j)) -
+                                          dvec3(net.at(i, j + 1)) + p));
+    }
+  b.ss *= double(n * (n - 1));
+  b.st *= double(n * m);
+  b.tt *= double(m * (m - 1));
+  return b;
+}
+
+HomogeneousNet contextNet(const PatchContext& p) {
+  if (p.kind == PatchContext::kRational) return toNet(p.rational);
+  const bool bicubic = p.kind == PatchContext::kBicubic;
+  const int n = bicubic ? 3 : p.polynomial.degreeU, m = bicubic ? 3 : p.polynomial.degreeV;
+  HomogeneousNet net(n, m);
+  for (int k = 0; k < (n + 1) * (m + 1); ++k)
+    net.c[size_t(k)] = glm::dvec4(bicubic ? p.net[k] : p.polynomial.cp[size_t(k)], 1.0);
+  return net;
+}
+
+SecondBounds toleranceBounds(const PatchContext& p, const Rect& r) {
+  const HomogeneousNet sub = subNet(contextNet(p), r.u0, r.u1, r.v0, r.v1);
+  if (p.kind != PatchContext::kRational) return polynomialBounds(sub);
+  DivisionOptions options;
+  options.method = DivisionMethod::Split;
+  options.ratioPieces = gpu::kToleranceRatioPieces;
+  const SecondDerivativeBounds d = secondDerivativeBounds(toPatch(sub), options);
+  if (!d.bounded) return {INFINITY, INFINITY, INFINITY};
+  return {d.uu, d.uv, d.vv};
+}
+
+gpu::NodeDecision toleranceDecision(const PatchContext& p, const gpu::QuadNode& node,
+                                    const QuadtreeOptions& o) {
+  Rect r{node.rect.x, node.rect.y, node.rect.z, node.rect.w};
+  const SecondBounds m = toleranceBounds(p, r);
+  const double a = m.ss + m.st, b = m.tt + m.st, bound = (a + b) / 8.0;
+  gpu::NodeDecision d{};
+  d.split = gpu::vec4(float(r.u(0.5)), float(r.v(0.5)), 0.0f, 0.0f);
+  d.linearity = float(a + b > 0.0 ? a / (a + b) : 0.5);
+  d.flatness = float(bound);
+  if (bound <= o.tolerance)
+    d.cause = gpu::kCauseWithinTolerance;
+  else if (node.level >= o.maxDepth)
+    d.cause = gpu::kCauseMaxDepth;
+  else if (std::min(r.u1 - r.u0, r.v1 - r.v0) < o.minSize)
+    d.cause = gpu::kCauseMinSize;
+  else {
+    const bool splitU = !(a < 0.5 * b), splitV = !(b < 0.5 * a);
+    d.cause = splitU && !splitV   ? gpu::kCauseSplitU
+              : splitV && !splitU ? gpu::kCauseSplitV
+                                  : gpu::kCauseSplit;
+  }
+  return d;
+}
+
 gpu::NodeDecision classifyNode(const PatchContext& p, const gpu::QuadNode& node,
                                const QuadtreeOptions& o) {
+  if (o.rule == SplitRule::Tolerance) return toleranceDecision(p, node, o);
   Rect r{node.rect.x, node.rect.y, node.rect.z, node.rect.w};
   dvec2 local = splitPointLocal(p, r, o.rule, o.samples);
   double us = r.u(local.x), vs = r.v(local.y);

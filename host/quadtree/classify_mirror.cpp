@@ -9,6 +9,7 @@ namespace {  // each mirror translation unit gets its own copy of the shared fun
 #pragma GCC diagnostic ignored "-Wunused-function"  // the point-evaluation entry is unused here
 #include "shaders/lib/shared_glsl_cpp.h"
 #include "shaders/lib/bicubic_eval.h"
+#include "shaders/lib/tolerance_bound.h"
 #include "shaders/lib/quadtree_classify.h"
 #pragma GCC diagnostic pop
 }  // namespace

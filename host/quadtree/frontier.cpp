@@ -18,17 +18,19 @@ void validateOptions(const QuadtreeOptions& o) {
   if (!(o.minSize >= 0.0f) || !std::isfinite(o.minSize))
     throw std::invalid_argument("the minimum node size must be finite and >= 0");
   // Paths keep 2 bits per level in 64 bits; fp32 parameters stop resolving long before.
-  if (o.maxDepth > 24) throw std::invalid_argument("the maximum depth is at most 24");
+  // Rule T's levels may split one direction only, so it may go deeper (kToleranceMaxDepth).
+  const uint32_t depthCap = o.rule == SplitRule::Tolerance ? 32 : 24;
+  if (o.maxDepth > depthCap)
+    throw std::invalid_argument("the maximum depth is at most " + std::to_string(depthCap) +
+                                (o.rule == SplitRule::Tolerance ? " for rule T" : ""));
   if (o.samples < 1 || o.samples > 32)
     throw std::invalid_argument("the sample count S of rules C and D must be 1..32");
   if (o.gridU < 1 || o.gridV < 1 || o.gridU > 4096 || o.gridV > 4096)
     throw std::invalid_argument("the uniform grid of rule A must be 1..4096 cells per side");
   if (o.nodeBudget == 0) throw std::invalid_argument("the node budget must be > 0");
-  if (o.rule == SplitRule::Tolerance && !(o.tolerance > 0 && std::isfinite(o.tolerance)))
-    throw std::invalid_argument("the tolerance of rule T must be finite and > 0");
-  // Interface of issue 15, landing in parts: the classifiers take rule T in the next commit.
-  if (o.rule == SplitRule::Tolerance)
-    throw std::invalid_argument("rule T (tolerance) is not available yet");
+  if (o.rule == SplitRule::Tolerance && !(o.tolerance > 0 && std::isfinite(o.tolerance) &&
+                                           float(o.tolerance) > 0.0f))
+    throw std::invalid_argument("the tolerance of rule T must be finite and > 0 in fp32");
 }
 
 QuadtreeResult uniformGrid(size_t patchCount, const QuadtreeOptions& o) {
@@ -79,6 +81,14 @@ SplitRule parseSplitRule(const std::string& name) {
   if (name == "D" || name == "d" || name == "true") return SplitRule::TrueMax;
   if (name == "T" || name == "t" || name == "tolerance") return SplitRule::Tolerance;
   throw std::invalid_argument("unknown split rule '" + name + "' (expected A, B, C, D or T)");
+}
+
+QuadtreeOptions toleranceOptions(double tolerance) {
+  QuadtreeOptions options;
+  options.rule = SplitRule::Tolerance;
+  options.tolerance = tolerance;
+  options.maxDepth = kToleranceMaxDepth;
+  return options;
 }
 
 char splitRuleLetter(SplitRule rule) { return "ABCDT"[static_cast<int>(rule)]; }
@@ -194,10 +204,13 @@ void buildGroupTree(const PatchSet& patches, uint32_t firstPatch, const Quadtree
       uint32_t cause = d.cause;
       // A split point that does not fall strictly inside (fp32 ran out of resolution)
       // would make empty children: end the node here instead.
-      if (cause == gpu::kCauseSplit &&
-          !(us > n.rect.x && us < n.rect.z && vs > n.rect.y && vs < n.rect.w))
+      const bool splitsU = cause == gpu::kCauseSplit || cause == gpu::kCauseSplitU;
+      const bool splitsV = cause == gpu::kCauseSplit || cause == gpu::kCauseSplitV;
+      if ((splitsU && !(us > n.rect.x && us < n.rect.z)) ||
+          (splitsV && !(vs > n.rect.y && vs < n.rect.w)))
         cause = gpu::kCauseMinSize;
-      if (cause != gpu::kCauseSplit) {
+      if (cause != gpu::kCauseSplit && cause != gpu::kCauseSplitU &&
+          cause != gpu::kCauseSplitV) {
         result.leaves.push_back({n.rect, firstPatch + n.patchIndex, level, cause, batch.paths[i],
                                  d.linearity, d.flatness, gpu::vec2(us, vs)});
         result.depth = std::max(result.depth, level);
@@ -205,10 +218,14 @@ void buildGroupTree(const PatchSet& patches, uint32_t firstPatch, const Quadtree
         continue;
       }
       ++stats.splits;
+      // A one-way split (rule T) makes two children named by the quadrants they would
+      // start in: 0 and 1 for u, 0 and 2 for v, so paths compare across backends.
       const gpu::vec4 r = n.rect;
-      const gpu::vec4 children[4] = {{r.x, r.y, us, vs}, {us, r.y, r.z, vs},
-                                     {r.x, vs, us, r.w}, {us, vs, r.z, r.w}};
+      const float u1 = splitsU ? us : r.z, v1 = splitsV ? vs : r.w;
+      const gpu::vec4 children[4] = {{r.x, r.y, u1, v1}, {us, r.y, r.z, v1},
+                                     {r.x, vs, u1, r.w}, {us, vs, r.z, r.w}};
       for (uint64_t q = 0; q < 4; ++q) {
+        if (((q & 1) && !splitsU) || ((q & 2) && !splitsV)) continue;
         next.push_back({children[q], n.patchIndex, level + 1, 0, 0});
         nextPaths.push_back(batch.paths[i] | (q << (2 * level)));
       }

@@ -38,11 +38,15 @@ struct LevelStats {
   double frontierMs = 0;  // host: emitting leaves and building the next level
 };
 
+// Rule T's maximum depth: a level may split one direction only, so a patch needs up to about
+// twice the levels of a four-way tree (the tea set at δ = 10⁻⁴ of its size stays well within).
+constexpr uint32_t kToleranceMaxDepth = 30;
+
 struct QuadtreeOptions {
   SplitRule rule = SplitRule::Midpoint;
   float linearity = 0.1f;          // leaf when every 1 − Ti·Tj < linearity ...
   float flatness = 0.1f;           // ... and every 1 − Ni·Nj < flatness
-  uint32_t maxDepth = 12;          // nodes at this depth are leaves
+  uint32_t maxDepth = 12;          // nodes at this depth are leaves (≤ 24; ≤ 32 for rule T)
   float minSize = 1.0f / 65536.0f; // nodes narrower than this (in u or v) are leaves
   int samples = 5;                 // S of rules C and D
   int gridU = 8, gridV = 8;        // N×M of rule A
@@ -56,6 +60,9 @@ struct QuadtreeOptions {
   std::function<void(const LevelStats&)> onLevel;
 };
 
+// Rule T at δ = `tolerance` (model units) with its default depth, kToleranceMaxDepth.
+QuadtreeOptions toleranceOptions(double tolerance);
+
 // One leaf: the node rectangle, its depth, why it ended, the split point and test values its
 // classification found (the split point is where the node would have been split).
 struct QuadLeaf {
@@ -65,9 +72,9 @@ struct QuadLeaf {
   uint32_t cause;  // gpu::kCause*
   uint64_t path;   // child quadrants from the root, 2 bits per level (0: u-low v-low, 1: u-high
                    // v-low, 2: u-low v-high, 3: u-high v-high), for comparing trees
-  float linearity;
-  float flatness;
-  gpu::vec2 split;  // (us, vs) the classification chose
+  float linearity;  // rule T: A/(A + B), the u share of the bound (tolerance_bound.h)
+  float flatness;   // rule T: the node's proven deviation bound (model units)
+  gpu::vec2 split;  // (us, vs) the classification chose (rule T: the centre, the fan apex)
 };
 
 

@@ -1,9 +1,11 @@
 // Quad-tree node classification in fp32 (Moriyama & Harada, "Subdivision of bicubic Bézier
 // patches by a quad-tree"): find the node's split point by rule B, C or D, evaluate the four
 // corners and the split point, run the edge-linearity and flatness tests, decide leaf or split.
+// Rule T (tolerance) decides by the proven bound of tolerance_bound.h instead, without frames.
 // Compiled as GLSL (shaders/quadtree.comp.glsl) and as C++ (host/quadtree/classify_mirror.cpp)
-// from this one text. Include shared_glsl_cpp.h, layout.h and bicubic_eval.h (and for general
-// patches general_eval.h) first.
+// from this one text. Include shared_glsl_cpp.h, layout.h, bicubic_eval.h and
+// tolerance_bound.h (and for general patches general_eval.h, division_count.h,
+// tolerance_net.h and tolerance_general.h) first.
 #ifndef TESSERA_QUADTREE_CLASSIFY_H
 #define TESSERA_QUADTREE_CLASSIFY_H
 
@@ -14,6 +16,7 @@
 #define CLASSIFY_PATCH BicubicPatch
 #define CLASSIFY_EVAL evalBicubic
 #define CLASSIFY_SCALE bicubicScale
+#define CLASSIFY_SECOND_BOUNDS bicubicSecondBounds
 #endif
 
 // Position, unit tangents along u and v (zero where the derivative vanishes, as along a
@@ -224,6 +227,9 @@ vec2 splitPointLocal(IN(CLASSIFY_PATCH) bp, vec4 rect, uint rule, int samples, f
 
 NodeDecision classifyNode(IN(CLASSIFY_PATCH) bp, IN(QuadNode) node, uint rule, int samples,
                           IN(ClassifyPush) params) {
+  // Rule T needs no corner frames: its bound comes from the node's restricted control net.
+  if (rule == kSplitRuleTolerance)
+    return toleranceDecision(CLASSIFY_SECOND_BOUNDS(bp, node.rect), node, params);
   PRECISE float scale = CLASSIFY_SCALE(bp);
   float eps = params.degenerateEps;
   vec4 r = node.rect;
