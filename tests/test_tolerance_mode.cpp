@@ -146,13 +146,14 @@ TEST_CASE("rule T: a cylinder never splits along its axis, the teapot's poles st
 TEST_CASE("rule T: the double reference agrees with the fp32 mirror outside a band around δ",
           "[tolerance][precision]") {
   // Classify level by level along the mirror's tree with both backends; where the decisions
-  // part, the exact bound must lie within kBand of δ (the fp32 guard and rounding) or the u
+  // part, the exact bound must lie within kBand of δ, or δ between the exact and the fp32
+  // bound (the fp32 guard), or the u
   // share within kBand of a split threshold (1/3, 2/3). The fp32 bound must never be below
   // the exact one.
   constexpr double kBand = 1e-2;
   std::vector<BezierPatch> patches = teaModel("teapot");
   std::vector<BezierPatch> zoo = randomPatchZoo();
-  zoo.resize(300);
+  zoo.resize(150);
   auto mirror = makeMirrorClassifier();
   auto reference = makeReferenceClassifier();
   for (const auto* input : {&patches, &zoo}) {
@@ -182,7 +183,12 @@ TEST_CASE("rule T: the double reference agrees with the fp32 mirror outside a ba
           if (a[i].cause != b[i].cause) {
             ++parted;
             const double share = b[i].linearity;
-            const bool nearDelta = std::abs(exact / options.tolerance - 1.0) <= kBand;
+            // Within the band, or δ between the exact bound and the guarded fp32 one (the
+            // guard's absolute term is up to ~10% of δ for degree 7 at δ = 1e-3 of the size).
+            const double lo = std::min(exact, fp32), hi = std::max(exact, fp32);
+            const bool nearDelta = std::abs(exact / options.tolerance - 1.0) <= kBand ||
+                                   (lo * (1 - kBand) <= options.tolerance &&
+                                    options.tolerance <= hi * (1 + kBand));
             const bool nearShare =
                 std::abs(share - 1.0 / 3.0) <= kBand || std::abs(share - 2.0 / 3.0) <= kBand;
             if (!nearDelta && !nearShare) {
@@ -207,7 +213,7 @@ TEST_CASE("rule T: the double reference agrees with the fp32 mirror outside a ba
         }
         nodes.swap(next);
       }
-      WARN((input == &zoo ? "300 random patches" : "teapot")
+      WARN((input == &zoo ? "150 random patches" : "teapot")
            << " at δ = " << relative << " of the size: " << total << " nodes, " << parted
            << " decided differently (" << unexplained << " outside the band " << kBand
            << "), fp32 bound below the exact one at " << below << " (worst by "
