@@ -148,6 +148,16 @@ TEST_CASE("rule T: a cylinder never splits along its axis, the teapot's poles st
                                            << " not square in (u, v)");
   REQUIRE(t.stats.depth <= 14);
   REQUIRE(oneWay > 0);
+  // kToleranceMaxDepth leaves room: at δ = 1e-4 of the size every tea-set leaf is within δ.
+  for (const char* name : {"teapot", "teacup", "teaspoon"}) {
+    const auto patches = teaModel(name);
+    Tessellation fine = tessellate(patches, toleranceOptions(1e-4 * setDiagonal(patches)), backend);
+    size_t within = 0;
+    for (const auto& leaf : fine.tree.leaves) within += leaf.cause == gpu::kCauseWithinTolerance;
+    WARN(name << " at δ = 1e-4 of its size: depth " << fine.stats.depth << " (limit "
+              << kToleranceMaxDepth << "), " << fine.stats.triangles << " triangles");
+    REQUIRE(within == fine.tree.leaves.size());
+  }
 }
 
 TEST_CASE("rule T: the double reference agrees with the fp32 mirror outside a band around δ",
