@@ -8,6 +8,7 @@
 #include "cli/cli_support.h"
 #include "cli/commands.h"
 #include "cli/progress.h"
+#include "cli/setup_report.h"
 #include "cli/stdio.h"
 #include "io/surface_reader.h"
 #include "io/errors.h"
@@ -129,6 +130,7 @@ int run(const TessellateArgs& a) {
                      {"backend", backend.name},
                      {"device", context ? nlohmann::json(context->info().name) : nlohmann::json()},
                      {"options", optionsToJson(options)}};
+    report["setup"] = setupToJson(context.get());
     if (!a.stats.empty() && !statsToStdout) writeStatsFile(a.stats, report);
     if (a.json || statsToStdout)
       std::printf("%s\n",
@@ -160,6 +162,7 @@ int run(const TessellateArgs& a) {
                    bound->ms);
     std::fprintf(to, "time: tree %.1f ms, triangulation %.1f ms, vertices %.1f ms, total %.1f ms\n",
                  s.treeMs, s.triangulateMs, s.evaluateMs, s.totalMs);
+    if (context) printSetup(to, context->timings());
     if (deviation)
       std::fprintf(to, "deviation measured in %.1f ms (parametric) + %.1f ms (geometric)\n",
                    deviation->ms, geometric->ms);

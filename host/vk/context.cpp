@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "common/stopwatch.h"
 #include "vk/device_select.h"
 #include "vk/loader.h"
 #include "vk/pipeline_cache.h"
@@ -50,7 +51,10 @@ VKAPI_ATTR VkBool32 VKAPI_CALL debugCallback(VkDebugUtilsMessageSeverityFlagBits
 Context::Context(const ContextOptions& options) {
   onValidationMessage_ = options.onValidationMessage;
   try {
+    Stopwatch step;
     createInstance(options);
+    timings_.instanceMs = step.elapsedMs();
+    step.restart();
     std::string selector = options.device;
     if (selector.empty()) {
       const char* env = std::getenv("TESSERA_DEVICE");
@@ -58,6 +62,10 @@ Context::Context(const ContextOptions& options) {
     }
     choosePhysicalDevice(selector);
     createDevice();
+    timings_.deviceMs = step.elapsedMs();
+    step.restart();
+    createPipelineCache();
+    timings_.pipelineCacheMs = step.elapsedMs();
   } catch (...) {
     release();  // what was made before the failure
     throw;
@@ -197,6 +205,9 @@ void Context::createDevice() {
   VK_CHECK(deviceTable_->vkCreateCommandPool(device_, &poolInfo, nullptr, &commandPool_));
   VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
   VK_CHECK(deviceTable_->vkCreateFence(device_, &fenceInfo, nullptr, &fence_));
+}
+
+void Context::createPipelineCache() {
   VkPhysicalDeviceProperties properties{};
   instanceTable_->vkGetPhysicalDeviceProperties(physical_, &properties);
   pipelineCachePath_ = vk::pipelineCachePath(properties);
@@ -225,6 +236,7 @@ void Context::savePipelineCache() {
 }
 
 void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {
+  const Stopwatch stopwatch;
   VK_CHECK(deviceTable_->vkResetCommandPool(device_, commandPool_, 0));
   VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
   allocInfo.commandPool = commandPool_;
@@ -243,6 +255,21 @@ void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record) 
   VK_CHECK(deviceTable_->vkResetFences(device_, 1, &fence_));
   VK_CHECK(deviceTable_->vkQueueSubmit(queue_, 1, &submit, fence_));
   VK_CHECK(deviceTable_->vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX));
+  const double ms = stopwatch.elapsedMs();
+  std::lock_guard<std::mutex> lock(timingsMutex_);
+  if (timings_.submits++ == 0) timings_.firstSubmitMs = ms;
+  timings_.submitsMs += ms;
+}
+
+ContextTimings Context::timings() const {
+  std::lock_guard<std::mutex> lock(timingsMutex_);
+  return timings_;
+}
+
+void Context::notePipelineCreated(double ms) {
+  std::lock_guard<std::mutex> lock(timingsMutex_);
+  ++timings_.pipelines;
+  timings_.pipelinesMs += ms;
 }
 
 void Context::reportValidationMessage(const std::string& message) {

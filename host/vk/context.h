@@ -36,6 +36,22 @@ struct ContextOptions {
   std::function<void(const std::string&)> onValidationMessage;
 };
 
+// Where a context's fixed cost goes: wall-clock milliseconds, for `--stats` (the `setup` section)
+// and bench/bench_startup.cpp. The driver compiles a pipeline's shader in
+// vkCreateComputePipelines and may finish on its first use (lavapipe generates machine code at
+// the first dispatch, from Mesa's shader disk cache when warm), hence firstSubmitMs.
+struct ContextTimings {
+  double instanceMs = 0;       // loading libvulkan, the drivers and layers; vkCreateInstance
+  double deviceMs = 0;         // choosing the physical device; vkCreateDevice, pool and fence
+  double pipelineCacheMs = 0;  // reading the pipeline cache file; vkCreatePipelineCache
+  double pipelinesMs = 0;      // every ComputePipeline made so far (summed over threads)
+  uint32_t pipelines = 0;
+  double firstSubmitMs = 0;    // the first submitAndWait, recording to completion
+  double submitsMs = 0;        // every submitAndWait, the first included
+  uint32_t submits = 0;
+  double contextMs() const { return instanceMs + deviceMs + pipelineCacheMs; }
+};
+
 struct DeviceInfo {
   uint32_t index = 0;  // position in vkEnumeratePhysicalDevices order
   std::string name;
@@ -87,6 +103,11 @@ class Context {
   // Records commands into a fresh command buffer, submits, and waits for completion.
   void submitAndWait(const std::function<void(VkCommandBuffer)>& record);
 
+  // The fixed costs so far (thread-safe).
+  ContextTimings timings() const;
+  // Called by ComputePipeline's constructor with the time it took.
+  void notePipelineCreated(double ms);
+
   // Validation messages (warning or error severity) seen so far.
   std::vector<std::string> validationMessages() const;
   size_t validationMessageCount() const;
@@ -98,6 +119,7 @@ class Context {
   void createInstance(const ContextOptions& options);
   void choosePhysicalDevice(const std::string& selector);
   void createDevice();
+  void createPipelineCache();
   void release();
   void savePipelineCache();
 
@@ -122,6 +144,8 @@ class Context {
   VkPhysicalDeviceFeatures enabledFeatures_{};
   bool validationEnabled_ = false;
   std::function<void(const std::string&)> onValidationMessage_;
+  mutable std::mutex timingsMutex_;
+  ContextTimings timings_;
   mutable std::mutex messagesMutex_;
   std::vector<std::string> messages_;
 };

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "common/stopwatch.h"
 #include "vk/loader.h"
 
 namespace tessera::vk {
@@ -21,6 +22,7 @@ ComputePipeline::ComputePipeline(Context& context, const ComputePipelineDesc& de
       name_(desc.name),
       bufferCount_(desc.storageBufferCount),
       pushBytes_(desc.pushConstantBytes) {
+  const Stopwatch stopwatch;
   const DeviceTable& vk = context.vk();
   VkDevice device = context.device();
 
@@ -74,6 +76,7 @@ ComputePipeline::ComputePipeline(Context& context, const ComputePipelineDesc& de
     vk.vkDestroyDescriptorSetLayout(device, setLayout_, nullptr);
     throw VulkanError("vkCreateComputePipelines(" + name_ + ")", result);
   }
+  context.notePipelineCreated(stopwatch.elapsedMs());
 }
 
 ComputePipeline::~ComputePipeline() {
