@@ -1,38 +1,4 @@
 #version 450
-// quadtree.comp.glsl for general patches (degree 1..7 each way, polynomial or rational): one
-// invocation per node finds the split point (rule B, C or D: specialization constant 0) and
-// decides leaf or split, or by rule T its proven deviation bound (lib/tolerance_net.h). The
-// same lib/quadtree_classify.h, evaluating by lib/general_eval.h.
+// quadtree.comp.glsl for general patches, any split rule (lib/quadtree_general_main.glsl).
 #extension GL_GOOGLE_include_directive : require
-#include "layout.h"
-#include "lib/shared_glsl_cpp.h"
-
-layout(constant_id = 0) const uint kRule = kSplitRuleMidpoint;
-layout(constant_id = 1) const int kSamples = 5;  // S of rule C/D (S×S samples per node)
-
-layout(std430, binding = 0) readonly buffer Patches { GeneralPatch patches[]; };
-layout(std430, binding = 1) readonly buffer Nodes { QuadNode nodes[]; };
-layout(std430, binding = 2) writeonly buffer Decisions { NodeDecision decisions[]; };
-layout(std430, binding = 3) readonly buffer Points { vec4 controlPoints[]; };
-
-#include "lib/bicubic_eval.h"
-#include "lib/general_eval.h"
-#include "lib/division_count.h"
-#include "lib/tolerance_bound.h"
-#include "lib/tolerance_net.h"
-#include "lib/tolerance_general.h"
-#define CLASSIFY_PATCH GeneralPatch
-#define CLASSIFY_EVAL evalGeneral
-#define CLASSIFY_SCALE generalScale
-#define CLASSIFY_SECOND_BOUNDS generalSecondBounds
-#include "lib/quadtree_classify.h"
-#include "lib/dispatch.glsl"
-
-layout(push_constant) uniform Push { ClassifyPush pc; };
-
-void main() {
-  uint index = linearInvocationIndex();
-  if (index >= pc.nodeCount) return;
-  QuadNode node = nodes[index];
-  decisions[index] = classifyNode(patches[node.patchIndex], node, kRule, kSamples, pc);
-}
+#include "lib/quadtree_general_main.glsl"

@@ -1,5 +1,6 @@
 // The Vulkan backend of NodeClassifier: one dispatch of shaders/quadtree.comp.glsl (bicubic)
-// or quadtree_general.comp.glsl (general patches) per level. Pipelines are made once per
+// or quadtree_general.comp.glsl (general patches) per level, or of their rule-B-only variants
+// quadtree_midpoint.comp.glsl and quadtree_general_midpoint.comp.glsl. Pipelines are made once per
 // (shader, rule, S) and buffers grow and are kept between levels.
 #include <cstdint>  // before the generated SPIR-V array, which uses uint32_t
 #include <map>
@@ -11,6 +12,8 @@
 #include "quadtree/quadtree.h"
 #include "quadtree_comp.h"
 #include "quadtree_general_comp.h"
+#include "quadtree_general_midpoint_comp.h"
+#include "quadtree_midpoint_comp.h"
 #include "vk/buffer.h"
 #include "vk/pipeline.h"
 
@@ -95,16 +98,38 @@ class VulkanClassifier final : public NodeClassifier {
     auto key = std::make_tuple(general, rule, samples);
     auto it = pipelines_.find(key);
     if (it == pipelines_.end()) {
-      vk::ComputePipelineDesc desc{general ? "quadtree_general.comp" : "quadtree.comp",
-                                   general ? kSpirv_quadtree_general_comp : kSpirv_quadtree_comp,
-                                   general ? sizeof(kSpirv_quadtree_general_comp)
-                                           : sizeof(kSpirv_quadtree_comp),
+      const ShaderCode code = shaderFor(general, rule);
+      vk::ComputePipelineDesc desc{code.name,
+                                   code.spirv,
+                                   code.bytes,
                                    general ? 4u : 3u,
                                    sizeof(gpu::ClassifyPush),
                                    {{0, rule}, {1, uint32_t(samples)}}};
       it = pipelines_.emplace(key, std::make_unique<vk::ComputePipeline>(context_, desc)).first;
     }
     return *it->second;
+  }
+
+  struct ShaderCode {
+    const char* name;
+    const uint32_t* spirv;
+    size_t bytes;
+  };
+
+  // Rule B runs the variants built without rules C and D's searches: the driver compiles a
+  // pipeline at every run, and the whole shader costs it several times as long.
+  static ShaderCode shaderFor(bool general, uint32_t rule) {
+    const bool midpoint = rule == gpu::kSplitRuleMidpoint;
+    if (general && midpoint)
+      return {"quadtree_general_midpoint.comp", kSpirv_quadtree_general_midpoint_comp,
+              sizeof(kSpirv_quadtree_general_midpoint_comp)};
+    if (general)
+      return {"quadtree_general.comp", kSpirv_quadtree_general_comp,
+              sizeof(kSpirv_quadtree_general_comp)};
+    if (midpoint)
+      return {"quadtree_midpoint.comp", kSpirv_quadtree_midpoint_comp,
+              sizeof(kSpirv_quadtree_midpoint_comp)};
+    return {"quadtree.comp", kSpirv_quadtree_comp, sizeof(kSpirv_quadtree_comp)};
   }
 
   vk::Context& context_;

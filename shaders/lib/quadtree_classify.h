@@ -210,6 +210,11 @@ vec3 boundaryMaximum(IN(CLASSIFY_PATCH) bp, vec4 rect, int samples, float scale,
 vec2 splitPointLocal(IN(CLASSIFY_PATCH) bp, vec4 rect, uint rule, int samples, float scale,
                      float eps) {
   if (rule == kSplitRuleMidpoint) return vec2(0.5f);
+#ifdef CLASSIFY_MIDPOINT_ONLY
+  // A rule-B-only shader (quadtree_midpoint.comp.glsl) is never run for another rule; leaving
+  // the searches out spares the driver compiling them.
+  return vec2(0.5f);
+#else
   vec3 best;
   vec3 second;
   sampledMaxima(bp, rect, samples, scale, eps, best, second);
@@ -223,13 +228,16 @@ vec2 splitPointLocal(IN(CLASSIFY_PATCH) bp, vec4 rect, uint rule, int samples, f
   }
   if (!(best.z > 0.0f)) return vec2(0.5f);
   return clamp(vec2(best.x, best.y), vec2(kSplitMargin), vec2(1.0f - kSplitMargin));
+#endif
 }
 
 NodeDecision classifyNode(IN(CLASSIFY_PATCH) bp, IN(QuadNode) node, uint rule, int samples,
                           IN(ClassifyPush) params) {
+#ifndef CLASSIFY_MIDPOINT_ONLY
   // Rule T needs no corner frames: its bound comes from the node's restricted control net.
   if (rule == kSplitRuleTolerance)
     return toleranceDecision(CLASSIFY_SECOND_BOUNDS(bp, node.rect), node, params);
+#endif
   PRECISE float scale = CLASSIFY_SCALE(bp);
   float eps = params.degenerateEps;
   vec4 r = node.rect;
