@@ -29,6 +29,10 @@ class PatchEvaluator {
   // rational; general_patch.h) the general kernel.
   virtual std::vector<gpu::EvalSample> evaluate(const PatchSet& patches,
                                                 const std::vector<gpu::EvalQuery>& queries) = 0;
+  // Announces that evaluate() will be called for patches like these, so a backend may start
+  // its one-time setup (Vulkan: building the pipeline on a worker thread) while the caller
+  // builds the quad-tree. Optional: evaluate() works without it.
+  virtual void prepare(const PatchSet& patches) { (void)patches; }
 };
 
 std::unique_ptr<PatchEvaluator> makeMirrorEvaluator();

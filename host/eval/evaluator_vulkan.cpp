@@ -1,6 +1,6 @@
 // The Vulkan backend of PatchEvaluator: one dispatch of shaders/eval.comp.glsl (bicubic) or
-// eval_general.comp.glsl (general patches, pipeline made on first use) per call, buffers kept
-// and grown between calls.
+// eval_general.comp.glsl (general patches) per call, buffers kept and grown between calls.
+// Each pipeline is made on first use, or on a worker thread from prepare() on.
 #include <cstdint>  // before the generated SPIR-V array, which uses uint32_t
 
 #include <memory>
@@ -8,8 +8,8 @@
 #include "eval_comp.h"
 #include "eval_general_comp.h"
 #include "eval/evaluator.h"
+#include "vk/background_pipeline.h"
 #include "vk/buffer.h"
-#include "vk/pipeline.h"
 
 namespace tessera {
 namespace {
@@ -18,10 +18,16 @@ class VulkanEvaluator final : public PatchEvaluator {
  public:
   explicit VulkanEvaluator(vk::Context& context)
       : context_(context),
-        pipeline_(context, {"eval.comp", kSpirv_eval_comp, sizeof(kSpirv_eval_comp), 3,
-                            sizeof(gpu::EvalPush), {}}) {}
+        bicubic_(context, {"eval.comp", kSpirv_eval_comp, sizeof(kSpirv_eval_comp), 3,
+                           sizeof(gpu::EvalPush), {}}),
+        general_(context, {"eval_general.comp", kSpirv_eval_general_comp,
+                           sizeof(kSpirv_eval_general_comp), 4, sizeof(gpu::EvalPush), {}}) {}
 
   std::string name() const override { return "vulkan:" + context_.info().name; }
+
+  void prepare(const PatchSet& patches) override {
+    (patches.isBicubic() ? bicubic_ : general_).start();
+  }
 
   std::vector<gpu::EvalSample> evaluate(const PatchSet& patches,
                                         const std::vector<gpu::EvalQuery>& queries) override {
@@ -41,18 +47,13 @@ class VulkanEvaluator final : public PatchEvaluator {
     vk::ensureCapacity(context_, samples_, queries.size() * sizeof(gpu::EvalSample),
                        vk::BufferUse::Readback);
     patches_.upload(patches);
-    return run(pipeline_, {&patches_, &queries_, &samples_}, queries);
+    return run(bicubic_.get(), {&patches_, &queries_, &samples_}, queries);
   }
 
   std::vector<gpu::EvalSample> evaluateGeneral(const GeneralPatchSet& patches,
                                                const std::vector<gpu::EvalQuery>& queries) {
     checkQueries(patches.size(), queries);
     if (queries.empty()) return {};
-    if (!general_)
-      general_ = std::make_unique<vk::ComputePipeline>(
-          context_, vk::ComputePipelineDesc{"eval_general.comp", kSpirv_eval_general_comp,
-                                            sizeof(kSpirv_eval_general_comp), 4,
-                                            sizeof(gpu::EvalPush), {}});
     vk::ensureCapacity(context_, patches_, patches.size() * sizeof(gpu::GeneralPatch),
                        vk::BufferUse::Upload);
     vk::ensureCapacity(context_, points_, patches.points.size() * sizeof(gpu::vec4),
@@ -63,7 +64,7 @@ class VulkanEvaluator final : public PatchEvaluator {
                        vk::BufferUse::Readback);
     patches_.upload(patches.patches);
     points_.upload(patches.points);
-    return run(*general_, {&patches_, &queries_, &samples_, &points_}, queries);
+    return run(general_.get(), {&patches_, &queries_, &samples_, &points_}, queries);
   }
 
   std::vector<gpu::EvalSample> run(vk::ComputePipeline& pipeline,
@@ -81,8 +82,8 @@ class VulkanEvaluator final : public PatchEvaluator {
   }
 
   vk::Context& context_;
-  vk::ComputePipeline pipeline_;
-  std::unique_ptr<vk::ComputePipeline> general_;
+  vk::BackgroundPipeline bicubic_;
+  vk::BackgroundPipeline general_;
   vk::Buffer points_;
   vk::Buffer patches_;
   vk::Buffer queries_;

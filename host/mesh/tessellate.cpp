@@ -114,6 +114,8 @@ Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeO
   // set through the general ones (a bicubic patch is a general patch too): toPatchSet.
   const Stopwatch treeStep;
   const PatchSet gpuPatches = toPatchSet(patches);
+  // The evaluator's setup (a pipeline build) overlaps the quad-tree.
+  backend.evaluator->prepare(gpuPatches);
   QuadtreeResult tree = buildQuadtree(gpuPatches, options, *backend.classifier);
   const double treeMs = treeStep.elapsedMs();
   Tessellation result = meshFromTree(patches, gpuPatches, std::move(tree), *backend.evaluator);

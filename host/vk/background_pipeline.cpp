@@ -1,0 +1,29 @@
+#include "vk/background_pipeline.h"
+
+#include <utility>
+
+namespace tessera::vk {
+
+BackgroundPipeline::BackgroundPipeline(Context& context, ComputePipelineDesc desc)
+    : context_(context), desc_(std::move(desc)) {}
+
+BackgroundPipeline::~BackgroundPipeline() {
+  if (pending_.valid()) pending_.wait();
+}
+
+void BackgroundPipeline::start() {
+  if (pipeline_ || pending_.valid()) return;
+  pending_ = std::async(std::launch::async, [this] {
+    return std::make_unique<ComputePipeline>(context_, desc_);
+  });
+}
+
+ComputePipeline& BackgroundPipeline::get() {
+  if (!pipeline_) {
+    // get() leaves pending_ invalid, so a failed build is tried again next time.
+    pipeline_ = pending_.valid() ? pending_.get() : std::make_unique<ComputePipeline>(context_, desc_);
+  }
+  return *pipeline_;
+}
+
+}  // namespace tessera::vk
