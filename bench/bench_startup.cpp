@@ -1,0 +1,191 @@
+// The Vulkan path's fixed cost (issue 15): README's command 1, the teapot by rule B, on Vulkan
+// and on the CPU backend, in process (context + backend + tessellate, each run from scratch)
+// and as whole `tessera tessellate` processes, warm (Mesa's shader cache and the pipeline cache
+// as a second run finds them) and cold (both off). Prints where the Vulkan time goes
+// (vk::ContextTimings: instance, device, pipeline cache, pipelines, first dispatch, dispatches)
+// and the Vulkan/CPU ratios, minima and medians over the runs.
+//   bench_startup [runs]   (default 9; at least 5)
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "bench_report.h"
+#include "io/bpt_reader.h"
+#include "mesh/tessellate.h"
+#include "vk/context.h"
+
+extern char** environ;
+
+namespace tessera {
+namespace {
+
+struct Series {
+  std::vector<double> ms;
+  void add(double v) { ms.push_back(v); }
+  double min() const { return *std::min_element(ms.begin(), ms.end()); }
+  double median() const {
+    std::vector<double> s = ms;
+    std::sort(s.begin(), s.end());
+    return s[s.size() / 2];
+  }
+};
+
+bench::Case toCase(const std::string& path, const Series& s) {
+  bench::Case c{path, 1};
+  c.timing = {s.min() / 1e3, s.median() / 1e3, int(s.ms.size())};
+  return c;
+}
+
+std::string loadAverage() {
+  std::ifstream in("/proc/loadavg");
+  std::string a, b, c;
+  in >> a >> b >> c;
+  return a + " " + b + " " + c;
+}
+
+// One `tessera tessellate` process with `extraEnv` added; its wall time in ms. Throws when it
+// cannot start or fails.
+double runProcess(const std::vector<std::string>& args, const std::vector<std::string>& extraEnv) {
+  std::vector<char*> argv;
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  std::vector<std::string> envStrings(extraEnv);
+  for (char** e = environ; *e; ++e) envStrings.emplace_back(*e);  // extraEnv first: it wins
+  std::vector<char*> envp;
+  for (const std::string& e : envStrings) envp.push_back(const_cast<char*>(e.c_str()));
+  envp.push_back(nullptr);
+  const Stopwatch stopwatch;
+  pid_t pid = 0;
+  if (posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), envp.data()) != 0)
+    throw std::runtime_error("cannot start " + args[0]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  const double ms = stopwatch.elapsedMs();
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error(args[0] + " failed (status " + std::to_string(status) + ")");
+  return ms;
+}
+
+}  // namespace
+}  // namespace tessera
+
+int main(int argc, char** argv) {
+  using namespace tessera;
+  bench::Report report("bench_startup", argc, argv);
+  const int runs = std::max(bench::kMinRuns, argc > 1 ? std::atoi(argv[1]) : 9);
+  const auto teapot = readBpt(TESSERA_BENCH_DATA "/teapot.bpt");
+  QuadtreeOptions options;  // rule B, thresholds 0.1: README's command 1
+  const std::string loadAtStart = loadAverage();
+  report.note("loadAverageAtStart", loadAtStart);
+
+  // In process, every run from scratch: what one CLI run pays besides process start.
+  Series cpu, vulkan, instance, device, cache, pipelines, firstSubmit, submits, tree;
+  size_t triangles = 0;
+  std::string deviceName;
+  for (int r = 0; r <= runs; ++r) {  // run 0 warms the caches and is not counted
+    Stopwatch stopwatch;
+    Backend mirror = makeMirrorBackend();
+    Tessellation c = tessellate(teapot, options, mirror);
+    const double cpuMs = stopwatch.elapsedMs();
+    stopwatch.restart();
+    vk::Context context;
+    Tessellation v;
+    {
+      Backend backend = makeVulkanBackend(context);
+      v = tessellate(teapot, options, backend);
+    }
+    const double vulkanMs = stopwatch.elapsedMs();
+    if (v.mesh.positions != c.mesh.positions || v.mesh.indices != c.mesh.indices) {
+      std::fprintf(stderr, "bench_startup: the Vulkan mesh differs from the CPU one\n");
+      return 1;
+    }
+    triangles = v.mesh.triangleCount();
+    deviceName = context.info().name;
+    if (r == 0) {
+      report.setDevice(context);
+      continue;
+    }
+    const vk::ContextTimings t = context.timings();
+    cpu.add(cpuMs);
+    vulkan.add(vulkanMs);
+    instance.add(t.instanceMs);
+    device.add(t.deviceMs);
+    cache.add(t.pipelineCacheMs);
+    pipelines.add(t.pipelinesMs);
+    firstSubmit.add(t.firstSubmitMs);
+    submits.add(t.submitsMs);
+    tree.add(v.stats.treeMs);
+  }
+
+  // Milliseconds, so printed by hand: the report's tables are for throughputs.
+  std::printf("### teapot rule B on %s (%zu triangles), in process, %d runs: ms\n\n", deviceName.c_str(),
+              triangles, runs);
+  std::printf("| part | min | median |\n|---|---|---|\n");
+  const std::vector<std::pair<const char*, const Series*>> parts = {
+      {"CPU backend: backend + tessellate", &cpu},
+      {"Vulkan: context + backend + tessellate", &vulkan},
+      {"- instance (loader, drivers)", &instance},
+      {"- device", &device},
+      {"- pipeline cache load", &cache},
+      {"- pipelines (driver compiles; summed over threads)", &pipelines},
+      {"- first dispatch", &firstSubmit},
+      {"- all dispatches (one per level + evaluation)", &submits},
+      {"- tessellate's tree stage (treeMs)", &tree}};
+  nlohmann::json breakdown = nlohmann::json::object();
+  for (const auto& [name, series] : parts) {
+    std::printf("| %s | %.1f | %.1f |\n", name, series->min(), series->median());
+    breakdown[name] = {{"minMs", series->min()}, {"medianMs", series->median()}};
+  }
+  std::printf("\n");
+  report.note("inProcessMs", breakdown);
+
+  // Whole processes, as a user runs README's command 1.
+#ifdef TESSERA_CLI_PATH
+  const std::string out = "/tmp/bench_startup_" + std::to_string(::getpid()) + ".obj";
+  auto command = [&](const char* backend) {
+    return std::vector<std::string>{TESSERA_CLI_PATH, "tessellate", TESSERA_BENCH_DATA "/teapot.bpt",
+                                    "-m", "B", "--backend", backend, "-o", out, "-q"};
+  };
+  const std::vector<std::string> cold = {"MESA_SHADER_CACHE_DISABLE=true",
+                                         "TESSERA_PIPELINE_CACHE=off"};
+  Series cpuProcess, vulkanProcess, coldProcess;
+  runProcess(command("vulkan"), {});  // warms Mesa's shader cache and the pipeline cache
+  runProcess(command("cpu"), {});
+  for (int r = 0; r < runs; ++r) {
+    cpuProcess.add(runProcess(command("cpu"), {}));
+    vulkanProcess.add(runProcess(command("vulkan"), {}));
+    coldProcess.add(runProcess(command("vulkan"), cold));
+  }
+  std::remove(out.c_str());
+  bench::Table& processes =
+      report.table("process", "runs",
+                   "`tessera tessellate data/teapot.bpt -m B -o x.obj -q`, whole process wall "
+                   "time; cold = MESA_SHADER_CACHE_DISABLE=true TESSERA_PIPELINE_CACHE=off");
+  processes.cases = {toCase("--backend cpu", cpuProcess),
+                     toCase("--backend vulkan, warm caches", vulkanProcess),
+                     toCase("--backend vulkan, cold", coldProcess)};
+  report.print(processes);
+  std::printf("Vulkan / CPU, whole process: %.2f× by minima, %.2f× by medians (cold: %.2f×, "
+              "%.2f×)\n",
+              vulkanProcess.min() / cpuProcess.min(), vulkanProcess.median() / cpuProcess.median(),
+              coldProcess.min() / cpuProcess.min(), coldProcess.median() / cpuProcess.median());
+  report.note("processRatioMin", vulkanProcess.min() / cpuProcess.min());
+  report.note("processRatioMedian", vulkanProcess.median() / cpuProcess.median());
+#endif
+  std::printf("Vulkan / CPU, in process: %.2f× by minima, %.2f× by medians\n",
+              vulkan.min() / cpu.min(), vulkan.median() / cpu.median());
+  std::printf("load average: %s at start, %s at end\n",
+              loadAtStart.c_str(), loadAverage().c_str());
+  report.note("loadAverageAtEnd", loadAverage());
+  report.finish();
+  return 0;
+}
