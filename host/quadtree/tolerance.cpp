@@ -1,0 +1,79 @@
+#include "quadtree/tolerance.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <stdexcept>
+
+namespace tessera {
+namespace {
+
+// The whole of `text` as a finite double, or NaN (strtod alone accepts "1e3x" up to the x).
+double wholeNumber(const std::string& text) {
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text.front())))
+    return std::nan("");
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size() || !std::isfinite(value)) return std::nan("");
+  return value;
+}
+
+}  // namespace
+
+ToleranceSpec parseTolerance(const std::string& text) {
+  const bool relative = !text.empty() && text.back() == '%';
+  const double number = wholeNumber(relative ? text.substr(0, text.size() - 1) : text);
+  ToleranceSpec spec;
+  spec.text = text;
+  spec.relative = relative;
+  if (relative) {
+    if (!(number > 0 && number <= 100))
+      throw std::invalid_argument("the tolerance '" + text +
+                                  "' is not a percentage of the model's size in (0%, 100%]");
+    spec.value = number / 100.0;
+  } else {
+    if (!(number > 0))
+      throw std::invalid_argument("the tolerance '" + text +
+                                  "' is not a distance > 0 in model units (or a percentage "
+                                  "such as 0.1%)");
+    spec.value = number;
+  }
+  return spec;
+}
+
+double controlPointDiagonal(const std::vector<BezierPatch>& patches) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  glm::dvec3 lo(inf), hi(-inf);
+  for (const BezierPatch& patch : patches)
+    for (size_t k = 0; k < patch.cp.size(); ++k) {
+      // A weight-0 control point has no affine position of its own (a direction).
+      if (!patch.weights.empty() && !(patch.weights[k] > 0)) continue;
+      lo = glm::min(lo, patch.cp[k]);
+      hi = glm::max(hi, patch.cp[k]);
+    }
+  const double diagonal = hi.x >= lo.x ? glm::length(hi - lo) : 0.0;
+  if (!(diagonal > 0) || !std::isfinite(diagonal))
+    throw std::invalid_argument(
+        "a relative tolerance needs a model of nonzero size (the control points' bounding box "
+        "has diagonal " + std::to_string(diagonal) + ")");
+  return diagonal;
+}
+
+double resolveTolerance(const ToleranceSpec& spec, const std::vector<BezierPatch>& patches) {
+  return spec.relative ? spec.value * controlPointDiagonal(patches) : spec.value;
+}
+
+std::string describeTolerance(const ToleranceSpec& spec, double resolved) {
+  char text[160];
+  if (spec.relative)
+    std::snprintf(text, sizeof text, "%.4g (%s of the diagonal %.4g)", resolved, spec.text.c_str(),
+                  resolved / spec.value);
+  else
+    std::snprintf(text, sizeof text, "%.4g", resolved);
+  return text;
+}
+
+}  // namespace tessera
