@@ -18,6 +18,7 @@
 #include "io/stats_report.h"
 #include "mesh/lower_bound.h"
 #include "mesh/tessellate.h"
+#include "quadtree/tolerance.h"
 #include "vk/context.h"
 
 namespace tessera::cli {
@@ -26,7 +27,8 @@ namespace {
 struct TessellateArgs {
   std::string input;
   std::string output;
-  std::string method = "B";
+  std::string method;     // -m: empty means kDefaultRule, or rule T with --tolerance
+  std::string tolerance;  // --tolerance: rule T's δ, "0.01" or "0.1%"; empty: the default 0.1%
   float linearity = 0.1f;
   float flatness = 0.1f;
   uint32_t maxDepth = 12;
@@ -67,9 +69,33 @@ void parseGrid(const std::string& text, int& gridU, int& gridV) {
   gridV = number(second);
 }
 
+std::string shortDecimal(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+// The rule without -m: B, the paper's midpoint rule, until rule T's classifier lands (then T).
+constexpr SplitRule kDefaultRule = SplitRule::Midpoint;
+
+// Without -m: rule T when --tolerance is given, else kDefaultRule. --tolerance belongs to rule
+// T only: with -m A..D it would be silently ignored, so it is refused (std::invalid_argument:
+// exit 2, like a bad -m).
+SplitRule chooseRule(const TessellateArgs& a) {
+  if (a.method.empty()) return a.tolerance.empty() ? kDefaultRule : SplitRule::Tolerance;
+  const SplitRule rule = parseSplitRule(a.method);
+  if (!a.tolerance.empty() && rule != SplitRule::Tolerance)
+    throw std::invalid_argument("--tolerance sets the δ of rule T; it does not go with -m " +
+                                a.method + " (leave out -m, or give -m T)");
+  return rule;
+}
+
 int run(const TessellateArgs& a) {
   QuadtreeOptions options;
-  options.rule = parseSplitRule(a.method);
+  options.rule = chooseRule(a);
+  // Parsed before any work, resolved (a percentage needs the model's size) once it is read.
+  const ToleranceSpec toleranceSpec = a.tolerance.empty() ? ToleranceSpec{} : parseTolerance(a.tolerance);
+  const bool ruleT = options.rule == SplitRule::Tolerance;
   options.linearity = a.linearity;
   options.flatness = a.flatness;
   options.maxDepth = a.maxDepth;
@@ -87,6 +113,7 @@ int run(const TessellateArgs& a) {
   options.frontierBudgetBytes = size_t(a.frontierBudgetMiB * 1024.0 * 1024.0);
 
   std::vector<BezierPatch> patches = readSurface(a.input, inputFormat);
+  if (ruleT) options.tolerance = resolveTolerance(toleranceSpec, patches);
   const std::string inputName = a.input == kStdioPath ? kStdinName : a.input;
   Progress progress(!a.quiet, progressIntervalSeconds());
   options.onLevel = progress.treeCallback(patches.size());
@@ -104,10 +131,9 @@ int run(const TessellateArgs& a) {
   const bool summary = !a.quiet && !a.json;
   // The lower bound's δ: rule T's requested one, else the measured distance to the surface
   // (the mesh is within it), so --lower-bound with another rule measures the deviation.
-  const bool toleranceRule = options.rule == SplitRule::Tolerance;
-  const bool wantBound = (toleranceRule || a.lowerBound) && (wantReport || summary);
+  const bool wantBound = (ruleT || a.lowerBound) && (wantReport || summary);
   std::optional<PatchDeviation> deviation, geometric;
-  if ((a.deviation || (wantBound && !toleranceRule)) && (wantReport || summary)) {
+  if ((a.deviation || (wantBound && !ruleT)) && (wantReport || summary)) {
     progress.update("measuring the deviation from the surface");
     deviation = measureDeviationPerPatch(t, patches);
     geometric =
@@ -115,7 +141,7 @@ int run(const TessellateArgs& a) {
   }
   std::optional<TriangleLowerBound> bound;
   if (wantBound) {
-    const double delta = toleranceRule ? options.tolerance : geometric->total.maxDeviation;
+    const double delta = ruleT ? options.tolerance : geometric->total.maxDeviation;
     progress.update("integrating the triangle lower bound");
     if (delta > 0.0) bound = asymptoticTriangleLowerBound(patches, delta);  // 0: an exact mesh
   }
@@ -125,6 +151,7 @@ int run(const TessellateArgs& a) {
     else addUnmeasuredGeometricDeviation(report);
     if (bound) addLowerBound(report, *bound);
     else addUncomputedLowerBound(report);
+    if (ruleT) addToleranceReport(report, t, toleranceSpec, options.tolerance);
     report["run"] = {{"input", inputName},
                      {"output", a.output.empty() ? nlohmann::json() : nlohmann::json(a.output)},
                      {"backend", backend.name},
@@ -140,12 +167,22 @@ int run(const TessellateArgs& a) {
     // With the mesh or the report on standard output, the summary goes to stderr.
     FILE* const to = meshToStdout || statsToStdout ? stderr : stdout;
     const TessellationStats& s = t.stats;
-    std::fprintf(to, "%s: %zu patches, method %c, linearity %g, flatness %g, backend %s%s%s\n",
-                 inputName.c_str(), s.patches, splitRuleLetter(options.rule), a.linearity,
-                 a.flatness, backend.name.c_str(), context ? " on " : "",
+    const std::string thresholds =
+        ruleT ? "tolerance " + describeTolerance(toleranceSpec, options.tolerance)
+              : "linearity " + shortDecimal(a.linearity) + ", flatness " + shortDecimal(a.flatness);
+    std::fprintf(to, "%s: %zu patches, method %c, %s, backend %s%s%s\n", inputName.c_str(),
+                 s.patches, splitRuleLetter(options.rule), thresholds.c_str(),
+                 backend.name.c_str(), context ? " on " : "",
                  context ? context->info().name.c_str() : "");
     std::fprintf(to, "depth %u, leaves %zu, triangles %zu, vertices %zu (%zu zero-area dropped)\n",
                  s.depth, s.leaves, s.triangles, s.vertices, s.degenerateTrianglesDropped);
+    // Rule T's leaves each carry their proven bound (QuadLeaf::flatness): the largest of them
+    // is what the mesh is proven within, measured or not.
+    if (ruleT) {
+      const double bound = largestLeafBound(t.tree);
+      std::fprintf(to, "proven within %.4g of the surface (largest leaf bound; tolerance %.4g)%s\n",
+                   bound, options.tolerance, bound <= options.tolerance ? "" : " — ABOVE the tolerance");
+    }
     if (deviation)
       std::fprintf(to,
                    "max deviation %.3g geometric (mean %.3g), %.3g parametric (mean %.3g); %zu "
@@ -185,11 +222,15 @@ void addTessellateOptions(CLI::App* cmd, TessellateArgs& args) {
                   "json for the input, obj, ply or glb for the output; give one or both")
       ->delimiter(',');
   cmd->add_option("-m,--method", args.method,
-                  "split rule: A uniform grid, B midpoint, C sampled κ max, D true κ max")
+                  "split rule: T to a tolerance (the default with --tolerance), or the paper's A "
+                  "uniform grid, B midpoint (the default otherwise), C sampled κ max, D true κ max");
+  cmd->add_option("--tolerance", args.tolerance,
+                  "rule T: the largest distance from the surface, in model units (0.01) or as a "
+                  "percentage of the control points' bounding-box diagonal (0.1%); default 0.1%. "
+                  "Not with -m A..D");
+  cmd->add_option("--linearity", args.linearity, "rules B-D: edge linearity threshold (1 - Ti·Tj)")
       ->capture_default_str();
-  cmd->add_option("--linearity", args.linearity, "edge linearity threshold (1 - Ti·Tj)")
-      ->capture_default_str();
-  cmd->add_option("--flatness", args.flatness, "flatness threshold (1 - Ni·Nj)")
+  cmd->add_option("--flatness", args.flatness, "rules B-D: flatness threshold (1 - Ni·Nj)")
       ->capture_default_str();
   cmd->add_option("--max-depth", args.maxDepth, "maximum quad-tree depth")->capture_default_str();
   cmd->add_option("--samples", args.samples, "S of rules C and D (S×S samples per node)")

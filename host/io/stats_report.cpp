@@ -173,7 +173,35 @@ nlohmann::json statsToJson(const Tessellation& t, const PatchDeviation* deviatio
                                                : nlohmann::json()}});
   }
   report["patches"] = std::move(patches);
+  report["tolerance"] = nullptr;
   return report;
+}
+
+double largestLeafBound(const QuadtreeResult& tree) {
+  double largest = 0;
+  for (const QuadLeaf& leaf : tree.leaves) largest = std::max(largest, double(leaf.flatness));
+  return largest;
+}
+
+void addToleranceReport(nlohmann::json& report, const Tessellation& t, const ToleranceSpec& spec,
+                        double resolved) {
+  nlohmann::json& patches = report["patches"];
+  if (patches.size() != t.stats.patches)
+    throw std::invalid_argument("addToleranceReport: " + std::to_string(patches.size()) +
+                                " patches in the report, " + std::to_string(t.stats.patches) +
+                                " tessellated");
+  std::vector<double> perPatch(patches.size(), 0.0);
+  for (const QuadLeaf& leaf : t.tree.leaves)
+    perPatch.at(leaf.patchIndex) = std::max(perPatch.at(leaf.patchIndex), double(leaf.flatness));
+  for (size_t p = 0; p < patches.size(); ++p) patches[p]["largestLeafBound"] = perPatch[p];
+  const double bound = largestLeafBound(t.tree);
+  report["tolerance"] = {
+      {"requested", resolved},
+      {"given", spec.text},
+      {"relative", spec.relative},
+      {"diagonal", spec.relative ? nlohmann::json(resolved / spec.value) : nlohmann::json()},
+      {"largestLeafBound", bound},
+      {"provenWithin", bound <= resolved}};
 }
 
 nlohmann::json optionsToJson(const QuadtreeOptions& o) {
@@ -185,6 +213,8 @@ nlohmann::json optionsToJson(const QuadtreeOptions& o) {
           {"samples", o.samples},
           {"gridU", o.gridU},
           {"gridV", o.gridV},
+          {"tolerance", o.rule == SplitRule::Tolerance ? nlohmann::json(o.tolerance)
+                                                       : nlohmann::json()},
           {"nodeBudget", o.nodeBudget}};
 }
 

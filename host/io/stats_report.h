@@ -12,6 +12,7 @@
 #include "mesh/lower_bound.h"
 #include "geometry/patch.h"
 #include "quadtree/quadtree.h"
+#include "quadtree/tolerance.h"
 #include "mesh/tessellate.h"
 
 namespace tessera {
@@ -60,6 +61,17 @@ nlohmann::json statsToJson(const TessellationStats& stats);
 // were evaluated on, so the per-patch numbers add up to the totals) and, when `deviation` is given, deviation totals and per patch (null otherwise).
 nlohmann::json statsToJson(const Tessellation& tessellation,
                            const PatchDeviation* deviation = nullptr);
+
+// Rule T: the largest proven deviation bound over the tree's leaves (each rule-T leaf keeps its
+// bound in QuadLeaf::flatness); 0 for a tree without leaves.
+double largestLeafBound(const QuadtreeResult& tree);
+
+// Fills the report's "tolerance" member (null in every report until then, i.e. for rules A–D)
+// for a rule-T run at δ = `resolved` model units given as `spec`: requested, given, relative,
+// diagonal, largestLeafBound, provenWithin (largestLeafBound ≤ requested); and
+// patches[].largestLeafBound. docs/stats_schema.md.
+void addToleranceReport(nlohmann::json& report, const Tessellation& tessellation,
+                        const ToleranceSpec& spec, double resolved);
 
 // The quad-tree options as a JSON object, for the report's optional "run" section.
 nlohmann::json optionsToJson(const QuadtreeOptions& options);
