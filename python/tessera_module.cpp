@@ -36,7 +36,19 @@ tessera::Rule parseRule(const std::string& name) {
   if (name == "B" || name == "b") return tessera::Rule::B;
   if (name == "C" || name == "c") return tessera::Rule::C;
   if (name == "D" || name == "d") return tessera::Rule::D;
-  throw tessera::ArgumentError("rule must be 'A', 'B', 'C' or 'D', got '" + name + "'");
+  if (name == "T" || name == "t") return tessera::Rule::T;
+  throw tessera::ArgumentError("rule must be 'A', 'B', 'C', 'D' or 'T', got '" + name + "'");
+}
+
+// The name of ToleranceOptions{}.method, the C++ default.
+const char* const kDefaultToleranceMethod =
+    tessera::ToleranceOptions{}.method == tessera::ToleranceMethod::Adaptive ? "adaptive"
+                                                                             : "uniform";
+
+tessera::ToleranceMethod parseToleranceMethod(const std::string& name) {
+  if (name == "adaptive") return tessera::ToleranceMethod::Adaptive;
+  if (name == "uniform") return tessera::ToleranceMethod::UniformGrids;
+  throw tessera::ArgumentError("method must be 'adaptive' or 'uniform', got '" + name + "'");
 }
 
 tessera::Device parseDevice(const std::string& name) {
@@ -74,9 +86,11 @@ std::vector<tessera::Patch> toPatches(const py::object& surface, const py::objec
 }
 
 tessera::RuleOptions ruleOptions(const std::string& rule, float linearity, float flatness,
-                                 std::pair<int, int> grid, int samples, uint32_t maxDepth) {
+                                 std::pair<int, int> grid, int samples, uint32_t maxDepth,
+                                 double tolerance = 0) {
   tessera::RuleOptions o;
   o.rule = parseRule(rule);
+  o.tolerance = tolerance;
   o.linearity = linearity;
   o.flatness = flatness;
   o.gridU = grid.first;
@@ -123,9 +137,10 @@ PYBIND11_MODULE(tessera, m) {
           "tessellate",
           [](tessera::Tessellator& self, const py::object& surface, const py::object& weights,
              const std::string& rule, float linearity, float flatness, std::pair<int, int> grid,
-             int samples, uint32_t maxDepth) {
+             int samples, uint32_t maxDepth, double tolerance) {
             const auto patches = toPatches(surface, weights);
-            const auto options = ruleOptions(rule, linearity, flatness, grid, samples, maxDepth);
+            const auto options =
+                ruleOptions(rule, linearity, flatness, grid, samples, maxDepth, tolerance);
             tessera::Mesh mesh;
             {
               py::gil_scoped_release unlocked;  // other Python threads run meanwhile
@@ -136,23 +151,40 @@ PYBIND11_MODULE(tessera, m) {
           py::arg("surface"), py::arg("weights") = py::none(), py::arg("rule") = "B",
           py::arg("linearity") = 0.1f, py::arg("flatness") = 0.1f,
           py::arg("grid") = std::make_pair(8, 8), py::arg("samples") = 5,
-          py::arg("max_depth") = 12u,
-          "Adaptive tessellation of a file path or control points by split rule A-D")
+          py::arg("max_depth") = 12u, py::arg("tolerance") = 0.0,
+          "Adaptive tessellation of a file path or control points by split rule A-D, or T "
+          "with `tolerance` (model units)")
       .def(
           "tessellate_to_tolerance",
           [](tessera::Tessellator& self, const py::object& surface, double tolerance,
-             const py::object& weights, int maxPerDirection) {
+             const py::object& weights, const std::string& method, int maxPerDirection,
+             uint32_t maxDepth) {
             const auto patches = toPatches(surface, weights);
+            tessera::ToleranceOptions options;
+            options.method = parseToleranceMethod(method);
+            options.maxPerDirection = maxPerDirection;
+            options.maxDepth = maxDepth;
             tessera::Mesh mesh;
             {
               py::gil_scoped_release unlocked;
-              mesh = self.tessellateToTolerance(patches, tolerance, maxPerDirection);
+              mesh = self.tessellateToTolerance(patches, tolerance, options);
             }
             return toPython(mesh);
           },
           py::arg("surface"), py::arg("tolerance"), py::arg("weights") = py::none(),
-          py::arg("max_per_direction") = 1024,
-          "A uniform grid per patch from Filip's bound: every triangle within `tolerance`");
+          py::arg("method") = kDefaultToleranceMethod, py::arg("max_per_direction") = 1024,
+          py::arg("max_depth") = 12u,
+          "Every triangle within `tolerance` (model units) of the surface: method 'adaptive' "
+          "(rule T's quad-tree) or 'uniform' (a grid per patch from Filip's bound)");
+
+  m.def(
+      "relative_tolerance",
+      [](const py::object& surface, double fraction, const py::object& weights) {
+        return tessera::relativeTolerance(toPatches(surface, weights), fraction);
+      },
+      py::arg("surface"), py::arg("fraction"), py::arg("weights") = py::none(),
+      "fraction × the diagonal of the control points' bounding box, in model units "
+      "(0.001: the CLI's default tolerance, 0.1%)");
 
   m.def(
       "tessellate",

@@ -47,13 +47,21 @@ weights[:, 1, 1] = 2.0
 coarse = t.tessellate_to_tolerance(points, 0.05, weights=weights)
 fine = t.tessellate_to_tolerance(points, 0.005, weights=weights)
 assert 0 < coarse.indices.shape[0] < fine.indices.shape[0]
+# The uniform grids by name; a relative tolerance is of the diagonal of the control points'
+# bounding box (the teapot's box, from the points themselves).
+uniform = t.tessellate_to_tolerance(points, 0.05, weights=weights, method="uniform")
+assert 0 < uniform.indices.shape[0] <= fine.indices.shape[0]
+diagonal = float(np.linalg.norm(points.reshape(-1, 3).max(0) - points.reshape(-1, 3).min(0)))
+assert abs(tessera.relative_tolerance(points, 0.001) - 0.001 * diagonal) <= 1e-12 * diagonal
 
 # Typed errors.
 for call, error in [
         (lambda: tessera.load_patches("no_such_file.bpt"), tessera.InputError),
         (lambda: t.tessellate(points[:, :, :, :2]), tessera.ArgumentError),
         (lambda: t.tessellate(points, rule="E"), tessera.ArgumentError),
-        (lambda: t.tessellate_to_tolerance(points, -1.0), tessera.ArgumentError)]:
+        (lambda: t.tessellate_to_tolerance(points, -1.0), tessera.ArgumentError),
+        (lambda: t.tessellate_to_tolerance(points, 0.01, method="best"), tessera.ArgumentError),
+        (lambda: tessera.relative_tolerance(points, 1.5), tessera.ArgumentError)]:
     try:
         call()
     except error as e:

@@ -61,7 +61,8 @@ Mesh toMesh(const TriangleMesh& mesh) {
 
 QuadtreeOptions toQuadtreeOptions(const RuleOptions& options) {
   static_assert(
-      int(Rule::A) == int(SplitRule::UniformGrid) && int(Rule::D) == int(SplitRule::TrueMax),
+      int(Rule::A) == int(SplitRule::UniformGrid) && int(Rule::D) == int(SplitRule::TrueMax) &&
+          int(Rule::T) == int(SplitRule::Tolerance),
       "Rule and SplitRule list the rules in the same order");
   QuadtreeOptions q;
   q.rule = static_cast<SplitRule>(options.rule);
@@ -72,6 +73,7 @@ QuadtreeOptions toQuadtreeOptions(const RuleOptions& options) {
   q.samples = options.samples;
   q.maxDepth = options.maxDepth;
   q.nodeBudget = options.maxNodes;
+  q.tolerance = options.tolerance;
   return q;
 }
 

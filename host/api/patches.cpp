@@ -4,6 +4,7 @@
 #include "api/convert.h"
 #include "common/version.h"
 #include "io/surface_reader.h"
+#include "quadtree/tolerance.h"
 #include "tessera/tessera.h"
 
 namespace tessera {
@@ -36,6 +37,22 @@ std::vector<Patch> patchesFromArrays(int degreeU, int degreeV, size_t patchCount
     if (weights) p.weights.assign(weights + count * k, weights + count * (k + 1));
   }
   return patches;
+}
+
+double boundingBoxDiagonal(const std::vector<Patch>& patches) {
+  const std::vector<BezierPatch> internal = api::toBezierPatches(patches);
+  try {
+    return controlPointDiagonal(internal);
+  } catch (const std::invalid_argument& e) {
+    throw ArgumentError(e.what());
+  }
+}
+
+double relativeTolerance(const std::vector<Patch>& patches, double fraction) {
+  if (!(fraction > 0 && fraction <= 1))
+    throw ArgumentError("relativeTolerance: the fraction must be in (0, 1], got " +
+                        std::to_string(fraction));
+  return fraction * boundingBoxDiagonal(patches);
 }
 
 }  // namespace tessera

@@ -133,19 +133,29 @@ Mesh Tessellator::tessellate(const std::vector<Patch>& patches, const RuleOption
 }
 
 Mesh Tessellator::tessellateToTolerance(const std::vector<Patch>& patches, double tolerance,
-                                        int maxPerDirection) {
+                                        const ToleranceOptions& options) {
   if (!std::isfinite(tolerance) || !(tolerance > 0))
     throw ArgumentError("the tolerance must be finite and > 0, got " + std::to_string(tolerance));
+  if (options.method == ToleranceMethod::Adaptive) {
+    RuleOptions adaptive;
+    adaptive.rule = Rule::T;
+    adaptive.tolerance = tolerance;
+    adaptive.maxDepth = options.maxDepth;
+    adaptive.maxNodes = options.maxNodes;
+    return tessellate(patches, adaptive);
+  }
+  if (options.method != ToleranceMethod::UniformGrids)
+    throw ArgumentError("unknown tolerance method " + std::to_string(int(options.method)));
   // Rule A's grids take at most 4096 cells per side (quadtree.h).
+  const int maxPerDirection = options.maxPerDirection;
   if (maxPerDirection < 1 || maxPerDirection > 4096)
     throw ArgumentError("maxPerDirection must be 1..4096, got " + std::to_string(maxPerDirection));
   const std::vector<BezierPatch> internal = api::toBezierPatches(patches);
-  const size_t maxNodes = RuleOptions{}.maxNodes;
   return translatingErrors([&] {
     return api::toMesh(impl_
                            ->withFallback([&](Backend& backend) {
-                             return countedGrids(internal, tolerance, maxPerDirection, maxNodes,
-                                                 backend);
+                             return countedGrids(internal, tolerance, maxPerDirection,
+                                                 options.maxNodes, backend);
                            })
                            .mesh);
   });

@@ -46,17 +46,43 @@ std::vector<Patch> patchesFromArrays(int degreeU, int degreeV, size_t patchCount
                                      const double* weights = nullptr);
 
 // How the adaptive quad-tree splits (docs/quadtree.md): A a uniform gridU×gridV grid per
-// patch, B at the midpoint, C at the sampled curvature maximum, D at the true one.
-enum class Rule { A, B, C, D };
+// patch, B at the midpoint, C at the sampled curvature maximum, D at the true one (the paper's
+// four); T to a tolerance: a node is a leaf once its proven deviation bound is within
+// RuleOptions::tolerance, else it is split in u, v or both (tessellateToTolerance's default).
+enum class Rule { A, B, C, D, T };
 
 struct RuleOptions {
   Rule rule = Rule::B;
   float linearity = 0.1f;             // a node is a leaf when every 1 − Ti·Tj < linearity ...
   float flatness = 0.1f;              // ... and every 1 − Ni·Nj < flatness (rules B–D)
+  double tolerance = 0;               // rule T: δ in model units (> 0); relativeTolerance helps
   int gridU = 8, gridV = 8;           // rule A's grid
   int samples = 5;                    // rules C and D: samples per direction
   uint32_t maxDepth = 12;             // nodes at this depth are leaves
   size_t maxNodes = size_t(1) << 24;  // more nodes in a tree: LimitError
+};
+
+// The diagonal of the axis-aligned bounding box of all control points (for rational patches
+// those of weight > 0): the model's size. Throws ArgumentError when it is 0 (no patches, or
+// every point the same).
+double boundingBoxDiagonal(const std::vector<Patch>& patches);
+// A tolerance relative to the model's size, in model units: fraction × boundingBoxDiagonal.
+// relativeTolerance(patches, 0.001) is the CLI's default δ ("0.1%", about what Open CASCADE's
+// importers use). Throws ArgumentError unless 0 < fraction ≤ 1.
+double relativeTolerance(const std::vector<Patch>& patches, double fraction);
+
+// How tessellateToTolerance meets the tolerance. Adaptive: the quad-tree of rule T, which
+// stops each node on a proven bound of the distance between its triangles and the surface and
+// splits anisotropically (fewest triangles). UniformGrids: one uniform grid per patch (rule A)
+// sized by Filip's bound of the second derivatives (rational too, zero weights included;
+// docs/rational_division.md): simple and predictable, more triangles.
+enum class ToleranceMethod { Adaptive, UniformGrids };
+
+struct ToleranceOptions {
+  ToleranceMethod method = ToleranceMethod::UniformGrids;
+  int maxPerDirection = 1024;         // UniformGrids: most cells per direction of one patch
+  uint32_t maxDepth = 12;             // Adaptive: nodes at this depth are leaves
+  size_t maxNodes = size_t(1) << 24;  // more nodes (or grid cells): LimitError
 };
 
 // An indexed triangle mesh in fp32. Per vertex: positions and normals (3 floats each), uvs
@@ -107,13 +133,13 @@ class Tessellator {
   // the device fails.
   Mesh tessellate(const std::vector<Patch>& patches, const RuleOptions& options = {});
 
-  // Tessellation to a tolerance in model units: each patch gets its own uniform grid (rule A),
-  // sized by Filip's bound of the second derivatives (rational too, zero weights included;
-  // docs/rational_division.md) so that every triangle stays within `tolerance` of the surface
-  // at the same (u, v). Counts per direction are capped at `maxPerDirection`. The adaptive
-  // tolerance mode (a quad-tree that stops on a proven deviation) comes with issue 15.
+  // Tessellation to a tolerance in model units (relativeTolerance for one relative to the
+  // model's size): every triangle stays within `tolerance` of the surface at the same (u, v),
+  // by options.method (ToleranceMethod above). Throws ArgumentError for a tolerance that is
+  // not finite and > 0 or a bad option, LimitError past maxNodes (or a grid capped at
+  // maxPerDirection), DeviceError as tessellate.
   Mesh tessellateToTolerance(const std::vector<Patch>& patches, double tolerance,
-                             int maxPerDirection = 1024);
+                             const ToleranceOptions& options = {});
 
  private:
   struct Impl;
