@@ -1,8 +1,12 @@
 // Topological checks of triangle meshes for the watertightness tests.
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <map>
+#include <unordered_map>
 #include <utility>
+#include <vector>
 
 #include "mesh/mesh.h"
 
@@ -45,6 +49,60 @@ inline EdgeCensus censusOf(const TriangleMesh& mesh, double minArea) {
   }
   c.usedVertices = used.size();
   return c;
+}
+
+// T-junctions: a vertex within `eps` of the inside of an edge that only one triangle uses
+// (strictly between its ends, 1e-6 of its length away from them). There the neighbour's side is
+// split and this one is not, so the surface has a crack however small. Vertices are binned in a
+// uniform grid of cells the mean open edge's length; `largestGap` gets the longest such edge.
+inline size_t tJunctionCount(const TriangleMesh& mesh, const EdgeCensus& c, double eps,
+                             double* largestGap = nullptr) {
+  std::vector<std::pair<uint32_t, uint32_t>> open;
+  double total = 0;
+  for (const auto& [edge, count] : c.undirected)
+    if (count == 1) {
+      open.push_back(edge);
+      total += glm::length(glm::dvec3(mesh.positions[edge.first]) -
+                           glm::dvec3(mesh.positions[edge.second]));
+    }
+  if (largestGap) *largestGap = 0;
+  if (open.empty()) return 0;
+  const double cell = std::max(total / double(open.size()), 8 * eps);
+  const auto cellOf = [&](const glm::dvec3& p) { return glm::floor(p / cell); };
+  const auto key = [](const glm::dvec3& k) {
+    return (int64_t(k.x) * 73856093) ^ (int64_t(k.y) * 19349663) ^ (int64_t(k.z) * 83492791);
+  };
+  std::unordered_map<int64_t, std::vector<uint32_t>> bins;
+  for (uint32_t v = 0; v < mesh.positions.size(); ++v)
+    bins[key(cellOf(glm::dvec3(mesh.positions[v])))].push_back(v);
+  size_t found = 0;
+  for (const auto& [a, b] : open) {
+    const glm::dvec3 pa(mesh.positions[a]), pb(mesh.positions[b]), d = pb - pa;
+    const double length2 = glm::dot(d, d);
+    if (length2 == 0) continue;
+    const glm::dvec3 lo = cellOf(glm::min(pa, pb) - eps), hi = cellOf(glm::max(pa, pb) + eps);
+    bool junction = false;
+    for (double x = lo.x; x <= hi.x && !junction; ++x)
+      for (double y = lo.y; y <= hi.y && !junction; ++y)
+        for (double z = lo.z; z <= hi.z && !junction; ++z) {
+          const auto bin = bins.find(key({x, y, z}));
+          if (bin == bins.end()) continue;
+          for (uint32_t v : bin->second) {
+            if (v == a || v == b) continue;
+            const glm::dvec3 p(mesh.positions[v]);
+            const double t = glm::dot(p - pa, d) / length2;
+            if (t > 1e-6 && t < 1 - 1e-6 && glm::length(p - (pa + t * d)) <= eps) {
+              junction = true;
+              break;
+            }
+          }
+        }
+    if (junction) {
+      ++found;
+      if (largestGap) *largestGap = std::max(*largestGap, std::sqrt(length2));
+    }
+  }
+  return found;
 }
 
 }  // namespace tessera::test

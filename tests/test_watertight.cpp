@@ -13,6 +13,7 @@
 #include "mesh_checks.h"
 #include "mesh/shared_edges.h"
 #include "mesh/tessellate.h"
+#include "quadtree/tolerance.h"
 
 using namespace tessera;
 
@@ -184,11 +185,30 @@ TEST_CASE("the teapot has no cracks: open edges lie only on unshared patch sides
                         << c.inconsistentEdges << ", degenerate " << c.degenerateTriangles
                         << "; max deviation " << dev.maxDeviation);
     REQUIRE(cracks == 0);
+    // Cracks are open edges off open sides; a vertex inside an open edge is the other kind.
+    double longest = 0;
+    const size_t tJunctions =
+        test::tJunctionCount(t.mesh, c, 1e-6 * controlPointDiagonal(teapot), &longest);
+    INFO("T-junctions " << tJunctions << ", longest such edge " << longest);
+    REQUIRE(tJunctions == 0);
     REQUIRE(c.overusedEdges == 0);
     REQUIRE(c.degenerateTriangles == 0);
     REQUIRE(c.inconsistentEdges == 0);
     for (const auto& n : t.mesh.normals) REQUIRE(std::isfinite(n.x + n.y + n.z));
   }
+}
+
+TEST_CASE("the T-junction check finds a vertex inside an open edge", "[watertight]") {
+  // Triangle (0, 1, 2) has the edge 0–1; on its other side two triangles meet at vertex 3, the
+  // edge's midpoint: a T-junction. Without vertex 3 on the edge (moved off by 1e-3) it is none.
+  TriangleMesh mesh;
+  mesh.positions = {{0, 0, 0}, {2, 0, 0}, {1, 1, 0}, {1, 0, 0}, {1, -1, 0}};
+  mesh.indices = {0, 1, 2, 0, 4, 3, 3, 4, 1};
+  double longest = 0;
+  REQUIRE(test::tJunctionCount(mesh, test::censusOf(mesh, 0.0), 1e-6, &longest) == 1);
+  REQUIRE(longest == 2.0);
+  mesh.positions[3].y = -1e-3f;
+  REQUIRE(test::tJunctionCount(mesh, test::censusOf(mesh, 0.0), 1e-6) == 0);
 }
 
 TEST_CASE("the Vulkan path gives the same watertight teapot", "[gpu][watertight]") {
