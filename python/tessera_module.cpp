@@ -173,7 +173,7 @@ PYBIND11_MODULE(tessera, m) {
           },
           py::arg("surface"), py::arg("tolerance"), py::arg("weights") = py::none(),
           py::arg("method") = kDefaultToleranceMethod, py::arg("max_per_direction") = 1024,
-          py::arg("max_depth") = 12u,
+          py::arg("max_depth") = 30u,
           "Every triangle within `tolerance` (model units) of the surface: method 'adaptive' "
           "(rule T's quad-tree) or 'uniform' (a grid per patch from Filip's bound)");
 

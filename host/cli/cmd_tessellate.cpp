@@ -31,7 +31,7 @@ struct TessellateArgs {
   std::string tolerance;  // --tolerance: rule T's δ, "0.01" or "0.1%"; empty: the default 0.1%
   float linearity = 0.1f;
   float flatness = 0.1f;
-  uint32_t maxDepth = 12;
+  std::optional<uint32_t> maxDepth;  // --max-depth; else 12 for rules A-D, 30 for T
   int samples = 5;
   std::string grid = "8";  // rule A: "N" (N×N cells) or "NxM" (N along u, M along v)
   size_t nodeBudget = size_t(1) << 24;
@@ -69,6 +69,10 @@ void parseGrid(const std::string& text, int& gridU, int& gridV) {
   gridV = number(second);
 }
 
+// Default depths: the paper's 12, and rule T's 30 (host/quadtree: a one-way split is a level).
+constexpr uint32_t kPaperMaxDepth = 12;
+constexpr uint32_t kRuleTMaxDepth = 30;
+
 std::string shortDecimal(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%g", value);
@@ -98,7 +102,8 @@ int run(const TessellateArgs& a) {
   const bool ruleT = options.rule == SplitRule::Tolerance;
   options.linearity = a.linearity;
   options.flatness = a.flatness;
-  options.maxDepth = a.maxDepth;
+  // Rule T may split one direction per level, so it needs about twice the levels.
+  options.maxDepth = a.maxDepth ? *a.maxDepth : ruleT ? kRuleTMaxDepth : kPaperMaxDepth;
   options.samples = a.samples;
   parseGrid(a.grid, options.gridU, options.gridV);
   const StreamFormats formats = parseFormats(a.formats);
@@ -232,7 +237,8 @@ void addTessellateOptions(CLI::App* cmd, TessellateArgs& args) {
       ->capture_default_str();
   cmd->add_option("--flatness", args.flatness, "rules B-D: flatness threshold (1 - Ni·Nj)")
       ->capture_default_str();
-  cmd->add_option("--max-depth", args.maxDepth, "maximum quad-tree depth")->capture_default_str();
+  cmd->add_option("--max-depth", args.maxDepth,
+                  "maximum quad-tree depth (default 12 for rules A-D, 30 for T)");
   cmd->add_option("--samples", args.samples, "S of rules C and D (S×S samples per node)")
       ->capture_default_str();
   cmd->add_option("--grid", args.grid, "rule A's cells per patch: N (N×N) or NxM (N along u)")

@@ -58,7 +58,7 @@ struct RuleOptions {
   double tolerance = 0;               // rule T: δ in model units (> 0); relativeTolerance helps
   int gridU = 8, gridV = 8;           // rule A's grid
   int samples = 5;                    // rules C and D: samples per direction
-  uint32_t maxDepth = 12;             // nodes at this depth are leaves
+  uint32_t maxDepth = 12;             // nodes at this depth are leaves (rule T: give 30)
   size_t maxNodes = size_t(1) << 24;  // more nodes in a tree: LimitError
 };
 
@@ -81,7 +81,8 @@ enum class ToleranceMethod { Adaptive, UniformGrids };
 struct ToleranceOptions {
   ToleranceMethod method = ToleranceMethod::UniformGrids;
   int maxPerDirection = 1024;         // UniformGrids: most cells per direction of one patch
-  uint32_t maxDepth = 12;             // Adaptive: nodes at this depth are leaves
+  uint32_t maxDepth = 30;             // Adaptive: nodes at this depth are leaves (a one-way
+                                      // split is a level, so rule T needs about twice B's 12)
   size_t maxNodes = size_t(1) << 24;  // more nodes (or grid cells): LimitError
 };
 
