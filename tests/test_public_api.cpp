@@ -175,9 +175,13 @@ TEST_CASE("public API: a tolerance is kept at every sampled point of every trian
     for (int k = 0; k < 16; ++k) exact.cp.push_back({xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]});
     if (w) exact.weights = weights;
 
+    for (const tessera::ToleranceMethod method :
+         {tessera::ToleranceMethod::Adaptive, tessera::ToleranceMethod::UniformGrids}) {
     size_t previousTriangles = 0;
     for (double tolerance : {1e-2, 1e-3}) {
-      const tessera::Mesh mesh = tessellator.tessellateToTolerance(patches, tolerance);
+      tessera::ToleranceOptions how;
+      how.method = method;
+      const tessera::Mesh mesh = tessellator.tessellateToTolerance(patches, tolerance, how);
       requireConsistent(mesh, 1);
       REQUIRE(mesh.triangleCount() > previousTriangles);  // tighter: more triangles
       previousTriangles = mesh.triangleCount();
@@ -200,9 +204,12 @@ TEST_CASE("public API: a tolerance is kept at every sampled point of every trian
             const glm::dvec3 s = tessera::patchPoint(exact, u, v);
             worst = std::max(worst, std::hypot(p[0] - s.x, p[1] - s.y, p[2] - s.z));
           }
-      INFO("tolerance " << tolerance << (w ? " rational" : " polynomial"));
+      INFO("tolerance " << tolerance << (w ? " rational" : " polynomial") << ", method "
+                         << (method == tessera::ToleranceMethod::Adaptive ? "adaptive" : "uniform")
+                         << ": " << mesh.triangleCount() << " triangles, worst " << worst);
       REQUIRE(worst <= tolerance + 1e-6);  // fp32 positions
       REQUIRE(worst > tolerance / 50);     // and the grid is not absurdly fine
+    }
     }
   }
 }

@@ -136,6 +136,8 @@ Mesh Tessellator::tessellateToTolerance(const std::vector<Patch>& patches, doubl
                                         const ToleranceOptions& options) {
   if (!std::isfinite(tolerance) || !(tolerance > 0))
     throw ArgumentError("the tolerance must be finite and > 0, got " + std::to_string(tolerance));
+  static_assert(ToleranceOptions{}.maxDepth == kToleranceMaxDepth,
+                "the public default depth of rule T is the library's");
   if (options.method == ToleranceMethod::Adaptive) {
     RuleOptions adaptive;
     adaptive.rule = Rule::T;

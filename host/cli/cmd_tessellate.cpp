@@ -69,9 +69,8 @@ void parseGrid(const std::string& text, int& gridU, int& gridV) {
   gridV = number(second);
 }
 
-// Default depths: the paper's 12, and rule T's 30 (host/quadtree: a one-way split is a level).
+// The paper's default depth; rule T's is kToleranceMaxDepth (a one-way split is a level).
 constexpr uint32_t kPaperMaxDepth = 12;
-constexpr uint32_t kRuleTMaxDepth = 30;
 
 std::string shortDecimal(double value) {
   char text[32];
@@ -79,8 +78,9 @@ std::string shortDecimal(double value) {
   return text;
 }
 
-// The rule without -m: B, the paper's midpoint rule, until rule T's classifier lands (then T).
-constexpr SplitRule kDefaultRule = SplitRule::Midpoint;
+// The rule without -m: T at the default δ (0.1% of the diagonal): what a user asks first is
+// "within δ of the surface", and rule T answers it with a proof and the fewest triangles.
+constexpr SplitRule kDefaultRule = SplitRule::Tolerance;
 
 // Without -m: rule T when --tolerance is given, else kDefaultRule. --tolerance belongs to rule
 // T only: with -m A..D it would be silently ignored, so it is refused (std::invalid_argument:
@@ -103,7 +103,7 @@ int run(const TessellateArgs& a) {
   options.linearity = a.linearity;
   options.flatness = a.flatness;
   // Rule T may split one direction per level, so it needs about twice the levels.
-  options.maxDepth = a.maxDepth ? *a.maxDepth : ruleT ? kRuleTMaxDepth : kPaperMaxDepth;
+  options.maxDepth = a.maxDepth ? *a.maxDepth : ruleT ? kToleranceMaxDepth : kPaperMaxDepth;
   options.samples = a.samples;
   parseGrid(a.grid, options.gridU, options.gridV);
   const StreamFormats formats = parseFormats(a.formats);
@@ -227,8 +227,8 @@ void addTessellateOptions(CLI::App* cmd, TessellateArgs& args) {
                   "json for the input, obj, ply or glb for the output; give one or both")
       ->delimiter(',');
   cmd->add_option("-m,--method", args.method,
-                  "split rule: T to a tolerance (the default with --tolerance), or the paper's A "
-                  "uniform grid, B midpoint (the default otherwise), C sampled κ max, D true κ max");
+                  "split rule: T to a tolerance (the default), or the paper's A uniform grid, "
+                  "B midpoint, C sampled κ max, D true κ max");
   cmd->add_option("--tolerance", args.tolerance,
                   "rule T: the largest distance from the surface, in model units (0.01) or as a "
                   "percentage of the control points' bounding-box diagonal (0.1%); default 0.1%. "

@@ -79,7 +79,7 @@ double relativeTolerance(const std::vector<Patch>& patches, double fraction);
 enum class ToleranceMethod { Adaptive, UniformGrids };
 
 struct ToleranceOptions {
-  ToleranceMethod method = ToleranceMethod::UniformGrids;
+  ToleranceMethod method = ToleranceMethod::Adaptive;
   int maxPerDirection = 1024;         // UniformGrids: most cells per direction of one patch
   uint32_t maxDepth = 30;             // Adaptive: nodes at this depth are leaves (a one-way
                                       // split is a level, so rule T needs about twice B's 12)
