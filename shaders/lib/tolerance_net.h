@@ -7,40 +7,32 @@
 #ifndef TESSERA_TOLERANCE_NET_H
 #define TESSERA_TOLERANCE_NET_H
 
-// gNet.h restricted to rect = (u0, v0, u1, v1) and reparametrised to [0,1]², in place.
+// Restricts `count` rows of gNet.h to [t0, t1] (de Casteljau), in place: entry k of row r is
+// at r·rowStride + k·entryStride, `degree` + 1 entries a row.
+void restrictDivisionNetRows(int count, int degree, int rowStride, int entryStride, float t0,
+                             float t1) {
+  BernsteinRow4 row;
+  for (int r = 0; r < kGeneralMaxOrder; ++r) {
+    if (r >= count) break;
+    for (int k = 0; k < kGeneralMaxOrder; ++k) {
+      if (k > degree) break;
+      row.c[k] = gNet.h[r * rowStride + k * entryStride];
+    }
+    restrictBernsteinRow(row, degree, t0, t1);
+    for (int k = 0; k < kGeneralMaxOrder; ++k) {
+      if (k > degree) break;
+      gNet.h[r * rowStride + k * entryStride] = row.c[k];
+    }
+  }
+}
+
+// gNet.h restricted to rect = (u0, v0, u1, v1) and reparametrised to [0,1]², in place: along u
+// (the m + 1 columns j, entries i at i·(m+1) + j), then along v (the n + 1 rows i).
 void restrictDivisionNet(vec4 rect) {
   int n = gNet.n;
   int m = gNet.m;
-  int s = m + 1;
-  BernsteinRow4 row;
-  if (rect.x != 0.0f || rect.z != 1.0f) {
-    for (int j = 0; j < kGeneralMaxOrder; ++j) {
-      if (j > m) break;
-      for (int i = 0; i < kGeneralMaxOrder; ++i) {
-        if (i > n) break;
-        row.c[i] = gNet.h[i * s + j];
-      }
-      restrictBernsteinRow(row, n, rect.x, rect.z);
-      for (int i = 0; i < kGeneralMaxOrder; ++i) {
-        if (i > n) break;
-        gNet.h[i * s + j] = row.c[i];
-      }
-    }
-  }
-  if (rect.y != 0.0f || rect.w != 1.0f) {
-    for (int i = 0; i < kGeneralMaxOrder; ++i) {
-      if (i > n) break;
-      for (int j = 0; j < kGeneralMaxOrder; ++j) {
-        if (j > m) break;
-        row.c[j] = gNet.h[i * s + j];
-      }
-      restrictBernsteinRow(row, m, rect.y, rect.w);
-      for (int j = 0; j < kGeneralMaxOrder; ++j) {
-        if (j > m) break;
-        gNet.h[i * s + j] = row.c[j];
-      }
-    }
-  }
+  if (rect.x != 0.0f || rect.z != 1.0f) restrictDivisionNetRows(m + 1, n, 1, m + 1, rect.x, rect.z);
+  if (rect.y != 0.0f || rect.w != 1.0f) restrictDivisionNetRows(n + 1, m, m + 1, 1, rect.y, rect.w);
 }
 
 // (M_ss, M_st, M_tt) of the polynomial net in gNet.h: n(n−1)·max‖Δ²_s P‖, n·m·max‖Δ_sΔ_t P‖,
