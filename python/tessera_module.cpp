@@ -151,7 +151,7 @@ PYBIND11_MODULE(tessera, m) {
           py::arg("surface"), py::arg("weights") = py::none(), py::arg("rule") = "B",
           py::arg("linearity") = 0.1f, py::arg("flatness") = 0.1f,
           py::arg("grid") = std::make_pair(8, 8), py::arg("samples") = 5,
-          py::arg("max_depth") = 12u, py::arg("tolerance") = 0.0,
+          py::arg("max_depth") = 0u, py::arg("tolerance") = 0.0,
           "Adaptive tessellation of a file path or control points by split rule A-D, or T "
           "with `tolerance` (model units)")
       .def(

@@ -74,6 +74,11 @@ TESSERA_CONST(uint, kCauseUniform, 4u);   // a cell of rule (A)'s uniform grid
 TESSERA_CONST(uint, kCauseSplitU, 5u);    // not a leaf: two children, split at u = NodeDecision.split.x
 TESSERA_CONST(uint, kCauseSplitV, 6u);    // not a leaf: two children, split at v = NodeDecision.split.y
 TESSERA_CONST(uint, kCauseWithinTolerance, 7u);  // rule T: the proven bound is ≤ δ
+// Rule T: not a leaf: NodeDecision.pad = k_u | k_v << 8 equal children per direction, the
+// fewest whose estimated bound is within δ (lib/tolerance_bound.h; docs/quadtree.md).
+TESSERA_CONST(uint, kCauseSplitGrid, 8u);
+// The largest cap on rule T's equal children per direction (ClassifyPush.toleranceSplitCap).
+TESSERA_CONST(uint, kToleranceSplitCapMax, 16u);
 // Rule T on rational patches: the pieces per direction on which the `split` bounds take the
 // weight ratios where a weight of the node's net vanishes (DivisionOptions::ratioPieces).
 TESSERA_CONST(int, kToleranceRatioPieces, 4);
@@ -105,7 +110,7 @@ struct NodeDecision {
   // (A + B)/8 with its fp32 guard (lib/tolerance_bound.h); split = the node's midpoint.
   float linearity;  // largest 1 − Ti·Tj over the 4 edges (0 where a tangent is missing)
   float flatness;   // largest 1 − Ni·Nj over the 8 normal pairs (0 where a normal is missing)
-  uint pad;
+  uint pad;         // rule T, kCauseSplitGrid: the child counts k_u | k_v << 8; else 0
 };
 
 // Push constants of quadtree.comp.glsl. The split rule and S are specialization constants.
@@ -117,7 +122,7 @@ struct ClassifyPush {
   uint maxDepth;
   uint nodeCount;
   float tolerance;  // δ of rule T (model units); 0 for rules A-D
-  uint pad1;
+  uint toleranceSplitCap;  // rule T: most equal children per direction (1: midpoints only); 0 for A-D
 };
 
 

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "api/convert.h"
 #include "geometry/bezier.h"
 #include "io/bpt_reader.h"
 #include "mesh/tessellate.h"
@@ -212,6 +213,21 @@ TEST_CASE("public API: a tolerance is kept at every sampled point of every trian
     }
     }
   }
+}
+
+TEST_CASE("public API: RuleOptions' default depth is the rule's own, rule T's deeper",
+          "[api]") {
+  tessera::RuleOptions options;
+  for (tessera::Rule rule : {tessera::Rule::A, tessera::Rule::B, tessera::Rule::C,
+                             tessera::Rule::D, tessera::Rule::T}) {
+    options.rule = rule;
+    const uint32_t depth = tessera::api::toQuadtreeOptions(options).maxDepth;
+    INFO("rule " << int(rule) << ": depth " << depth);
+    REQUIRE(depth == (rule == tessera::Rule::T ? tessera::kToleranceMaxDepth
+                                               : tessera::QuadtreeOptions{}.maxDepth));
+  }
+  options.maxDepth = 7;  // a depth the caller gives is kept, rule T included
+  REQUIRE(tessera::api::toQuadtreeOptions(options).maxDepth == 7);
 }
 
 TEST_CASE("public API: Vulkan gives the CPU's mesh on the teapot", "[gpu][api]") {

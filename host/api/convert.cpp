@@ -71,7 +71,11 @@ QuadtreeOptions toQuadtreeOptions(const RuleOptions& options) {
   q.gridU = options.gridU;
   q.gridV = options.gridV;
   q.samples = options.samples;
-  q.maxDepth = options.maxDepth;
+  // 0 asks for the rule's default depth: the library's (12), or rule T's deeper limit.
+  if (options.maxDepth != 0)
+    q.maxDepth = options.maxDepth;
+  else if (q.rule == SplitRule::Tolerance)
+    q.maxDepth = kToleranceMaxDepth;
   q.nodeBudget = options.maxNodes;
   q.tolerance = options.tolerance;
   return q;

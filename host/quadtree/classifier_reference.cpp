@@ -247,6 +247,28 @@ SecondBounds toleranceBounds(const PatchContext& p, const Rect& r) {
   return {d.uu, d.uv, d.vv};
 }
 
+// The fewest equal children k_u × k_v (each ≤ the cap) whose estimated bound
+// (M_ss/k_u² + 2·M_st/(k_u·k_v) + M_tt/k_v²)/8 is within δ, as k_u | k_v << 8; 0 if none
+// (the double twin of toleranceGridCounts in lib/tolerance_bound.h, without its fp32 guard).
+uint32_t toleranceGridCounts(const SecondBounds& m, double tolerance, uint32_t cap) {
+  uint32_t best = 0, bestCount = cap * cap + 1;
+  double bestEstimate = 0;
+  for (uint32_t ku = 1; ku <= cap; ++ku)
+    for (uint32_t kv = 1; kv <= cap && ku * kv <= bestCount; ++kv) {
+      if (ku * kv < 2) continue;
+      const double fu = ku, fv = kv;
+      const double estimate = (m.ss / (fu * fu) + 2.0 * m.st / (fu * fv) + m.tt / (fv * fv)) / 8.0;
+      if (!(estimate <= tolerance)) continue;
+      if (ku * kv < bestCount || estimate < bestEstimate) {
+        best = ku | (kv << 8);
+        bestCount = ku * kv;
+        bestEstimate = estimate;
+      }
+      break;
+    }
+  return best;
+}
+
 gpu::NodeDecision toleranceDecision(const PatchContext& p, const gpu::QuadNode& node,
                                     const QuadtreeOptions& o) {
   Rect r{node.rect.x, node.rect.y, node.rect.z, node.rect.w};
@@ -256,13 +278,16 @@ gpu::NodeDecision toleranceDecision(const PatchContext& p, const gpu::QuadNode& 
   d.split = gpu::vec4(float(r.u(0.5)), float(r.v(0.5)), 0.0f, 0.0f);
   d.linearity = float(a + b > 0.0 ? a / (a + b) : 0.5);
   d.flatness = float(bound);
-  if (bound <= o.tolerance)
+  if (bound <= o.tolerance) {
     d.cause = gpu::kCauseWithinTolerance;
-  else if (node.level >= o.maxDepth)
+  } else if (node.level >= o.maxDepth) {
     d.cause = gpu::kCauseMaxDepth;
-  else if (std::min(r.u1 - r.u0, r.v1 - r.v0) < o.minSize)
+  } else if (std::min(r.u1 - r.u0, r.v1 - r.v0) < o.minSize) {
     d.cause = gpu::kCauseMinSize;
-  else {
+  } else if (const uint32_t grid = toleranceGridCounts(m, o.tolerance, o.toleranceSplitCap)) {
+    d.cause = gpu::kCauseSplitGrid;
+    d.pad = grid;
+  } else {
     const bool splitU = !(a < 0.5 * b), splitV = !(b < 0.5 * a);
     d.cause = splitU && !splitV   ? gpu::kCauseSplitU
               : splitV && !splitU ? gpu::kCauseSplitV

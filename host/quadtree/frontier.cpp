@@ -6,6 +6,7 @@
 #include "common/stopwatch.h"
 #include "eval/evaluator.h"
 #include "geometry/general_patch.h"
+#include "quadtree/node_split.h"
 #include "quadtree/quadtree.h"
 
 namespace tessera {
@@ -28,6 +29,10 @@ void validateOptions(const QuadtreeOptions& o) {
   if (o.gridU < 1 || o.gridV < 1 || o.gridU > 4096 || o.gridV > 4096)
     throw std::invalid_argument("the uniform grid of rule A must be 1..4096 cells per side");
   if (o.nodeBudget == 0) throw std::invalid_argument("the node budget must be > 0");
+  if (o.rule == SplitRule::Tolerance &&
+      (o.toleranceSplitCap < 1 || o.toleranceSplitCap > gpu::kToleranceSplitCapMax))
+    throw std::invalid_argument("rule T's split cap must be 1.." +
+                                std::to_string(gpu::kToleranceSplitCapMax) + " children per direction");
   if (o.rule == SplitRule::Tolerance && !(o.tolerance > 0 && std::isfinite(o.tolerance) &&
                                            float(o.tolerance) > 0.0f))
     throw std::invalid_argument("the tolerance of rule T must be finite and > 0 in fp32");
@@ -104,14 +109,23 @@ uint32_t ruleConstant(SplitRule rule) {
 
 gpu::ClassifyPush classifyParams(const QuadtreeOptions& o, uint32_t nodeCount) {
   return {o.linearity, o.flatness, o.minSize, kDegenerateEpsFp32, o.maxDepth, nodeCount,
-          static_cast<float>(o.tolerance), 0};
+          static_cast<float>(o.tolerance),
+          o.rule == SplitRule::Tolerance ? o.toleranceSplitCap : 0u};
+}
+
+size_t maxChildrenPerNode(const QuadtreeOptions& options) {
+  if (options.rule != SplitRule::Tolerance) return 4;
+  return std::max<size_t>(4, size_t(options.toleranceSplitCap) * options.toleranceSplitCap);
 }
 
 size_t frontierBatchNodes(const QuadtreeOptions& options, size_t classifierLimit) {
-  // Held at the peak: ≤ 3 waiting batches for each level 1..maxDepth, the batch in flight
-  // (with its decisions) and its ≤ 4 batches of children.
+  // Held at the peak, with c = the most children a node makes: ≤ c − 1 waiting batches for
+  // each level 1..maxDepth, the batch in flight (with its decisions) and its ≤ c batches of
+  // children (c = 4: 3·maxDepth + 5 batches).
+  const size_t c = maxChildrenPerNode(options);
   const size_t bytesPerBatchNode =
-      kFrontierBytesPerNode * (3 * size_t(options.maxDepth) + 5) + sizeof(gpu::NodeDecision);
+      kFrontierBytesPerNode * ((c - 1) * size_t(options.maxDepth) + c + 1) +
+      sizeof(gpu::NodeDecision);
   const size_t byBudget = options.frontierBudgetBytes / bytesPerBatchNode;
   if (byBudget < 1)
     throw std::invalid_argument("the frontier budget of " +
@@ -127,16 +141,18 @@ namespace {
 // Patch groups: the patches one tree may take at once (what the classifier's patch buffer
 // holds, and no more roots than one batch). Usually one group, the whole set, uncopied.
 
-// Nodes of one level waiting for the classifier, with their paths.
+// Nodes of one level waiting for the classifier, with their paths and the bits each path uses.
 struct Batch {
   uint32_t level = 0;
   std::vector<gpu::QuadNode> nodes;
   std::vector<uint64_t> paths;
+  std::vector<uint8_t> pathBits;
 };
 
 // Pushes `nodes` as batches of at most `batchNodes`, the first on top (so it runs next).
 void pushBatches(std::vector<Batch>& stack, uint32_t level, std::vector<gpu::QuadNode>& nodes,
-                 std::vector<uint64_t>& paths, size_t batchNodes) {
+                 std::vector<uint64_t>& paths, std::vector<uint8_t>& pathBits,
+                 size_t batchNodes) {
   const size_t count = (nodes.size() + batchNodes - 1) / batchNodes;
   for (size_t k = count; k-- > 0;) {
     const size_t first = k * batchNodes, last = std::min(nodes.size(), first + batchNodes);
@@ -145,14 +161,17 @@ void pushBatches(std::vector<Batch>& stack, uint32_t level, std::vector<gpu::Qua
     if (count == 1) {
       batch.nodes.swap(nodes);
       batch.paths.swap(paths);
+      batch.pathBits.swap(pathBits);
     } else {
       batch.nodes.assign(nodes.begin() + long(first), nodes.begin() + long(last));
       batch.paths.assign(paths.begin() + long(first), paths.begin() + long(last));
+      batch.pathBits.assign(pathBits.begin() + long(first), pathBits.begin() + long(last));
     }
     stack.push_back(std::move(batch));
   }
   nodes.clear();
   paths.clear();
+  pathBits.clear();
 }
 
 void addLevelStats(LevelStats& total, const LevelStats& batch) {
@@ -172,17 +191,20 @@ void buildGroupTree(const PatchSet& patches, uint32_t firstPatch, const Quadtree
                     QuadtreeResult& result) {
   std::vector<gpu::QuadNode> roots;
   std::vector<uint64_t> rootPaths;
+  std::vector<uint8_t> rootPathBits;
   for (uint32_t p = 0; p < patches.size(); ++p) {
     roots.push_back({gpu::vec4(0.0f, 0.0f, 1.0f, 1.0f), p, 0, 0, 0});
     rootPaths.push_back(0);
+    rootPathBits.push_back(0);
   }
   classifier.beginTree(patches);
   std::vector<Batch> stack;
   size_t waiting = roots.size();  // nodes in `stack`
-  pushBatches(stack, 0, roots, rootPaths, batchNodes);
+  pushBatches(stack, 0, roots, rootPaths, rootPathBits, batchNodes);
   std::vector<gpu::NodeDecision> decisions;
   std::vector<gpu::QuadNode> next;
   std::vector<uint64_t> nextPaths;
+  std::vector<uint8_t> nextPathBits;
   while (!stack.empty()) {
     Batch batch = std::move(stack.back());
     stack.pop_back();
@@ -197,37 +219,34 @@ void buildGroupTree(const PatchSet& patches, uint32_t firstPatch, const Quadtree
     const Stopwatch stopwatch;
     next.clear();
     nextPaths.clear();
+    nextPathBits.clear();
     for (size_t i = 0; i < batch.nodes.size(); ++i) {
       const gpu::QuadNode& n = batch.nodes[i];
       const gpu::NodeDecision& d = decisions[i];
-      float us = d.split.x, vs = d.split.y;
+      const SplitCounts counts = splitCounts(d);
       uint32_t cause = d.cause;
-      // A split point that does not fall strictly inside (fp32 ran out of resolution)
-      // would make empty children: end the node here instead.
-      const bool splitsU = cause == gpu::kCauseSplit || cause == gpu::kCauseSplitU;
-      const bool splitsV = cause == gpu::kCauseSplit || cause == gpu::kCauseSplitV;
-      if ((splitsU && !(us > n.rect.x && us < n.rect.z)) ||
-          (splitsV && !(vs > n.rect.y && vs < n.rect.w)))
+      // Child k = (i, j) of a k_u × k_v split gets the code i | j << bits(k_u) after its
+      // parent's path: 2 bits a level for the 2 × 2 splits of rules B–D (the quadrant), fewer
+      // or more for rule T's one-way and grid splits; siblings differ in the bits they add.
+      const uint32_t used = batch.pathBits[i];
+      const uint32_t bitsU = pathCodeBits(counts.u), bitsV = pathCodeBits(counts.v);
+      const size_t first = next.size();
+      // A path that would pass 64 bits, or lines fp32 cannot place strictly inside (its
+      // resolution ran out), would not make distinct children: end the node here instead.
+      if (counts.splits() && (used + bitsU + bitsV > 64 || !appendChildren(n, d, counts, next)))
         cause = gpu::kCauseMinSize;
-      if (cause != gpu::kCauseSplit && cause != gpu::kCauseSplitU &&
-          cause != gpu::kCauseSplitV) {
+      if (!counts.splits() || cause == gpu::kCauseMinSize) {
         result.leaves.push_back({n.rect, firstPatch + n.patchIndex, level, cause, batch.paths[i],
-                                 d.linearity, d.flatness, gpu::vec2(us, vs)});
+                                 d.linearity, d.flatness, gpu::vec2(d.split.x, d.split.y)});
         result.depth = std::max(result.depth, level);
         ++stats.leaves;
         continue;
       }
       ++stats.splits;
-      // A one-way split (rule T) makes two children named by the quadrants they would
-      // start in: 0 and 1 for u, 0 and 2 for v, so paths compare across backends.
-      const gpu::vec4 r = n.rect;
-      const float u1 = splitsU ? us : r.z, v1 = splitsV ? vs : r.w;
-      const gpu::vec4 children[4] = {{r.x, r.y, u1, v1}, {us, r.y, r.z, v1},
-                                     {r.x, vs, u1, r.w}, {us, vs, r.z, r.w}};
-      for (uint64_t q = 0; q < 4; ++q) {
-        if (((q & 1) && !splitsU) || ((q & 2) && !splitsV)) continue;
-        next.push_back({children[q], n.patchIndex, level + 1, 0, 0});
-        nextPaths.push_back(batch.paths[i] | (q << (2 * level)));
+      for (size_t k = 0; k < next.size() - first; ++k) {
+        const uint64_t code = uint64_t(k % counts.u) | (uint64_t(k / counts.u) << bitsU);
+        nextPaths.push_back(batch.paths[i] | (code << used));  // used < 64 here
+        nextPathBits.push_back(uint8_t(used + bitsU + bitsV));
       }
     }
     total += next.size();
@@ -238,7 +257,7 @@ void buildGroupTree(const PatchSet& patches, uint32_t firstPatch, const Quadtree
     result.peakFrontierNodes =
         std::max(result.peakFrontierNodes, waiting + batch.nodes.size() + next.size());
     waiting += next.size();
-    pushBatches(stack, level + 1, next, nextPaths, batchNodes);
+    pushBatches(stack, level + 1, next, nextPaths, nextPathBits, batchNodes);
     stats.frontierMs = stopwatch.elapsedMs();
     if (result.levels.size() <= level) result.levels.resize(level + 1);
     result.levels[level].level = level;

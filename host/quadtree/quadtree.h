@@ -41,6 +41,9 @@ struct LevelStats {
 // Rule T's maximum depth: a level may split one direction only, so a patch needs up to about
 // twice the levels of a four-way tree (the tea set at δ = 10⁻⁴ of its size stays well within).
 constexpr uint32_t kToleranceMaxDepth = 30;
+// Rule T's default cap on equal children per direction (QuadtreeOptions::toleranceSplitCap),
+// the cap with the fewest tea-set triangles (docs/quadtree.md, "Rule T: tolerance").
+constexpr uint32_t kToleranceSplitCap = 4;
 
 struct QuadtreeOptions {
   SplitRule rule = SplitRule::Midpoint;
@@ -51,6 +54,10 @@ struct QuadtreeOptions {
   int samples = 5;                 // S of rules C and D
   int gridU = 8, gridV = 8;        // N×M of rule A
   double tolerance = 0;            // δ of rule T in model units: every emitted triangle within δ
+  // Rule T: a node that fails δ splits into the fewest k_u × k_v equal children whose
+  // estimated bound is within δ when both counts are ≤ this cap (1..16; 1: midpoint splits
+  // only), else at its midpoint along u, v or both.
+  uint32_t toleranceSplitCap = kToleranceSplitCap;
   size_t nodeBudget = 1u << 24;    // most nodes in the tree, all levels together
   // Most bytes the frontier may hold at once: nodes waiting for classification, the batch in
   // flight with its decisions, and that batch's children. A level larger than that is
@@ -70,8 +77,10 @@ struct QuadLeaf {
   uint32_t patchIndex;
   uint32_t level;
   uint32_t cause;  // gpu::kCause*
-  uint64_t path;   // child quadrants from the root, 2 bits per level (0: u-low v-low, 1: u-high
-                   // v-low, 2: u-low v-high, 3: u-high v-high), for comparing trees
+  uint64_t path;   // the child codes from the root, for comparing trees: a node split
+                   // k_u × k_v gives child (i, j) the code i | j << ⌈log₂k_u⌉ in the next
+                   // ⌈log₂k_u⌉ + ⌈log₂k_v⌉ bits (node_split.h). Rules B–D: 2 bits a level,
+                   // the quadrant (0: u-low v-low, 1: u-high v-low, 2: u-low v-high, 3: both high)
   float linearity;  // rule T: A/(A + B), the u share of the bound (tolerance_bound.h)
   float flatness;   // rule T: the node's proven deviation bound (model units)
   gpu::vec2 split;  // (us, vs) the classification chose (rule T: the centre, the fan apex)
@@ -87,13 +96,16 @@ struct QuadtreeResult {
   size_t peakFrontierNodes = 0;  // most nodes held at once (see frontierBudgetBytes)
 };
 
-// The frontier's bytes per node it holds (a QuadNode and its path; a classified node also
-// has a NodeDecision), for QuadtreeOptions::frontierBudgetBytes.
-constexpr size_t kFrontierBytesPerNode = sizeof(gpu::QuadNode) + sizeof(uint64_t);
+// The frontier's bytes per node it holds (a QuadNode, its path and the path's bit count; a
+// classified node also has a NodeDecision), for QuadtreeOptions::frontierBudgetBytes.
+constexpr size_t kFrontierBytesPerNode = sizeof(gpu::QuadNode) + sizeof(uint64_t) + 1;
+// The most children one node can make under `options`: 4, or toleranceSplitCap² for rule T.
+size_t maxChildrenPerNode(const QuadtreeOptions& options);
 // Nodes per classifier batch under `options` and a classifier that takes at most
-// `classifierLimit` nodes at once. Depth-first batching leaves at most three batches of
-// children waiting per level, so batch = budget / (3·(maxDepth + 1) + 5) nodes keeps the
-// whole frontier within the budget. Throws std::invalid_argument when it would be < 1.
+// `classifierLimit` nodes at once. Depth-first batching leaves at most c − 1 batches of
+// children waiting per level (c = maxChildrenPerNode), so batch = budget /
+// ((c − 1)·maxDepth + c + 1) nodes keeps the whole frontier within the budget (c = 4:
+// 3·maxDepth + 5). Throws std::invalid_argument when it would be < 1.
 size_t frontierBatchNodes(const QuadtreeOptions& options, size_t classifierLimit);
 
 // The node budget would be exceeded: names the patch with the most frontier nodes and the level.

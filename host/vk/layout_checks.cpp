@@ -21,10 +21,13 @@ static_assert(sizeof(QuadNode) == 32 && offsetof(QuadNode, patchIndex) == 16 &&
                   offsetof(QuadNode, level) == 20,
               "QuadNode layout");
 static_assert(sizeof(NodeDecision) == 32 && offsetof(NodeDecision, cause) == 16 &&
-                  offsetof(NodeDecision, linearity) == 20 && offsetof(NodeDecision, flatness) == 24,
+                  offsetof(NodeDecision, linearity) == 20 && offsetof(NodeDecision, flatness) == 24 &&
+                  offsetof(NodeDecision, pad) == 28,
               "NodeDecision layout");
 static_assert(sizeof(ClassifyPush) == 32 && offsetof(ClassifyPush, maxDepth) == 16 &&
-                  offsetof(ClassifyPush, nodeCount) == 20,
+                  offsetof(ClassifyPush, nodeCount) == 20 &&
+                  offsetof(ClassifyPush, tolerance) == 24 &&
+                  offsetof(ClassifyPush, toleranceSplitCap) == 28,
               "ClassifyPush layout");
 static_assert(sizeof(GeneralPatch) == 16 && offsetof(GeneralPatch, degreeV) == 4 &&
                   offsetof(GeneralPatch, rational) == 8 && offsetof(GeneralPatch, firstPoint) == 12,

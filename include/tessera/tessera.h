@@ -58,7 +58,8 @@ struct RuleOptions {
   double tolerance = 0;               // rule T: δ in model units (> 0); relativeTolerance helps
   int gridU = 8, gridV = 8;           // rule A's grid
   int samples = 5;                    // rules C and D: samples per direction
-  uint32_t maxDepth = 12;             // nodes at this depth are leaves (rule T: give 30)
+  uint32_t maxDepth = 0;              // nodes at this depth are leaves; 0: the rule's default
+                                      // (12; rule T 30, as its one-way splits are levels)
   size_t maxNodes = size_t(1) << 24;  // more nodes in a tree: LimitError
 };
 

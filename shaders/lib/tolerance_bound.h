@@ -129,10 +129,57 @@ vec4 bicubicSecondBounds(IN(BicubicPatch) bp, vec4 rect) {
   return vec4(mss, mst, mtt, guard);
 }
 
+// Rule T's equal split of a node that fails δ: the fewest children k_u·k_v (each count at
+// most the cap) whose estimated bound (1 + 2⁻¹⁰)·(M_ss/k_u² + 2·M_st/(k_u·k_v) + M_tt/k_v²)/8
+// + guard is within δ, as k_u | k_v << 8; 0 when no counts within the cap reach δ. Restricting
+// a polynomial net to 1/k of the interval scales its second differences by at most 1/k² (the
+// sub-net's scaled differences are convex combinations of the parent's), so for polynomial
+// patches the children's own bounds are at most this estimate, up to rounding; rational
+// children just split again where it was optimistic. Compared multiplied out by k_u²·k_v²
+// (no division: GPU and mirror agree bit for bit); among equal counts, the smaller estimate.
+uint toleranceGridCounts(vec4 bounds, float tolerance, uint cap) {
+  PRECISE float room = tolerance - bounds.w;
+  uint best = 0u;
+  uint bestCount = cap * cap + 1u;
+  PRECISE float bestNum = 0.0f;
+  PRECISE float bestDen = 1.0f;
+  for (uint ku = 1u; ku <= kToleranceSplitCapMax; ++ku) {
+    if (ku > cap) break;
+    for (uint kv = 1u; kv <= kToleranceSplitCapMax; ++kv) {
+      if (kv > cap || ku * kv > bestCount) break;
+      if (ku * kv < 2u) continue;
+      PRECISE float fu = float(ku);
+      PRECISE float fv = float(kv);
+      PRECISE float uu = fu * fu;
+      PRECISE float vv = fv * fv;
+      PRECISE float uv = fu * fv;
+      PRECISE float twoSt = 2.0f * bounds.y;
+      PRECISE float num = (bounds.x * vv + twoSt * uv) + bounds.z * uu;
+      PRECISE float scaled = num * 0.125f;
+      PRECISE float guarded = scaled * kToleranceRelativeGuard;
+      PRECISE float den = uu * vv;
+      PRECISE float allowed = room * den;
+      if (!(guarded <= allowed)) continue;
+      PRECISE float lhs = num * bestDen;
+      PRECISE float rhs = bestNum * den;
+      if (ku * kv < bestCount || lhs < rhs) {
+        best = ku | (kv << 8u);
+        bestCount = ku * kv;
+        bestNum = num;
+        bestDen = den;
+      }
+      break;  // a larger k_v only adds children
+    }
+  }
+  return best;
+}
+
 // The decision of rule T from the node's (M_ss, M_st, M_tt, rounding guard). With
 // A = M_ss + M_st and B = M_tt + M_st, every triangle the leaf can emit (its two triangles, or
 // a fan from its centre) is within (A + B)/8 of the surface (docs/quadtree.md). Not within
-// δ: split u where A ≥ B/2, v where B ≥ A/2 (both when neither holds: a NaN bound).
+// δ: k_u × k_v equal children where counts within the cap reach δ (toleranceGridCounts);
+// else split at the midpoint along u where A ≥ B/2, v where B ≥ A/2 (both when neither
+// holds: a NaN bound).
 NodeDecision toleranceDecision(vec4 bounds, IN(QuadNode) node, IN(ClassifyPush) params) {
   vec4 r = node.rect;
   PRECISE float a = bounds.x + bounds.y;
@@ -156,11 +203,15 @@ NodeDecision toleranceDecision(vec4 bounds, IN(QuadNode) node, IN(ClassifyPush) 
   } else if (min(r.z - r.x, r.w - r.y) < params.minSize) {
     d.cause = kCauseMinSize;
   } else {
+    uint grid = toleranceGridCounts(bounds, params.tolerance, params.toleranceSplitCap);
     PRECISE float halfA = 0.5f * a;
     PRECISE float halfB = 0.5f * b;
     bool splitU = !(a < halfB);
     bool splitV = !(b < halfA);
-    if (splitU && !splitV) {
+    if (grid != 0u) {
+      d.cause = kCauseSplitGrid;
+      d.pad = grid;
+    } else if (splitU && !splitV) {
       d.cause = kCauseSplitU;
     } else if (splitV && !splitU) {
       d.cause = kCauseSplitV;
