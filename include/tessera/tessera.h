@@ -48,7 +48,8 @@ std::vector<Patch> patchesFromArrays(int degreeU, int degreeV, size_t patchCount
 // How the adaptive quad-tree splits (docs/quadtree.md): A a uniform gridU×gridV grid per
 // patch, B at the midpoint, C at the sampled curvature maximum, D at the true one (the paper's
 // four); T to a tolerance: a node is a leaf once its proven deviation bound is within
-// RuleOptions::tolerance, else it is split in u, v or both (tessellateToTolerance's default).
+// RuleOptions::tolerance, else it is split into up to 4 × 4 equal parts where that reaches
+// the tolerance, or in u, v or both at its midpoint (tessellateToTolerance's default).
 enum class Rule { A, B, C, D, T };
 
 struct RuleOptions {
