@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <set>
+#include <tuple>
 
 #include "common/stopwatch.h"
 #include "division/count.h"
@@ -112,6 +114,10 @@ TEST_CASE("rule T: the tea set within δ in both metrics", "[tolerance]") {
                 << "), depth " << t.stats.depth << ", parametric " << par.maxDeviation
                 << ", geometric " << geo.maxDeviation);
       for (const auto& leaf : t.tree.leaves) REQUIRE(leaf.cause == gpu::kCauseWithinTolerance);
+      // Paths name leaves uniquely, grid splits' variable-width codes included.
+      std::set<std::tuple<uint32_t, uint32_t, uint64_t>> paths;
+      for (const auto& leaf : t.tree.leaves) paths.insert({leaf.patchIndex, leaf.level, leaf.path});
+      REQUIRE(paths.size() == t.tree.leaves.size());
       REQUIRE(par.maxDeviation <= delta);
       REQUIRE(geo.maxDeviation <= delta);
     }
