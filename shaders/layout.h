@@ -69,8 +69,8 @@ TESSERA_CONST(uint, kCauseFlat, 1u);      // every linearity and flatness test p
 TESSERA_CONST(uint, kCauseMaxDepth, 2u);  // reached the maximum depth
 TESSERA_CONST(uint, kCauseMinSize, 3u);   // smaller than the minimum parameter size
 TESSERA_CONST(uint, kCauseUniform, 4u);   // a cell of rule (A)'s uniform grid
-// Rule T splits only where the bound needs it: along u alone, along v alone, or both
-// (kCauseSplit), always at the node's midpoint.
+// Rule T's midpoint splits go only where the bound needs them: along u alone, along v alone,
+// or both (kCauseSplit); its grid splits are kCauseSplitGrid.
 TESSERA_CONST(uint, kCauseSplitU, 5u);    // not a leaf: two children, split at u = NodeDecision.split.x
 TESSERA_CONST(uint, kCauseSplitV, 6u);    // not a leaf: two children, split at v = NodeDecision.split.y
 TESSERA_CONST(uint, kCauseWithinTolerance, 7u);  // rule T: the proven bound is ≤ δ

@@ -1,7 +1,8 @@
 // Rule T (issue 15; docs/quadtree.md, "Rule T: tolerance") in fp32: the node's proven bound
 // on the parametric deviation of every triangle it can emit, (M_ss + 2·M_st + M_tt)/8 from
 // bounds M of the second derivatives in node-local coordinates (s, t) ∈ [0,1]², and the
-// decision: leaf within δ, or split along u, v or both at the node's midpoint.
+// decision: leaf within δ, or split into k_u × k_v equal children (toleranceGridCounts), or
+// along u, v or both at the node's midpoint.
 // Compiled as GLSL (quadtree.comp.glsl, quadtree_general.comp.glsl) and as C++ (the mirrors)
 // from this one text, at namespace scope. Include shared_glsl_cpp.h and layout.h first.
 #ifndef TESSERA_TOLERANCE_BOUND_H
