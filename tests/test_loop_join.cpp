@@ -5,6 +5,8 @@
 #include <catch2/catch.hpp>
 
 #include <cstring>
+#include <string>
+#include <utility>
 
 #include "loop/join.h"
 #include "loop/limit.h"
@@ -99,4 +101,28 @@ TEST_CASE("Join refuses meshes that do not meet", "[loop][join]") {
   const LoopShape a = loopIcosphere(2);
   const LoopShape b = placed(loopIcosphere(2), {5, 0, 0}, 1.0);
   REQUIRE_THROWS_WITH(joinLoopMeshes(a, b), Catch::Contains("do not intersect"));
+}
+
+// 0 levels joins the unrefined meshes (it read unsized refinement flags and crashed); levels
+// outside −1..kMaxLoopJoinLevels are refused instead of running without bound.
+TEST_CASE("Join with 0 refinement levels on either side; levels out of range refused",
+          "[loop][join]") {
+  const LoopShape torus = loopTorus(24, 12, 0.0, 1);
+  const LoopShape sphere = placed(loopIcosphere(3), {1.5, 0.0, 0.0}, 0.4);
+  for (const auto& [levelsA, levelsB] : {std::pair{0, 0}, std::pair{0, -1}, std::pair{-1, 0}}) {
+    INFO("levels " << levelsA << "/" << levelsB);
+    LoopJoinOptions options;
+    options.levelsA = levelsA;
+    options.levelsB = levelsB;
+    const LoopJoinResult r = joinLoopMeshes(sphere, torus, options);
+    if (levelsA == 0) REQUIRE(r.report.levelsA == 0);
+    if (levelsB == 0) REQUIRE(r.report.levelsB == 0);
+    requireGoodJoin(r, sphere, torus, 0);
+  }
+  for (const int bad : {-2, kMaxLoopJoinLevels + 1, 1000}) {
+    LoopJoinOptions options;
+    options.levelsB = bad;
+    REQUIRE_THROWS_WITH(joinLoopMeshes(sphere, torus, options),
+                        Catch::Contains("levels must be 0.." + std::to_string(kMaxLoopJoinLevels)));
+  }
 }

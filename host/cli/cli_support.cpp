@@ -2,7 +2,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 #include "cli/commands.h"
@@ -43,6 +46,49 @@ int runReportingErrors(const std::function<int()>& body, const std::vector<std::
     std::fprintf(stderr, "tessera: internal error: %s\n", e.what());
     return kExitInternal;
   }
+}
+
+void checkCommandLine(const std::function<void()>& check) {
+  try {
+    check();
+  } catch (const std::invalid_argument& e) {
+    throw CLI::ValidationError(e.what());
+  }
+}
+
+namespace {
+
+// The text as CLI11 would read a floating-point value; true when it is a number that is not
+// finite (nan, inf, or a decimal beyond the double range, which strtod turns into ±inf).
+bool isNonFiniteNumber(const std::string& text) {
+  if (text.empty()) return false;
+  char* end = nullptr;
+  errno = 0;
+  const double value = std::strtod(text.c_str(), &end);
+  return end == text.c_str() + text.size() && !std::isfinite(value);
+}
+
+}  // namespace
+
+void refuseBadNumbers(CLI::App& app) {
+  const CLI::Validator finite(
+      [](std::string& text) {
+        return isNonFiniteNumber(text) ? "'" + text + "' is not a finite number" : std::string();
+      },
+      "");
+  const CLI::Validator unsignedNumber(
+      [](std::string& text) {
+        return text.find('-') != std::string::npos ? "'" + text + "' is negative" : std::string();
+      },
+      "");
+  for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; }))
+    for (CLI::Option* option : command->get_options([](CLI::Option*) { return true; })) {
+      // CLI11 names the type of float and double options (and of lists of them) "FLOAT", of
+      // unsigned ones "UINT"; the validators' descriptions may follow after a ':'.
+      const std::string type = option->get_type_name();
+      if (type.rfind("FLOAT", 0) == 0) option->check(finite);
+      if (type.rfind("UINT", 0) == 0) option->check(unsignedNumber);
+    }
 }
 
 ChosenBackend chooseBackend(const std::string& name, const std::string& device) {

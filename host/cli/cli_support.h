@@ -1,6 +1,8 @@
 // What the subcommands share: turning exceptions into one message and a documented exit code,
 // choosing the backend (--backend vulkan|cpu|auto), and writing meshes by extension.
 #pragma once
+#include <CLI/CLI.hpp>
+
 #include <functional>
 #include <memory>
 #include <string>
@@ -24,6 +26,19 @@ void writeMesh(const std::string& path, const TriangleMesh& mesh, const std::str
 // VulkanUnavailable message (e.g. "render needs a Vulkan device that draws").
 int runReportingErrors(const std::function<int()>& body, const std::vector<std::string>& outputs,
                        const std::string& vulkanHint = "");
+
+// Runs `check`: the command line's validation by the library's own parsers and option checks
+// (parseSplitRule, parseTolerance, validateQuadtreeOptions, ...), before any input is read. A
+// std::invalid_argument from it is a bad command line (CLI::ValidationError, exit 1), not bad
+// input (exit 2): one path for every option, so no option's range is checked twice.
+void checkCommandLine(const std::function<void()>& check);
+
+// Adds checks to the numeric options of every subcommand of `app` (single values and lists):
+// floating-point ones refuse nan and ±inf (CLI11 parses them as numbers, and CLI::Range lets
+// NaN through since every comparison with it is false: an option's range check would be
+// skipped); unsigned ones refuse a negative value (CLI11 wraps "-1" to the largest value).
+// Call once every command is added.
+void refuseBadNumbers(CLI::App& app);
 
 struct ChosenBackend {
   std::unique_ptr<vk::Context> context;  // null on the CPU backend

@@ -27,10 +27,12 @@ void addDivisionsCommand(CLI::App& app, int& exitCode) {
   cmd->callback([&exitCode] {
     exitCode = runReportingErrors(
         [] {
-          if (!(options.tolerance > 0.0) || !std::isfinite(options.tolerance))
-            throw std::invalid_argument("--tolerance must be a finite number > 0");
-          if (options.viewport < 16 || options.viewport > 16384)
-            throw std::invalid_argument("--viewport must be 16..16384 pixels");
+          checkCommandLine([] {
+            if (!(options.tolerance > 0.0) || !std::isfinite(options.tolerance))
+              throw std::invalid_argument("--tolerance must be a finite number > 0");
+            if (options.viewport < 16 || options.viewport > 16384)
+              throw std::invalid_argument("--viewport must be 16..16384 pixels");
+          });
           const DivisionTable table = divisionComparison(options);
           std::printf("%s", formatDivisionTable(table, perView).c_str());
           return int(kExitOk);

@@ -1,7 +1,9 @@
 // tessera loop | limit | fit | join: Loop subdivision surfaces from OBJ control meshes
 // (docs/loop.md). Output by extension: .obj, .ply or .glb.
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <optional>
 
 #include "cli/cli_support.h"
 #include "cli/commands.h"
@@ -55,7 +57,8 @@ struct LoopArgs {
   int levels = 2;
   bool limit = false;
   double lambda = 1.0, threshold = 0.0;
-  int iterations = 100, levelsA = -1, levelsB = -1;
+  int iterations = 100;
+  std::optional<int> levelsA, levelsB;  // join; unset: chosen by area (LoopJoinOptions)
   std::vector<double> cut;  // paste: nx ny nz d
   std::string picture;      // join: inputs, placement and result as one PNG
 };
@@ -131,8 +134,8 @@ int runJoin(const LoopArgs& a) {
     first = cutByPlane(first, {a.cut[0], a.cut[1], a.cut[2]}, a.cut[3]);
   }
   LoopJoinOptions options;
-  options.levelsA = a.levelsA;
-  options.levelsB = a.levelsB;
+  options.levelsA = a.levelsA.value_or(-1);
+  options.levelsB = a.levelsB.value_or(-1);
   const LoopJoinResult r = joinLoopMeshes(first, second, options);
   writeLoopMesh(a.output, r.mesh.positions, r.mesh.topology.triangles, {});
   if (!a.picture.empty()) {
@@ -175,16 +178,28 @@ void addLoopCommands(CLI::App& app, int& exitCode) {
   fit->add_option("cage", args.input, "control mesh to move (.obj)")->required();
   fit->add_option("target", args.target, "target surface (.obj, triangles)")->required();
   fit->add_option("-o,--output", args.output, "fitted control mesh (.obj, .ply or .glb)")->required();
-  fit->add_option("--lambda", args.lambda, "step weight λ in (0, 2]");
-  fit->add_option("--threshold", args.threshold, "stop when E = Σ|p∞ − q|² is below this");
+  fit->add_option("--lambda", args.lambda, "step weight λ in (0, 2]")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            const double lambda = std::strtod(text.c_str(), nullptr);
+            return lambda > 0.0 && lambda <= 2.0 ? std::string() : "λ must be in (0, 2], got " + text;
+          },
+          ""));
+  fit->add_option("--threshold", args.threshold, "stop when E = Σ|p∞ − q|² is below this (≥ 0)")
+      ->check(CLI::NonNegativeNumber);
   fit->add_option("--iterations", args.iterations, "at most this many steps")->check(CLI::Range(1, 100000));
   fit->callback([&exitCode] { exitCode = runReportingErrors([] { return runFit(args); }, {args.output}); });
   CLI::App* join = app.add_subcommand("join", "Join two closed Loop control meshes by local refinement");
   join->add_option("first", args.input, "first control mesh (.obj)")->required();
   join->add_option("second", args.target, "second control mesh (.obj)")->required();
   join->add_option("-o,--output", args.output, "joined control mesh (.obj, .ply or .glb)")->required();
-  join->add_option("--levels-first", args.levelsA, "local refinement levels of the first (default: by area)");
-  join->add_option("--levels-second", args.levelsB, "local refinement levels of the second");
+  const std::string levelRange = "0.." + std::to_string(kMaxLoopJoinLevels);
+  join->add_option("--levels-first", args.levelsA,
+                   "local refinement levels of the first, " + levelRange + " (default: by area)")
+      ->check(CLI::Range(0, kMaxLoopJoinLevels));
+  join->add_option("--levels-second", args.levelsB,
+                   "local refinement levels of the second, " + levelRange + " (default: by area)")
+      ->check(CLI::Range(0, kMaxLoopJoinLevels));
   join->add_option("--paste-plane", args.cut, "paste: keep the first mesh's part where n·x ≥ d (nx ny nz d)")->expected(4);
   join->add_option("--picture", args.picture, "also draw inputs, placement and result (.png, needs Vulkan)");
   join->add_option("--device", args.device, "Vulkan device for --picture (name substring or index)");

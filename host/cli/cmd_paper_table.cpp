@@ -25,6 +25,13 @@ void addPaperTableCommand(CLI::App& app, int& exitCode) {
       inputs = {"data/grid_hill.grid", "data/grid_ridge.grid", "data/grid_bumps.grid"};
     exitCode = runReportingErrors(
         [] {
+          checkCommandLine([] {
+            for (const float t : thresholds) {
+              QuadtreeOptions q;
+              q.linearity = q.flatness = t;
+              validateQuadtreeOptions(q);
+            }
+          });
           ChosenBackend chosen = chooseBackend(backendName, "");
           std::printf("Deviation: parametric (a point inside a triangle against the surface at "
                       "the same mix of (u,v)), sampled 15 points per triangle; backend %s.\n\n",

@@ -143,6 +143,17 @@ int run(const RenderArgs& a) {
       throw CLI::ValidationError("--side-by-side", "expected two or more methods, e.g. B,D");
   }
 
+  std::vector<QuadtreeOptions> panelOptions;
+  for (SplitRule rule : rules) {
+    QuadtreeOptions q;
+    q.rule = rule;
+    q.linearity = a.linearity;
+    q.flatness = a.flatness;
+    q.maxDepth = a.maxDepth;
+    checkCommandLine([&] { validateQuadtreeOptions(q); });  // exit 1 before any work
+    panelOptions.push_back(q);
+  }
+
   std::vector<BezierPatch> patches = readSurfaceFile(a.input);
 
   vk::ContextOptions vkOptions;
@@ -155,13 +166,8 @@ int run(const RenderArgs& a) {
 
   std::vector<Panel> panels;
   BoundingBox frame;
-  for (SplitRule rule : rules) {
-    QuadtreeOptions q;
-    q.rule = rule;
-    q.linearity = a.linearity;
-    q.flatness = a.flatness;
-    q.maxDepth = a.maxDepth;
-    panels.push_back({rule, tessellate(patches, q, backend), {}});
+  for (const QuadtreeOptions& q : panelOptions) {
+    panels.push_back({q.rule, tessellate(patches, q, backend), {}});
     frame.add(boundingBox(panels.back().tessellation.mesh));
   }
   if (!frame.empty()) options.frame = frame;  // one camera for every panel

@@ -1,3 +1,4 @@
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -83,8 +84,8 @@ std::string shortDecimal(double value) {
 constexpr SplitRule kDefaultRule = SplitRule::Tolerance;
 
 // Without -m: rule T when --tolerance is given, else kDefaultRule. --tolerance belongs to rule
-// T only: with -m A..D it would be silently ignored, so it is refused (std::invalid_argument:
-// exit 2, like a bad -m).
+// T only: with -m A..D it would be silently ignored, so it is refused (std::invalid_argument,
+// a bad command line through checkCommandLine, like a bad -m).
 SplitRule chooseRule(const TessellateArgs& a) {
   if (a.method.empty()) return a.tolerance.empty() ? kDefaultRule : SplitRule::Tolerance;
   const SplitRule rule = parseSplitRule(a.method);
@@ -96,16 +97,29 @@ SplitRule chooseRule(const TessellateArgs& a) {
 
 int run(const TessellateArgs& a) {
   QuadtreeOptions options;
-  options.rule = chooseRule(a);
-  // Parsed before any work, resolved (a percentage needs the model's size) once it is read.
-  const ToleranceSpec toleranceSpec = a.tolerance.empty() ? ToleranceSpec{} : parseTolerance(a.tolerance);
+  ToleranceSpec toleranceSpec;
+  // Every option is checked before any work, by the library's own checks: a value out of
+  // range is a bad command line (exit 1), whatever the input.
+  checkCommandLine([&] {
+    options.rule = chooseRule(a);
+    // Parsed now, resolved (a percentage needs the model's size) once the input is read.
+    if (!a.tolerance.empty()) toleranceSpec = parseTolerance(a.tolerance);
+    options.linearity = a.linearity;
+    options.flatness = a.flatness;
+    // Rule T may split one direction per level, so it needs about twice the levels.
+    options.maxDepth = a.maxDepth ? *a.maxDepth
+                       : options.rule == SplitRule::Tolerance ? kToleranceMaxDepth
+                                                              : kPaperMaxDepth;
+    options.samples = a.samples;
+    parseGrid(a.grid, options.gridU, options.gridV);
+    options.nodeBudget = a.nodeBudget;
+    options.frontierBudgetBytes = size_t(a.frontierBudgetMiB * 1024.0 * 1024.0);
+    QuadtreeOptions checked = options;
+    if (checked.rule == SplitRule::Tolerance) checked.tolerance = 1.0;  // δ: parseTolerance
+    validateQuadtreeOptions(checked);
+    frontierBatchNodes(checked, SIZE_MAX);  // the budget holds a batch at this depth
+  });
   const bool ruleT = options.rule == SplitRule::Tolerance;
-  options.linearity = a.linearity;
-  options.flatness = a.flatness;
-  // Rule T may split one direction per level, so it needs about twice the levels.
-  options.maxDepth = a.maxDepth ? *a.maxDepth : ruleT ? kToleranceMaxDepth : kPaperMaxDepth;
-  options.samples = a.samples;
-  parseGrid(a.grid, options.gridU, options.gridV);
   const StreamFormats formats = parseFormats(a.formats);
   const bool meshToStdout = a.output == kStdioPath;
   const bool statsToStdout = a.stats == kStdioPath;
@@ -114,8 +128,6 @@ int run(const TessellateArgs& a) {
                                            "standard output");
   if (!a.output.empty()) checkMeshFormat(a.output, formats.output);
   const std::string inputFormat = surfaceFormat(a.input, formats.input);
-  options.nodeBudget = a.nodeBudget;
-  options.frontierBudgetBytes = size_t(a.frontierBudgetMiB * 1024.0 * 1024.0);
 
   std::vector<BezierPatch> patches = readSurface(a.input, inputFormat);
   if (ruleT) options.tolerance = resolveTolerance(toleranceSpec, patches);

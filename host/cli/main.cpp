@@ -1,6 +1,7 @@
 // tessera: tessellate free-form surfaces on the GPU. See docs/cli.md.
 #include <cstdio>
 
+#include "cli/cli_support.h"
 #include "cli/commands.h"
 #include "cli/help_text.h"
 #include "common/version.h"
@@ -21,6 +22,7 @@ int main(int argc, char** argv) {
   tessera::cli::addReduceCommand(app, exitCode);
   tessera::cli::addDivisionsCommand(app, exitCode);
   tessera::cli::addLoopCommands(app, exitCode);
+  tessera::cli::refuseBadNumbers(app);
   // Every command's --help ends with the environment variables, exit codes and docs.
   for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; }))
     command->footer(tessera::cli::helpFooter());

@@ -66,13 +66,20 @@ LoopJoinResult joinLoopMeshes(const LoopShape& a, const LoopShape& b,
   for (uint8_t f : firstB) report.interferingB += f;
   if (report.interferingA == 0)
     throw std::invalid_argument("join: " + a.name + " and " + b.name + " do not intersect");
+  for (const int levels : {options.levelsA, options.levelsB})
+    if (levels < -1 || levels > kMaxLoopJoinLevels)
+      throw std::invalid_argument("join: local refinement levels must be 0.." +
+                                  std::to_string(kMaxLoopJoinLevels) + " (or -1: by area), got " +
+                                  std::to_string(levels));
   report.levelsA = options.levelsA >= 0 ? options.levelsA : defaultLevels(areaA, areaB);
   report.levelsB = options.levelsB >= 0 ? options.levelsB : defaultLevels(areaB, areaA);
   report.trianglesIn = (a.topology.triangles.size() + b.topology.triangles.size()) / 3;
 
   // (1) Local refinement, both sides in turn against the other's current mesh. Vertices keep
   // their indices: new ones are appended, so index < input count means an input vertex.
-  LocalRefinement ra{a, {}}, rb{b, {}};
+  // Flags sized to the inputs: with 0 levels no refinement fills them, yet step (3) reads them.
+  LocalRefinement ra{a, std::vector<uint8_t>(a.topology.vertexCount, 0)},
+      rb{b, std::vector<uint8_t>(b.topology.vertexCount, 0)};
   for (int level = 0; level < std::max(report.levelsA, report.levelsB); ++level) {
     if (level < report.levelsA) ra = refineLocally(ra.mesh, interfering(ra.mesh, rb.mesh, nullptr), ra.refined);
     if (level < report.levelsB) rb = refineLocally(rb.mesh, interfering(rb.mesh, ra.mesh, nullptr), rb.refined);

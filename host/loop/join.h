@@ -15,10 +15,17 @@
 
 namespace tessera {
 
+// The most local refinement levels per side: each level splits the seam's triangles 1 → 4,
+// so the seam's triangle count grows about 2× a level (the seam is a curve) and its
+// triangles shrink 4× in area; past 6 the seam is far finer than any input's triangles and
+// the BVH/fit work grows without helping (measured in docs/loop.md).
+constexpr int kMaxLoopJoinLevels = 6;
+
 struct LoopJoinOptions {
   // Local refinement levels of each side; −1: chosen so that the two sides' interfering
   // triangles get similar areas (the larger side gets round(log4 ratio) more levels, each at
-  // least 1).
+  // least 1). Each in −1..kMaxLoopJoinLevels (else std::invalid_argument); 0 joins the
+  // unrefined meshes.
   int levelsA = -1, levelsB = -1;
   int fitIterations = 50;
   int limitSurfaceLevels = 3;  // density of the original limit surfaces the fit goes back to

@@ -12,32 +12,6 @@
 namespace tessera {
 namespace {
 
-void validateOptions(const QuadtreeOptions& o) {
-  auto positiveFinite = [](float x) { return std::isfinite(x) && x > 0.0f; };
-  if (!positiveFinite(o.linearity) || !positiveFinite(o.flatness))
-    throw std::invalid_argument("linearity and flatness must be finite and > 0");
-  if (!(o.minSize >= 0.0f) || !std::isfinite(o.minSize))
-    throw std::invalid_argument("the minimum node size must be finite and >= 0");
-  // Paths keep 2 bits per level in 64 bits; fp32 parameters stop resolving long before.
-  // Rule T's levels may split one direction only, so it may go deeper (kToleranceMaxDepth).
-  const uint32_t depthCap = o.rule == SplitRule::Tolerance ? 32 : 24;
-  if (o.maxDepth > depthCap)
-    throw std::invalid_argument("the maximum depth is at most " + std::to_string(depthCap) +
-                                (o.rule == SplitRule::Tolerance ? " for rule T" : ""));
-  if (o.samples < 1 || o.samples > 32)
-    throw std::invalid_argument("the sample count S of rules C and D must be 1..32");
-  if (o.gridU < 1 || o.gridV < 1 || o.gridU > 4096 || o.gridV > 4096)
-    throw std::invalid_argument("the uniform grid of rule A must be 1..4096 cells per side");
-  if (o.nodeBudget == 0) throw std::invalid_argument("the node budget must be > 0");
-  if (o.rule == SplitRule::Tolerance &&
-      (o.toleranceSplitCap < 1 || o.toleranceSplitCap > gpu::kToleranceSplitCapMax))
-    throw std::invalid_argument("rule T's split cap must be 1.." +
-                                std::to_string(gpu::kToleranceSplitCapMax) + " children per direction");
-  if (o.rule == SplitRule::Tolerance && !(o.tolerance > 0 && std::isfinite(o.tolerance) &&
-                                           float(o.tolerance) > 0.0f))
-    throw std::invalid_argument("the tolerance of rule T must be finite and > 0 in fp32");
-}
-
 QuadtreeResult uniformGrid(size_t patchCount, const QuadtreeOptions& o) {
   QuadtreeResult result;
   size_t cells = size_t(o.gridU) * size_t(o.gridV);
@@ -78,6 +52,32 @@ QuadtreeResult uniformGrid(size_t patchCount, const QuadtreeOptions& o) {
 }
 
 }  // namespace
+
+void validateQuadtreeOptions(const QuadtreeOptions& o) {
+  auto positiveFinite = [](float x) { return std::isfinite(x) && x > 0.0f; };
+  if (!positiveFinite(o.linearity) || !positiveFinite(o.flatness))
+    throw std::invalid_argument("linearity and flatness must be finite and > 0");
+  if (!(o.minSize >= 0.0f) || !std::isfinite(o.minSize))
+    throw std::invalid_argument("the minimum node size must be finite and >= 0");
+  // Paths keep 2 bits per level in 64 bits; fp32 parameters stop resolving long before.
+  // Rule T's levels may split one direction only, so it may go deeper (kToleranceMaxDepth).
+  const uint32_t depthCap = o.rule == SplitRule::Tolerance ? 32 : 24;
+  if (o.maxDepth > depthCap)
+    throw std::invalid_argument("the maximum depth is at most " + std::to_string(depthCap) +
+                                (o.rule == SplitRule::Tolerance ? " for rule T" : ""));
+  if (o.samples < 1 || o.samples > 32)
+    throw std::invalid_argument("the sample count S of rules C and D must be 1..32");
+  if (o.gridU < 1 || o.gridV < 1 || o.gridU > 4096 || o.gridV > 4096)
+    throw std::invalid_argument("the uniform grid of rule A must be 1..4096 cells per side");
+  if (o.nodeBudget == 0) throw std::invalid_argument("the node budget must be > 0");
+  if (o.rule == SplitRule::Tolerance &&
+      (o.toleranceSplitCap < 1 || o.toleranceSplitCap > gpu::kToleranceSplitCapMax))
+    throw std::invalid_argument("rule T's split cap must be 1.." +
+                                std::to_string(gpu::kToleranceSplitCapMax) + " children per direction");
+  if (o.rule == SplitRule::Tolerance && !(o.tolerance > 0 && std::isfinite(o.tolerance) &&
+                                           float(o.tolerance) > 0.0f))
+    throw std::invalid_argument("the tolerance of rule T must be finite and > 0 in fp32");
+}
 
 SplitRule parseSplitRule(const std::string& name) {
   if (name == "A" || name == "a" || name == "uniform") return SplitRule::UniformGrid;
@@ -268,7 +268,7 @@ void buildGroupTree(const PatchSet& patches, uint32_t firstPatch, const Quadtree
 
 QuadtreeResult buildTree(const PatchSet& patches, const QuadtreeOptions& options,
                          NodeClassifier& classifier) {
-  validateOptions(options);
+  validateQuadtreeOptions(options);
   if (options.rule == SplitRule::UniformGrid) return uniformGrid(patches.size(), options);
   if (patches.size() > options.nodeBudget)
     throw TessellationLimitError(std::to_string(patches.size()) +

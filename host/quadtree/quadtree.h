@@ -108,6 +108,11 @@ size_t maxChildrenPerNode(const QuadtreeOptions& options);
 // 3·maxDepth + 5). Throws std::invalid_argument when it would be < 1.
 size_t frontierBatchNodes(const QuadtreeOptions& options, size_t classifierLimit);
 
+// Throws std::invalid_argument naming the first option out of its range (thresholds, depth,
+// samples, grid, node budget, rule T's tolerance). tessellate() calls it first; the CLI calls
+// it before reading the input, so a bad option is a bad command line (exit 1).
+void validateQuadtreeOptions(const QuadtreeOptions& options);
+
 // The node budget would be exceeded: names the patch with the most frontier nodes and the level.
 // A LimitError of the public API (include/tessera/errors.h).
 class TessellationLimitError : public LimitError {
