@@ -20,10 +20,7 @@ bool isOneOf(const std::string& value, std::initializer_list<const char*> names)
   return false;
 }
 
-std::string extensionOf(const std::string& path) {
-  const std::string ext = std::filesystem::path(path).extension().string();
-  return ext.empty() ? ext : ext.substr(1);
-}
+std::string extensionOf(const std::string& path) { return formatOfExtension(path); }
 
 // Standard input whole, refusing more than kMaxStdinBytes.
 std::string readStdin() {

@@ -11,13 +11,23 @@
 
 namespace tessera {
 
-std::vector<BezierPatch> readSurfaceFile(const std::string& path) {
+std::string formatOfExtension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
-  if (ext == ".bpt") return readBpt(path);
-  if (ext == ".grid") return interpolateGrid(readGrid(path));
-  if (ext == ".json") return sceneToPatches(readScene(path));
+  if (!ext.empty()) ext.erase(0, 1);
+  for (char& c : ext)
+    if (c >= 'A' && c <= 'Z') c = char(c - 'A' + 'a');  // ASCII only: no locale
+  return ext;
+}
+
+std::vector<BezierPatch> readSurfaceFile(const std::string& path) {
+  const std::string format = formatOfExtension(path);
+  if (format == "bpt") return readBpt(path);
+  if (format == "grid") return interpolateGrid(readGrid(path));
+  if (format == "json") return sceneToPatches(readScene(path));
   throw InputError(InputErrorKind::Syntax, path, 0,
-                   "unknown surface format '" + ext + "' (expected .bpt, .grid or .json)");
+                   "unknown surface format '" +
+                       std::filesystem::path(path).extension().string() +
+                       "' (expected .bpt, .grid or .json)");
 }
 
 std::vector<BezierPatch> parseSurface(std::istream& in, const std::string& format,

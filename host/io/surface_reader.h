@@ -10,6 +10,10 @@
 
 namespace tessera {
 
+// The extension of `path` without its dot, in lower case ("teapot.BPT" → "bpt"; "" for none):
+// formats are chosen by extension case-insensitively, as Windows and macOS name files.
+std::string formatOfExtension(const std::string& path);
+
 // Throws InputError (host/io/errors.h) naming the file, line and reason.
 std::vector<BezierPatch> readSurfaceFile(const std::string& path);
 

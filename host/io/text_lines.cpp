@@ -38,11 +38,32 @@ std::string readWhole(std::istream& in, const std::string& nameForMessages) {
 TextLines::TextLines(std::istream& in, std::string nameForMessages)
     : in_(in), name_(std::move(nameForMessages)) {}
 
+bool TextLines::nextPhysicalLine(std::string_view& line) {
+  if (chunkPos_ > chunk_.size()) {
+    if (!std::getline(in_, chunk_)) return false;
+    chunkPos_ = 0;
+    // A UTF-8 byte order mark (Windows editors write one) is no content.
+    if (linesRead_ == 0 && chunk_.compare(0, kUtf8Bom.size(), kUtf8Bom) == 0)
+      chunkPos_ = kUtf8Bom.size();
+  }
+  ++linesRead_;
+  // A CR ends a line too (classic Mac files), unless it is the CR of a CRLF: then getline
+  // left it last in the chunk and it is a blank like any other.
+  const size_t cr = chunk_.find('\r', chunkPos_);
+  if (cr == std::string::npos || cr + 1 == chunk_.size()) {
+    line = std::string_view(chunk_).substr(chunkPos_);
+    chunkPos_ = std::string::npos;
+  } else {
+    line = std::string_view(chunk_).substr(chunkPos_, cr - chunkPos_);
+    chunkPos_ = cr + 1;
+  }
+  return true;
+}
+
 bool TextLines::next() {
-  while (std::getline(in_, text_)) {
-    ++linesRead_;
+  std::string_view rest;
+  while (nextPhysicalLine(rest)) {
     tokens_.clear();
-    const std::string_view rest(text_);
     size_t k = 0;
     while (k < rest.size()) {
       while (k < rest.size() && isBlank(rest[k])) ++k;

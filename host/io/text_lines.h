@@ -29,8 +29,12 @@ std::ifstream openForReading(const std::string& path, const char* kindOfFile);
 // All of `in` as one string; a read error (badbit) is an InputError of kind Io.
 std::string readWhole(std::istream& in, const std::string& nameForMessages);
 
+// The UTF-8 byte order mark some editors put at the start of a text file.
+constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
+
 // The data lines of a text input, split at blanks (space, tab, CR, VT, FF) into tokens.
-// Blank lines and lines whose first token begins with '#' are skipped.
+// Blank lines and lines whose first token begins with '#' are skipped. Lines end in LF, CRLF
+// or a lone CR (old Mac files), and a UTF-8 byte order mark at the start is skipped.
 class TextLines {
  public:
   TextLines(std::istream& in, std::string nameForMessages);
@@ -51,7 +55,11 @@ class TextLines {
  private:
   std::istream& in_;
   std::string name_;
-  std::string text_;
+  // The next physical line (LF, CRLF or CR ended), 1-based numbering kept in linesRead_.
+  bool nextPhysicalLine(std::string_view& line);
+
+  std::string chunk_;                   // what getline read up to the next LF
+  size_t chunkPos_ = std::string::npos;  // where in chunk_ the next line starts; npos: read more
   std::vector<std::string_view> tokens_;
   int linesRead_ = 0;
 };
