@@ -140,7 +140,7 @@ class LocatingSax {
     const int line = currentLine();
     if (!object.keys.insert(key).second)
       throw InputError(InputErrorKind::Syntax, name_, line,
-                       "duplicate key \"" + key + "\" in the object that starts on line " +
+                       "duplicate key " + quotedString(key) + " in the object that starts on line " +
                            std::to_string(object.value.line));
     pendingKey_ = static_cast<uint32_t>(doc_.strings.size());
     pendingKeyLine_ = line;
@@ -164,11 +164,11 @@ class LocatingSax {
       // nlohmann reports a literal beyond the double range (1e400) as out_of_range.406.
       if (error.id == 406)
         throw InputError(InputErrorKind::Range, name_, lines_.lineAt(start),
-                         "'" + std::string(token) + "' is outside the range of a double");
+                         quotedToken(token) + " is outside the range of a double");
       if (isNonFiniteSpelling(token))
         throw InputError(InputErrorKind::NonFinite, name_, lines_.lineAt(start),
-                         "'" + std::string(token) +
-                             "' is not a finite number (JSON has no NaN or Infinity, and a "
+                         quotedToken(token) +
+                             " is not a finite number (JSON has no NaN or Infinity, and a "
                              "scene needs finite numbers)");
     }
     throw InputError(InputErrorKind::Syntax, name_, lines_.lineAt(index),

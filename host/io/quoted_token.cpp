@@ -19,10 +19,17 @@ std::string printableText(std::string_view text) {
   return out;
 }
 
-std::string quotedToken(std::string_view token) {
-  constexpr size_t kMaxShown = 32;
-  if (token.size() <= kMaxShown) return "'" + printableText(token) + "'";
-  return "'" + printableText(token.substr(0, kMaxShown)) + "...'";
+namespace {
+
+std::string quoted(std::string_view text, char quote, size_t maxShown) {
+  const bool cut = text.size() > maxShown;
+  return quote + printableText(text.substr(0, maxShown)) + (cut ? "..." : "") + quote;
 }
+
+}  // namespace
+
+std::string quotedToken(std::string_view token) { return quoted(token, '\'', 32); }
+
+std::string quotedString(std::string_view text) { return quoted(text, '"', 64); }
 
 }  // namespace tessera

@@ -13,4 +13,8 @@ std::string printableText(std::string_view text);
 // A token as shown in a message: quoted, printable and cut short after 32 bytes ("...").
 std::string quotedToken(std::string_view token);
 
+// A string from the input (a JSON name, key or value) as shown in a message: in double quotes,
+// printable and cut short after 64 bytes ("...").
+std::string quotedString(std::string_view text);
+
 }  // namespace tessera

@@ -9,6 +9,7 @@
 #include "geometry/degree_elevation.h"
 #include "geometry/general_patch.h"
 #include "io/errors.h"
+#include "io/quoted_token.h"
 #include "geometry/rational.h"
 
 namespace tessera {
@@ -42,7 +43,7 @@ class Converter {
 
   void add(const SceneSurfaceRef& ref, size_t number) {
     const std::string where = "surface " + std::to_string(number) +
-                              (ref.name.empty() ? "" : " (\"" + ref.name + "\")");
+                              (ref.name.empty() ? "" : " (" + quotedString(ref.name) + ")");
     switch (ref.type) {
       case SceneSurfaceType::Bezier:
         addPolynomial(scene_.bezier.at(ref.index));

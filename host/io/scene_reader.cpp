@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "io/errors.h"
+#include "io/quoted_token.h"
 #include "io/json_document.h"
 #include "io/text_lines.h"
 #include "bspline/knots.h"
@@ -73,7 +74,7 @@ class SceneParser {
   std::string shown(const JsonValue& v) const {
     switch (v.type) {
       case JsonType::Number: return formatJsonNumber(v.number, v.integer);
-      case JsonType::String: return "\"" + doc_.text(v) + "\"";
+      case JsonType::String: return quotedString(doc_.text(v));
       case JsonType::Boolean: return v.boolean ? "true" : "false";
       default: return jsonTypeName(v.type);
     }
@@ -88,7 +89,7 @@ class SceneParser {
       for (const char* a : allowed) known = known || key == a;
       if (!known)
         fail(InputErrorKind::Syntax, member.keyLine,
-             "unknown key \"" + key + "\" in " + what + " (expected " + joinKeys(allowed) + ")");
+             "unknown key " + quotedString(key) + " in " + what + " (expected " + joinKeys(allowed) + ")");
     }
   }
 
@@ -251,7 +252,7 @@ class SceneParser {
     if (const JsonValue* name = doc_.member(surface, "name")) {
       validateType(*name, JsonType::String, "\"name\" of " + what);
       ref.name = doc_.text(*name);
-      what += " (\"" + ref.name + "\")";
+      what += " (" + quotedString(ref.name) + ")";
     }
     const JsonValue& typeValue = required(surface, "type", JsonType::String, what);
     const std::string& type = doc_.text(typeValue);
@@ -323,7 +324,7 @@ class SceneParser {
       scene.bsplines.push_back(std::move(spline));
     } else {
       fail(InputErrorKind::Syntax, typeValue.line,
-           "unknown surface type \"" + type + "\" (" + what +
+           "unknown surface type " + quotedString(type) + " (" + what +
                "; expected \"bezier\" or \"bspline\")");
     }
     scene.order.push_back(std::move(ref));
