@@ -7,6 +7,7 @@
 
 #include "cli/cli_support.h"
 #include "cli/commands.h"
+#include "cli/outputs.h"
 #include "io/errors.h"
 #include "io/gltf_writer.h"
 #include "io/obj_reader.h"
@@ -43,13 +44,18 @@ LoopShape readControlMesh(const std::string& path) {
   return shape;
 }
 
-void writeLoopMesh(const std::string& path, const std::vector<glm::dvec3>& positions,
-                   const std::vector<uint32_t>& triangles, const std::vector<glm::dvec3>& normals) {
+TriangleMesh loopMesh(const std::vector<glm::dvec3>& positions,
+                      const std::vector<uint32_t>& triangles, const std::vector<glm::dvec3>& normals) {
   TriangleMesh mesh;
   for (const auto& p : positions) mesh.positions.push_back(glm::vec3(p));
   for (const auto& n : normals) mesh.normals.push_back(glm::vec3(n));
   mesh.indices = triangles;
-  writeMesh(path, mesh);
+  return mesh;
+}
+
+void writeLoopMesh(const std::string& path, const std::vector<glm::dvec3>& positions,
+                   const std::vector<uint32_t>& triangles, const std::vector<glm::dvec3>& normals) {
+  writeMesh(path, loopMesh(positions, triangles, normals));
 }
 
 struct LoopArgs {
@@ -67,6 +73,7 @@ struct LoopArgs {
 // vertices pushed to the limit surface, with limit normals.
 int runRefine(const LoopArgs& a) {
   checkMeshFormat(a.output);
+  checkOutputs({{"input", a.input}}, {{"-o", a.output}});
   const LoopShape shape = readControlMesh(a.input);
   LoopStencilOptions options;
   options.levels = a.levels;
@@ -106,6 +113,7 @@ int runRefine(const LoopArgs& a) {
 
 int runFit(const LoopArgs& a) {
   checkMeshFormat(a.output);
+  checkOutputs({{"cage", a.input}, {"target", a.target}}, {{"-o", a.output}});
   LoopShape cage = readControlMesh(a.input);
   const PolygonMesh target = readObj(a.target);
   validateTriangles(target, a.target);
@@ -127,6 +135,7 @@ int runFit(const LoopArgs& a) {
 
 int runJoin(const LoopArgs& a) {
   checkMeshFormat(a.output);
+  checkOutputs({{"first", a.input}, {"second", a.target}}, {{"-o", a.output}, {"--picture", a.picture}});
   LoopShape first = readControlMesh(a.input);
   const LoopShape second = readControlMesh(a.target);
   if (!a.cut.empty()) {
@@ -137,16 +146,22 @@ int runJoin(const LoopArgs& a) {
   options.levelsA = a.levelsA.value_or(-1);
   options.levelsB = a.levelsB.value_or(-1);
   const LoopJoinResult r = joinLoopMeshes(first, second, options);
-  writeLoopMesh(a.output, r.mesh.positions, r.mesh.topology.triangles, {});
+  // The mesh and the picture are written together, both or neither.
+  AtomicFileGroup files;
+  stageMesh(files, a.output, loopMesh(r.mesh.positions, r.mesh.topology.triangles, {}));
+  std::string drawnOn;
   if (!a.picture.empty()) {
     vk::ContextOptions vkOptions;
     vkOptions.device = a.device;
     vk::Context context(vkOptions);
     const int panel = 640, height = 480;
-    writePngFile(a.picture, renderJoinPicture(context, first, second, r, panel, height), 3 * panel, height);
-    std::printf("drew %s (inputs, placement, result) on %s\n", a.picture.c_str(),
-                context.info().name.c_str());
+    const std::vector<uint8_t> rgba = renderJoinPicture(context, first, second, r, panel, height);
+    files.stage(a.picture, [&](std::ostream& out) { writePng(out, rgba, 3 * panel, height); });
+    drawnOn = context.info().name;
   }
+  files.commit();
+  if (!a.picture.empty())
+    std::printf("drew %s (inputs, placement, result) on %s\n", a.picture.c_str(), drawnOn.c_str());
   const LoopJoinReport& p = r.report;
   std::printf("join %s + %s: levels %d/%d, triangles %zu -> %zu (bridge %zu), %zu vertices "
               "fitted, %zu unchanged, max |p_inf - original| %.3g: wrote %s\n",

@@ -12,6 +12,7 @@
 
 #include "cli/cli_support.h"
 #include "cli/commands.h"
+#include "cli/outputs.h"
 #include "cli/stdio.h"
 #include "io/surface_reader.h"
 #include "io/errors.h"
@@ -154,6 +155,7 @@ int run(const RenderArgs& a) {
     panelOptions.push_back(q);
   }
 
+  checkOutputs({{"input", a.input}}, {{"-o", a.output}});
   std::vector<BezierPatch> patches = readSurfaceFile(a.input);
 
   vk::ContextOptions vkOptions;

@@ -8,6 +8,7 @@
 
 #include "cli/cli_support.h"
 #include "cli/commands.h"
+#include "cli/outputs.h"
 #include "cli/progress.h"
 #include "cli/setup_report.h"
 #include "cli/stdio.h"
@@ -128,6 +129,10 @@ int run(const TessellateArgs& a) {
                                            "standard output");
   if (!a.output.empty()) checkMeshFormat(a.output, formats.output);
   const std::string inputFormat = surfaceFormat(a.input, formats.input);
+  // Before the work: no output overwrites the input or another output, and each can be written.
+  checkOutputs({{"input", a.input}}, {{"-o", a.output}, {"--stats", a.stats}});
+  // The mesh and the report are written together at the end, both or neither.
+  AtomicFileGroup files;
 
   std::vector<BezierPatch> patches = readSurface(a.input, inputFormat);
   if (ruleT) options.tolerance = resolveTolerance(toleranceSpec, patches);
@@ -140,7 +145,7 @@ int run(const TessellateArgs& a) {
   Tessellation t = tessellateWithFallback(chosen, a.backend, patches, options);
   const std::unique_ptr<vk::Context>& context = chosen.context;
   const Backend& backend = chosen.backend;
-  if (!a.output.empty() && !meshToStdout) writeMesh(a.output, t.mesh, formats.output);
+  if (!a.output.empty() && !meshToStdout) stageMesh(files, a.output, t.mesh, formats.output);
   // The deviation from the true surface (both metrics, host/mesh/deviation.h) is what the
   // thresholds are for, but measuring it can cost more than the tessellation (89% of a
   // 2000-teapot run), so it is measured only with --deviation; reports then show null.
@@ -177,11 +182,13 @@ int run(const TessellateArgs& a) {
                      {"device", context ? nlohmann::json(context->info().name) : nlohmann::json()},
                      {"options", optionsToJson(options)}};
     report["setup"] = setupToJson(context.get());
-    if (!a.stats.empty() && !statsToStdout) writeStatsFile(a.stats, report);
+    if (!a.stats.empty() && !statsToStdout)
+      files.stage(a.stats, [&](std::ostream& out) { writeStats(out, report); });
     if (a.json || statsToStdout)
       std::printf("%s\n",
                   report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
   }
+  files.commit();
   if (summary) {
     // With the mesh or the report on standard output, the summary goes to stderr.
     FILE* const to = meshToStdout || statsToStdout ? stderr : stdout;

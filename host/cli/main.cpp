@@ -5,6 +5,7 @@
 #include "cli/commands.h"
 #include "cli/help_text.h"
 #include "common/version.h"
+#include "io/pending_temp_files.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"tessera: adaptive tessellation of free-form surfaces on Vulkan compute"};
@@ -23,6 +24,8 @@ int main(int argc, char** argv) {
   tessera::cli::addDivisionsCommand(app, exitCode);
   tessera::cli::addLoopCommands(app, exitCode);
   tessera::cli::refuseBadNumbers(app);
+  // Ctrl-C or kill during a write: no temporary file left behind (host/io/atomic_file.h).
+  tessera::removePendingTempFilesOnSignals();
   // Every command's --help ends with the environment variables, exit codes and docs.
   for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; }))
     command->footer(tessera::cli::helpFooter());

@@ -14,6 +14,7 @@
 #include <system_error>
 
 #include "io/errors.h"
+#include "io/pending_temp_files.h"
 
 namespace tessera {
 namespace {
@@ -86,11 +87,25 @@ class FdStreamBuf : public std::streambuf {
 struct TempFile {
   std::string path;
   int fd = -1;
+  int slot = -1;  // in the pending temp file table
 };
+
+// `path` with symbolic links at its end followed (up to 40, as the kernel's ELOOP limit), also
+// a dangling one: writing a file through a link writes its target and keeps the link.
+fs::path followLinks(const fs::path& path) {
+  fs::path p = path;
+  std::error_code ec;
+  for (int hops = 0; hops < 40 && fs::is_symlink(p, ec); ++hops) {
+    const fs::path link = fs::read_symlink(p, ec);
+    if (ec) break;
+    p = link.is_absolute() ? link : p.parent_path() / link;
+  }
+  return p;
+}
 
 // O_EXCL makes the name ours alone; pid + a process-wide counter keeps collisions rare, and a
 // stale file left by a crashed process with a recycled pid just moves us to the next number.
-TempFile createTempNextTo(const fs::path& target, const fs::path& dir) {
+TempFile createTempNextTo(const std::string& path, const fs::path& target, const fs::path& dir) {
   static std::atomic<unsigned long> counter{0};
   // Keep the name within NAME_MAX (255) even for very long target names.
   std::string stem = target.filename().string().substr(0, 200);
@@ -98,20 +113,19 @@ TempFile createTempNextTo(const fs::path& target, const fs::path& dir) {
     fs::path candidate = dir / ("." + stem + ".tmp-" + std::to_string(::getpid()) + "-" +
                                 std::to_string(counter.fetch_add(1)));
     int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd >= 0) return {candidate.string(), fd};
+    if (fd >= 0) return {candidate.string(), fd, registerPendingTempFile(candidate.c_str())};
     if (errno != EEXIST)
-      ioFail(target.string(), "cannot create a temporary file in directory '" + dir.string() + "'",
-             errno);
+      ioFail(path, "cannot create a temporary file in directory '" + dir.string() + "'", errno);
   }
-  ioFail(target.string(),
+  ioFail(path,
          "cannot find an unused temporary file name in directory '" + dir.string() + "'", EEXIST);
 }
 
 // rename() replaces the inode, so carry the old file's permission bits over explicitly.
-void keepPermissions(const std::string& target, int fd) {
+void keepPermissions(const std::string& path, const std::string& target, int fd) {
   struct stat st;
   if (::stat(target.c_str(), &st) == 0 && S_ISREG(st.st_mode))
-    if (::fchmod(fd, st.st_mode & 07777) != 0) ioFail(target, "cannot set permissions", errno);
+    if (::fchmod(fd, st.st_mode & 07777) != 0) ioFail(path, "cannot set permissions", errno);
 }
 
 // Makes the rename itself durable. Best effort: the new file is already in place, and some
@@ -125,15 +139,34 @@ void syncDirectory(const fs::path& dir) {
 
 }  // namespace
 
-void writeFileAtomically(const std::string& path,
-                         const std::function<void(std::ostream&)>& writer) {
-  const fs::path target(path);
+namespace {
+
+fs::path directoryOf(const fs::path& target) {
+  return target.has_parent_path() ? target.parent_path() : fs::path(".");
+}
+
+fs::path checkedTarget(const std::string& path) {
+  const fs::path target = followLinks(fs::path(path));
   const std::string name = target.filename().string();
   if (name.empty() || name == "." || name == "..")
     ioFail(path, "names a directory, not a file", 0);
-  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (fs::is_directory(target, ec)) ioFail(path, "is a directory, not a file", 0);
+  return target;
+}
 
-  TempFile temp = createTempNextTo(target, dir);
+void removeTemp(TempFile& temp) {
+  if (temp.fd >= 0) ::close(temp.fd);
+  temp.fd = -1;
+  ::unlink(temp.path.c_str());
+  forgetPendingTempFile(temp.slot);
+}
+
+// Writes `writer`'s bytes into a new temporary file next to `target`, flushed to disk and
+// closed; the caller renames it. On failure the temporary is gone and the error propagates.
+TempFile writeTemp(const std::string& path, const fs::path& target,
+                   const std::function<void(std::ostream&)>& writer) {
+  TempFile temp = createTempNextTo(path, target, directoryOf(target));
   try {
     {
       FdStreamBuf buffer(temp.fd);
@@ -144,21 +177,66 @@ void writeFileAtomically(const std::string& path,
         ioFail(path, "cannot write temporary file '" + temp.path + "'", buffer.error());
       if (!out) ioFail(path, "the output stream failed while writing", 0);
     }
-    keepPermissions(path, temp.fd);
+    keepPermissions(path, target.string(), temp.fd);
     if (::fsync(temp.fd) != 0)
       ioFail(path, "cannot flush temporary file '" + temp.path + "' to disk", errno);
     const int fd = temp.fd;
     temp.fd = -1;
     // close() can report a deferred write error (NFS, quotas): it must be checked too.
     if (::close(fd) != 0) ioFail(path, "cannot close temporary file '" + temp.path + "'", errno);
-    if (::rename(temp.path.c_str(), path.c_str()) != 0)
-      ioFail(path, "cannot rename temporary file '" + temp.path + "' over it", errno);
   } catch (...) {
-    if (temp.fd >= 0) ::close(temp.fd);
-    ::unlink(temp.path.c_str());
+    removeTemp(temp);
     throw;
   }
-  syncDirectory(dir);
+  return temp;
+}
+
+void renameOver(const std::string& path, TempFile& temp, const fs::path& target) {
+  if (::rename(temp.path.c_str(), target.c_str()) != 0) {
+    const int err = errno;
+    removeTemp(temp);
+    ioFail(path, "cannot rename temporary file '" + temp.path + "' over it", err);
+  }
+  forgetPendingTempFile(temp.slot);
+  syncDirectory(directoryOf(target));
+}
+
+}  // namespace
+
+void writeFileAtomically(const std::string& path,
+                         const std::function<void(std::ostream&)>& writer) {
+  const fs::path target = checkedTarget(path);
+  TempFile temp = writeTemp(path, target, writer);
+  renameOver(path, temp, target);
+}
+
+AtomicFileGroup::~AtomicFileGroup() {
+  for (Staged& s : staged_) {
+    ::unlink(s.temp.c_str());
+    forgetPendingTempFile(s.slot);
+  }
+}
+
+void AtomicFileGroup::stage(const std::string& path,
+                            const std::function<void(std::ostream&)>& writer) {
+  const fs::path target = checkedTarget(path);
+  TempFile temp = writeTemp(path, target, writer);
+  staged_.push_back({path, target.string(), temp.path, temp.slot});
+}
+
+void AtomicFileGroup::commit() {
+  while (!staged_.empty()) {
+    Staged s = staged_.front();
+    staged_.erase(staged_.begin());
+    TempFile temp{s.temp, -1, s.slot};
+    renameOver(s.path, temp, fs::path(s.target));
+  }
+}
+
+void requireWritable(const std::string& path) {
+  const fs::path target = checkedTarget(path);
+  TempFile probe = createTempNextTo(path, target, directoryOf(target));
+  removeTemp(probe);
 }
 
 }  // namespace tessera

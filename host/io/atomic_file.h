@@ -4,6 +4,7 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace tessera {
 
@@ -19,10 +20,46 @@ namespace tessera {
 //   rename failing), and a writer leaving the stream in a failed state, removes the temporary
 //   file and throws InputError (kind Io, host/io/errors.h) naming `path` and the errno text.
 // - An existing target keeps its permission bits; a new one gets 0666 minus the umask, as
-//   for any newly created file. A symbolic link at `path` is replaced, not followed.
+//   for any newly created file. A symbolic link at `path` is followed (also a chain of them,
+//   and one whose target does not exist yet): the file it points to is written, the link stays.
+// - The temporary file is registered in host/io/pending_temp_files.h while it exists, so a
+//   SIGINT or SIGTERM removes it (once the program called removePendingTempFilesOnSignals).
 // After the rename the directory is fsynced too (best effort), so the new name survives a
 // power loss.
 void writeFileAtomically(const std::string& path,
                          const std::function<void(std::ostream&)>& writer);
+
+// Several output files written whole or not at all, together: stage() writes each to its
+// temporary file (as writeFileAtomically, fsynced), commit() renames them all over their
+// targets once every one was written. Until commit(), a failure anywhere (a writer throwing,
+// a full disk, an exception in the work between two stage() calls) leaves every target as it
+// was: the destructor removes the temporaries not committed. The renames are the only step
+// left after the last byte is on disk; one failing after another succeeded (the directory's
+// permissions changed meanwhile) throws, naming its path.
+class AtomicFileGroup {
+ public:
+  AtomicFileGroup() = default;
+  AtomicFileGroup(const AtomicFileGroup&) = delete;
+  AtomicFileGroup& operator=(const AtomicFileGroup&) = delete;
+  ~AtomicFileGroup();
+
+  void stage(const std::string& path, const std::function<void(std::ostream&)>& writer);
+  void commit();
+
+ private:
+  struct Staged {
+    std::string path;    // as given, for messages
+    std::string target;  // `path` with symbolic links followed: what is replaced
+    std::string temp;
+    int slot = -1;       // in the pending temp file table
+  };
+  std::vector<Staged> staged_;
+};
+
+// Throws the InputError (kind Io, naming `path`) that writing `path` would end in when its
+// directory cannot take a new file (missing, not writable, read-only file system) or `path` is
+// a directory, by creating and removing a temporary file there. For checking every output
+// before the work, so a long run does not end in "cannot write".
+void requireWritable(const std::string& path);
 
 }  // namespace tessera

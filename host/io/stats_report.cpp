@@ -218,13 +218,15 @@ nlohmann::json optionsToJson(const QuadtreeOptions& o) {
           {"nodeBudget", o.nodeBudget}};
 }
 
-void writeStatsFile(const std::string& path, const nlohmann::json& report) {
+void writeStats(std::ostream& out, const nlohmann::json& report) {
   // Invalid UTF-8 (a file name from a non-UTF-8 locale) becomes U+FFFD instead of throwing.
   const std::string text =
       report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
-  writeFileAtomically(path, [&](std::ostream& out) {
-    out.write(text.data(), std::streamsize(text.size()));
-  });
+  out.write(text.data(), std::streamsize(text.size()));
+}
+
+void writeStatsFile(const std::string& path, const nlohmann::json& report) {
+  writeFileAtomically(path, [&](std::ostream& out) { writeStats(out, report); });
 }
 
 }  // namespace tessera

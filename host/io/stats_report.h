@@ -5,6 +5,7 @@
 #pragma once
 #include <nlohmann/json_fwd.hpp>
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -79,5 +80,7 @@ nlohmann::json optionsToJson(const QuadtreeOptions& options);
 // Writes report.dump(2) and a newline via writeFileAtomically (InputError of kind Io on
 // failure; the file is whole or untouched).
 void writeStatsFile(const std::string& path, const nlohmann::json& report);
+// The same text into `out` (for AtomicFileGroup::stage).
+void writeStats(std::ostream& out, const nlohmann::json& report);
 
 }  // namespace tessera

@@ -1,0 +1,30 @@
+// The files one run writes: checked before the work (no output is an input or another output,
+// every output's directory takes a new file), then written together at the end
+// (AtomicFileGroup, host/io/atomic_file.h): all of them or none.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "io/atomic_file.h"
+#include "mesh/tessellate.h"
+
+namespace tessera::cli {
+
+// A file named on the command line and the option (or argument) that named it, for messages.
+struct NamedFile {
+  std::string option;  // "-o", "--stats", "input", ...
+  std::string path;    // empty (not given) and "-" (standard input or output) are skipped
+};
+
+// Refuses, as a bad command line (CLI::ValidationError, exit 1), an output that is the same
+// file as an input (compared by identity: device and inode, so a hard link, a symbolic link or
+// another spelling of the name is caught) or as another output (the same name once links in
+// its folders are resolved, or the same inode). Then checks that every output can be written
+// (requireWritable: an InputError of kind Io naming it, exit 5), before any work is done.
+void checkOutputs(const std::vector<NamedFile>& inputs, const std::vector<NamedFile>& outputs);
+
+// Stages `mesh` in `group`, in `format` or that of `path`'s extension (checkMeshFormat).
+void stageMesh(AtomicFileGroup& group, const std::string& path, const TriangleMesh& mesh,
+               const std::string& format = "");
+
+}  // namespace tessera::cli
