@@ -53,3 +53,13 @@ tessera_files_case("an output folder that does not exist is found before the inp
   ARGS tessellate nofile.bpt -o missing/m.obj)
 tessera_files_case("a symbolic link as output is written through" 0 "wrote link.obj"
   ARGS tessellate ${CUP} --backend cpu -m B -o link.obj SYMLINK real.obj=link.obj LINKS link.obj PRESENT real.obj)
+
+# Ctrl-C or kill during a run whose mesh is staged: the temporary file is removed and tessera
+# dies of the signal (exit 128 + signal number).
+foreach(sig INT TERM)
+  add_test(NAME "cli files: SIG${sig} removes the staged temporary file"
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/expect_signal_cleanup.sh $<TARGET_FILE:tessera>
+            ${PROJECT_SOURCE_DIR}/data/teapot.bpt ${FILES_TEST_DIR}/signal_${sig} ${sig})
+  set_tests_properties("cli files: SIG${sig} removes the staged temporary file" PROPERTIES
+    LABELS cpu)
+endforeach()

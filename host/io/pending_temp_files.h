@@ -23,7 +23,9 @@ void forgetPendingTempFile(int slot);
 
 // Installs handlers for SIGINT and SIGTERM that unlink every pending temporary file, restore
 // the default action and raise the signal again (so the exit status still says "killed by
-// SIGINT"). Call once, early in main(); a library user keeps their own handlers by not calling it.
+// SIGINT"). A signal that is ignored when this is called (nohup, a shell's background job)
+// stays ignored. Call once, early in main(); a library user keeps their own handlers by not
+// calling it.
 void removePendingTempFilesOnSignals();
 
 }  // namespace tessera
