@@ -1,6 +1,7 @@
 // The level-synchronous frontier of the adaptive quad-tree (CPU side).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <unordered_map>
 
 #include "common/stopwatch.h"
@@ -53,10 +54,22 @@ QuadtreeResult uniformGrid(size_t patchCount, const QuadtreeOptions& o) {
 
 }  // namespace
 
+namespace {
+
+// A threshold as a message shows it: as short as "%g" makes it (0.1, -1, nan).
+std::string shownNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+}  // namespace
+
 void validateQuadtreeOptions(const QuadtreeOptions& o) {
   auto positiveFinite = [](float x) { return std::isfinite(x) && x > 0.0f; };
   if (!positiveFinite(o.linearity) || !positiveFinite(o.flatness))
-    throw std::invalid_argument("linearity and flatness must be finite and > 0");
+    throw std::invalid_argument("linearity and flatness must be finite and > 0 (got " +
+                                shownNumber(o.linearity) + " and " + shownNumber(o.flatness) + ")");
   if (!(o.minSize >= 0.0f) || !std::isfinite(o.minSize))
     throw std::invalid_argument("the minimum node size must be finite and >= 0");
   // Paths keep 2 bits per level in 64 bits; fp32 parameters stop resolving long before.
@@ -64,9 +77,11 @@ void validateQuadtreeOptions(const QuadtreeOptions& o) {
   const uint32_t depthCap = o.rule == SplitRule::Tolerance ? 32 : 24;
   if (o.maxDepth > depthCap)
     throw std::invalid_argument("the maximum depth is at most " + std::to_string(depthCap) +
-                                (o.rule == SplitRule::Tolerance ? " for rule T" : ""));
+                                (o.rule == SplitRule::Tolerance ? " for rule T" : "") + " (got " +
+                                std::to_string(o.maxDepth) + ")");
   if (o.samples < 1 || o.samples > 32)
-    throw std::invalid_argument("the sample count S of rules C and D must be 1..32");
+    throw std::invalid_argument("the sample count S of rules C and D must be 1..32 (got " +
+                                std::to_string(o.samples) + ")");
   if (o.gridU < 1 || o.gridV < 1 || o.gridU > 4096 || o.gridV > 4096)
     throw std::invalid_argument("the uniform grid of rule A must be 1..4096 cells per side");
   if (o.nodeBudget == 0) throw std::invalid_argument("the node budget must be > 0");
