@@ -1,5 +1,5 @@
 // Output files written together (AtomicFileGroup), through symbolic links, checked before the
-// work (requireWritable), and temporary files removed on SIGINT and SIGTERM
+// work (validateWritable), and temporary files removed on SIGINT and SIGTERM
 // (host/io/atomic_file.h, host/io/pending_temp_files.h). Issue 18.
 #include <catch2/catch.hpp>
 #include <signal.h>
@@ -118,20 +118,20 @@ TEST_CASE("atomic file: a symbolic link is written through, and stays a link", "
   CHECK(entries(dir.path / "real") == std::vector<std::string>{"mesh.obj", "new.obj"});
 }
 
-TEST_CASE("requireWritable: a missing folder or a directory in the way, before the work",
+TEST_CASE("validateWritable: a missing folder or a directory in the way, before the work",
           "[io][atomic]") {
   ScratchDir dir;
   const std::string missing = (dir.path / "missing" / "out.obj").string();
   try {
-    requireWritable(missing);
+    validateWritable(missing);
     FAIL("no error for " << missing);
   } catch (const InputError& e) {
     CHECK(e.kind() == InputErrorKind::Io);
     CHECK(e.file() == missing);
   }
   fs::create_directory(dir.path / "taken");
-  REQUIRE_THROWS_AS(requireWritable((dir.path / "taken").string()), InputError);
-  requireWritable((dir.path / "fine.obj").string());
+  REQUIRE_THROWS_AS(validateWritable((dir.path / "taken").string()), InputError);
+  validateWritable((dir.path / "fine.obj").string());
   CHECK(entries(dir.path) == std::vector<std::string>{"taken"});  // the probe is gone
 }
 

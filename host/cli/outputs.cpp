@@ -53,7 +53,7 @@ void checkOutputs(const std::vector<NamedFile>& inputs, const std::vector<NamedF
                                                    "': give each output its own file");
   }
   for (const NamedFile& out : outputs)
-    if (given(out)) requireWritable(out.path);
+    if (given(out)) validateWritable(out.path);
 }
 
 void stageMesh(AtomicFileGroup& group, const std::string& path, const TriangleMesh& mesh,

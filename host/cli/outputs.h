@@ -20,7 +20,7 @@ struct NamedFile {
 // file as an input (compared by identity: device and inode, so a hard link, a symbolic link or
 // another spelling of the name is caught) or as another output (the same name once links in
 // its folders are resolved, or the same inode). Then checks that every output can be written
-// (requireWritable: an InputError of kind Io naming it, exit 5), before any work is done.
+// (validateWritable: an InputError of kind Io naming it, exit 5), before any work is done.
 void checkOutputs(const std::vector<NamedFile>& inputs, const std::vector<NamedFile>& outputs);
 
 // Stages `mesh` in `group`, in `format` or that of `path`'s extension (checkMeshFormat).

@@ -233,7 +233,7 @@ void AtomicFileGroup::commit() {
   }
 }
 
-void requireWritable(const std::string& path) {
+void validateWritable(const std::string& path) {
   const fs::path target = checkedTarget(path);
   TempFile probe = createTempNextTo(path, target, directoryOf(target));
   removeTemp(probe);

@@ -60,6 +60,6 @@ class AtomicFileGroup {
 // directory cannot take a new file (missing, not writable, read-only file system) or `path` is
 // a directory, by creating and removing a temporary file there. For checking every output
 // before the work, so a long run does not end in "cannot write".
-void requireWritable(const std::string& path);
+void validateWritable(const std::string& path);
 
 }  // namespace tessera
