@@ -52,10 +52,6 @@ QuadtreeResult uniformGrid(size_t patchCount, const QuadtreeOptions& o) {
       " nodes there. Raise the thresholds, lower the maximum depth, or raise the budget.");
 }
 
-}  // namespace
-
-namespace {
-
 // A threshold as a message shows it: as short as "%g" makes it (0.1, -1, nan).
 std::string shownNumber(double value) {
   char text[32];
