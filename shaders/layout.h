@@ -79,6 +79,9 @@ TESSERA_CONST(uint, kCauseWithinTolerance, 7u);  // rule T: the proven bound is 
 TESSERA_CONST(uint, kCauseSplitGrid, 8u);
 // The largest cap on rule T's equal children per direction (ClassifyPush.toleranceSplitCap).
 TESSERA_CONST(uint, kToleranceSplitCapMax, 16u);
+// Rule T in screen space (host/mesh/screen_tolerance.h; set on the host, never by a shader):
+TESSERA_CONST(uint, kCauseCulled, 9u);    // the node's hull is outside one clip plane: unseen
+TESSERA_CONST(uint, kCauseEyePlane, 10u);  // the near plane cuts the node at the eye-plane depth
 // Rule T on rational patches: the pieces per direction on which the `split` bounds take the
 // weight ratios where a weight of the node's net vanishes (DivisionOptions::ratioPieces).
 TESSERA_CONST(int, kToleranceRatioPieces, 4);
