@@ -22,8 +22,14 @@ TEST_CASE("tolerance: model units and percentages parse; bad values are refused"
   REQUIRE(percent.value == 0.1 / 100);
   REQUIRE(parseTolerance("100%").value == 1.0);
   REQUIRE(parseTolerance("2e-3").value == 2e-3);
+  const ToleranceSpec pixels = parseTolerance("0.5px");
+  REQUIRE(pixels.pixels);
+  REQUIRE_FALSE(pixels.relative);
+  REQUIRE(pixels.value == 0.5);
+  REQUIRE_THROWS_WITH(resolveTolerance(pixels, {}), Catch::Contains("needs a camera"));
   for (const char* bad : {"0", "-0.01", "nan", "inf", "abc", "abc%", "%", "", "0%", "-1%",
-                          "150%", "100.5%", "0.01x", " 0.01", "0.1%%", "nan%"}) {
+                          "150%", "100.5%", "0.01x", " 0.01", "0.1%%", "nan%", "0px", "-1px",
+                          "px", "1 px", "infpx", "1%px", "1pxx"}) {
     INFO("'" << bad << "'");
     REQUIRE_THROWS_AS(parseTolerance(bad), std::invalid_argument);
     REQUIRE_THROWS_WITH(parseTolerance(bad), Catch::Contains(std::string("'") + bad + "'"));

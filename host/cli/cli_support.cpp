@@ -119,16 +119,20 @@ namespace tessera::cli {
 
 Tessellation tessellateWithFallback(ChosenBackend& chosen, const std::string& backendName,
                                     const std::vector<BezierPatch>& patches,
-                                    const QuadtreeOptions& options) {
+                                    const QuadtreeOptions& options, const ScreenView* view) {
+  const auto run = [&] {
+    return view ? tessellateScreenTolerance(patches, options, *view, chosen.backend)
+                : tessellate(patches, options, chosen.backend);
+  };
   try {
-    return tessellate(patches, options, chosen.backend);
+    return run();
   } catch (const vk::VulkanError& e) {
     if (backendName != "auto" || !chosen.context) throw;
     std::fprintf(stderr, "tessera: the Vulkan device failed (%s); falling back to the CPU backend\n",
                  e.what());
     chosen.backend = makeMirrorBackend();
     chosen.context.reset();
-    return tessellate(patches, options, chosen.backend);
+    return run();
   }
 }
 

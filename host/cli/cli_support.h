@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/screen_tolerance.h"
 #include "mesh/tessellate.h"
 #include "vk/context.h"
 
@@ -52,9 +53,11 @@ ChosenBackend chooseBackend(const std::string& name, const std::string& device);
 
 // Tessellates on the chosen backend. With --backend auto, a Vulkan failure during the run
 // (device lost, out of device memory) switches `chosen` to the CPU backend, says so on stderr,
-// and runs again there; otherwise the vk::VulkanError propagates.
+// and runs again there; otherwise the vk::VulkanError propagates. With `view`, rule T runs in
+// screen space (options.tolerance in pixels: tessellateScreenTolerance).
 Tessellation tessellateWithFallback(ChosenBackend& chosen, const std::string& backendName,
                                     const std::vector<BezierPatch>& patches,
-                                    const QuadtreeOptions& options);
+                                    const QuadtreeOptions& options,
+                                    const ScreenView* view = nullptr);
 
 }  // namespace tessera::cli

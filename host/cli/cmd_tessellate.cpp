@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/camera_options.h"
 #include "cli/cli_support.h"
 #include "cli/commands.h"
 #include "cli/outputs.h"
@@ -46,6 +47,7 @@ struct TessellateArgs {
   bool deviation = false;  // --deviation: measure the deviation (--no-deviation: don't)
   bool lowerBound = false;  // --lower-bound: N_min and triangles / N_min (rule T's report has it too)
   std::vector<std::string> formats;  // --format: for `-`, or a path whose extension cannot tell
+  CameraArgs camera;  // --view / --view-projection / --viewport: the camera of "--tolerance 1px"
 };
 
 // "N" or "NxM" (also "N×M"), each 1..4096: the cells of rule A's uniform grid.
@@ -121,6 +123,24 @@ int run(const TessellateArgs& a) {
     frontierBatchNodes(checked, SIZE_MAX);  // the budget holds a batch at this depth
   });
   const bool ruleT = options.rule == SplitRule::Tolerance;
+  std::optional<Camera> camera;
+  // A pixel tolerance and a camera come together (rule T in screen space); a misuse is a bad
+  // command line (exit 1), as the other misuses of --tolerance are.
+  checkCommandLine([&] {
+    camera = parseCamera(a.camera);
+    if (toleranceSpec.pixels && !camera)
+      throw std::invalid_argument("--tolerance '" + a.tolerance +
+                                  "' is in pixels: give the camera with --view or "
+                                  "--view-projection (and --viewport)");
+    if (camera && !toleranceSpec.pixels)
+      throw std::invalid_argument("--view / --view-projection: a camera goes with a tolerance in "
+                                  "pixels (--tolerance 1px)");
+    if (toleranceSpec.pixels && a.lowerBound)
+      throw std::invalid_argument("--lower-bound: the lower bound is in model units; it does not "
+                                  "go with a tolerance in pixels");
+  });
+  std::optional<ScreenView> view;
+  if (camera) view = ScreenView{*camera, kDefaultEyePlaneDepth};
   const StreamFormats formats = parseFormats(a.formats);
   const bool meshToStdout = a.output == kStdioPath;
   const bool statsToStdout = a.stats == kStdioPath;
@@ -135,14 +155,17 @@ int run(const TessellateArgs& a) {
   AtomicFileGroup files;
 
   std::vector<BezierPatch> patches = readSurface(a.input, inputFormat);
-  if (ruleT) options.tolerance = resolveTolerance(toleranceSpec, patches);
+  if (ruleT)
+    options.tolerance =
+        toleranceSpec.pixels ? toleranceSpec.value : resolveTolerance(toleranceSpec, patches);
   const std::string inputName = a.input == kStdioPath ? kStdinName : a.input;
   Progress progress(!a.quiet, progressIntervalSeconds());
   options.onLevel = progress.treeCallback(patches.size());
 
   ChosenBackend chosen = chooseBackend(a.backend, a.device);
 
-  Tessellation t = tessellateWithFallback(chosen, a.backend, patches, options);
+  Tessellation t =
+      tessellateWithFallback(chosen, a.backend, patches, options, view ? &*view : nullptr);
   const std::unique_ptr<vk::Context>& context = chosen.context;
   const Backend& backend = chosen.backend;
   if (!a.output.empty() && !meshToStdout) stageMesh(files, a.output, t.mesh, formats.output);
@@ -155,7 +178,8 @@ int run(const TessellateArgs& a) {
   // (the mesh is within it), so --lower-bound with another rule measures the deviation.
   // Rule T puts the bound in its report; the plain summary computes it only when asked (it can
   // cost several times the tessellation of a small model: the teapot 57 ms against 12 ms).
-  const bool wantBound = (a.lowerBound && (wantReport || summary)) || (ruleT && wantReport);
+  const bool wantBound =
+      ((a.lowerBound && (wantReport || summary)) || (ruleT && wantReport)) && !view;
   std::optional<PatchDeviation> deviation, geometric;
   if ((a.deviation || (wantBound && !ruleT)) && (wantReport || summary)) {
     progress.update("measuring the deviation from the surface");
@@ -204,7 +228,16 @@ int run(const TessellateArgs& a) {
                  s.depth, s.leaves, s.triangles, s.vertices, s.degenerateTrianglesDropped);
     // Rule T's leaves each carry their proven bound (QuadLeaf::flatness): the largest of them
     // is what the mesh is proven within, measured or not.
-    if (ruleT) {
+    if (view) {
+      const ScreenLeafCounts leaves = screenLeafCounts(t.tree);
+      std::fprintf(to,
+                   "proven within %.4g px on screen (largest bound of %zu proven leaves; tolerance "
+                   "%.4g px)%s; %zu leaves culled off-screen, %zu cut by the near plane "
+                   "(unproven)\n",
+                   leaves.largestProvenBound, leaves.proven, options.tolerance,
+                   leaves.largestProvenBound <= options.tolerance ? "" : " — ABOVE the tolerance",
+                   leaves.culled, leaves.eyePlane);
+    } else if (ruleT) {
       const double bound = largestLeafBound(t.tree);
       std::fprintf(to, "proven within %.4g of the surface (largest leaf bound; tolerance %.4g)%s\n",
                    bound, options.tolerance, bound <= options.tolerance ? "" : " — ABOVE the tolerance");
@@ -252,8 +285,10 @@ void addTessellateOptions(CLI::App* cmd, TessellateArgs& args) {
                   "B midpoint, C sampled κ max, D true κ max");
   cmd->add_option("--tolerance", args.tolerance,
                   "rule T: the largest distance from the surface, in model units (0.01) or as a "
-                  "percentage of the control points' bounding-box diagonal (0.1%); default 0.1%. "
-                  "Not with -m A..D");
+                  "percentage of the control points' bounding-box diagonal (0.1%), or in pixels "
+                  "on screen (1px, needs --view or --view-projection); default 0.1%. Not with "
+                  "-m A..D");
+  addCameraOptions(cmd, args.camera);
   cmd->add_option("--linearity", args.linearity, "rules B-D: edge linearity threshold (1 - Ti·Tj)")
       ->capture_default_str();
   cmd->add_option("--flatness", args.flatness, "rules B-D: flatness threshold (1 - Ni·Nj)")

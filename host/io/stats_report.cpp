@@ -8,6 +8,7 @@
 
 #include "common/stopwatch.h"
 #include "io/atomic_file.h"
+#include "mesh/screen_tolerance.h"
 
 namespace tessera {
 namespace {
@@ -194,14 +195,20 @@ void addToleranceReport(nlohmann::json& report, const Tessellation& t, const Tol
   for (const QuadLeaf& leaf : t.tree.leaves)
     perPatch.at(leaf.patchIndex) = std::max(perPatch.at(leaf.patchIndex), double(leaf.flatness));
   for (size_t p = 0; p < patches.size(); ++p) patches[p]["largestLeafBound"] = perPatch[p];
-  const double bound = largestLeafBound(t.tree);
+  // In pixels (screen space) only the proven leaves carry a bound: culled ones are unseen,
+  // eye-plane ones unproven (mesh/screen_tolerance.h); they are counted instead.
+  const ScreenLeafCounts screen = screenLeafCounts(t.tree);
+  const double bound = spec.pixels ? screen.largestProvenBound : largestLeafBound(t.tree);
   report["tolerance"] = {
       {"requested", resolved},
       {"given", spec.text},
       {"relative", spec.relative},
+      {"pixels", spec.pixels},
       {"diagonal", spec.relative ? nlohmann::json(resolved / spec.value) : nlohmann::json()},
       {"largestLeafBound", bound},
-      {"provenWithin", bound <= resolved}};
+      {"provenWithin", bound <= resolved},
+      {"culledLeaves", spec.pixels ? nlohmann::json(screen.culled) : nlohmann::json()},
+      {"eyePlaneLeaves", spec.pixels ? nlohmann::json(screen.eyePlane) : nlohmann::json()}};
 }
 
 nlohmann::json optionsToJson(const QuadtreeOptions& o) {

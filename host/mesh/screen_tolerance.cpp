@@ -1,5 +1,6 @@
 #include "mesh/screen_tolerance.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -95,8 +96,9 @@ class ScreenSpaceClassifier : public NodeClassifier {
       gpu::NodeDecision& d = decisions[i];
       switch (visibilityOf(sub)) {
         case Visibility::Inside: break;
-        case Visibility::Culled:
+        case Visibility::Culled:  // unseen: no bound to keep (the inner one may be NaN)
           d.cause = gpu::kCauseCulled;
+          d.flatness = 0.0f;
           break;
         case Visibility::NearPlane:
           if (d.cause == gpu::kCauseWithinTolerance) break;  // proven where W > 0 throughout
@@ -174,6 +176,23 @@ Tessellation tessellateScreenTolerance(const std::vector<BezierPatch>& patches,
   result.stats.treeMs = treeMs;
   result.stats.totalMs = total.elapsedMs();
   return result;
+}
+
+ScreenLeafCounts screenLeafCounts(const QuadtreeResult& tree) {
+  ScreenLeafCounts counts;
+  for (const QuadLeaf& leaf : tree.leaves) {
+    if (leaf.cause == gpu::kCauseWithinTolerance) {
+      ++counts.proven;
+      counts.largestProvenBound = std::max(counts.largestProvenBound, double(leaf.flatness));
+    } else if (leaf.cause == gpu::kCauseCulled) {
+      ++counts.culled;
+    } else if (leaf.cause == gpu::kCauseEyePlane) {
+      ++counts.eyePlane;
+    } else {
+      ++counts.other;
+    }
+  }
+  return counts;
 }
 
 }  // namespace tessera

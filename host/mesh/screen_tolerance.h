@@ -58,4 +58,12 @@ Tessellation tessellateScreenTolerance(const std::vector<BezierPatch>& patches,
                                        const QuadtreeOptions& options, const ScreenView& view,
                                        Backend& backend);
 
+// A screen-space tree's leaves by cause: proven (kCauseWithinTolerance) with the largest of
+// their bounds (pixels), culled, cut by the near plane, and others (MaxDepth, MinSize).
+struct ScreenLeafCounts {
+  size_t proven = 0, culled = 0, eyePlane = 0, other = 0;
+  double largestProvenBound = 0;
+};
+ScreenLeafCounts screenLeafCounts(const QuadtreeResult& tree);
+
 }  // namespace tessera

@@ -24,6 +24,17 @@ double wholeNumber(const std::string& text) {
 }  // namespace
 
 ToleranceSpec parseTolerance(const std::string& text) {
+  if (text.size() > 2 && text.compare(text.size() - 2, 2, "px") == 0) {
+    const double pixels = wholeNumber(text.substr(0, text.size() - 2));
+    if (!(pixels > 0))
+      throw std::invalid_argument("the tolerance '" + text + "' is not a number of pixels > 0");
+    ToleranceSpec spec;
+    spec.text = text;
+    spec.relative = false;
+    spec.pixels = true;
+    spec.value = pixels;
+    return spec;
+  }
   const bool relative = !text.empty() && text.back() == '%';
   const double number = wholeNumber(relative ? text.substr(0, text.size() - 1) : text);
   ToleranceSpec spec;
@@ -63,12 +74,17 @@ double controlPointDiagonal(const std::vector<BezierPatch>& patches) {
 }
 
 double resolveTolerance(const ToleranceSpec& spec, const std::vector<BezierPatch>& patches) {
+  if (spec.pixels)
+    throw std::invalid_argument("the tolerance '" + spec.text +
+                                "' is in pixels: it needs a camera (a view and a viewport)");
   return spec.relative ? spec.value * controlPointDiagonal(patches) : spec.value;
 }
 
 std::string describeTolerance(const ToleranceSpec& spec, double resolved) {
   char text[160];
-  if (spec.relative)
+  if (spec.pixels)
+    std::snprintf(text, sizeof text, "%.4g px", resolved);
+  else if (spec.relative)
     std::snprintf(text, sizeof text, "%.4g (%s of the diagonal %.4g)", resolved, spec.text.c_str(),
                   resolved / spec.value);
   else

@@ -18,12 +18,14 @@ constexpr double kDefaultRelativeTolerance = 0.001;
 struct ToleranceSpec {
   double value = kDefaultRelativeTolerance;  // model units, or a fraction (0.001 for "0.1%")
   bool relative = true;                      // value is a fraction of the diagonal
+  bool pixels = false;                       // value is in pixels: needs a camera (rule T in
+                                             // screen space, mesh/screen_tolerance.h)
   std::string text = "0.1%";                 // as the user gave it
 };
 
-// "0.01" (model units, finite and > 0) or "0.1%" (a percentage in (0, 100]). Throws
-// std::invalid_argument naming the text for anything else (0, negative, NaN, inf, "abc%",
-// "150%", trailing garbage).
+// "0.01" (model units, finite and > 0), "0.1%" (a percentage in (0, 100]) or "1px" (pixels,
+// finite and > 0). Throws std::invalid_argument naming the text for anything else (0,
+// negative, NaN, inf, "abc%", "150%", "0px", trailing garbage).
 ToleranceSpec parseTolerance(const std::string& text);
 
 // The diagonal of the axis-aligned bounding box of every control point of every patch
@@ -31,10 +33,11 @@ ToleranceSpec parseTolerance(const std::string& text);
 // diagonal is 0 (every point the same), since a relative tolerance would then be 0.
 double controlPointDiagonal(const std::vector<BezierPatch>& patches);
 
-// δ in model units: spec.value, or spec.value × controlPointDiagonal(patches).
+// δ in model units: spec.value, or spec.value × controlPointDiagonal(patches). A pixel
+// tolerance has no model-unit value: std::invalid_argument saying it needs a camera.
 double resolveTolerance(const ToleranceSpec& spec, const std::vector<BezierPatch>& patches);
 
-// "0.007 (0.1% of the diagonal 7.2)" or "0.01": for summaries and messages.
+// "0.007 (0.1% of the diagonal 7.2)", "0.01" or "1 px": for summaries and messages.
 std::string describeTolerance(const ToleranceSpec& spec, double resolved);
 
 }  // namespace tessera
