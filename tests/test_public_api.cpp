@@ -230,6 +230,85 @@ TEST_CASE("public API: RuleOptions' default depth is the rule's own, rule T's de
   REQUIRE(tessera::api::toQuadtreeOptions(options).maxDepth == 7);
 }
 
+TEST_CASE("public API: a pixel tolerance holds on screen, and far views need fewer triangles",
+          "[api][screen]") {
+  tessera::Tessellator tessellator({tessera::Device::Cpu});
+  // Far to near on the teapot: more triangles as it grows on screen.
+  const std::vector<tessera::Patch> teapot = tessera::loadPatches(kTeapot);
+  size_t previous = 0;
+  for (double distance : {40.0, 12.0, 4.0}) {
+    const tessera::View view = tessera::lookAtView({distance, -distance, 0.6 * distance},
+                                                   {0, 0, 1.5}, {0, 0, 1}, 45.0, 800, 600,
+                                                   0.01, 1000.0);
+    const tessera::Mesh mesh = tessellator.tessellateToPixelTolerance(teapot, 1.0, view);
+    requireConsistent(mesh, teapot.size());
+    INFO("teapot at distance " << distance << ", 1 px: " << mesh.triangleCount() << " triangles");
+    REQUIRE(mesh.triangleCount() > previous);
+    previous = mesh.triangleCount();
+  }
+  // One patch (every vertex's uv is on it), seen close and obliquely, partly off-screen.
+  const std::vector<double> xyz = bumpPatchPoints();
+  const std::vector<tessera::Patch> bump = tessera::patchesFromArrays(3, 3, 1, xyz.data());
+  tessera::BezierPatch exact;
+  for (int k = 0; k < 16; ++k) exact.cp.push_back({xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]});
+  const tessera::View view =
+      tessera::lookAtView({-0.3, -0.4, 1.0}, {0.7, 0.6, 0.2}, {0, 0, 1}, 60.0, 800, 600, 0.01, 100);
+  const tessera::Mesh mesh = tessellator.tessellateToPixelTolerance(bump, 0.5, view);
+  glm::dmat4 m;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) m[c][r] = view.viewProjection[size_t(4 * c + r)];
+  const auto pixel = [&](const glm::dvec3& p) {
+    const glm::dvec4 h = m * glm::dvec4(p, 1.0);
+    return glm::dvec2((h.x / h.w + 1) * 0.5 * view.width, (h.y / h.w + 1) * 0.5 * view.height);
+  };
+  // Triangles with every corner inside the view volume come from proven leaves (a culled
+  // leaf's triangles lie outside one clip plane): the screen mix of the projected corners
+  // against the projected surface at the same mix of (u, v).
+  double worst = 0;
+  size_t measured = 0;
+  for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+    glm::dvec3 corner[3];
+    glm::dvec2 uv[3];
+    bool inside = true;
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t i = mesh.indices[3 * t + k];
+      corner[k] = {mesh.positions[3 * i], mesh.positions[3 * i + 1], mesh.positions[3 * i + 2]};
+      uv[k] = {mesh.uvs[2 * i], mesh.uvs[2 * i + 1]};
+      const glm::dvec4 h = m * glm::dvec4(corner[k], 1.0);
+      inside = inside && std::abs(h.x) <= h.w && std::abs(h.y) <= h.w && h.z >= 0 && h.z <= h.w;
+    }
+    if (!inside) continue;
+    ++measured;
+    for (double a : {1 / 3.0, 0.5, 0.25})
+      for (double b : {1 / 3.0, 0.5, 0.25}) {
+        const double c = 1 - a - b;
+        if (c < 0) continue;
+        const glm::dvec2 x = a * uv[0] + b * uv[1] + c * uv[2];
+        const glm::dvec2 drawn = a * pixel(corner[0]) + b * pixel(corner[1]) + c * pixel(corner[2]);
+        worst = std::max(worst, glm::length(drawn - pixel(tessera::patchPoint(exact, x.x, x.y))));
+      }
+  }
+  INFO("bump patch close up, 0.5 px: " << mesh.triangleCount() << " triangles, " << measured
+                                       << " in view, worst " << worst << " px");
+  REQUIRE(measured > 100);
+  REQUIRE(measured < mesh.triangleCount());  // part of it is off-screen
+  REQUIRE(worst <= 0.5);
+  REQUIRE(worst > 0.5 / 20);
+
+  const tessera::View ok = tessera::lookAtView({5, 5, 5}, {0, 0, 0}, {0, 0, 1}, 45, 64, 64, 0.1, 10);
+  REQUIRE_THROWS_AS(tessellator.tessellateToPixelTolerance(teapot, 0.0, ok), tessera::ArgumentError);
+  tessera::ToleranceOptions grids;
+  grids.method = tessera::ToleranceMethod::UniformGrids;
+  REQUIRE_THROWS_AS(tessellator.tessellateToPixelTolerance(teapot, 1.0, ok, grids),
+                    tessera::ArgumentError);
+  tessera::View broken = ok;
+  broken.width = 0;
+  REQUIRE_THROWS_AS(tessellator.tessellateToPixelTolerance(teapot, 1.0, broken),
+                    tessera::ArgumentError);
+  REQUIRE_THROWS_AS(tessera::lookAtView({1, 1, 1}, {1, 1, 1}, {0, 0, 1}, 45, 64, 64, 0.1, 10),
+                    tessera::ArgumentError);
+}
+
 TEST_CASE("public API: Vulkan gives the CPU's mesh on the teapot", "[gpu][api]") {
   tessera::Tessellator gpu({tessera::Device::Vulkan});
   REQUIRE(gpu.usesVulkan());

@@ -8,6 +8,7 @@
 #include "division/count.h"
 #include "eval/patch_set.h"
 #include "geometry/rational.h"
+#include "mesh/screen_tolerance.h"
 #include "mesh/tessellate.h"
 #include "vk/context.h"
 #include "vk/errors.h"
@@ -158,6 +159,50 @@ Mesh Tessellator::tessellateToTolerance(const std::vector<Patch>& patches, doubl
                            ->withFallback([&](Backend& backend) {
                              return countedGrids(internal, tolerance, maxPerDirection,
                                                  options.maxNodes, backend);
+                           })
+                           .mesh);
+  });
+}
+
+View lookAtView(const std::array<double, 3>& eye, const std::array<double, 3>& target,
+                const std::array<double, 3>& up, double fovYDegrees, int width, int height,
+                double nearDistance, double farDistance) {
+  const glm::dvec3 from(eye[0], eye[1], eye[2]), to(target[0], target[1], target[2]);
+  if (!(glm::length(to - from) > 0.0)) throw ArgumentError("lookAtView: the eye is on the target");
+  if (!(fovYDegrees > 0.0 && fovYDegrees < 179.0))
+    throw ArgumentError("lookAtView: the field of view must be in (0, 179) degrees");
+  const Camera camera = translatingErrors([&] {
+    return lookAtCamera(from, to, glm::dvec3(up[0], up[1], up[2]), glm::radians(fovYDegrees),
+                        width, height, nearDistance, farDistance);
+  });
+  View view;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) view.viewProjection[size_t(4 * c + r)] = camera.viewProjection[c][r];
+  view.width = width;
+  view.height = height;
+  return view;
+}
+
+Mesh Tessellator::tessellateToPixelTolerance(const std::vector<Patch>& patches, double pixels,
+                                             const View& view, const ToleranceOptions& options) {
+  if (!std::isfinite(pixels) || !(pixels > 0))
+    throw ArgumentError("the pixel tolerance must be finite and > 0, got " +
+                        std::to_string(pixels));
+  if (options.method != ToleranceMethod::Adaptive)
+    throw ArgumentError("a pixel tolerance takes ToleranceMethod::Adaptive only");
+  ScreenView screen;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) screen.camera.viewProjection[c][r] = view.viewProjection[size_t(4 * c + r)];
+  screen.camera.width = view.width;
+  screen.camera.height = view.height;
+  QuadtreeOptions quadtree = toleranceOptions(pixels);
+  quadtree.maxDepth = options.maxDepth;
+  quadtree.nodeBudget = options.maxNodes;
+  const std::vector<BezierPatch> internal = api::toBezierPatches(patches);
+  return translatingErrors([&] {
+    return api::toMesh(impl_
+                           ->withFallback([&](Backend& backend) {
+                             return tessellateScreenTolerance(internal, quadtree, screen, backend);
                            })
                            .mesh);
   });

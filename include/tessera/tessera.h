@@ -8,6 +8,7 @@
 // Everything here is plain C++17 and the standard library: no Vulkan, glm or internal types.
 // Errors are exceptions derived from tessera::Error (tessera/errors.h). docs/api.md.
 #pragma once
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -88,6 +89,21 @@ struct ToleranceOptions {
   size_t maxNodes = size_t(1) << 24;  // more nodes (or grid cells): LimitError
 };
 
+// A camera, for a tolerance in pixels: the clip-from-world matrix, 16 numbers column-major
+// (glm's and GLSL's order; Vulkan clip space: visible where −w ≤ x, y ≤ w and 0 ≤ z ≤ w, y
+// down), and the viewport in pixels. lookAtView makes a perspective one.
+struct View {
+  std::array<double, 16> viewProjection = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  int width = 1920, height = 1080;
+};
+
+// A perspective View from `eye` towards `target`, `up` up in the picture, `fovYDegrees` the
+// vertical field of view, near and far distances > 0. Throws ArgumentError for a viewport
+// < 1 px, fovYDegrees outside (0, 179), near ≤ 0, far ≤ near, or an eye on the target.
+View lookAtView(const std::array<double, 3>& eye, const std::array<double, 3>& target,
+                const std::array<double, 3>& up, double fovYDegrees, int width, int height,
+                double nearDistance, double farDistance);
+
 // An indexed triangle mesh in fp32. Per vertex: positions and normals (3 floats each), uvs
 // (2 floats: the vertex's (u, v) on its patch), patchIds (the index of its patch in the input).
 // indices: 3 per triangle, counter-clockwise seen from the side the normals point to.
@@ -143,6 +159,16 @@ class Tessellator {
   // maxPerDirection), DeviceError as tessellate.
   Mesh tessellateToTolerance(const std::vector<Patch>& patches, double tolerance,
                              const ToleranceOptions& options = {});
+
+  // Tessellation to a tolerance in pixels as `view` sees the patches: rule T's tree on their
+  // screen-space image, so each triangle's projection stays within `pixels` of the projected
+  // surface; nearer parts get more triangles. Positions are in model space and the mesh is
+  // watertight. Parts outside the view get coarse (off-screen) triangles; where the near plane
+  // cuts the surface through the eye, triangles are not proven (docs/quadtree.md, "Rule T in
+  // screen space"). Adaptive only (options.method UniformGrids: ArgumentError); other errors
+  // as tessellateToTolerance, and ArgumentError for a bad view.
+  Mesh tessellateToPixelTolerance(const std::vector<Patch>& patches, double pixels,
+                                  const View& view, const ToleranceOptions& options = {});
 
  private:
   struct Impl;
