@@ -218,23 +218,39 @@ TEST_CASE("rule T in pixels: watertight teapot, fewer triangles far than near",
   const std::vector<BezierPatch> pot = teapot();
   const Box box = boxOf(pot);
   const PatchTopology topology = findSharedEdges(pot);
-  size_t previous = 0;
-  for (double distance : {8.0, 2.0, 0.7}) {  // far to near
-    const Camera camera = cameraAt(box, {-1.0, -1.5, 0.8}, distance);
+  const auto requireWatertight = [&](const char* name, const Camera& camera) {
     const Tessellation t = screenMesh(pot, camera, 1.0, cpu);
     const test::WatertightCounts n = test::countDefects(t, topology, 1e-6 * box.diagonal);
-    WARN("teapot at " << distance << " diagonals, 1 px: " << n.triangles << " triangles, cracks "
-                      << n.cracks << ", T-junctions " << n.tJunctions << ", over-used edges "
-                      << n.overused << ", inconsistent " << n.inconsistent << ", zero-area "
-                      << n.degenerate << ", culled leaves " << leavesWith(t, gpu::kCauseCulled));
+    WARN("teapot " << name << ", 1 px: " << n.triangles << " triangles, cracks " << n.cracks
+                   << ", T-junctions " << n.tJunctions << ", over-used edges " << n.overused
+                   << ", inconsistent " << n.inconsistent << ", zero-area " << n.degenerate
+                   << "; leaves culled " << leavesWith(t, gpu::kCauseCulled) << ", at the eye plane "
+                   << leavesWith(t, gpu::kCauseEyePlane));
     CHECK(n.cracks == 0);
     CHECK(n.tJunctions == 0);
     CHECK(n.overused == 0);
     CHECK(n.inconsistent == 0);
     CHECK(n.degenerate == 0);
-    CHECK(n.triangles > previous);
-    previous = n.triangles;
+    return t;
+  };
+  size_t previous = 0;
+  for (double distance : {8.0, 2.0, 0.7}) {  // far to near
+    const std::string name = "at " + std::to_string(distance) + " diagonals";
+    const Tessellation t = requireWatertight(name.c_str(), cameraAt(box, {-1.0, -1.5, 0.8}, distance));
+    CHECK(t.stats.triangles > previous);
+    previous = t.stats.triangles;
   }
+  // Culled leaves next to proven ones, and eye-plane leaves: still one closed mesh.
+  const Tessellation culled = requireWatertight("close, partly off-screen",
+                                                cameraAt(box, {-1.0, -1.5, 0.8}, 0.3));
+  CHECK(leavesWith(culled, gpu::kCauseCulled) > 0);
+  const glm::dvec3 onBody = patchPoint(pot[0], 0.5, 0.5);
+  const glm::dvec3 out = glm::normalize(onBody - box.centre);
+  const Camera eyeOnBody =
+      lookAtCamera(onBody, onBody + glm::normalize(patchPoint(pot[0], 0.5, 0.6) - onBody), out,
+                   glm::radians(50.0), 1280, 720, 0.01 * box.diagonal, 100.0 * box.diagonal);
+  const Tessellation cut = requireWatertight("with the eye on the body", eyeOnBody);
+  CHECK(leavesWith(cut, gpu::kCauseEyePlane) > 0);
 }
 
 TEST_CASE("rule T in pixels: bad cameras and tolerances are refused", "[tolerance][screen]") {

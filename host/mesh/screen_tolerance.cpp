@@ -49,6 +49,12 @@ Visibility visibilityOf(const HomogeneousNet& clip) {
   return allInside[kNearPlane] ? Visibility::Inside : Visibility::NearPlane;
 }
 
+// Culled nodes above this level split both ways, so a culled patch keeps at least 2^k × 2^k
+// cells: with fewer, a patch's side may become one chord that other patches' sides share too
+// (the teapot's handle: two half-tubes with the same four corners, whose one-segment sides
+// would make one edge of four triangles).
+constexpr uint32_t kCulledMinLevel = 1;
+
 bool wholeNetInside(const HomogeneousNet& clip) {
   for (const glm::dvec4& h : clip.c)
     for (int k = 0; k < kPlanes; ++k)
@@ -97,7 +103,7 @@ class ScreenSpaceClassifier : public NodeClassifier {
       switch (visibilityOf(sub)) {
         case Visibility::Inside: break;
         case Visibility::Culled:  // unseen: no bound to keep (the inner one may be NaN)
-          d.cause = gpu::kCauseCulled;
+          d.cause = n.level >= kCulledMinLevel ? gpu::kCauseCulled : gpu::kCauseSplit;
           d.flatness = 0.0f;
           break;
         case Visibility::NearPlane:
