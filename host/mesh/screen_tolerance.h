@@ -35,7 +35,8 @@ PatchSet screenSpacePatchSet(const std::vector<BezierPatch>& patches, const Came
 // Wraps `inner` (mirror, reference or Vulkan: it decides every node, so GPU = mirror bit for
 // bit stands) and overrides, from the node's clip-space net restricted to its rectangle in
 // double: a node whose hull lies outside one clip plane (x = ±W, y = ±W, z = 0, z = W) →
-// kCauseCulled leaf; one the near plane cuts → the inner split, or a kCauseEyePlane leaf at
+// kCauseCulled leaf (split both ways at level 0 first, so no patch is two triangles); one the
+// near plane cuts → the inner split, or a kCauseEyePlane leaf at
 // level ≥ eyePlaneDepth (an inner WithinTolerance leaf is kept: its bound is proven). Patches
 // whose whole net is inside every plane skip the test. `inner` must outlive the wrapper; the
 // wrapper follows buildQuadtree's patch groups (consecutive beginTree calls), so it serves one
