@@ -4,6 +4,8 @@
 #include <array>
 #include <cstdio>
 #include <memory>
+#include <optional>
+#include <stdexcept>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -19,7 +21,9 @@
 #include "io/png_writer.h"
 #include "render/offscreen.h"
 #include "shaders/layout.h"
+#include "mesh/screen_tolerance.h"
 #include "mesh/tessellate.h"
+#include "quadtree/tolerance.h"
 #include "vk/context.h"
 
 namespace tessera::cli {
@@ -38,6 +42,7 @@ struct RenderArgs {
   std::string size = "1024x768";
   std::string device;
   bool quiet = false;
+  std::string tolerance;  // rule T: model units, a percentage, or pixels for the picture's camera
 };
 
 struct Panel {
@@ -144,13 +149,26 @@ int run(const RenderArgs& a) {
       throw CLI::ValidationError("--side-by-side", "expected two or more methods, e.g. B,D");
   }
 
+  // --tolerance: rule T, one panel. In pixels it is for the picture's own camera, framed on
+  // the control points' box (the surface lies in their hull) before tessellating.
+  std::optional<ToleranceSpec> tolerance;
+  checkCommandLine([&] {
+    if (a.tolerance.empty()) return;
+    if (!a.sideBySide.empty())
+      throw std::invalid_argument("--tolerance makes one picture; it does not go with "
+                                  "--side-by-side");
+    tolerance = parseTolerance(a.tolerance);
+    rules = {SplitRule::Tolerance};
+  });
+
   std::vector<QuadtreeOptions> panelOptions;
   for (SplitRule rule : rules) {
-    QuadtreeOptions q;
+    // δ is resolved once the input is read (a percentage needs the model's size).
+    QuadtreeOptions q = tolerance ? toleranceOptions(1.0) : QuadtreeOptions{};
     q.rule = rule;
     q.linearity = a.linearity;
     q.flatness = a.flatness;
-    q.maxDepth = a.maxDepth;
+    if (!tolerance) q.maxDepth = a.maxDepth;
     checkCommandLine([&] { validateQuadtreeOptions(q); });  // exit 1 before any work
     panelOptions.push_back(q);
   }
@@ -168,9 +186,24 @@ int run(const RenderArgs& a) {
 
   std::vector<Panel> panels;
   BoundingBox frame;
-  for (const QuadtreeOptions& q : panelOptions) {
-    panels.push_back({q.rule, tessellate(patches, q, backend), {}});
-    frame.add(boundingBox(panels.back().tessellation.mesh));
+  if (tolerance && tolerance->pixels) {
+    for (const BezierPatch& p : patches)
+      for (size_t k = 0; k < p.cp.size(); ++k)
+        if (p.weights.empty() || p.weights[k] > 0.0) frame.add(glm::vec3(p.cp[k]));
+    ScreenView view;
+    view.camera.viewProjection = glm::dmat4(frameViewProjection(frame, options));
+    view.camera.width = options.width;
+    view.camera.height = options.height;
+    panels.push_back({SplitRule::Tolerance,
+                      tessellateScreenTolerance(patches, toleranceOptions(tolerance->value), view,
+                                                backend),
+                      {}});
+  } else {
+    for (QuadtreeOptions q : panelOptions) {
+      if (tolerance) q.tolerance = resolveTolerance(*tolerance, patches);
+      panels.push_back({q.rule, tessellate(patches, q, backend), {}});
+      frame.add(boundingBox(panels.back().tessellation.mesh));
+    }
   }
   if (!frame.empty()) options.frame = frame;  // one camera for every panel
 
@@ -212,8 +245,12 @@ int run(const RenderArgs& a) {
 
   if (!a.quiet) {
     FILE* const to = toStdout ? stderr : stdout;  // never into the picture
-    std::fprintf(to, "%s: %zu patches, linearity %g, flatness %g, on %s\n", a.input.c_str(),
-                 patches.size(), a.linearity, a.flatness, context.info().name.c_str());
+    if (tolerance)
+      std::fprintf(to, "%s: %zu patches, tolerance %s, on %s\n", a.input.c_str(), patches.size(),
+                   a.tolerance.c_str(), context.info().name.c_str());
+    else
+      std::fprintf(to, "%s: %zu patches, linearity %g, flatness %g, on %s\n", a.input.c_str(),
+                   patches.size(), a.linearity, a.flatness, context.info().name.c_str());
     for (const Panel& panel : panels) std::fprintf(to, "%s\n", panelLabel(panel).c_str());
     std::fprintf(to, "wrote %s (%dx%d)\n", toStdout ? kStdoutName : a.output.c_str(), width,
                  height);
@@ -247,6 +284,9 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
       ->capture_default_str();
   cmd->add_option("--device", args.device, "Vulkan device index or part of its name");
   cmd->add_flag("-q,--quiet", args.quiet, "print nothing on success");
+  cmd->add_option("--tolerance", args.tolerance,
+                  "rule T instead of -m: in model units (0.01), a percentage of the size (0.1%), "
+                  "or in pixels of this picture (1px: the tree is made for its camera)");
   cmd->callback([&exitCode] {
     exitCode = runReportingErrors([] { return run(args); }, {args.output, kStdoutName},
                                   "render needs a Vulkan device that draws");

@@ -68,6 +68,10 @@ struct RenderOptions {
   std::optional<BoundingBox> frame;
 };
 
+// The clip-from-world matrix (Vulkan clip space) renderMesh uses for `box` and `options`: a
+// tessellation for a pixel tolerance can be made for the very camera that draws it.
+glm::mat4 frameViewProjection(const BoundingBox& box, const RenderOptions& options);
+
 // Renders `mesh` with a perspective camera along options.viewDirection that fits the whole
 // bounding box (corners projected, a small margin). `perTriangleValue` is empty or holds one
 // value per triangle (a quad-tree level or a patch id), used by Colour::Depth and ::Patch.

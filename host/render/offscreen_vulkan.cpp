@@ -87,6 +87,14 @@ Camera frameBox(const BoundingBox& box, const RenderOptions& o) {
   return camera;
 }
 
+}  // namespace
+
+glm::mat4 frameViewProjection(const BoundingBox& box, const RenderOptions& options) {
+  return frameBox(box, options).viewProjection;
+}
+
+namespace {
+
 std::vector<DrawVertex> unindex(const TriangleMesh& mesh, const std::vector<float>& values) {
   std::vector<DrawVertex> vertices(mesh.indices.size());
   for (size_t t = 0; t < mesh.triangleCount(); ++t) {
