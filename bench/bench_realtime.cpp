@@ -3,8 +3,11 @@
 // (host/realtime/frame.h: cull, division counts on Vulkan, rule-A grids on Vulkan) with the
 // buffers kept between frames. Frames/s, triangles per frame, the split of a frame's time, and
 // the screen-space error of sampled frames against the double surface (must be ≤ the
-// tolerance). The tessellation-shader peer (case 6) runs the same path in the same run.
-// Usage: bench_realtime [frames=300] [teapots=100] [tolerancePx=1] [q=4] [--json file]
+// tolerance). The tessellation-shader peer (case 6) runs the same path in the same run, and so
+// does the second mode: rule T's adaptive tree in pixels (mesh/screen_tolerance.h) on Vulkan,
+// from scratch on every `treeStride`-th frame of the path (it is far slower per frame).
+// Usage: bench_realtime [frames=300] [teapots=100] [tolerancePx=1] [q=4] [treeStride=10]
+//        [--json file]
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
@@ -16,6 +19,7 @@
 #include "common/stopwatch.h"
 #include "eval/evaluator.h"
 #include "io/bpt_reader.h"
+#include "mesh/screen_tolerance.h"
 #include "realtime/frame.h"
 #include "realtime/tess_shader_peer.h"
 #include "vk/context.h"
@@ -57,6 +61,8 @@ int main(int argc, char** argv) {
   const int teapots = argc > 2 ? std::atoi(argv[2]) : 100;
   const double tolerance = argc > 3 ? std::atof(argv[3]) : 1.0;
   const int ratioPieces = argc > 4 ? std::atoi(argv[4]) : 4;
+  const int treeStride =
+      argc > 5 && argv[5][0] != '-' ? std::max(1, std::atoi(argv[5])) : 10;
   const int perRow = std::max(1, int(std::lround(std::sqrt(double(teapots)))));
   const auto patches =
       bench::perturbedCopies(readBpt(TESSERA_BENCH_DATA "/teapot.bpt"), teapots, perRow);
@@ -127,6 +133,41 @@ int main(int argc, char** argv) {
     peerCounts = peer.countsTriangles();
   }
 
+  // The second mode: rule T in pixels, the adaptive tree (a dispatch per level) on Vulkan, the
+  // host triangulation, vertices evaluated on Vulkan; a fresh tree every time. Its screen error
+  // is measured on its first two frames, outside the timing.
+  Backend treeBackend = makeVulkanBackend(context);
+  const QuadtreeOptions treeOptions = toleranceOptions(tolerance);
+  ScreenView view;
+  view.camera = path.camera(0);
+  tessellateScreenTolerance(patches, treeOptions, view, treeBackend);  // warm-up
+  std::vector<double> treeSeconds;
+  double treeTriangles = 0, treeTreeMs = 0, treeTriangulateMs = 0, treeEvaluateMs = 0;
+  double treeCulled = 0, treeMaxAffine = 0;
+  size_t treeMeasured = 0;
+  const Stopwatch treeStopwatch;
+  double treeMeasuringSeconds = 0;
+  for (int f = 0; f < frames; f += treeStride) {
+    view.camera = path.camera(f);
+    const Stopwatch frameStopwatch;
+    const Tessellation t = tessellateScreenTolerance(patches, treeOptions, view, treeBackend);
+    treeSeconds.push_back(frameStopwatch.elapsedSeconds());
+    treeTriangles += double(t.stats.triangles);
+    treeTreeMs += t.stats.treeMs;
+    treeTriangulateMs += t.stats.triangulateMs;
+    treeEvaluateMs += t.stats.evaluateMs;
+    treeCulled += double(screenLeafCounts(t.tree).culled);
+    if (treeSeconds.size() <= 2) {
+      const Stopwatch measuring;
+      const ScreenErrorReport e = measureScreenError(t, patches, view.camera, 2);
+      treeMaxAffine = std::max(treeMaxAffine, e.maxAffinePixels);
+      treeMeasured += e.triangles;
+      treeMeasuringSeconds += measuring.elapsedSeconds();
+    }
+  }
+  const double treeTotal = treeStopwatch.elapsedSeconds() - treeMeasuringSeconds;
+  const double treeFrames = double(std::max<size_t>(treeSeconds.size(), 1));
+
   char title[240];
   std::snprintf(title, sizeof title,
                 "real-time view-dependent tessellation, %d teapots (%zu patches), %d-frame camera "
@@ -166,6 +207,19 @@ int main(int argc, char** argv) {
     peer.extra = {{"trianglesPerFrame", peerCounts ? peerTriangles / n : -1.0}};
     table.cases.push_back(peer);
   }
+  bench::Case tree{"Tessera: rule T tree in pixels on Vulkan, every " + std::to_string(treeStride) +
+                       "th frame",
+                   treeFrames, timingOf(treeSeconds)};
+  tree.throughput = treeFrames / treeTotal;
+  tree.extra = {{"trianglesPerFrame", treeTriangles / treeFrames},
+                {"msPerFrame",
+                 {{"tree", treeTreeMs / treeFrames},
+                  {"triangulation", treeTriangulateMs / treeFrames},
+                  {"vertices", treeEvaluateMs / treeFrames}}},
+                {"culledLeavesPerFrame", treeCulled / treeFrames},
+                {"maxScreenErrorPixelsAffine", treeMaxAffine},
+                {"measuredTriangles", treeMeasured}};
+  table.cases.push_back(tree);
   report.print(table);
   std::printf("\nTessera: %.1f frames/s, %.0f triangles and %.0f vertices per frame; per frame "
               "%.2f ms host transform/cull/pack, %.2f ms GPU counts, %.2f ms host "
@@ -183,6 +237,14 @@ int main(int argc, char** argv) {
   if (!peerSeconds.empty())
     std::printf("tessellation shaders on the same path: %.1f frames/s, %.0f triangles per frame\n",
                 frames / peerTotal, peerCounts ? peerTriangles / n : -1.0);
+  std::printf("rule T tree in pixels (every %dth frame, %zu frames): %.2f frames/s, %.0f triangles "
+              "per frame (%.2fx the grids'); per frame %.1f ms tree, %.1f ms triangulation, %.1f "
+              "ms vertices, %.0f leaves culled; screen-space error on 2 frames (%zu triangles): "
+              "max %.3f px affine (proven ≤ %.2g px)\n",
+              treeStride, treeSeconds.size(), treeFrames / treeTotal, treeTriangles / treeFrames,
+              (treeTriangles / treeFrames) / std::max(triangles / n, 1.0), treeTreeMs / treeFrames,
+              treeTriangulateMs / treeFrames, treeEvaluateMs / treeFrames, treeCulled / treeFrames,
+              treeMeasured, treeMaxAffine, tolerance);
   report.finish();
-  return maxAffine <= tolerance ? 0 : 1;
+  return maxAffine <= tolerance && treeMaxAffine <= tolerance ? 0 : 1;
 }

@@ -16,6 +16,7 @@
 #include "io/bpt_reader.h"
 #include "mesh/screen_tolerance.h"
 #include "quadtree_compare.h"
+#include "realtime/frame.h"
 #include "tessellation_defects.h"
 
 using namespace tessera;
@@ -203,6 +204,10 @@ TEST_CASE("rule T in pixels: every proven triangle projects within δ px, culled
                 << s.culled << " (" << s.culledVisible << " not off-screen); other " << s.other);
     REQUIRE(s.proven > 0);
     CHECK(s.maxProvenPixels <= c.pixels);
+    // The real-time bench's measure (triangles before the near plane with a corner on screen).
+    const ScreenErrorReport e = measureScreenError(t, c.patches, camera, 2);
+    CHECK(e.triangles > 0);
+    CHECK(e.maxAffinePixels <= c.pixels);
     CHECK(s.culledVisible == 0);
     CHECK(s.other == 0);  // every leaf is proven, culled or at the eye plane
     if (c.expectCulled) CHECK(s.culled > 0);

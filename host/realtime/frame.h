@@ -19,6 +19,7 @@
 #include "realtime/grid_evaluator.h"
 #include "geometry/patch.h"
 #include "division/view_dependent.h"
+#include "mesh/tessellate.h"
 
 namespace tessera {
 namespace vk {
@@ -102,6 +103,11 @@ struct ScreenErrorReport {
   size_t triangles = 0, samples = 0;
 };
 ScreenErrorReport measureScreenError(const RealtimeFrame& frame,
+                                     const std::vector<BezierPatch>& patches,
+                                     const Camera& camera, int subdivisions = 2);
+// The same for a mesh of rule T in pixels (mesh/screen_tolerance.h): each triangle against its
+// own patch at its corners' (u, v) (Tessellation::trianglePatch, cornerUv).
+ScreenErrorReport measureScreenError(const Tessellation& tessellation,
                                      const std::vector<BezierPatch>& patches,
                                      const Camera& camera, int subdivisions = 2);
 

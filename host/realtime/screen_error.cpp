@@ -81,4 +81,19 @@ ScreenErrorReport measureScreenError(const RealtimeFrame& frame,
   return report;
 }
 
+ScreenErrorReport measureScreenError(const Tessellation& t, const std::vector<BezierPatch>& patches,
+                                     const Camera& camera, int subdivisions) {
+  ScreenErrorReport report;
+  const int n = std::max(1, subdivisions);
+  for (size_t tri = 0; tri < t.trianglePatch.size(); ++tri) {
+    std::array<Corner, 3> c;
+    for (int k = 0; k < 3; ++k) {
+      const glm::dvec3 world(t.mesh.positions[t.mesh.indices[3 * tri + k]]);
+      c[size_t(k)] = Corner{world, glm::dvec2(t.cornerUv[3 * tri + k]), project(camera, world)};
+    }
+    measureTriangle(c, patches[t.trianglePatch[tri]], camera, n, report);
+  }
+  return report;
+}
+
 }  // namespace tessera
