@@ -143,7 +143,7 @@ int main(int argc, char** argv) {
   tessellateScreenTolerance(patches, treeOptions, view, treeBackend);  // warm-up
   std::vector<double> treeSeconds;
   double treeTriangles = 0, treeTreeMs = 0, treeTriangulateMs = 0, treeEvaluateMs = 0;
-  double treeCulled = 0, treeMaxAffine = 0;
+  double treeCulled = 0, treeMaxAffine = 0, treeGpuMs = 0, treeClassifyMs = 0, treeFrontierMs = 0;
   size_t treeMeasured = 0;
   const Stopwatch treeStopwatch;
   double treeMeasuringSeconds = 0;
@@ -157,6 +157,11 @@ int main(int argc, char** argv) {
     treeTriangulateMs += t.stats.triangulateMs;
     treeEvaluateMs += t.stats.evaluateMs;
     treeCulled += double(screenLeafCounts(t.tree).culled);
+    for (const LevelStats& level : t.tree.levels) {
+      treeGpuMs += level.gpuMs;
+      treeClassifyMs += level.classifyMs;
+      treeFrontierMs += level.frontierMs;
+    }
     if (treeSeconds.size() <= 2) {
       const Stopwatch measuring;
       const ScreenErrorReport e = measureScreenError(t, patches, view.camera, 2);
@@ -214,6 +219,9 @@ int main(int argc, char** argv) {
   tree.extra = {{"trianglesPerFrame", treeTriangles / treeFrames},
                 {"msPerFrame",
                  {{"tree", treeTreeMs / treeFrames},
+                  {"treeGpuDispatches", treeGpuMs / treeFrames},
+                  {"treeClassifyWithHostCulling", treeClassifyMs / treeFrames},
+                  {"treeFrontier", treeFrontierMs / treeFrames},
                   {"triangulation", treeTriangulateMs / treeFrames},
                   {"vertices", treeEvaluateMs / treeFrames}}},
                 {"culledLeavesPerFrame", treeCulled / treeFrames},
@@ -238,11 +246,13 @@ int main(int argc, char** argv) {
     std::printf("tessellation shaders on the same path: %.1f frames/s, %.0f triangles per frame\n",
                 frames / peerTotal, peerCounts ? peerTriangles / n : -1.0);
   std::printf("rule T tree in pixels (every %dth frame, %zu frames): %.2f frames/s, %.0f triangles "
-              "per frame (%.2fx the grids'); per frame %.1f ms tree, %.1f ms triangulation, %.1f "
-              "ms vertices, %.0f leaves culled; screen-space error on 2 frames (%zu triangles): "
+              "per frame (%.2fx the grids'); per frame %.1f ms tree (%.1f ms GPU dispatches, %.1f ms "
+              "classify calls with the host's clip tests, %.1f ms frontier), %.1f ms triangulation, "
+              "%.1f ms vertices, %.0f leaves culled; screen-space error on 2 frames (%zu triangles): "
               "max %.3f px affine (proven ≤ %.2g px)\n",
               treeStride, treeSeconds.size(), treeFrames / treeTotal, treeTriangles / treeFrames,
               (treeTriangles / treeFrames) / std::max(triangles / n, 1.0), treeTreeMs / treeFrames,
+              treeGpuMs / treeFrames, treeClassifyMs / treeFrames, treeFrontierMs / treeFrames,
               treeTriangulateMs / treeFrames, treeEvaluateMs / treeFrames, treeCulled / treeFrames,
               treeMeasured, treeMaxAffine, tolerance);
   report.finish();
