@@ -61,8 +61,7 @@ int main(int argc, char** argv) {
   const int teapots = argc > 2 ? std::atoi(argv[2]) : 100;
   const double tolerance = argc > 3 ? std::atof(argv[3]) : 1.0;
   const int ratioPieces = argc > 4 ? std::atoi(argv[4]) : 4;
-  const int treeStride =
-      argc > 5 && argv[5][0] != '-' ? std::max(1, std::atoi(argv[5])) : 10;
+  const int treeStride = argc > 5 && argv[5][0] != '-' ? std::max(1, std::atoi(argv[5])) : 10;
   const int perRow = std::max(1, int(std::lround(std::sqrt(double(teapots)))));
   const auto patches =
       bench::perturbedCopies(readBpt(TESSERA_BENCH_DATA "/teapot.bpt"), teapots, perRow);
@@ -212,9 +211,9 @@ int main(int argc, char** argv) {
     peer.extra = {{"trianglesPerFrame", peerCounts ? peerTriangles / n : -1.0}};
     table.cases.push_back(peer);
   }
-  bench::Case tree{"Tessera: rule T tree in pixels on Vulkan, every " + std::to_string(treeStride) +
-                       "th frame",
-                   treeFrames, timingOf(treeSeconds)};
+  bench::Case tree{
+      "Tessera: rule T tree in pixels on Vulkan, every " + std::to_string(treeStride) + "th frame",
+      treeFrames, timingOf(treeSeconds)};
   tree.throughput = treeFrames / treeTotal;
   tree.extra = {{"trianglesPerFrame", treeTriangles / treeFrames},
                 {"msPerFrame",
@@ -245,16 +244,17 @@ int main(int argc, char** argv) {
   if (!peerSeconds.empty())
     std::printf("tessellation shaders on the same path: %.1f frames/s, %.0f triangles per frame\n",
                 frames / peerTotal, peerCounts ? peerTriangles / n : -1.0);
-  std::printf("rule T tree in pixels (every %dth frame, %zu frames): %.2f frames/s, %.0f triangles "
-              "per frame (%.2fx the grids'); per frame %.1f ms tree (%.1f ms GPU dispatches, %.1f ms "
-              "classify calls with the host's clip tests, %.1f ms frontier), %.1f ms triangulation, "
-              "%.1f ms vertices, %.0f leaves culled; screen-space error on 2 frames (%zu triangles): "
-              "max %.3f px affine (proven ≤ %.2g px)\n",
-              treeStride, treeSeconds.size(), treeFrames / treeTotal, treeTriangles / treeFrames,
-              (treeTriangles / treeFrames) / std::max(triangles / n, 1.0), treeTreeMs / treeFrames,
-              treeGpuMs / treeFrames, treeClassifyMs / treeFrames, treeFrontierMs / treeFrames,
-              treeTriangulateMs / treeFrames, treeEvaluateMs / treeFrames, treeCulled / treeFrames,
-              treeMeasured, treeMaxAffine, tolerance);
+  std::printf(
+      "rule T tree in pixels (every %dth frame, %zu frames): %.2f frames/s, %.0f triangles "
+      "per frame (%.2fx the grids'); per frame %.1f ms tree (%.1f ms GPU dispatches, %.1f ms "
+      "classify calls with the host's clip tests, %.1f ms frontier), %.1f ms triangulation, "
+      "%.1f ms vertices, %.0f leaves culled; screen-space error on 2 frames (%zu triangles): "
+      "max %.3f px affine (proven ≤ %.2g px)\n",
+      treeStride, treeSeconds.size(), treeFrames / treeTotal, treeTriangles / treeFrames,
+      (treeTriangles / treeFrames) / std::max(triangles / n, 1.0), treeTreeMs / treeFrames,
+      treeGpuMs / treeFrames, treeClassifyMs / treeFrames, treeFrontierMs / treeFrames,
+      treeTriangulateMs / treeFrames, treeEvaluateMs / treeFrames, treeCulled / treeFrames,
+      treeMeasured, treeMaxAffine, tolerance);
   report.finish();
   return maxAffine <= tolerance && treeMaxAffine <= tolerance ? 0 : 1;
 }

@@ -10,8 +10,7 @@
 namespace tessera::test {
 
 struct WatertightCounts {
-  size_t triangles = 0, cracks = 0, tJunctions = 0, overused = 0, inconsistent = 0,
-         degenerate = 0;
+  size_t triangles = 0, cracks = 0, tJunctions = 0, overused = 0, inconsistent = 0, degenerate = 0;
   double largestTJunctionEdge = 0;
 };
 

@@ -237,9 +237,9 @@ TEST_CASE("public API: a pixel tolerance holds on screen, and far views need few
   const std::vector<tessera::Patch> teapot = tessera::loadPatches(kTeapot);
   size_t previous = 0;
   for (double distance : {40.0, 12.0, 4.0}) {
-    const tessera::View view = tessera::lookAtView({distance, -distance, 0.6 * distance},
-                                                   {0, 0, 1.5}, {0, 0, 1}, 45.0, 800, 600,
-                                                   0.01, 1000.0);
+    const tessera::View view =
+        tessera::lookAtView({distance, -distance, 0.6 * distance}, {0, 0, 1.5}, {0, 0, 1}, 45.0,
+                            800, 600, 0.01, 1000.0);
     const tessera::Mesh mesh = tessellator.tessellateToPixelTolerance(teapot, 1.0, view);
     requireConsistent(mesh, teapot.size());
     INFO("teapot at distance " << distance << ", 1 px: " << mesh.triangleCount() << " triangles");
@@ -295,8 +295,10 @@ TEST_CASE("public API: a pixel tolerance holds on screen, and far views need few
   REQUIRE(worst <= 0.5);
   REQUIRE(worst > 0.5 / 20);
 
-  const tessera::View ok = tessera::lookAtView({5, 5, 5}, {0, 0, 0}, {0, 0, 1}, 45, 64, 64, 0.1, 10);
-  REQUIRE_THROWS_AS(tessellator.tessellateToPixelTolerance(teapot, 0.0, ok), tessera::ArgumentError);
+  const tessera::View ok =
+      tessera::lookAtView({5, 5, 5}, {0, 0, 0}, {0, 0, 1}, 45, 64, 64, 0.1, 10);
+  REQUIRE_THROWS_AS(tessellator.tessellateToPixelTolerance(teapot, 0.0, ok),
+                    tessera::ArgumentError);
   tessera::ToleranceOptions grids;
   grids.method = tessera::ToleranceMethod::UniformGrids;
   REQUIRE_THROWS_AS(tessellator.tessellateToPixelTolerance(teapot, 1.0, ok, grids),

@@ -51,7 +51,7 @@ glm::dvec2 pixelOf(const Camera& camera, const glm::dvec3& p) {
 }
 
 struct ScreenCheck {
-  double maxProvenPixels = 0;   // over triangles of WithinTolerance leaves
+  double maxProvenPixels = 0;    // over triangles of WithinTolerance leaves
   double maxEyePlanePixels = 0;  // triangles of EyePlane leaves with every corner before near
   size_t proven = 0, culled = 0, culledVisible = 0, eyePlane = 0, other = 0;
 };
@@ -75,7 +75,8 @@ ScreenCheck checkOnScreen(const Tessellation& t, const std::vector<BezierPatch>&
     const glm::vec2* uv = &t.cornerUv[3 * tri];
     const QuadLeaf* leaf = leafOf(byPatch[patch], uv);
     glm::dvec3 corner[3];
-    for (int k = 0; k < 3; ++k) corner[k] = glm::dvec3(t.mesh.positions[t.mesh.indices[3 * tri + k]]);
+    for (int k = 0; k < 3; ++k)
+      corner[k] = glm::dvec3(t.mesh.positions[t.mesh.indices[3 * tri + k]]);
     if (leaf && leaf->cause == gpu::kCauseCulled) {
       ++check.culled;
       // Off-screen: all three corners outside one clip plane (up to fp32 positions).
@@ -186,8 +187,7 @@ TEST_CASE("rule T in pixels: every proven triangle projects within δ px, culled
       {"teapot from inside", pot, cameraAt(potBox, {1.0, 0.3, 0.2}, 0.1), 1.0, true, false},
       {"teapot, the eye just off the body", pot, alongBody(0.002), 1.0, true, false},
       {"teapot, the eye on the body", pot, alongBody(0.0), 1.0, true, true},
-      {"random patches far", random, cameraAt(randomBox, {0.3, 1.0, 2.0}, 3.0), 1.0, false,
-       false},
+      {"random patches far", random, cameraAt(randomBox, {0.3, 1.0, 2.0}, 3.0), 1.0, false, false},
       {"random patches close up", random, cameraAt(randomBox, {0.3, 1.0, 2.0}, 0.35), 2.0, true,
        false},
   };
@@ -196,8 +196,8 @@ TEST_CASE("rule T in pixels: every proven triangle projects within δ px, culled
     const Tessellation t = screenMesh(c.patches, camera, c.pixels, cpu);
     const ScreenCheck s = checkOnScreen(t, c.patches, camera);
     WARN(c.name << " at δ = " << c.pixels << " px: " << t.stats.triangles << " triangles, "
-                << t.stats.leaves << " leaves (" << leavesWith(t, gpu::kCauseCulled)
-                << " culled, " << leavesWith(t, gpu::kCauseEyePlane) << " at the eye plane), depth "
+                << t.stats.leaves << " leaves (" << leavesWith(t, gpu::kCauseCulled) << " culled, "
+                << leavesWith(t, gpu::kCauseEyePlane) << " at the eye plane), depth "
                 << t.stats.depth << "; largest measured " << s.maxProvenPixels << " px over "
                 << s.proven << " proven triangles; eye-plane triangles " << s.eyePlane
                 << " (largest " << s.maxEyePlanePixels << " px before the near plane); culled "
@@ -229,8 +229,8 @@ TEST_CASE("rule T in pixels: watertight teapot, fewer triangles far than near",
     WARN("teapot " << name << ", 1 px: " << n.triangles << " triangles, cracks " << n.cracks
                    << ", T-junctions " << n.tJunctions << ", over-used edges " << n.overused
                    << ", inconsistent " << n.inconsistent << ", zero-area " << n.degenerate
-                   << "; leaves culled " << leavesWith(t, gpu::kCauseCulled) << ", at the eye plane "
-                   << leavesWith(t, gpu::kCauseEyePlane));
+                   << "; leaves culled " << leavesWith(t, gpu::kCauseCulled)
+                   << ", at the eye plane " << leavesWith(t, gpu::kCauseEyePlane));
     CHECK(n.cracks == 0);
     CHECK(n.tJunctions == 0);
     CHECK(n.overused == 0);
@@ -241,13 +241,14 @@ TEST_CASE("rule T in pixels: watertight teapot, fewer triangles far than near",
   size_t previous = 0;
   for (double distance : {8.0, 2.0, 0.7}) {  // far to near
     const std::string name = "at " + std::to_string(distance) + " diagonals";
-    const Tessellation t = requireWatertight(name.c_str(), cameraAt(box, {-1.0, -1.5, 0.8}, distance));
+    const Tessellation t =
+        requireWatertight(name.c_str(), cameraAt(box, {-1.0, -1.5, 0.8}, distance));
     CHECK(t.stats.triangles > previous);
     previous = t.stats.triangles;
   }
   // Culled leaves next to proven ones, and eye-plane leaves: still one closed mesh.
-  const Tessellation culled = requireWatertight("close, partly off-screen",
-                                                cameraAt(box, {-1.0, -1.5, 0.8}, 0.3));
+  const Tessellation culled =
+      requireWatertight("close, partly off-screen", cameraAt(box, {-1.0, -1.5, 0.8}, 0.3));
   CHECK(leavesWith(culled, gpu::kCauseCulled) > 0);
   const glm::dvec3 onBody = patchPoint(pot[0], 0.5, 0.5);
   const glm::dvec3 out = glm::normalize(onBody - box.centre);
@@ -274,7 +275,8 @@ TEST_CASE("rule T in pixels: bad cameras and tolerances are refused", "[toleranc
                     std::invalid_argument);
 }
 
-TEST_CASE("rule T in pixels: GPU trees equal the fp32 mirror's", "[gpu][tolerance][screen][parity]") {
+TEST_CASE("rule T in pixels: GPU trees equal the fp32 mirror's",
+          "[gpu][tolerance][screen][parity]") {
   vk::Context& context = test::gpuContext();
   Backend gpu = makeVulkanBackend(context);
   Backend cpu = makeMirrorBackend();
@@ -283,10 +285,9 @@ TEST_CASE("rule T in pixels: GPU trees equal the fp32 mirror's", "[gpu][toleranc
   const Tessellation a = screenMesh(pot, camera, 1.0, gpu);
   const Tessellation b = screenMesh(pot, camera, 1.0, cpu);
   const bool identical = test::identicalTrees(a.tree, b.tree);
-  WARN("teapot, oblique close-up camera, 1 px, on " << context.info().name << ": GPU "
-                                                   << a.tree.leaves.size() << " leaves, mirror "
-                                                   << b.tree.leaves.size()
-                                                   << (identical ? " (identical)" : " (DIFFERENT)"));
+  WARN("teapot, oblique close-up camera, 1 px, on "
+       << context.info().name << ": GPU " << a.tree.leaves.size() << " leaves, mirror "
+       << b.tree.leaves.size() << (identical ? " (identical)" : " (DIFFERENT)"));
   if (context.info().isLavapipe()) {
     REQUIRE(identical);
   } else {

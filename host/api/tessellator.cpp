@@ -172,12 +172,13 @@ View lookAtView(const std::array<double, 3>& eye, const std::array<double, 3>& t
   if (!(fovYDegrees > 0.0 && fovYDegrees < 179.0))
     throw ArgumentError("lookAtView: the field of view must be in (0, 179) degrees");
   const Camera camera = translatingErrors([&] {
-    return lookAtCamera(from, to, glm::dvec3(up[0], up[1], up[2]), glm::radians(fovYDegrees),
-                        width, height, nearDistance, farDistance);
+    return lookAtCamera(from, to, glm::dvec3(up[0], up[1], up[2]), glm::radians(fovYDegrees), width,
+                        height, nearDistance, farDistance);
   });
   View view;
   for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) view.viewProjection[size_t(4 * c + r)] = camera.viewProjection[c][r];
+    for (int r = 0; r < 4; ++r)
+      view.viewProjection[size_t(4 * c + r)] = camera.viewProjection[c][r];
   view.width = width;
   view.height = height;
   return view;
@@ -192,7 +193,8 @@ Mesh Tessellator::tessellateToPixelTolerance(const std::vector<Patch>& patches, 
     throw ArgumentError("a pixel tolerance takes ToleranceMethod::Adaptive only");
   ScreenView screen;
   for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) screen.camera.viewProjection[c][r] = view.viewProjection[size_t(4 * c + r)];
+    for (int r = 0; r < 4; ++r)
+      screen.camera.viewProjection[c][r] = view.viewProjection[size_t(4 * c + r)];
   screen.camera.width = view.width;
   screen.camera.height = view.height;
   QuadtreeOptions quadtree = toleranceOptions(pixels);

@@ -46,13 +46,13 @@ std::optional<Camera> parseCamera(const CameraArgs& args) {
   char extra = 0;
   if (std::sscanf(args.viewport.c_str(), "%dx%d%c", &width, &height, &extra) != 2 || width < 1 ||
       height < 1 || width > 16384 || height > 16384)
-    throw CLI::ValidationError("--viewport", "expected WxH with each in 1..16384, got '" +
-                                                 args.viewport + "'");
+    throw CLI::ValidationError("--viewport",
+                               "expected WxH with each in 1..16384, got '" + args.viewport + "'");
   if (!args.viewProjection.empty()) {
     const std::vector<double> m = numberList(args.viewProjection, "--view-projection");
     if (m.size() != 16)
-      throw CLI::ValidationError("--view-projection", "expected 16 numbers, got " +
-                                                          std::to_string(m.size()));
+      throw CLI::ValidationError("--view-projection",
+                                 "expected 16 numbers, got " + std::to_string(m.size()));
     Camera camera;
     for (int c = 0; c < 4; ++c)
       for (int r = 0; r < 4; ++r) camera.viewProjection[c][r] = m[size_t(4 * c + r)];
@@ -62,8 +62,8 @@ std::optional<Camera> parseCamera(const CameraArgs& args) {
   }
   const std::vector<double> v = numberList(args.view, "--view");
   if (v.size() != 6 && v.size() != 7)
-    throw CLI::ValidationError("--view", "expected EX,EY,EZ,TX,TY,TZ[,FOV], got " +
-                                             std::to_string(v.size()) + " numbers");
+    throw CLI::ValidationError(
+        "--view", "expected EX,EY,EZ,TX,TY,TZ[,FOV], got " + std::to_string(v.size()) + " numbers");
   const glm::dvec3 eye(v[0], v[1], v[2]), target(v[3], v[4], v[5]);
   const double fov = v.size() == 7 ? v[6] : 45.0;
   const double distance = glm::length(target - eye);

@@ -194,10 +194,10 @@ int run(const RenderArgs& a) {
     view.camera.viewProjection = glm::dmat4(frameViewProjection(frame, options));
     view.camera.width = options.width;
     view.camera.height = options.height;
-    panels.push_back({SplitRule::Tolerance,
-                      tessellateScreenTolerance(patches, toleranceOptions(tolerance->value), view,
-                                                backend),
-                      {}});
+    panels.push_back(
+        {SplitRule::Tolerance,
+         tessellateScreenTolerance(patches, toleranceOptions(tolerance->value), view, backend),
+         {}});
   } else {
     for (QuadtreeOptions q : panelOptions) {
       if (tolerance) q.tolerance = resolveTolerance(*tolerance, patches);

@@ -97,8 +97,7 @@ class ScreenSpaceClassifier : public NodeClassifier {
       const gpu::QuadNode& n = nodes[i];
       const size_t patch = groupFirst_ + n.patchIndex;
       if (!needsTest_[patch]) continue;
-      const HomogeneousNet sub =
-          subNet(clipNets_[patch], n.rect.x, n.rect.z, n.rect.y, n.rect.w);
+      const HomogeneousNet sub = subNet(clipNets_[patch], n.rect.x, n.rect.z, n.rect.y, n.rect.w);
       gpu::NodeDecision& d = decisions[i];
       switch (visibilityOf(sub)) {
         case Visibility::Inside: break;
