@@ -231,11 +231,11 @@ int run(const TessellateArgs& a) {
     if (view) {
       const ScreenLeafCounts leaves = screenLeafCounts(t.tree);
       std::fprintf(to,
-                   "proven within %.4g px on screen (largest bound of %zu proven leaves; tolerance "
-                   "%.4g px)%s; %zu leaves culled off-screen, %zu cut by the near plane "
+                   "proven within %.4g px on screen (largest bound of %zu leaves in view; "
+                   "tolerance %.4g px)%s; %zu leaves culled off-screen, %zu cut by the near plane "
                    "(unproven)\n",
-                   leaves.largestProvenBound, leaves.proven, options.tolerance,
-                   leaves.largestProvenBound <= options.tolerance ? "" : " — ABOVE the tolerance",
+                   leaves.largestBound, leaves.proven + leaves.other, options.tolerance,
+                   leaves.largestBound <= options.tolerance ? "" : " — ABOVE the tolerance",
                    leaves.culled, leaves.eyePlane);
     } else if (ruleT) {
       const double bound = largestLeafBound(t.tree);

@@ -195,10 +195,10 @@ void addToleranceReport(nlohmann::json& report, const Tessellation& t, const Tol
   for (const QuadLeaf& leaf : t.tree.leaves)
     perPatch.at(leaf.patchIndex) = std::max(perPatch.at(leaf.patchIndex), double(leaf.flatness));
   for (size_t p = 0; p < patches.size(); ++p) patches[p]["largestLeafBound"] = perPatch[p];
-  // In pixels (screen space) only the proven leaves carry a bound: culled ones are unseen,
+  // In pixels (screen space) the bound is over the leaves in view: culled ones are unseen,
   // eye-plane ones unproven (mesh/screen_tolerance.h); they are counted instead.
   const ScreenLeafCounts screen = screenLeafCounts(t.tree);
-  const double bound = spec.pixels ? screen.largestProvenBound : largestLeafBound(t.tree);
+  const double bound = spec.pixels ? screen.largestBound : largestLeafBound(t.tree);
   report["tolerance"] = {
       {"requested", resolved},
       {"given", spec.text},

@@ -186,16 +186,17 @@ Tessellation tessellateScreenTolerance(const std::vector<BezierPatch>& patches,
 ScreenLeafCounts screenLeafCounts(const QuadtreeResult& tree) {
   ScreenLeafCounts counts;
   for (const QuadLeaf& leaf : tree.leaves) {
-    if (leaf.cause == gpu::kCauseWithinTolerance) {
-      ++counts.proven;
-      counts.largestProvenBound = std::max(counts.largestProvenBound, double(leaf.flatness));
-    } else if (leaf.cause == gpu::kCauseCulled) {
+    if (leaf.cause == gpu::kCauseCulled) {
       ++counts.culled;
-    } else if (leaf.cause == gpu::kCauseEyePlane) {
-      ++counts.eyePlane;
-    } else {
-      ++counts.other;
+      continue;
     }
+    if (leaf.cause == gpu::kCauseEyePlane) {
+      ++counts.eyePlane;
+      continue;
+    }
+    ++(leaf.cause == gpu::kCauseWithinTolerance ? counts.proven : counts.other);
+    const double bound = std::isnan(leaf.flatness) ? INFINITY : double(leaf.flatness);
+    counts.largestBound = std::max(counts.largestBound, bound);
   }
   return counts;
 }

@@ -59,11 +59,13 @@ Tessellation tessellateScreenTolerance(const std::vector<BezierPatch>& patches,
                                        const QuadtreeOptions& options, const ScreenView& view,
                                        Backend& backend);
 
-// A screen-space tree's leaves by cause: proven (kCauseWithinTolerance) with the largest of
-// their bounds (pixels), culled, cut by the near plane, and others (MaxDepth, MinSize).
+// A screen-space tree's leaves by cause: proven (kCauseWithinTolerance), culled, cut by the
+// near plane, and others (MaxDepth, MinSize: in view, bound above δ). largestBound is the
+// largest bound (pixels) over the leaves in view, proven and others (a bound that is not a
+// number counts as infinite): the mesh in view is proven within it.
 struct ScreenLeafCounts {
   size_t proven = 0, culled = 0, eyePlane = 0, other = 0;
-  double largestProvenBound = 0;
+  double largestBound = 0;
 };
 ScreenLeafCounts screenLeafCounts(const QuadtreeResult& tree);
 
