@@ -43,6 +43,7 @@ struct RenderArgs {
   std::string device;
   bool quiet = false;
   std::string tolerance;  // rule T: model units, a percentage, or pixels for the picture's camera
+  bool methodGiven = false;  // -m on the command line (not its default)
 };
 
 struct Panel {
@@ -157,6 +158,9 @@ int run(const RenderArgs& a) {
     if (!a.sideBySide.empty())
       throw std::invalid_argument("--tolerance makes one picture; it does not go with "
                                   "--side-by-side");
+    if (a.methodGiven && rules.front() != SplitRule::Tolerance)
+      throw std::invalid_argument("--tolerance sets the δ of rule T; it does not go with -m " +
+                                  a.method + " (leave out -m, or give -m T)");
     tolerance = parseTolerance(a.tolerance);
     rules = {SplitRule::Tolerance};
   });
@@ -266,7 +270,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
       "render", "Tessellate a surface file on the GPU and draw it offscreen to a PNG (needs Vulkan)");
   cmd->add_option("input", args.input, "input surface file (.bpt or .grid)")->required();
   cmd->add_option("-o,--output", args.output, "output picture (.png); - writes it to standard output")->required();
-  cmd->add_option("-m,--method", args.method,
+  CLI::Option* method = cmd->add_option("-m,--method", args.method,
                   "split rule: A uniform grid, B midpoint, C sampled κ max, D true κ max")
       ->capture_default_str();
   cmd->add_option("--side-by-side", args.sideBySide,
@@ -287,7 +291,8 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--tolerance", args.tolerance,
                   "rule T instead of -m: in model units (0.01), a percentage of the size (0.1%), "
                   "or in pixels of this picture (1px: the tree is made for its camera)");
-  cmd->callback([&exitCode] {
+  cmd->callback([&exitCode, method] {
+    args.methodGiven = method->count() > 0;
     exitCode = runReportingErrors([] { return run(args); }, {args.output, kStdoutName},
                                   "render needs a Vulkan device that draws");
   });
