@@ -218,6 +218,41 @@ struct GridEvalPush {
 };
 
 
+// ---- Stitched real-time patterns (shaders/stitch_pattern.comp.glsl, shaders/lib/stitch_pattern.h,
+// host/realtime/frame_vulkan.cpp; the pattern is drawn in docs/realtime.md) ----
+
+// Flags of one patch side.
+TESSERA_CONST(uint, kStitchReversed, 1u);   // the side's t runs opposite to its edge's canonical t
+TESSERA_CONST(uint, kStitchCollapsed, 2u);  // the side is one point (a pole): no outer triangles
+
+// One visible patch of a frame: an inner grid from the patch's counts (nu, nv) and a
+// transition strip on each side (order V0, U1, V1, U0 of host/mesh/shared_edges.h) to that
+// side's edge count. Vertices start at firstVertex, triangle indices at firstIndex.
+struct StitchPatch {
+  uvec4 sideSegments;  // edge counts of the four sides (>= 1)
+  uvec4 sideEdge;      // each side's edge: its canonical control points at edgePoints[4·edge]
+  uvec4 sideFlags;     // kStitch* per side
+  uint patchIndex;     // into the scene's BicubicPatch buffer
+  uint nu;             // the patch's division counts (>= 1)
+  uint nv;
+  uint firstVertex;
+  uint firstIndex;
+  uint pad0;
+  uint pad1;
+  uint pad2;
+};
+
+// Push constants of stitch_pattern.comp.glsl: one invocation per work item, an item being
+// (record << kStitchSlotBits) | slot, slot < cu: inner row, slot cu + s: side s's strip.
+TESSERA_CONST(uint, kStitchSlotBits, 9u);
+struct StitchPush {
+  uint itemCount;
+  float degenerateEps;  // ε of docs/conventions.md
+  uint pad0;
+  uint pad1;
+};
+
+
 // ---- The fixed-function peer: Vulkan tessellation shaders (shaders/tess_peer.*.glsl,
 // host/realtime/tess_shader_peer_vulkan.cpp) ----
 

@@ -1,6 +1,6 @@
 // Real-time view-dependent tessellation (host/realtime/frame.h): on a few frames of two
-// teapots the grids meet 1 px on screen (measured against the double surface), the grids are
-// the grid evaluator's fp32 mirror bit for bit, a finer tolerance spends more triangles, a
+// teapots the stitched meshes meet 1 px on screen (measured against the double surface), their
+// vertices and indices are the pattern's fp32 mirror bit for bit, a finer tolerance spends more triangles, a
 // camera inside the scene routes eye-plane patches to the host count, and looking away culls
 // everything.
 #include <catch2/catch.hpp>
@@ -31,16 +31,17 @@ Camera view(const glm::dvec3& eye, const glm::dvec3& target) {
   return lookAtCamera(eye, target, {0, 0, 1}, 0.8, 640, 360, 0.05, 200.0);
 }
 
-// Every grid equals the fp32 mirror's grid of the same patch and size, bit for bit.
-size_t gridsDifferingFromMirror(const RealtimeFrame& frame, const std::vector<BezierPatch>& scene) {
-  auto mirror = makeMirrorGridEvaluator(1);
+// The frame's vertices and indices against the fp32 mirror's pattern, bit for bit: the number
+// of differing vertices plus differing indices.
+size_t entriesDifferingFromMirror(const RealtimeTessellator& tessellator,
+                                  const RealtimeFrame& frame) {
+  std::vector<gpu::GridVertex> vertices;
+  std::vector<uint32_t> indices;
+  tessellator.mirrorLastFrame(vertices, indices);
   size_t differing = 0;
-  for (const RealtimeGrid& g : frame.grids) {
-    const gpu::GridVertex* expected =
-        mirror->evaluate({toGpuPatch(scene[g.patch])}, g.pointsPerSide);
-    const size_t bytes = sizeof(gpu::GridVertex) * g.pointsPerSide * g.pointsPerSide;
-    differing += std::memcmp(expected, g.vertices, bytes) != 0 ? 1 : 0;
-  }
+  for (size_t v = 0; v < vertices.size(); ++v)
+    differing += std::memcmp(&vertices[v], &frame.vertices[v], sizeof(gpu::GridVertex)) != 0;
+  for (size_t k = 0; k < indices.size(); ++k) differing += indices[k] != frame.indices[k];
   return differing;
 }
 
@@ -58,7 +59,7 @@ TEST_CASE("Real-time frames meet 1 px on screen and match the mirror", "[gpu][re
   for (const auto& [name, camera] : cameras) {
     const RealtimeFrame& frame = tessellator.tessellate(camera);
     const ScreenErrorReport error = measureScreenError(frame, scene, camera, 2);
-    INFO(name << ": " << frame.grids.size() << " grids, " << frame.triangles << " triangles, "
+    INFO(name << ": " << frame.records.size() << " patches, " << frame.triangles << " triangles, "
               << frame.culled << " culled, " << frame.fallback << " eye-plane fallbacks, "
               << frame.capped << " capped; max error " << error.maxAffinePixels
               << " px affine, " << error.maxPerspectivePixels << " px perspective over "
@@ -66,14 +67,12 @@ TEST_CASE("Real-time frames meet 1 px on screen and match the mirror", "[gpu][re
     WARN(name << ": " << frame.triangles << " triangles, max error " << error.maxAffinePixels
               << " px (affine), " << error.maxPerspectivePixels << " px (perspective), "
               << frame.fallback << " eye-plane fallbacks");
-    CHECK(frame.grids.size() > 0);
+    CHECK(frame.records.size() > 0);
     CHECK(error.triangles > 0);
     CHECK(frame.capped == 0);
     CHECK(error.maxAffinePixels <= 1.0);
     CHECK(error.maxPerspectivePixels <= 1.0);
-    for (const RealtimeGrid& g : frame.grids)
-      CHECK(int(g.pointsPerSide) - 1 >= std::max(g.nu, g.nv));
-    CHECK(gridsDifferingFromMirror(frame, scene) == 0);
+    CHECK(entriesDifferingFromMirror(tessellator, frame) == 0);
     if (std::string(name) == "inside the second teapot") CHECK(frame.fallback > 0);
   }
   test::requireValidationClean();
@@ -90,7 +89,7 @@ TEST_CASE("Real-time frames: finer tolerance costs triangles, looking away culls
   WARN("4 px: " << coarseTriangles << " triangles, 0.25 px: " << fineTriangles);
   CHECK(fineTriangles > 4 * coarseTriangles);
   const RealtimeFrame& away = coarse.tessellate(view({4, -14, 6}, {4, -40, 6}));
-  CHECK(away.grids.empty());
+  CHECK(away.records.empty());
   CHECK(away.culled == scene.size());
   CHECK(away.triangles == 0);
   CHECK_THROWS_AS(RealtimeTessellator(context, scene, {0.0, 64}), std::invalid_argument);

@@ -3,20 +3,22 @@
 //   1. host: control points to screen-space homogeneous coordinates (screenSpacePatch),
 //      patches whose control points all lie outside one side of the view frustum are culled
 //      (the convex hull, hence the patch, is outside);
-//   2. GPU: division counts N_u, N_v in pixels (split method, host/division/counter.h); a patch
+//   2. GPU: division counts in pixels (split method, host/division/counter.h) for every visible
+//      patch (N_u, N_v) and, in the same batch, for every edge of a visible patch (its segment
+//      count, from the edge's own control points: host/realtime/patch_edges.h); a patch or edge
 //      the eye plane cuts (status Unbounded) is counted on the host by viewDivisions;
-//   3. GPU: rule A, a uniform grid per patch evaluated by the grid evaluator of case 1
-//      (host/realtime/grid_evaluator.h). It takes one P×P size per dispatch, so patches are bucketed by
-//      P − 1 = max(N_u, N_v) rounded up to a short ladder of sizes: more cells than the counts
-//      ask for, never fewer, so Filip's bound (division_count.h) still holds.
-// Vertices stay in each bucket's mapped buffer (on lavapipe host memory), where a renderer
-// would bind them; a grid's triangles are its cells split along (i, j)–(i+1, j+1).
-// Not done here: stitching between neighbours of different sizes (T-junctions remain).
+//   3. GPU: the stitched pattern (shaders/stitch_pattern.comp.glsl, docs/realtime.md): per
+//      patch an inner grid from (N_u, N_v) and a transition strip along each side to that
+//      side's edge count. Both patches of a shared edge use its one count and evaluate its
+//      vertices from its canonical control points, so the mesh has no T-junctions and no
+//      cracks: shared vertices are equal bit for bit (each patch writes its own copy).
+// Vertices (position + normal) and global triangle indices stay in mapped buffers (on
+// lavapipe host memory), where a renderer would bind them.
 #pragma once
 #include <memory>
 #include <vector>
 
-#include "realtime/grid_evaluator.h"
+#include "realtime/patch_edges.h"
 #include "geometry/patch.h"
 #include "division/view_dependent.h"
 #include "mesh/tessellate.h"
@@ -26,6 +28,7 @@ namespace vk {
 class Context;
 }
 class DivisionCounter;
+class StitchPatternRunner;  // frame_vulkan.cpp: the pattern pipeline and its buffers
 
 struct RealtimeOptions {
   double tolerancePixels = 1.0;
@@ -33,29 +36,32 @@ struct RealtimeOptions {
   // q of the split method (DivisionOptions::ratioPieces): the pieces on which the zero- and
   // negative-weight factors are bounded; a patch in front of the eye has neither.
   int ratioPieces = 4;
+  // Edges are counted to this fraction of the tolerance. An edge's count bounds the chord
+  // error along the edge itself, but its strip's triangles reach one inner row into the
+  // patch, where the surface may curve more than on the edge (docs/realtime.md); the margin
+  // keeps them within the tolerance (measured, not proven: tests/test_realtime_watertight.cpp).
+  double edgeToleranceFraction = 0.25;
 };
 
-// One visible patch of a frame: its P×P grid, vertex (i, j) at vertices[i·P + j],
-// u = i/(P−1), v = j/(P−1) (GridEvaluator's order).
-struct RealtimeGrid {
-  uint32_t patch = 0;
-  uint32_t pointsPerSide = 0;
-  int nu = 0, nv = 0;  // the counts asked for (≤ P − 1)
-  const gpu::GridVertex* vertices = nullptr;
-};
-
+// A frame's mesh: for each visible patch its record (counts, edge counts, first vertex and
+// first index; host/realtime/detail/stitch_mirror.h gives each vertex's (u, v)), and the
+// vertices and indices the GPU wrote, indices global (ready to draw).
 struct RealtimeFrame {
-  std::vector<RealtimeGrid> grids;
+  std::vector<gpu::StitchPatch> records;
+  const gpu::GridVertex* vertices = nullptr;
+  const uint32_t* indices = nullptr;
   size_t culled = 0;    // patches dropped by the frustum test or found invisible
-  size_t fallback = 0;  // patches the eye plane cuts, counted on the host
-  size_t capped = 0;    // patches whose counts hit maxPerDirection
+  size_t fallback = 0;  // patches and edges the eye plane cuts, counted on the host
+  size_t capped = 0;    // patches and edges whose counts hit maxPerDirection
+  size_t edges = 0;     // edges counted (collapsed ones are 1 and not counted)
   size_t triangles = 0;
-  size_t countedTriangles = 0;  // Σ 2·N_u·N_v: what the counts ask for, before the ladder
-  size_t vertices = 0;
-  size_t dispatches = 0;  // grid-evaluation submits (one per non-empty bucket)
-  // Seconds: host transform, cull and packing; GPU counts (upload, dispatch, readback);
-  // host fallback counts and bucketing; GPU grid evaluation (upload, dispatch, fence).
-  double prepareSeconds = 0, countSeconds = 0, bucketSeconds = 0, gridSeconds = 0;
+  size_t countedTriangles = 0;  // Σ 2·N_u·N_v: what the patches' counts ask for
+  size_t vertexCount = 0;
+  size_t dispatches = 0;  // pattern submits (one per frame with a visible patch)
+  // Seconds: host transform, cull and packing (patches and edges); GPU counts (upload,
+  // dispatch, readback); host fallback counts and the pattern's layout; GPU pattern (upload,
+  // dispatch, fence).
+  double prepareSeconds = 0, countSeconds = 0, layoutSeconds = 0, patternSeconds = 0;
 };
 
 class RealtimeTessellator {
@@ -66,27 +72,30 @@ class RealtimeTessellator {
                       const RealtimeOptions& options = {});
   ~RealtimeTessellator();
 
-  // Tessellates the whole scene for `camera`. The frame (and the vertices it points to) is
-  // valid until the next call.
+  // Tessellates the whole scene for `camera`. The frame (and the vertices and indices it
+  // points to) is valid until the next call.
   const RealtimeFrame& tessellate(const Camera& camera);
 
   const std::vector<BezierPatch>& patches() const { return patches_; }
+
+  // The last frame's pattern again, on the fp32 mirror (shaders/lib/stitch_pattern.h as C++):
+  // equal to the GPU's vertices and indices bit for bit on lavapipe.
+  void mirrorLastFrame(std::vector<gpu::GridVertex>& vertices,
+                       std::vector<uint32_t>& indices) const;
 
  private:
   std::vector<BezierPatch> patches_;
   std::vector<RationalBezierPatch> homogeneous_;  // weights 1, for the screen transform
   std::vector<gpu::BicubicPatch> gpuPatches_;
+  PatchEdges edges_;
+  std::vector<RationalBezierPatch> edgePatches_;  // edgeCountingPatch of each edge
   RealtimeOptions options_;
+  vk::Context& context_;
   std::unique_ptr<DivisionCounter> counter_;
-  std::vector<uint32_t> ladder_;  // grid sizes P − 1 of the buckets
-  std::vector<std::unique_ptr<GridEvaluator>> evaluators_;  // one per bucket, buffers kept
-  std::vector<std::vector<gpu::BicubicPatch>> bucketPatches_;
-  std::vector<std::vector<size_t>> bucketGrids_;  // indices into frame_.grids
+  std::unique_ptr<StitchPatternRunner> runner_;
+  std::vector<uint32_t> items_;  // the last frame's work items
   RealtimeFrame frame_;
 };
-
-// P − 1 for counts (nu, nv) on a ladder of sizes: the smallest rung ≥ max(nu, nv).
-uint32_t gridRung(const std::vector<uint32_t>& ladder, int nu, int nv);
 
 // How far a frame's triangles are from the true surface on screen, in pixels. A triangle
 // point (barycentric mix of its corners, sampled at (i, j, k)/n) is compared with the

@@ -1,5 +1,7 @@
-// One frame of real-time view-dependent tessellation: cull, GPU counts, bucketed rule-A grids
-// on the GPU (realtime_frame.h).
+// One frame of real-time view-dependent tessellation: cull, GPU counts for patches and edges,
+// the stitched pattern on the GPU (frame.h).
+#include <cstdint>  // before the generated SPIR-V array, which uses uint32_t
+
 #include "realtime/frame.h"
 
 #include <algorithm>
@@ -10,6 +12,10 @@
 #include "division/counter.h"
 #include "eval/evaluator.h"
 #include "geometry/rational.h"
+#include "realtime/detail/stitch_mirror.h"
+#include "stitch_pattern_comp.h"
+#include "vk/buffer.h"
+#include "vk/pipeline.h"
 
 namespace tessera {
 namespace {
@@ -30,42 +36,97 @@ bool outsideFrustum(const RationalBezierPatch& screen, const Camera& camera) {
   return left || right || top || bottom || behind;
 }
 
+// Counts of one patch or edge from the GPU result, or from the host when the eye plane cuts
+// it. Returns false when the host finds it invisible.
+bool countsOf(const gpu::DivisionResult& gpuCounts, const RationalBezierPatch& world,
+              const Camera& camera, const DivisionOptions& counting, int& nu, int& nv,
+              bool& capped, size_t& fallback) {
+  nu = int(gpuCounts.nu);
+  nv = int(gpuCounts.nv);
+  capped = gpuCounts.status == gpu::kDivisionCapped;
+  if (gpuCounts.status != gpu::kDivisionUnbounded) return true;
+  ++fallback;
+  const ViewDivisions view = viewDivisions(world, camera, counting);
+  if (view.divisions.status == DivisionStatus::Culled || !view.divisions.bounds.visible)
+    return false;
+  nu = view.divisions.nu;
+  nv = view.divisions.nv;
+  capped = view.divisions.status != DivisionStatus::Ok;
+  return true;
+}
+
 }  // namespace
 
-uint32_t gridRung(const std::vector<uint32_t>& ladder, int nu, int nv) {
-  const uint32_t need = uint32_t(std::max({nu, nv, 1}));
-  for (uint32_t rung : ladder)
-    if (rung >= need) return rung;
-  return ladder.back();  // counts are clamped to maxPerDirection, the last rung
-}
+// The pattern pipeline and its buffers, kept between frames.
+class StitchPatternRunner {
+ public:
+  StitchPatternRunner(vk::Context& context, const std::vector<gpu::BicubicPatch>& patches,
+                      const std::vector<gpu::vec4>& edgePoints)
+      : context_(context),
+        pipeline_(context, {"stitch_pattern.comp", kSpirv_stitch_pattern_comp,
+                            sizeof(kSpirv_stitch_pattern_comp), 6, sizeof(gpu::StitchPush), {}}) {
+    vk::ensureCapacity(context_, patches_, std::max<size_t>(1, patches.size()) *
+                                               sizeof(gpu::BicubicPatch), vk::BufferUse::Upload);
+    vk::ensureCapacity(context_, edges_, std::max<size_t>(1, edgePoints.size()) *
+                                             sizeof(gpu::vec4), vk::BufferUse::Upload);
+    if (!patches.empty()) patches_.upload(patches);
+    if (!edgePoints.empty()) edges_.upload(edgePoints);
+  }
+
+  void run(const std::vector<gpu::StitchPatch>& records, const std::vector<uint32_t>& items,
+           size_t vertexCount, size_t indexCount) {
+    const uint64_t limit = context_.info().maxStorageBufferRange;
+    const size_t vertexBytes = vertexCount * sizeof(gpu::GridVertex);
+    if (limit && (vertexBytes > limit || indexCount * sizeof(uint32_t) > limit))
+      throw std::length_error("real-time pattern: " + std::to_string(vertexBytes) +
+                              " bytes of vertices exceed the device's storage buffer range");
+    vk::ensureCapacity(context_, records_, records.size() * sizeof(gpu::StitchPatch),
+                       vk::BufferUse::Upload);
+    vk::ensureCapacity(context_, items_, items.size() * sizeof(uint32_t), vk::BufferUse::Upload);
+    vk::ensureCapacity(context_, vertices_, vertexBytes, vk::BufferUse::Readback);
+    vk::ensureCapacity(context_, indices_, indexCount * sizeof(uint32_t), vk::BufferUse::Readback);
+    records_.upload(records);
+    items_.upload(items);
+    gpu::StitchPush push{uint32_t(items.size()), kDegenerateEpsFp32, 0, 0};
+    context_.submitAndWait([&](VkCommandBuffer cmd) {
+      pipeline_.dispatch(cmd, {&patches_, &records_, &edges_, &items_, &vertices_, &indices_},
+                         &push, push.itemCount);
+      vk::computeToHostBarrier(context_, cmd);
+    });
+  }
+
+  const gpu::GridVertex* vertices() const { return vertices_.as<gpu::GridVertex>(); }
+  const uint32_t* indices() const { return indices_.as<uint32_t>(); }
+
+ private:
+  vk::Context& context_;
+  vk::ComputePipeline pipeline_;
+  vk::Buffer patches_, edges_, records_, items_, vertices_, indices_;
+};
 
 RealtimeTessellator::RealtimeTessellator(vk::Context& context, std::vector<BezierPatch> patches,
                                          const RealtimeOptions& options)
-    : patches_(std::move(patches)), options_(options) {
+    : patches_(std::move(patches)), options_(options), context_(context) {
   if (!(options.tolerancePixels > 0.0))
     throw std::invalid_argument("real-time tessellation: the tolerance must be > 0 pixels");
+  if (!(options.edgeToleranceFraction > 0.0 && options.edgeToleranceFraction <= 1.0))
+    throw std::invalid_argument("real-time tessellation: edgeToleranceFraction must be in (0, 1]");
   if (options.maxPerDirection < 1 || options.maxPerDirection > 256)
     throw std::invalid_argument("real-time tessellation: maxPerDirection must be in 1..256");
+  if (patches_.size() >= (size_t(1) << (32 - gpu::kStitchSlotBits)))
+    throw std::invalid_argument("real-time tessellation: at most " +
+                                std::to_string((1u << (32 - gpu::kStitchSlotBits)) - 1) +
+                                " patches, got " + std::to_string(patches_.size()));
   for (size_t p = 0; p < patches_.size(); ++p)
     if (!patches_[p].weights.empty())
       throw std::invalid_argument("real-time tessellation: patch " + std::to_string(p) +
-                                  " is rational; the grid evaluator takes polynomial bicubics");
+                                  " is rational; the pattern evaluates polynomial bicubics");
   gpuPatches_ = toGpuPatches(patches_);  // refuses other degrees
   for (const BezierPatch& patch : patches_) homogeneous_.push_back(toRationalPatch(patch));
+  edges_ = findPatchEdges(patches_);
+  for (const auto& edge : edges_.points) edgePatches_.push_back(edgeCountingPatch(edge));
   counter_ = makeVulkanDivisionCounter(context);
-  // Rungs about 1.33–1.5× apart: a grid spends at most ~2.25× the cells its counts ask for.
-  for (uint32_t rung : {1u, 2u, 3u, 4u, 6u, 8u, 12u, 16u, 24u, 32u, 48u, 64u, 96u, 128u, 192u,
-                        256u}) {
-    if (rung >= uint32_t(options.maxPerDirection)) {
-      ladder_.push_back(uint32_t(options.maxPerDirection));
-      break;
-    }
-    ladder_.push_back(rung);
-  }
-  for (size_t b = 0; b < ladder_.size(); ++b)
-    evaluators_.push_back(makeVulkanGridEvaluator(context));
-  bucketPatches_.resize(ladder_.size());
-  bucketGrids_.resize(ladder_.size());
+  runner_ = std::make_unique<StitchPatternRunner>(context, gpuPatches_, edges_.gpuPoints);
 }
 
 RealtimeTessellator::~RealtimeTessellator() = default;
@@ -73,7 +134,8 @@ RealtimeTessellator::~RealtimeTessellator() = default;
 const RealtimeFrame& RealtimeTessellator::tessellate(const Camera& camera) {
   frame_ = RealtimeFrame{};
   Stopwatch stopwatch;
-  std::vector<RationalBezierPatch> visible;
+  // The batch: visible patches first, then every edge of a visible patch, once.
+  std::vector<RationalBezierPatch> batchPatches;
   std::vector<uint32_t> visibleIndex;
   for (size_t p = 0; p < patches_.size(); ++p) {
     RationalBezierPatch screen = screenSpacePatch(homogeneous_[p], camera);
@@ -81,10 +143,34 @@ const RealtimeFrame& RealtimeTessellator::tessellate(const Camera& camera) {
       ++frame_.culled;
       continue;
     }
-    visible.push_back(std::move(screen));
+    batchPatches.push_back(std::move(screen));
     visibleIndex.push_back(uint32_t(p));
   }
-  const DivisionBatch batch = packDivisionBatch(visible);
+  const size_t visible = visibleIndex.size();
+  std::vector<int64_t> edgeSlot(edgePatches_.size(), -1);  // batch entry of a counted edge
+  std::vector<uint32_t> countedEdges;
+  for (uint32_t p : visibleIndex)
+    for (uint32_t edge : edges_.sideEdge[p])
+      if (edgeSlot[edge] == -1 && !edges_.collapsed[edge]) {
+        RationalBezierPatch screen = screenSpacePatch(edgePatches_[edge], camera);
+        edgeSlot[edge] = -2;  // seen
+        // Wholly behind the near plane (its weights may even all be 0): 1, the rasterizer
+        // clips it; counted ones go into the batch.
+        if (std::all_of(screen.cpw.begin(), screen.cpw.end(),
+                        [&](const glm::dvec4& h) { return h.w <= camera.nearW; }))
+          continue;
+        edgeSlot[edge] = int64_t(batchPatches.size());
+        // Pixels scaled by 1/fraction: the batch's tolerance then counts the edge to
+        // fraction · tolerance (second derivatives scale with the coordinates).
+        for (glm::dvec4& h : screen.cpw) {
+          h.x /= options_.edgeToleranceFraction;
+          h.y /= options_.edgeToleranceFraction;
+        }
+        batchPatches.push_back(std::move(screen));
+        countedEdges.push_back(edge);
+      }
+  frame_.edges = countedEdges.size();
+  const DivisionBatch batch = packDivisionBatch(batchPatches);
   frame_.prepareSeconds = stopwatch.elapsedSeconds();
 
   stopwatch.restart();
@@ -96,46 +182,80 @@ const RealtimeFrame& RealtimeTessellator::tessellate(const Camera& camera) {
   frame_.countSeconds = stopwatch.elapsedSeconds();
 
   stopwatch.restart();
-  for (auto& b : bucketPatches_) b.clear();
-  for (auto& b : bucketGrids_) b.clear();
-  for (size_t k = 0; k < visible.size(); ++k) {
-    int nu = int(counts[k].nu), nv = int(counts[k].nv);
-    bool capped = counts[k].status == gpu::kDivisionCapped;
-    if (counts[k].status == gpu::kDivisionUnbounded) {  // the eye plane cuts the patch
-      ++frame_.fallback;
-      const ViewDivisions view = viewDivisions(homogeneous_[visibleIndex[k]], camera,
-                                               counting);
-      if (view.divisions.status == DivisionStatus::Culled || !view.divisions.bounds.visible) {
-        ++frame_.culled;
-        continue;
-      }
-      nu = view.divisions.nu;
-      nv = view.divisions.nv;
-      capped = view.divisions.status != DivisionStatus::Ok;
+  // Edge counts: N_u of the edge's counting patch; 1 for a collapsed edge or one the host finds
+  // invisible (behind the near plane: the rasterizer clips it).
+  std::vector<uint32_t> edgeSegments(edgePatches_.size(), 1u);
+  DivisionOptions edgeCounting = counting;
+  edgeCounting.tolerance *= options_.edgeToleranceFraction;
+  for (uint32_t edge : countedEdges) {
+    int nu = 1, nv = 1;
+    bool capped = false;
+    if (countsOf(counts[size_t(edgeSlot[edge])], edgePatches_[edge], camera, edgeCounting, nu, nv,
+                 capped, frame_.fallback))
+      edgeSegments[edge] = uint32_t(std::max(nu, 1));
+    frame_.capped += capped ? 1 : 0;
+  }
+  items_.clear();
+  size_t vertexCount = 0, triangleCount = 0;
+  for (size_t k = 0; k < visible; ++k) {
+    const uint32_t p = visibleIndex[k];
+    int nu = 1, nv = 1;
+    bool capped = false;
+    if (!countsOf(counts[k], homogeneous_[p], camera, counting, nu, nv, capped,
+                  frame_.fallback)) {
+      ++frame_.culled;
+      continue;
     }
     frame_.capped += capped ? 1 : 0;
     frame_.countedTriangles += 2 * size_t(nu) * size_t(nv);
-    const uint32_t rung = gridRung(ladder_, nu, nv);
-    const size_t b = size_t(std::find(ladder_.begin(), ladder_.end(), rung) - ladder_.begin());
-    bucketGrids_[b].push_back(frame_.grids.size());
-    bucketPatches_[b].push_back(gpuPatches_[visibleIndex[k]]);
-    frame_.grids.push_back({visibleIndex[k], rung + 1, nu, nv, nullptr});
+    gpu::StitchPatch record{};
+    record.patchIndex = p;
+    record.nu = uint32_t(std::max(nu, 1));
+    record.nv = uint32_t(std::max(nv, 1));
+    for (int s = 0; s < 4; ++s) {
+      record.sideEdge[s] = edges_.sideEdge[p][s];
+      record.sideFlags[s] = edges_.sideFlags[p][s];
+      // A pole shares no edge: 2n copies of it put one in the middle of each inner segment
+      // of the fan (stitchAdvanceOuter), so every fan triangle's (u, v) hugs its own part of
+      // the side (the copies are equal points: no triangle is drawn along the side).
+      record.sideSegments[s] = edges_.collapsed[edges_.sideEdge[p][s]]
+                                   ? 2 * ((s & 1) == 0 ? record.nu : record.nv)
+                                   : edgeSegments[edges_.sideEdge[p][s]];
+    }
+    record.firstVertex = uint32_t(vertexCount);
+    record.firstIndex = uint32_t(3 * triangleCount);
+    vertexCount += mirror::stitchVertexCount(record);
+    triangleCount += mirror::stitchTriangleCount(record);
+    const uint32_t recordIndex = uint32_t(frame_.records.size());
+    for (uint32_t slot = 0; slot < mirror::stitchItemCount(record); ++slot)
+      items_.push_back((recordIndex << gpu::kStitchSlotBits) | slot);
+    frame_.records.push_back(record);
   }
-  frame_.bucketSeconds = stopwatch.elapsedSeconds();
+  if (3 * triangleCount > UINT32_MAX || vertexCount > UINT32_MAX)
+    throw std::length_error("real-time tessellation: a frame of " + std::to_string(triangleCount) +
+                            " triangles exceeds 32-bit indices");
+  frame_.vertexCount = vertexCount;
+  frame_.triangles = triangleCount;
+  frame_.layoutSeconds = stopwatch.elapsedSeconds();
 
   stopwatch.restart();
-  for (size_t b = 0; b < ladder_.size(); ++b) {
-    if (bucketPatches_[b].empty()) continue;
-    const uint32_t side = ladder_[b] + 1;
-    const gpu::GridVertex* vertices = evaluators_[b]->evaluate(bucketPatches_[b], side);
+  if (!frame_.records.empty()) {
+    runner_->run(frame_.records, items_, vertexCount, 3 * triangleCount);
+    frame_.vertices = runner_->vertices();
+    frame_.indices = runner_->indices();
     ++frame_.dispatches;
-    for (size_t g = 0; g < bucketGrids_[b].size(); ++g)
-      frame_.grids[bucketGrids_[b][g]].vertices = vertices + g * side * side;
-    frame_.vertices += bucketPatches_[b].size() * side * side;
-    frame_.triangles += bucketPatches_[b].size() * 2 * size_t(ladder_[b]) * ladder_[b];
   }
-  frame_.gridSeconds = stopwatch.elapsedSeconds();
+  frame_.patternSeconds = stopwatch.elapsedSeconds();
   return frame_;
+}
+
+void RealtimeTessellator::mirrorLastFrame(std::vector<gpu::GridVertex>& vertices,
+                                          std::vector<uint32_t>& indices) const {
+  vertices.assign(frame_.vertexCount, gpu::GridVertex{});
+  indices.assign(3 * frame_.triangles, 0u);
+  for (uint32_t item : items_)
+    mirror::stitchItem(gpuPatches_.data(), frame_.records.data(), edges_.gpuPoints.data(), item,
+                       kDegenerateEpsFp32, vertices.data(), indices.data());
 }
 
 }  // namespace tessera

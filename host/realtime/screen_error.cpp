@@ -4,6 +4,7 @@
 #include <array>
 
 #include "geometry/bezier.h"
+#include "realtime/detail/stitch_mirror.h"
 #include "realtime/frame.h"
 
 namespace tessera {
@@ -63,20 +64,18 @@ ScreenErrorReport measureScreenError(const RealtimeFrame& frame,
                                      const Camera& camera, int subdivisions) {
   ScreenErrorReport report;
   const int n = std::max(1, subdivisions);
-  for (const RealtimeGrid& grid : frame.grids) {
-    const uint32_t side = grid.pointsPerSide;
-    const double step = 1.0 / double(side - 1);
-    auto corner = [&](uint32_t i, uint32_t j) {
-      const glm::dvec3 world(glm::vec3(grid.vertices[i * side + j].position));
-      return Corner{world, glm::dvec2(i * step, j * step), project(camera, world)};
+  for (const gpu::StitchPatch& record : frame.records) {
+    const std::vector<gpu::vec2> uv = mirror::stitchVertexParams(record);
+    auto corner = [&](uint32_t index) {
+      const glm::dvec3 world(glm::vec3(frame.vertices[index].position));
+      return Corner{world, glm::dvec2(uv[index - record.firstVertex]), project(camera, world)};
     };
-    for (uint32_t i = 0; i + 1 < side; ++i)
-      for (uint32_t j = 0; j + 1 < side; ++j) {
-        // The cell's two triangles along the (i, j)–(i+1, j+1) diagonal.
-        const Corner c00 = corner(i, j), c11 = corner(i + 1, j + 1);
-        measureTriangle({c00, corner(i + 1, j), c11}, patches[grid.patch], camera, n, report);
-        measureTriangle({c00, c11, corner(i, j + 1)}, patches[grid.patch], camera, n, report);
-      }
+    const uint32_t triangles = mirror::stitchTriangleCount(record);
+    for (uint32_t t = 0; t < triangles; ++t) {
+      const uint32_t* corners = frame.indices + record.firstIndex + 3 * t;
+      measureTriangle({corner(corners[0]), corner(corners[1]), corner(corners[2])},
+                      patches[record.patchIndex], camera, n, report);
+    }
   }
   return report;
 }
