@@ -116,3 +116,61 @@ TEST_CASE("Division counts: Vulkan equals the fp32 mirror bit for bit and the do
   CHECK(maxBoundRel < 1e-3);
   CHECK(compared >= 2500);
 }
+
+TEST_CASE("Division counts of curves (appendDivisionCurves): Vulkan equals the fp32 mirror bit "
+          "for bit and the double curveDivisions within the band",
+          "[division][gpu]") {
+  // The first row of every parity patch (degrees 1..7, every weight kind) as a curve.
+  std::vector<RationalBezierCurve> curves;
+  for (const RationalBezierPatch& patch : parityPatches()) {
+    RationalBezierCurve curve;
+    curve.degree = patch.degreeU;
+    for (int i = 0; i <= patch.degreeU; ++i) curve.cpw.push_back(patch.at(i, 0));
+    curves.push_back(curve);
+  }
+  DivisionOptions options;
+  options.tolerance = 0.01;
+  options.maxPerDirection = 4096;
+  DivisionBatch batch;
+  appendDivisionCurves(batch, curves);
+  const auto gpuResults = makeVulkanDivisionCounter(gpuContext())->count(batch, options);
+  const auto mirrorResults = makeMirrorDivisionCounter()->count(batch, options);
+  requireValidationClean();
+  REQUIRE(gpuResults.size() == curves.size());
+  size_t mirrorMismatches = 0, statusMismatches = 0, outOfBand = 0, compared = 0, nvNotOne = 0;
+  int maxCountDiff = 0;
+  for (size_t c = 0; c < curves.size(); ++c) {
+    mirrorMismatches += !sameBits(gpuResults[c], mirrorResults[c]);
+    const Divisions ref = curveDivisions(curves[c], options);
+    const gpu::DivisionResult& g = gpuResults[c];
+    if ((ref.status == DivisionStatus::Unbounded) != (g.status == gpu::kDivisionUnbounded)) {
+      ++statusMismatches;
+      continue;
+    }
+    if (ref.status == DivisionStatus::Unbounded) continue;
+    ++compared;
+    nvNotOne += g.nv != 1;
+    const int diff = std::abs(ref.nu - int(g.nu));
+    maxCountDiff = std::max(maxCountDiff, diff);
+    if (diff > 1 || (diff == 1 && !nearInteger(ref.realU))) {
+      ++outOfBand;
+      UNSCOPED_INFO("curve " << c << ": reference " << ref.nu << " (real " << ref.realU
+                             << "), GPU " << g.nu);
+    }
+  }
+  std::cout << "curve division parity: " << curves.size() << " curves (" << compared
+            << " compared), mirror mismatches " << mirrorMismatches << ", status mismatches "
+            << statusMismatches << ", outside the band: " << outOfBand
+            << ", max count difference " << maxCountDiff << "\n";
+  CHECK(mirrorMismatches == 0);
+  CHECK(statusMismatches == 0);
+  CHECK(outOfBand == 0);
+  CHECK(maxCountDiff <= 1);
+  CHECK(nvNotOne == 0);
+  CHECK(compared >= 2500);
+  RationalBezierCurve bad;
+  bad.degree = 0;
+  bad.cpw = {glm::dvec4(0, 0, 0, 1)};
+  DivisionBatch refused;
+  CHECK_THROWS_WITH(appendDivisionCurves(refused, {bad}), Catch::Contains("curve 0"));
+}

@@ -23,6 +23,10 @@ struct DivisionBatch {
   std::vector<gpu::vec4> points;
 };
 DivisionBatch packDivisionBatch(const std::vector<RationalBezierPatch>& patches);
+// Appends curves as patches of degree (K, 0): the shader's v-loops then run once and its
+// (i, j) pair loop over (K+1)² points instead of a patch's (K+1)²(M+1)², and the result's nu is
+// the curve's count (curveDivisions), nv = 1. Same validation, naming the curve.
+void appendDivisionCurves(DivisionBatch& batch, const std::vector<RationalBezierCurve>& curves);
 
 gpu::DivisionPush divisionPush(const DivisionOptions& options, size_t patchCount);
 

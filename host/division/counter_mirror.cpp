@@ -27,6 +27,19 @@ DivisionBatch packDivisionBatch(const std::vector<RationalBezierPatch>& patches)
   return batch;
 }
 
+void appendDivisionCurves(DivisionBatch& batch, const std::vector<RationalBezierCurve>& curves) {
+  for (size_t c = 0; c < curves.size(); ++c) {
+    try {
+      validateDivisionInput(curves[c], DivisionMethod::Split);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("curve " + std::to_string(c) + ": " + e.what());
+    }
+    batch.patches.push_back({static_cast<uint32_t>(batch.points.size()),
+                             static_cast<uint32_t>(curves[c].degree), 0u, 0u});
+    for (const glm::dvec4& h : curves[c].cpw) batch.points.push_back(gpu::vec4(h));
+  }
+}
+
 gpu::DivisionPush divisionPush(const DivisionOptions& options, size_t patchCount) {
   if (!(options.tolerance > 0.0) || !std::isfinite(options.tolerance))
     throw std::invalid_argument("division count: the tolerance must be a finite number > 0");

@@ -5,8 +5,9 @@
 //      (the convex hull, hence the patch, is outside);
 //   2. GPU: division counts in pixels (split method, host/division/counter.h) for every visible
 //      patch (N_u, N_v) and, in the same batch, for every edge of a visible patch (its segment
-//      count, from the edge's own control points: host/realtime/patch_edges.h); a patch or edge
-//      the eye plane cuts (status Unbounded) is counted on the host by viewDivisions;
+//      count, from the edge's own control points, as a curve: host/realtime/patch_edges.h); a
+//      patch or edge the eye plane cuts (status Unbounded) is counted on the host by
+//      viewDivisions;
 //   3. GPU: the stitched pattern (shaders/stitch_pattern.comp.glsl, docs/realtime.md): per
 //      patch an inner grid from (N_u, N_v) and a transition strip along each side to that
 //      side's edge count. Both patches of a shared edge use its one count and evaluate its
@@ -93,7 +94,8 @@ class RealtimeTessellator {
   vk::Context& context_;
   std::unique_ptr<DivisionCounter> counter_;
   std::unique_ptr<StitchPatternRunner> runner_;
-  std::vector<uint32_t> items_;  // the last frame's work items
+  std::vector<uint32_t> items_;      // the last frame's work items
+  std::vector<uint32_t> sideItems_;  // scratch: the side items, appended after the rows
   RealtimeFrame frame_;
 };
 

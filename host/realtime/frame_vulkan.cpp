@@ -149,28 +149,33 @@ const RealtimeFrame& RealtimeTessellator::tessellate(const Camera& camera) {
   const size_t visible = visibleIndex.size();
   std::vector<int64_t> edgeSlot(edgePatches_.size(), -1);  // batch entry of a counted edge
   std::vector<uint32_t> countedEdges;
+  std::vector<RationalBezierCurve> edgeCurves;
   for (uint32_t p : visibleIndex)
     for (uint32_t edge : edges_.sideEdge[p])
       if (edgeSlot[edge] == -1 && !edges_.collapsed[edge]) {
-        RationalBezierPatch screen = screenSpacePatch(edgePatches_[edge], camera);
         edgeSlot[edge] = -2;  // seen
-        // Wholly behind the near plane (its weights may even all be 0): 1, the rasterizer
-        // clips it; counted ones go into the batch.
-        if (std::all_of(screen.cpw.begin(), screen.cpw.end(),
-                        [&](const glm::dvec4& h) { return h.w <= camera.nearW; }))
-          continue;
-        edgeSlot[edge] = int64_t(batchPatches.size());
-        // Pixels scaled by 1/fraction: the batch's tolerance then counts the edge to
-        // fraction · tolerance (second derivatives scale with the coordinates).
-        for (glm::dvec4& h : screen.cpw) {
+        // The counting patch's first row, in screen space; wholly behind the near plane (its
+        // weights may even all be 0): 1, the rasterizer clips it.
+        const RationalBezierPatch screen = screenSpacePatch(edgePatches_[edge], camera);
+        RationalBezierCurve curve;
+        bool behind = true;
+        for (int i = 0; i <= 3; ++i) {
+          glm::dvec4 h = screen.at(i, 0);
+          behind = behind && h.w <= camera.nearW;
+          // Pixels scaled by 1/fraction: the batch's tolerance then counts the edge to
+          // fraction · tolerance (second derivatives scale with the coordinates).
           h.x /= options_.edgeToleranceFraction;
           h.y /= options_.edgeToleranceFraction;
+          curve.cpw.push_back(h);
         }
-        batchPatches.push_back(std::move(screen));
+        if (behind) continue;
+        edgeSlot[edge] = int64_t(visible + edgeCurves.size());
+        edgeCurves.push_back(std::move(curve));
         countedEdges.push_back(edge);
       }
   frame_.edges = countedEdges.size();
-  const DivisionBatch batch = packDivisionBatch(batchPatches);
+  DivisionBatch batch = packDivisionBatch(batchPatches);
+  appendDivisionCurves(batch, edgeCurves);
   frame_.prepareSeconds = stopwatch.elapsedSeconds();
 
   stopwatch.restart();
@@ -196,6 +201,7 @@ const RealtimeFrame& RealtimeTessellator::tessellate(const Camera& camera) {
     frame_.capped += capped ? 1 : 0;
   }
   items_.clear();
+  sideItems_.clear();
   size_t vertexCount = 0, triangleCount = 0;
   for (size_t k = 0; k < visible; ++k) {
     const uint32_t p = visibleIndex[k];
@@ -227,10 +233,13 @@ const RealtimeFrame& RealtimeTessellator::tessellate(const Camera& camera) {
     vertexCount += mirror::stitchVertexCount(record);
     triangleCount += mirror::stitchTriangleCount(record);
     const uint32_t recordIndex = uint32_t(frame_.records.size());
-    for (uint32_t slot = 0; slot < mirror::stitchItemCount(record); ++slot)
-      items_.push_back((recordIndex << gpu::kStitchSlotBits) | slot);
+    const uint32_t rows = mirror::stitchItemCount(record) - 4;
+    for (uint32_t slot = 0; slot < rows + 4; ++slot)
+      (slot < rows ? items_ : sideItems_).push_back((recordIndex << gpu::kStitchSlotBits) | slot);
     frame_.records.push_back(record);
   }
+  // Rows first, then sides: neighbouring invocations (SIMD lanes) run the same branch.
+  items_.insert(items_.end(), sideItems_.begin(), sideItems_.end());
   if (3 * triangleCount > UINT32_MAX || vertexCount > UINT32_MAX)
     throw std::length_error("real-time tessellation: a frame of " + std::to_string(triangleCount) +
                             " triangles exceeds 32-bit indices");
