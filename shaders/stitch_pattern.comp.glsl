@@ -61,9 +61,13 @@ void main() {
   uint e = sp.sideSegments[s];
   uint edge = sp.sideEdge[s];
   uint first = v0 + stitchSideFirstVertex(sp, s);
+  // Sides V0, V1 (v = 0, 1) take a column, U0, U1 (u = 0, 1) a row: one for all their points.
+  vec2 end = stitchSideUV(sp, s, 0u);
+  GridRow side = (s & 1u) == 0u ? gridColumn(bp, end.y) : gridRow(bp, end.x);
   for (uint k = 0u; k <= e; ++k) {
     vec2 uv = stitchSideUV(sp, s, k);
-    GridVertex g = gridVertex(bp, gridRow(bp, uv.x), uv.x, uv.y, tol);
+    GridVertex g = (s & 1u) == 0u ? gridColumnVertex(bp, side, uv.x, uv.y, tol)
+                                   : gridVertex(bp, side, uv.x, uv.y, tol);
     g.position = vec4(stitchSidePosition(sp, s, k, edgePoints[4u * edge], edgePoints[4u * edge + 1u],
                                          edgePoints[4u * edge + 2u], edgePoints[4u * edge + 3u]),
                       1.0f);

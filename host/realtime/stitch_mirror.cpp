@@ -57,9 +57,13 @@ void stitchItem(const gpu::BicubicPatch* patches, const gpu::StitchPatch* record
   uint32_t e = sp.sideSegments[s];
   uint32_t edge = sp.sideEdge[s];
   uint32_t first = v0 + stitchSideFirstVertex(sp, s);
+  // Sides V0, V1 (v = 0, 1) take a column, U0, U1 (u = 0, 1) a row: one for all their points.
+  vec2 end = stitchSideUV(sp, s, 0);
+  GridRow side = (s & 1) == 0 ? gridColumn(bp, end.y) : gridRow(bp, end.x);
   for (uint32_t k = 0; k <= e; ++k) {
     vec2 uv = stitchSideUV(sp, s, k);
-    GridVertex g = gridVertex(bp, gridRow(bp, uv.x), uv.x, uv.y, tol);
+    GridVertex g = (s & 1) == 0 ? gridColumnVertex(bp, side, uv.x, uv.y, tol)
+                                   : gridVertex(bp, side, uv.x, uv.y, tol);
     g.position = vec4(stitchSidePosition(sp, s, k, edgePoints[4 * edge], edgePoints[4 * edge + 1],
                                          edgePoints[4 * edge + 2], edgePoints[4 * edge + 3]),
                       1.0f);

@@ -40,23 +40,11 @@ GridRow gridRow(IN(BicubicPatch) bp, float u) {
   return r;
 }
 
-// Vertex (u, v) of the row. `tol` = ε·L² (bicubicScale); where |Pu × Pv| ≤ tol the point is
-// degenerate and the full rule of bicubicNormal (higher derivatives) gives the normal.
-GridVertex gridVertex(IN(BicubicPatch) bp, IN(GridRow) row, float u, float v, float tol) {
-  PRECISE float s = 1.0f - v;
-  PRECISE float ss = s * s;
-  PRECISE float vv = v * v;
-  PRECISE float vs = v * s;
-  PRECISE vec4 b0 = vec4(ss * s, 3.0f * vs * s, 3.0f * vs * v, vv * v);
-  PRECISE vec4 b1 = vec4(-3.0f * ss, 3.0f * ss - 6.0f * vs, 6.0f * vs - 3.0f * vv, 3.0f * vv);
-  PRECISE vec3 p = vec3(0.0f);
-  PRECISE vec3 pu = vec3(0.0f);
-  PRECISE vec3 pv = vec3(0.0f);
-  for (int j = 0; j < 4; ++j) {
-    p = p + b0[j] * row.c[j];
-    pu = pu + b0[j] * row.d[j];
-    pv = pv + b1[j] * row.c[j];
-  }
+// The vertex at (u, v) from its position relative to b_00 and its two derivatives. `tol` =
+// ε·L² (bicubicScale); where |Pu × Pv| ≤ tol the point is degenerate and the full rule of
+// bicubicNormal (higher derivatives) gives the normal.
+GridVertex gridVertexFrom(IN(BicubicPatch) bp, vec3 p, vec3 pu, vec3 pv, float u, float v,
+                          float tol) {
   PRECISE vec3 n = cross(pu, pv);
   PRECISE float len = sqrt(dot(n, n));
   vec3 normal;
@@ -69,6 +57,72 @@ GridVertex gridVertex(IN(BicubicPatch) bp, IN(GridRow) row, float u, float v, fl
   g.position = vec4(position, 1.0f);
   g.normal = vec4(normal, 0.0f);
   return g;
+}
+
+// The cubic Bernstein values (b0) and derivatives (b1) at t, as gridVertex weighs a row.
+void gridBasis(float t, OUT(vec4) b0, OUT(vec4) b1) {
+  PRECISE float s = 1.0f - t;
+  PRECISE float ss = s * s;
+  PRECISE float tt = t * t;
+  PRECISE float ts = t * s;
+  PRECISE vec4 r0 = vec4(ss * s, 3.0f * ts * s, 3.0f * ts * t, tt * t);
+  PRECISE vec4 r1 = vec4(-3.0f * ss, 3.0f * ss - 6.0f * ts, 6.0f * ts - 3.0f * tt, 3.0f * tt);
+  b0 = r0;
+  b1 = r1;
+}
+
+// Vertex (u, v) of the row.
+GridVertex gridVertex(IN(BicubicPatch) bp, IN(GridRow) row, float u, float v, float tol) {
+  vec4 b0;
+  vec4 b1;
+  gridBasis(v, b0, b1);
+  PRECISE vec3 p = vec3(0.0f);
+  PRECISE vec3 pu = vec3(0.0f);
+  PRECISE vec3 pv = vec3(0.0f);
+  for (int j = 0; j < 4; ++j) {
+    p = p + b0[j] * row.c[j];
+    pu = pu + b0[j] * row.d[j];
+    pv = pv + b1[j] * row.c[j];
+  }
+  return gridVertexFrom(bp, p, pu, pv, u, v, tol);
+}
+
+// The u-curves through one column (fixed v): c[i] = Σ_j B_j(v) (b_ij − b_00) and d its
+// v-derivative; for vertices along a side v = const (one column for the whole side instead of
+// a row per vertex).
+GridRow gridColumn(IN(BicubicPatch) bp, float v) {
+  CubicBasis bv = cubicBasis(v);
+  vec3 origin = vec3(bp.cp[0]);
+  GridRow r;
+  for (int i = 0; i < 4; ++i) {
+    PRECISE vec3 c = vec3(0.0f);
+    PRECISE vec3 d = vec3(0.0f);
+    for (int j = 0; j < 4; ++j) {
+      PRECISE vec3 q = vec3(bp.cp[i * 4 + j]) - origin;
+      c = c + bv.b0[j] * q;
+      d = d + bv.b1[j] * q;
+    }
+    r.c[i] = c;
+    r.d[i] = d;
+  }
+  return r;
+}
+
+// Vertex (u, v) of the column.
+GridVertex gridColumnVertex(IN(BicubicPatch) bp, IN(GridRow) column, float u, float v,
+                            float tol) {
+  vec4 b0;
+  vec4 b1;
+  gridBasis(u, b0, b1);
+  PRECISE vec3 p = vec3(0.0f);
+  PRECISE vec3 pu = vec3(0.0f);
+  PRECISE vec3 pv = vec3(0.0f);
+  for (int i = 0; i < 4; ++i) {
+    p = p + b0[i] * column.c[i];
+    pu = pu + b1[i] * column.c[i];
+    pv = pv + b0[i] * column.d[i];
+  }
+  return gridVertexFrom(bp, p, pu, pv, u, v, tol);
 }
 
 #endif
