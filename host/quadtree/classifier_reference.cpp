@@ -226,13 +226,21 @@ SecondBounds polynomialBounds(const HomogeneousNet& net) {
   return b;
 }
 
+// The patch's homogeneous net moved to its first control point P₀₀ (P_h − w·P₀₀), the local
+// frame of the fp32 bound: the bounds are translation-invariant in exact arithmetic, and
+// here no large coordinate enters the double restriction either.
 HomogeneousNet contextNet(const PatchContext& p) {
-  if (p.kind == PatchContext::kRational) return toNet(p.rational);
-  const bool bicubic = p.kind == PatchContext::kBicubic;
-  const int n = bicubic ? 3 : p.polynomial.degreeU, m = bicubic ? 3 : p.polynomial.degreeV;
-  HomogeneousNet net(n, m);
-  for (int k = 0; k < (n + 1) * (m + 1); ++k)
-    net.c[size_t(k)] = glm::dvec4(bicubic ? p.net[k] : p.polynomial.cp[size_t(k)], 1.0);
+  HomogeneousNet net = [&] {
+    if (p.kind == PatchContext::kRational) return toNet(p.rational);
+    const bool bicubic = p.kind == PatchContext::kBicubic;
+    const int n = bicubic ? 3 : p.polynomial.degreeU, m = bicubic ? 3 : p.polynomial.degreeV;
+    HomogeneousNet h(n, m);
+    for (int k = 0; k < (n + 1) * (m + 1); ++k)
+      h.c[size_t(k)] = glm::dvec4(bicubic ? p.net[k] : p.polynomial.cp[size_t(k)], 1.0);
+    return h;
+  }();
+  const dvec3 origin = dvec3(net.c[0]) / net.c[0].w;
+  for (auto& c : net.c) c = glm::dvec4(dvec3(c) - c.w * origin, c.w);
   return net;
 }
 

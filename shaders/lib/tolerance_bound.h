@@ -8,12 +8,19 @@
 #ifndef TESSERA_TOLERANCE_BOUND_H
 #define TESSERA_TOLERANCE_BOUND_H
 
-// The fp32 bound is (1 + 2⁻¹⁰)·(M_ss + 2·M_st + M_tt)/8 + 2⁻²⁰·(n² + m²)·max|P|: the factor
-// covers the rounding of the bound's own arithmetic, the term the rounding of the restricted
-// net's coordinates (about 2·degree lerps per direction, each within an ulp of max|P|,
-// amplified by the n(n−1) of the second differences).
+// The fp32 bound is (1 + 2⁻¹⁰)·(M_ss + 2·M_st + M_tt)/8 + guard: the factor covers the
+// rounding of the bound's own arithmetic (norms, products, the widths h), the guard the
+// rounding of the restricted nets' coordinates (docs/quadtree.md, "fp32"). Polynomial nets
+// are bounded through their second-difference nets, restricted to the node and scaled by h²:
+// the guard is 2⁻²⁶·Σ c·h²·(2·F₁ + (1 + 6·(d_u + d_v))·F₂) (F₁, F₂ the largest |component| of
+// the first and second differences, d_u × d_v the difference net's degrees), which depends
+// on neither the position nor the units of the model. Rational nets, translated to their
+// first control point, keep 2⁻²⁰·(n² + m²)·max|P − P₀₀| (not proven: tolerance_net.h).
 const float kToleranceRelativeGuard = 1.0009765625f;  // 1 + 2⁻¹⁰
-const float kToleranceRoundingGuard = 9.5367431640625e-7f;  // 2⁻²⁰
+const float kToleranceRoundingGuard = 9.5367431640625e-7f;  // 2⁻²⁰ (rational)
+// u/4 = 2⁻²⁶ with u = 2⁻²⁴: at least (√3/8)·u (a norm of three coordinates, /8 of the bound)
+// with room for the (1 + u)ᵏ of the convex combinations (polynomial).
+const float kToleranceDifferenceGuard = 1.4901161193847656e-8f;  // 2⁻²⁶
 // A bound no δ accepts: where w may vanish on the node (rational nets the weight ratios
 // cannot bound), the node splits in both directions.
 const float kToleranceUnbounded = 1.0e30f;
@@ -62,20 +69,14 @@ void restrictBernsteinRow(INOUT(BernsteinRow4) row, int degree, float t0, float 
   }
 }
 
+// ‖v‖, scaled by its largest |component| first so that the squares neither underflow nor
+// overflow (coordinates of 10⁻³⁰ or 10³⁰ keep their bound) and a scale by 2ᵏ scales it exactly.
 float toleranceNorm(vec3 v) {
-  PRECISE float r = sqrt(dot(v, v));
+  PRECISE float big = max(abs(v.x), max(abs(v.y), abs(v.z)));
+  if (!(big > 0.0f && big <= 3.0e38f)) return big;  // 0, or not finite
+  PRECISE vec3 w = v / big;
+  PRECISE float r = big * sqrt(dot(w, w));
   return r;
-}
-
-// ‖a − 2b + c‖ and ‖d − c − b + a‖ (a = P_ij, b = P_i+1,j, c = P_i,j+1, d = P_i+1,j+1).
-float secondDifferenceNorm(vec3 a, vec3 b, vec3 c) {
-  PRECISE vec3 d = (c - b) - (b - a);
-  return toleranceNorm(d);
-}
-
-float twistNorm(vec3 a, vec3 b, vec3 c, vec3 d) {
-  PRECISE vec3 t = (d - c) - (b - a);
-  return toleranceNorm(t);
 }
 
 float maxAbsComponent(vec3 p) { return max(abs(p.x), max(abs(p.y), abs(p.z))); }
@@ -86,48 +87,142 @@ float toleranceMidpoint(float lo, float hi) {
   return r;
 }
 
-// The polynomial bicubic net restricted to the node: (M_ss, M_st, M_tt, the rounding guard).
-// M_ss = 6·max‖Δ²_s P‖, M_st = 9·max‖Δ_sΔ_t P‖, M_tt = 6·max‖Δ²_t P‖ (the second derivatives'
-// Bernstein nets, whose convex hull holds them).
-vec4 bicubicSecondBounds(IN(BicubicPatch) bp, vec4 rect) {
-  vec4 q[16];
-  for (int k = 0; k < 16; ++k) q[k] = bp.cp[k];
+// (c − b) − (b − a), the first differences' largest |component| raised into big1.
+vec3 secondDifferenceOf(vec3 a, vec3 b, vec3 c, INOUT(float) big1) {
+  PRECISE vec3 x = c - b;
+  PRECISE vec3 y = b - a;
+  big1 = max(big1, max(maxAbsComponent(x), maxAbsComponent(y)));
+  PRECISE vec3 d = x - y;
+  return d;
+}
+
+// (d − c) − (b − a) for a = P_ij, b = P_i+1,j, c = P_i,j+1, d = P_i+1,j+1, likewise.
+vec3 twistOf(vec3 a, vec3 b, vec3 c, vec3 d, INOUT(float) big1) {
+  PRECISE vec3 x = d - c;
+  PRECISE vec3 y = b - a;
+  big1 = max(big1, max(maxAbsComponent(x), maxAbsComponent(y)));
+  PRECISE vec3 t = x - y;
+  return t;
+}
+
+// Per coordinate, the restricted difference net of degrees d_u × d_v is within
+// u·(2·F₁ + (1 + 6·(d_u + d_v))·F₂) of the exact one (u = 2⁻²⁴): the differences' own
+// rounding, then ≤ 2d lerps a direction, each within 3u·F₂ (docs/quadtree.md, "fp32").
+float differenceNetError(float big1, float big2, int du, int dv) {
+  PRECISE float lerps = float(1 + 6 * (du + dv));
+  PRECISE float twice = 2.0f * big1;
+  PRECISE float e = twice + lerps * big2;
+  return e;
+}
+
+// (M_ss, M_st, M_tt, guard) from the largest norms of the three restricted difference nets
+// (in the patch's parameters) and their error terms: M_ss = n(n−1)·h_u²·‖Δ²_s‖, M_st =
+// n·m·h_u·h_v·‖Δ_sΔ_t‖, M_tt = m(m−1)·h_v²·‖Δ²_t‖ — de Casteljau commutes with differencing,
+// so these are the node-local bounds of the restricted net.
+vec4 differenceBounds(vec3 norms, vec3 errors, int n, int m, vec4 rect) {
+  PRECISE float hu = rect.z - rect.x;
+  PRECISE float hv = rect.w - rect.y;
+  PRECISE float css = float(n * (n - 1)) * (hu * hu);
+  PRECISE float cst = float(n * m) * (hu * hv);
+  PRECISE float ctt = float(m * (m - 1)) * (hv * hv);
+  PRECISE float mss = css * norms.x;
+  PRECISE float mst = cst * norms.y;
+  PRECISE float mtt = ctt * norms.z;
+  PRECISE float twoSt = 2.0f * cst;
+  PRECISE float spread = (css * errors.x + twoSt * errors.y) + ctt * errors.z;
+  PRECISE float guard = kToleranceDifferenceGuard * spread;
+  return vec4(mss, mst, mtt, guard);
+}
+
+// A bicubic difference net, at most 4 × 4 entries, entry (i, j) at i·4 + j (xyz; w = 0).
+struct DifferenceNet4 {
+  vec4 c[16];
+};
+
+// The (du + 1) × (dv + 1) net restricted to rect (de Casteljau along u, then v); its
+// largest norm.
+float restrictedLargestNorm(INOUT(DifferenceNet4) q, int du, int dv, vec4 rect) {
   BernsteinRow4 row;
   if (rect.x != 0.0f || rect.z != 1.0f) {
     for (int j = 0; j < 4; ++j) {
-      for (int i = 0; i < 4; ++i) row.c[i] = q[i * 4 + j];
-      restrictBernsteinRow(row, 3, rect.x, rect.z);
-      for (int i = 0; i < 4; ++i) q[i * 4 + j] = row.c[i];
+      if (j > dv) break;
+      for (int i = 0; i < 4; ++i) {
+        if (i > du) break;
+        row.c[i] = q.c[i * 4 + j];
+      }
+      restrictBernsteinRow(row, du, rect.x, rect.z);
+      for (int i = 0; i < 4; ++i) {
+        if (i > du) break;
+        q.c[i * 4 + j] = row.c[i];
+      }
     }
   }
   if (rect.y != 0.0f || rect.w != 1.0f) {
     for (int i = 0; i < 4; ++i) {
-      for (int j = 0; j < 4; ++j) row.c[j] = q[i * 4 + j];
-      restrictBernsteinRow(row, 3, rect.y, rect.w);
-      for (int j = 0; j < 4; ++j) q[i * 4 + j] = row.c[j];
+      if (i > du) break;
+      for (int j = 0; j < 4; ++j) {
+        if (j > dv) break;
+        row.c[j] = q.c[i * 4 + j];
+      }
+      restrictBernsteinRow(row, dv, rect.y, rect.w);
+      for (int j = 0; j < 4; ++j) {
+        if (j > dv) break;
+        q.c[i * 4 + j] = row.c[j];
+      }
     }
   }
-  PRECISE float dss = 0.0f;
-  PRECISE float dst = 0.0f;
-  PRECISE float dtt = 0.0f;
   PRECISE float big = 0.0f;
-  for (int i = 0; i < 4; ++i)
+  for (int i = 0; i < 4; ++i) {
+    if (i > du) break;
     for (int j = 0; j < 4; ++j) {
-      vec3 p = vec3(q[i * 4 + j]);
-      big = max(big, maxAbsComponent(p));
-      if (i < 2) dss = max(dss, secondDifferenceNorm(p, vec3(q[(i + 1) * 4 + j]),
-                                                     vec3(q[(i + 2) * 4 + j])));
-      if (j < 2) dtt = max(dtt, secondDifferenceNorm(p, vec3(q[i * 4 + j + 1]),
-                                                     vec3(q[i * 4 + j + 2])));
-      if (i < 3 && j < 3)
-        dst = max(dst, twistNorm(p, vec3(q[(i + 1) * 4 + j]), vec3(q[i * 4 + j + 1]),
-                                 vec3(q[(i + 1) * 4 + j + 1])));
+      if (j > dv) break;
+      big = max(big, toleranceNorm(vec3(q.c[i * 4 + j])));
     }
-  PRECISE float mss = 6.0f * dss;
-  PRECISE float mst = 9.0f * dst;
-  PRECISE float mtt = 6.0f * dtt;
-  PRECISE float guard = kToleranceRoundingGuard * 18.0f * big;
-  return vec4(mss, mst, mtt, guard);
+  }
+  return big;
+}
+
+// (M_ss, M_st, M_tt, guard) of the bicubic patch on the node: its three second-difference
+// nets (2 × 4, 3 × 3, 4 × 2) restricted to the node. Differences of control points: the same
+// for the model moved anywhere fp32 holds it exactly (docs/quadtree.md, "fp32").
+vec4 bicubicSecondBounds(IN(BicubicPatch) bp, vec4 rect) {
+  DifferenceNet4 q;
+  vec3 norms;
+  vec3 errors;
+  PRECISE float big1 = 0.0f;
+  PRECISE float big2 = 0.0f;
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 4; ++j) {
+      vec3 d = secondDifferenceOf(vec3(bp.cp[i * 4 + j]), vec3(bp.cp[(i + 1) * 4 + j]),
+                                  vec3(bp.cp[(i + 2) * 4 + j]), big1);
+      big2 = max(big2, maxAbsComponent(d));
+      q.c[i * 4 + j] = vec4(d, 0.0f);
+    }
+  norms.x = restrictedLargestNorm(q, 1, 3, rect);
+  errors.x = differenceNetError(big1, big2, 1, 3);
+  big1 = 0.0f;
+  big2 = 0.0f;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      vec3 d = twistOf(vec3(bp.cp[i * 4 + j]), vec3(bp.cp[(i + 1) * 4 + j]),
+                       vec3(bp.cp[i * 4 + j + 1]), vec3(bp.cp[(i + 1) * 4 + j + 1]), big1);
+      big2 = max(big2, maxAbsComponent(d));
+      q.c[i * 4 + j] = vec4(d, 0.0f);
+    }
+  norms.y = restrictedLargestNorm(q, 2, 2, rect);
+  errors.y = differenceNetError(big1, big2, 2, 2);
+  big1 = 0.0f;
+  big2 = 0.0f;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 2; ++j) {
+      vec3 d = secondDifferenceOf(vec3(bp.cp[i * 4 + j]), vec3(bp.cp[i * 4 + j + 1]),
+                                  vec3(bp.cp[i * 4 + j + 2]), big1);
+      big2 = max(big2, maxAbsComponent(d));
+      q.c[i * 4 + j] = vec4(d, 0.0f);
+    }
+  norms.z = restrictedLargestNorm(q, 3, 1, rect);
+  errors.z = differenceNetError(big1, big2, 3, 1);
+  return differenceBounds(norms, errors, 3, 3, rect);
 }
 
 // Rule T's equal split of a node that fails δ: the fewest children k_u·k_v (each count at

@@ -1,8 +1,9 @@
 // Rule T's second-derivative bounds for general patches (degree 1..7, polynomial or rational)
-// on the homogeneous net in gNet.h of lib/division_count.h, in fp32: restrict it to the node,
-// then bound sup‖S_ss‖, sup‖S_st‖, sup‖S_tt‖ in node-local coordinates — by the second
-// differences for a polynomial net, by the `split` method (B1..B8 over the weight ratios,
-// docs/rational_division.md) for a rational one. At namespace scope; include
+// in the gNet arrays of lib/division_count.h, in fp32: sup‖S_ss‖, sup‖S_st‖, sup‖S_tt‖ in
+// node-local coordinates — for a polynomial net, its second-difference nets restricted to the
+// node (no absolute coordinate enters); for a rational one, the homogeneous net moved to its
+// first control point, restricted, then the `split` method (B1..B8 over the weight ratios,
+// docs/rational_division.md). At namespace scope; include
 // shared_glsl_cpp.h, layout.h, division_count.h and tolerance_bound.h first.
 #ifndef TESSERA_TOLERANCE_NET_H
 #define TESSERA_TOLERANCE_NET_H
@@ -35,43 +36,66 @@ void restrictDivisionNet(vec4 rect) {
   if (rect.y != 0.0f || rect.w != 1.0f) restrictDivisionNetRows(n + 1, m, m + 1, 1, rect.y, rect.w);
 }
 
-// (M_ss, M_st, M_tt) of the polynomial net in gNet.h: n(n−1)·max‖Δ²_s P‖, n·m·max‖Δ_sΔ_t P‖,
-// m(m−1)·max‖Δ²_t P‖, and the rounding guard 2⁻²⁰·(n² + m²)·max|P|.
-vec4 polynomialNetSecondBounds() {
+// Difference net `kind` (0: Δ²_s, 1: Δ_sΔ_t, 2: Δ²_t) of the control points in gNet.d1u
+// (the polynomial path's copy of the net, (n + 1) × (m + 1)) into gNet.h, entry (i, j) at
+// i·(dv + 1) + j for its degrees du × dv, restricted to rect; returns (its largest norm, its
+// error term of differenceNetError).
+vec2 restrictedDifferenceNet(int kind, vec4 rect) {
   int n = gNet.n;
   int m = gNet.m;
   int s = m + 1;
-  PRECISE float dss = 0.0f;
-  PRECISE float dst = 0.0f;
-  PRECISE float dtt = 0.0f;
-  PRECISE float big = 0.0f;
+  int du = kind == 0 ? n - 2 : (kind == 1 ? n - 1 : n);
+  int dv = kind == 0 ? m : (kind == 1 ? m - 1 : m - 2);
+  if (du < 0 || dv < 0) return vec2(0.0f, 0.0f);
+  PRECISE float big1 = 0.0f;
+  PRECISE float big2 = 0.0f;
   for (int i = 0; i < kGeneralMaxOrder; ++i) {
-    if (i > n) break;
+    if (i > du) break;
     for (int j = 0; j < kGeneralMaxOrder; ++j) {
-      if (j > m) break;
-      vec3 p = vec3(gNet.h[i * s + j]);
-      big = max(big, maxAbsComponent(p));
-      if (i + 2 <= n)
-        dss = max(dss, secondDifferenceNorm(p, vec3(gNet.h[(i + 1) * s + j]),
-                                            vec3(gNet.h[(i + 2) * s + j])));
-      if (j + 2 <= m)
-        dtt = max(dtt, secondDifferenceNorm(p, vec3(gNet.h[i * s + j + 1]),
-                                            vec3(gNet.h[i * s + j + 2])));
-      if (i < n && j < m)
-        dst = max(dst, twistNorm(p, vec3(gNet.h[(i + 1) * s + j]), vec3(gNet.h[i * s + j + 1]),
-                                 vec3(gNet.h[(i + 1) * s + j + 1])));
+      if (j > dv) break;
+      vec3 a = vec3(gNet.d1u[i * s + j]);
+      vec3 d;
+      if (kind == 0) {
+        d = secondDifferenceOf(a, vec3(gNet.d1u[(i + 1) * s + j]),
+                               vec3(gNet.d1u[(i + 2) * s + j]), big1);
+      } else if (kind == 1) {
+        d = twistOf(a, vec3(gNet.d1u[(i + 1) * s + j]), vec3(gNet.d1u[i * s + j + 1]),
+                    vec3(gNet.d1u[(i + 1) * s + j + 1]), big1);
+      } else {
+        d = secondDifferenceOf(a, vec3(gNet.d1u[i * s + j + 1]), vec3(gNet.d1u[i * s + j + 2]),
+                               big1);
+      }
+      big2 = max(big2, maxAbsComponent(d));
+      gNet.h[i * (dv + 1) + j] = vec4(d, 0.0f);
     }
   }
-  PRECISE float mss = float(n * (n - 1)) * dss;
-  PRECISE float mst = float(n * m) * dst;
-  PRECISE float mtt = float(m * (m - 1)) * dtt;
-  PRECISE float guard = kToleranceRoundingGuard * float(n * n + m * m) * big;
-  return vec4(mss, mst, mtt, guard);
+  if (rect.x != 0.0f || rect.z != 1.0f)
+    restrictDivisionNetRows(dv + 1, du, 1, dv + 1, rect.x, rect.z);
+  if (rect.y != 0.0f || rect.w != 1.0f)
+    restrictDivisionNetRows(du + 1, dv, dv + 1, 1, rect.y, rect.w);
+  PRECISE float big = 0.0f;
+  for (int k = 0; k < kGeneralMaxOrder * kGeneralMaxOrder; ++k) {
+    if (k >= (du + 1) * (dv + 1)) break;
+    big = max(big, toleranceNorm(vec3(gNet.h[k])));
+  }
+  return vec2(big, differenceNetError(big1, big2, du, dv));
 }
 
-// (M_ss, M_st, M_tt, guard) of the rational net in gNet.h: the `split` method's a, b, c (what
-// divisionCounts passes to divisionRealCounts), b = min(S_st, S_ts bounds); the guard from the
-// largest |x/w| of the points of positive weight. Every M is kToleranceUnbounded when the
+// (M_ss, M_st, M_tt, guard) of the polynomial net in gNet.d1u on rect: the three
+// second-difference nets restricted to the node (differenceBounds in tolerance_bound.h).
+vec4 polynomialNetSecondBounds(vec4 rect) {
+  vec2 ss = restrictedDifferenceNet(0, rect);
+  vec2 st = restrictedDifferenceNet(1, rect);
+  vec2 tt = restrictedDifferenceNet(2, rect);
+  return differenceBounds(vec3(ss.x, st.x, tt.x), vec3(ss.y, st.y, tt.y), gNet.n, gNet.m, rect);
+}
+
+// (M_ss, M_st, M_tt, guard) of the rational net in gNet.h (translated to its first control
+// point, then restricted to the node): the `split` method's a, b, c (what divisionCounts
+// passes to divisionRealCounts), b = min(S_st, S_ts bounds); the guard from the largest |x/w|
+// of the points of positive weight, in that local frame. A heuristic, not a proof: the
+// split method's products and quotients of fp32 coordinates are not analysed (the tests
+// check it against the double reference). Every M is kToleranceUnbounded when the
 // weight ratios fail (w may vanish on the node).
 vec4 rationalNetSecondBounds() {
   int count = (gNet.n + 1) * (gNet.m + 1);
@@ -102,12 +126,6 @@ vec4 rationalNetSecondBounds() {
   int m = gNet.m;
   PRECISE float guard = kToleranceRoundingGuard * float(n * n + m * m) * big;
   return vec4(mss, mst, mtt, guard);
-}
-
-// The bounds of the net in gNet.h (already restricted to the node).
-vec4 netSecondBounds(bool rational) {
-  if (rational) return rationalNetSecondBounds();
-  return polynomialNetSecondBounds();
 }
 
 #endif
