@@ -12,6 +12,8 @@
 // Per model, the asymptotic lower bound N_min(δ) on an interpolating mesh's triangles at the
 // deflection δ (host/mesh/lower_bound.h) and each mesh's triangles over it.
 // Rule T (tolerance, issue 15) runs at δ = the deflection, unmatched: its bound is the promise.
+// With rule T asked for, a last table has the teaspoon alone at a tenth of the smallest
+// deflection (the issue's 0.0001): OCCT, rule A (if asked for) and rule T.
 // Usage: bench_occt [deflections=0.01,0.001] [rules=B] [ratios=1] [--json file]
 //   (rules e.g. ABCDT, ratios e.g. 1,4,inf)
 #include <BRepBuilderAPI_MakeFace.hxx>
@@ -29,6 +31,7 @@
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -286,6 +289,126 @@ double matchCountedGrids(const std::vector<BezierPatch>& patches,
   return best == 0 ? pass : best;
 }
 
+// The models one OCCT table covers: their patches side by side, the patch count of each, names
+// and ∫√|K| dA (for N_min at every δ).
+struct BenchSet {
+  std::string label, tablePrefix;  // "tea set", ""; "teaspoon alone", "teaspoon "
+  std::vector<BezierPatch> patches;
+  std::vector<size_t> parts;
+  std::vector<const char*> names;
+  std::vector<CurvatureRootIntegral> integrals;
+};
+
+// One table: OCCT serial and parallel at `deflection`, then the Tessera rules asked for.
+void runDeflection(bench::Report& report, const BenchSet& set, double deflection,
+                   const std::vector<SplitRule>& rules, const std::vector<double>& ratios,
+                   bool countedGridsAsked, Backend& vulkan, Backend& cpu) {
+  const std::vector<BezierPatch>& patches = set.patches;
+  const std::vector<size_t>& parts = set.parts;
+  OcctModel model = buildShells(patches, parts);
+  Tessellation occtMesh;
+  bench::Timing occtTime[2];
+  for (int parallel = 0; parallel < 2; ++parallel) {
+    std::vector<double> seconds;
+    for (int run = 0; run <= bench::kMinRuns; ++run) {  // run 0 warms up
+      BRepTools::Clean(model.shape);
+      const Stopwatch stopwatch;
+      BRepMesh_IncrementalMesh mesher(model.shape, deflection, Standard_False, 0.5,
+                                      parallel ? Standard_True : Standard_False);
+      if (run > 0) seconds.push_back(stopwatch.elapsedSeconds());
+    }
+    std::sort(seconds.begin(), seconds.end());
+    occtTime[parallel] = {seconds.front(), seconds[seconds.size() / 2], int(seconds.size())};
+  }
+  occtMesh = readTriangulation(model);
+  Measured occt = measure(occtMesh, patches, parts);
+  std::fprintf(stderr, "OCCT %g: %.3f s serial, %.3f s parallel, %zu triangles, distance %.3g\n",
+               deflection, occtTime[0].minSeconds, occtTime[1].minSeconds, occt.triangles,
+               occt.surfaceMax);
+
+  char title[240];
+  std::snprintf(title, sizeof title,
+                "%s (%zu patches), OCCT deflection %g (angular 0.5): %zu triangles, max "
+                "distance to surface %.3g, parametric %.3g; Tessera matched on distance to "
+                "surface",
+                set.label.c_str(), patches.size(), deflection, occt.triangles, occt.surfaceMax,
+                occt.parametricMax);
+  char name[64];
+  std::snprintf(name, sizeof name, "%sOCCT %g", set.tablePrefix.c_str(), deflection);
+  bench::Table& table = report.table(name, "triangles", title);
+  table.rateUnit = "meshes/s";  // the ratio is then the speed-up over OCCT serial
+  const char* modes[2] = {"OCCT BRepMesh, serial", "OCCT BRepMesh, parallel (all cores)"};
+  for (int parallel = 0; parallel < 2; ++parallel) {
+    bench::Case c{modes[parallel], double(occt.triangles), occtTime[parallel]};
+    c.throughput = 1.0 / occtTime[parallel].minSeconds;  // meshes per second
+    c.extra = toJson(occt);
+    table.cases.push_back(c);
+  }
+  const std::vector<gpu::BicubicPatch> gpuPatches = toGpuPatches(patches);
+  size_t countedGridsTriangles = 0;  // rule A's, for rule T's goal (0: rule A not asked for)
+  if (countedGridsAsked) {
+    const double tolerance =
+        matchCountedGrids(patches, gpuPatches, occt.surfaceMax, *vulkan.evaluator);
+    for (Backend* backend : {&vulkan, &cpu}) {
+      Tessellation t;
+      bench::Case c{std::string("Tessera rule A, Filip counts per patch, ") +
+                        (backend == &vulkan ? "Vulkan evaluation" : "CPU evaluation"),
+                    0};
+      c.timing = bench::timeRepeated(bench::kMinRuns, [&] {
+        t = countedGrids(patches, gpuPatches, tolerance, *backend->evaluator);
+      });
+      Measured m = measure(t, patches, parts);
+      c.workSize = double(m.triangles);
+      c.throughput = 1.0 / c.timing.minSeconds;
+      c.extra = toJson(m);
+      c.extra["divisionTolerance"] = tolerance;
+      c.extra["fewerTrianglesThanOcct"] = m.triangles < occt.triangles;
+      c.extra["speedupVsOcctParallel"] = occtTime[1].minSeconds / c.timing.minSeconds;
+      table.cases.push_back(c);
+      countedGridsTriangles = m.triangles;
+    }
+  }
+  for (SplitRule rule : rules) {
+    if (rule == SplitRule::Tolerance) {
+      addToleranceCases(table, patches, parts, deflection, occt, occtTime[1].minSeconds,
+                        countedGridsTriangles, {&vulkan, &cpu});
+      continue;
+    }
+    for (double ratio : ratios) {
+      QuadtreeOptions o = matchDeviation(patches, rule, ratio, occt.surfaceMax, vulkan);
+      char setting[64] = "";
+      if (ratios.size() > 1 || ratio != 1.0)
+        std::snprintf(setting, sizeof setting,
+                      ratio >= 1e29 ? " flatness only" : " linearity %g x flatness", ratio);
+      for (Backend* backend : {&vulkan, &cpu}) {
+        Tessellation t;
+        bench::Case c{std::string("Tessera rule ") + splitRuleLetter(rule) + setting + ", " +
+                          (backend == &vulkan ? "Vulkan" : "CPU all cores"),
+                      0};
+        c.timing = bench::timeRepeated(bench::kMinRuns,
+                                       [&] { t = tessellate(patches, o, *backend); });
+        Measured m = measure(t, patches, parts);
+        c.workSize = double(m.triangles);
+        c.throughput = 1.0 / c.timing.minSeconds;
+        c.extra = toJson(m);
+        c.extra["threshold"] = o.flatness;
+        c.extra["linearity"] = o.linearity;
+        c.extra["fewerTrianglesThanOcct"] = m.triangles < occt.triangles;
+        c.extra["speedupVsOcctParallel"] = occtTime[1].minSeconds / c.timing.minSeconds;
+        table.cases.push_back(c);
+      }
+    }
+  }
+  report.print(table);
+  std::printf("\n| mesh | triangles | max distance to surface | max parametric deviation |\n"
+              "|---|---|---|---|\n");
+  for (const bench::Case& c : table.cases)
+    std::printf("| %s | %.0f | %.3g | %.3g |\n", c.path.c_str(), c.workSize,
+                c.extra["maxDistanceToSurface"].get<double>(),
+                c.extra["maxParametricDeviation"].get<double>());
+  printLowerBounds(table, set.names, set.integrals, deflection);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -316,16 +439,17 @@ int main(int argc, char** argv) {
     for (std::string item; std::getline(list, item, ',');)
       ratios.push_back(item == "inf" ? 1e30 : std::stod(item));
   }
-  std::vector<BezierPatch> patches;
-  std::vector<size_t> parts;
-  const std::vector<const char*> names = {"teapot", "teacup", "teaspoon"};
-  std::vector<CurvatureRootIntegral> integrals;  // ∫√|K| dA per model, for N_min at every δ
-  for (const char* name : names) {
+  BenchSet teaSet;
+  teaSet.label = "tea set";
+  teaSet.names = {"teapot", "teacup", "teaspoon"};
+  std::vector<BezierPatch>& patches = teaSet.patches;
+  std::vector<size_t>& parts = teaSet.parts;
+  for (const char* name : teaSet.names) {
     auto model = readBpt(std::string(TESSERA_BENCH_DATA "/") + name + ".bpt");
     const TriangleLowerBound bound = asymptoticTriangleLowerBound(model, 1.0);
     std::fprintf(stderr, "%s: N_min = %.4g/δ (k = %d, %.1f ms)\n", name, bound.triangles,
                  bound.cells, bound.ms);
-    integrals.push_back(bound.integral);
+    teaSet.integrals.push_back(bound.integral);
     // Side by side, 10 units apart, so no face of one touches another's.
     for (auto& p : model) {
       for (auto& c : p.cp) c.x += 10.0 * double(parts.size());
@@ -341,108 +465,24 @@ int main(int argc, char** argv) {
   Backend vulkan = makeVulkanBackend(context);
   Backend cpu = makeMirrorBackend();
 
-  for (double deflection : deflections) {
-    OcctModel model = buildShells(patches, parts);
-    Tessellation occtMesh;
-    bench::Timing occtTime[2];
-    for (int parallel = 0; parallel < 2; ++parallel) {
-      std::vector<double> seconds;
-      for (int run = 0; run <= bench::kMinRuns; ++run) {  // run 0 warms up
-        BRepTools::Clean(model.shape);
-        const Stopwatch stopwatch;
-        BRepMesh_IncrementalMesh mesher(model.shape, deflection, Standard_False, 0.5,
-                                        parallel ? Standard_True : Standard_False);
-        if (run > 0) seconds.push_back(stopwatch.elapsedSeconds());
-      }
-      std::sort(seconds.begin(), seconds.end());
-      occtTime[parallel] = {seconds.front(), seconds[seconds.size() / 2], int(seconds.size())};
-    }
-    occtMesh = readTriangulation(model);
-    Measured occt = measure(occtMesh, patches, parts);
-    std::fprintf(stderr, "OCCT %g: %.3f s serial, %.3f s parallel, %zu triangles, distance %.3g\n",
-                 deflection, occtTime[0].minSeconds, occtTime[1].minSeconds, occt.triangles,
-                 occt.surfaceMax);
-
-    char title[240];
-    std::snprintf(title, sizeof title,
-                  "tea set (%zu patches), OCCT deflection %g (angular 0.5): %zu triangles, max "
-                  "distance to surface %.3g, parametric %.3g; Tessera matched on distance to "
-                  "surface",
-                  patches.size(), deflection, occt.triangles, occt.surfaceMax, occt.parametricMax);
-    char name[64];
-    std::snprintf(name, sizeof name, "OCCT %g", deflection);
-    bench::Table& table = report.table(name, "triangles", title);
-    table.rateUnit = "meshes/s";  // the ratio is then the speed-up over OCCT serial
-    const char* modes[2] = {"OCCT BRepMesh, serial", "OCCT BRepMesh, parallel (all cores)"};
-    for (int parallel = 0; parallel < 2; ++parallel) {
-      bench::Case c{modes[parallel], double(occt.triangles), occtTime[parallel]};
-      c.throughput = 1.0 / occtTime[parallel].minSeconds;  // meshes per second
-      c.extra = toJson(occt);
-      table.cases.push_back(c);
-    }
-    const std::vector<gpu::BicubicPatch> gpuPatches = toGpuPatches(patches);
-    size_t countedGridsTriangles = 0;  // rule A's, for rule T's goal (0: rule A not asked for)
-    if (countedGridsAsked) {
-      const double tolerance =
-          matchCountedGrids(patches, gpuPatches, occt.surfaceMax, *vulkan.evaluator);
-      for (Backend* backend : {&vulkan, &cpu}) {
-        Tessellation t;
-        bench::Case c{std::string("Tessera rule A, Filip counts per patch, ") +
-                          (backend == &vulkan ? "Vulkan evaluation" : "CPU evaluation"),
-                      0};
-        c.timing = bench::timeRepeated(bench::kMinRuns, [&] {
-          t = countedGrids(patches, gpuPatches, tolerance, *backend->evaluator);
-        });
-        Measured m = measure(t, patches, parts);
-        c.workSize = double(m.triangles);
-        c.throughput = 1.0 / c.timing.minSeconds;
-        c.extra = toJson(m);
-        c.extra["divisionTolerance"] = tolerance;
-        c.extra["fewerTrianglesThanOcct"] = m.triangles < occt.triangles;
-        c.extra["speedupVsOcctParallel"] = occtTime[1].minSeconds / c.timing.minSeconds;
-        table.cases.push_back(c);
-        countedGridsTriangles = m.triangles;
-      }
-    }
-    for (SplitRule rule : rules) {
-      if (rule == SplitRule::Tolerance) {
-        addToleranceCases(table, patches, parts, deflection, occt, occtTime[1].minSeconds,
-                          countedGridsTriangles, {&vulkan, &cpu});
-        continue;
-      }
-      for (double ratio : ratios) {
-        QuadtreeOptions o = matchDeviation(patches, rule, ratio, occt.surfaceMax, vulkan);
-        char setting[64] = "";
-        if (ratios.size() > 1 || ratio != 1.0)
-          std::snprintf(setting, sizeof setting,
-                        ratio >= 1e29 ? " flatness only" : " linearity %g x flatness", ratio);
-        for (Backend* backend : {&vulkan, &cpu}) {
-          Tessellation t;
-          bench::Case c{std::string("Tessera rule ") + splitRuleLetter(rule) + setting + ", " +
-                            (backend == &vulkan ? "Vulkan" : "CPU all cores"),
-                        0};
-          c.timing = bench::timeRepeated(bench::kMinRuns,
-                                         [&] { t = tessellate(patches, o, *backend); });
-          Measured m = measure(t, patches, parts);
-          c.workSize = double(m.triangles);
-          c.throughput = 1.0 / c.timing.minSeconds;
-          c.extra = toJson(m);
-          c.extra["threshold"] = o.flatness;
-          c.extra["linearity"] = o.linearity;
-          c.extra["fewerTrianglesThanOcct"] = m.triangles < occt.triangles;
-          c.extra["speedupVsOcctParallel"] = occtTime[1].minSeconds / c.timing.minSeconds;
-          table.cases.push_back(c);
-        }
-      }
-    }
-    report.print(table);
-    std::printf("\n| mesh | triangles | max distance to surface | max parametric deviation |\n"
-                "|---|---|---|---|\n");
-    for (const bench::Case& c : table.cases)
-      std::printf("| %s | %.0f | %.3g | %.3g |\n", c.path.c_str(), c.workSize,
-                  c.extra["maxDistanceToSurface"].get<double>(),
-                  c.extra["maxParametricDeviation"].get<double>());
-    printLowerBounds(table, names, integrals, deflection);
+  for (double deflection : deflections)
+    runDeflection(report, teaSet, deflection, rules, ratios, countedGridsAsked, vulkan, cpu);
+  // The issue's teaspoon case (issue 15): the teaspoon alone at a tenth of the smallest
+  // deflection (0.0001 for 0.01,0.001), OCCT, rule A and rule T only (matching rules B–D
+  // there would take minutes).
+  const bool toleranceAsked =
+      std::find(rules.begin(), rules.end(), SplitRule::Tolerance) != rules.end();
+  if (toleranceAsked && !deflections.empty()) {
+    BenchSet teaspoon;
+    teaspoon.label = "teaspoon alone";
+    teaspoon.tablePrefix = "teaspoon ";
+    teaspoon.patches = readBpt(std::string(TESSERA_BENCH_DATA "/teaspoon.bpt"));
+    teaspoon.parts = {teaspoon.patches.size()};
+    teaspoon.names = {"teaspoon"};
+    teaspoon.integrals = {teaSet.integrals.back()};
+    const double smallest = *std::min_element(deflections.begin(), deflections.end());
+    runDeflection(report, teaspoon, smallest / 10, {SplitRule::Tolerance}, ratios,
+                  countedGridsAsked, vulkan, cpu);
   }
   report.finish();
   return 0;
