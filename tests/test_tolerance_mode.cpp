@@ -212,8 +212,9 @@ TEST_CASE("rule T: the double reference agrees with the fp32 mirror outside a ba
           } else if (a[i].cause != b[i].cause) {
             ++parted;
             const double share = b[i].linearity;
-            // Within the band, or δ between the exact bound and the guarded fp32 one (the
-            // guard's absolute term is up to ~10% of δ for degree 7 at δ = 1e-3 of the size).
+            // Within the band, or δ between the exact bound and the guarded fp32 one (a
+            // rational net's guard term is up to ~10% of δ for degree 7 at δ = 1e-3 of the
+            // size; a polynomial net's, scaled by h², far less).
             const double lo = std::min(exact, fp32), hi = std::max(exact, fp32);
             const bool nearDelta = std::abs(exact / options.tolerance - 1.0) <= kBand ||
                                    (lo * (1 - kBand) <= options.tolerance &&
