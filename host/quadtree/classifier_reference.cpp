@@ -226,9 +226,10 @@ SecondBounds polynomialBounds(const HomogeneousNet& net) {
   return b;
 }
 
-// The patch's homogeneous net moved to its first control point P₀₀ (P_h − w·P₀₀), the local
-// frame of the fp32 bound: the bounds are translation-invariant in exact arithmetic, and
-// here no large coordinate enters the double restriction either.
+// The patch's homogeneous net moved to a control point O (P_h − w·O), the local frame of the
+// fp32 bound (polynomial: P₀₀; rational: the point of largest weight): the bounds are
+// translation-invariant in exact arithmetic, and here no large coordinate enters the double
+// restriction either.
 HomogeneousNet contextNet(const PatchContext& p) {
   HomogeneousNet net = [&] {
     if (p.kind == PatchContext::kRational) return toNet(p.rational);
@@ -239,7 +240,10 @@ HomogeneousNet contextNet(const PatchContext& p) {
       h.c[size_t(k)] = glm::dvec4(bicubic ? p.net[k] : p.polynomial.cp[size_t(k)], 1.0);
     return h;
   }();
-  const dvec3 origin = dvec3(net.c[0]) / net.c[0].w;
+  dvec3 origin(0.0);  // the control point of largest weight, as tolerance_general.h chooses
+  double heaviest = 0;
+  for (const auto& c : net.c)
+    if (c.w > heaviest) heaviest = c.w, origin = dvec3(c) / c.w;
   for (auto& c : net.c) c = glm::dvec4(dvec3(c) - c.w * origin, c.w);
   return net;
 }

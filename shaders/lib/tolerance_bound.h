@@ -15,7 +15,8 @@
 // the guard is 2⁻²⁶·Σ c·h²·(2·F₁ + (1 + 6·(d_u + d_v))·F₂) (F₁, F₂ the largest |component| of
 // the first and second differences, d_u × d_v the difference net's degrees), which depends
 // on neither the position nor the units of the model. Rational nets, translated to their
-// first control point, keep 2⁻²⁰·(n² + m²)·max|P − P₀₀| (not proven: tolerance_net.h).
+// control point O of largest weight, keep 2⁻²⁰·(n² + m²)·max|P − O| (not proven:
+// tolerance_net.h).
 const float kToleranceRelativeGuard = 1.0009765625f;  // 1 + 2⁻¹⁰
 const float kToleranceRoundingGuard = 9.5367431640625e-7f;  // 2⁻²⁰ (rational)
 // u/4 = 2⁻²⁶ with u = 2⁻²⁴: at least (√3/8)·u (a norm of three coordinates, /8 of the bound)

@@ -13,10 +13,22 @@ vec4 generalSecondBounds(IN(GeneralPatch) gp, vec4 rect) {
   gNet.n = n;
   gNet.m = m;
   bool rational = gp.rational != 0u;
-  // Rational: P_h − w·P₀₀, the Cartesian part moved to the first control point (w₀₀ > 0), as
-  // general_eval.h evaluates; S − P₀₀ has the same derivatives as S.
-  vec4 first = generalPoint(gp, 0, 0);
-  vec3 origin = rational ? projected(first) : vec3(0.0f);
+  // Rational: P_h − w·O, the Cartesian part moved to O, the control point of largest weight
+  // (the first of equals; none if no weight is > 0): S − O has the same derivatives as S. Not
+  // simply P₀₀: a screen-space patch (screen_tolerance.h) may have w₀₀ ≤ 0, or w₀₀ near 0 and
+  // P₀₀ far off.
+  vec3 origin = vec3(0.0f);
+  if (rational) {
+    float heaviest = 0.0f;
+    for (int k = 0; k < kGeneralMaxOrder * kGeneralMaxOrder; ++k) {
+      if (k >= (n + 1) * (m + 1)) break;
+      vec4 c = generalPoint(gp, k / (m + 1), k % (m + 1));
+      if (c.w > heaviest) {
+        heaviest = c.w;
+        origin = projected(c);
+      }
+    }
+  }
   for (int i = 0; i < kGeneralMaxOrder; ++i) {
     if (i > n) break;
     for (int j = 0; j < kGeneralMaxOrder; ++j) {

@@ -2,7 +2,7 @@
 // in the gNet arrays of lib/division_count.h, in fp32: sup‖S_ss‖, sup‖S_st‖, sup‖S_tt‖ in
 // node-local coordinates — for a polynomial net, its second-difference nets restricted to the
 // node (no absolute coordinate enters); for a rational one, the homogeneous net moved to its
-// first control point, restricted, then the `split` method (B1..B8 over the weight ratios,
+// control point of largest weight, restricted, then the `split` method (B1..B8 over the weight ratios,
 // docs/rational_division.md). At namespace scope; include
 // shared_glsl_cpp.h, layout.h, division_count.h and tolerance_bound.h first.
 #ifndef TESSERA_TOLERANCE_NET_H
@@ -90,8 +90,8 @@ vec4 polynomialNetSecondBounds(vec4 rect) {
   return differenceBounds(vec3(ss.x, st.x, tt.x), vec3(ss.y, st.y, tt.y), gNet.n, gNet.m, rect);
 }
 
-// (M_ss, M_st, M_tt, guard) of the rational net in gNet.h (translated to its first control
-// point, then restricted to the node): the `split` method's a, b, c (what divisionCounts
+// (M_ss, M_st, M_tt, guard) of the rational net in gNet.h (translated to its control point of
+// largest weight, then restricted to the node): the `split` method's a, b, c (what divisionCounts
 // passes to divisionRealCounts), b = min(S_st, S_ts bounds); the guard from the largest |x/w|
 // of the points of positive weight, in that local frame. A heuristic, not a proof: the
 // split method's products and quotients of fp32 coordinates are not analysed (the tests
