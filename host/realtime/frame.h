@@ -29,7 +29,8 @@ namespace vk {
 class Context;
 }
 class DivisionCounter;
-class StitchPatternRunner;  // frame_vulkan.cpp: the pattern pipeline and its buffers
+class StitchPatternRunner;  // detail/stitch_pattern_runner.h: the pattern pipeline, buffers
+class RealtimeRecorder;     // frame_record.h: the frame recorded into an engine's commands
 
 struct RealtimeOptions {
   double tolerancePixels = 1.0;
@@ -77,6 +78,10 @@ class RealtimeTessellator {
   // points to) is valid until the next call.
   const RealtimeFrame& tessellate(const Camera& camera);
 
+  // Steps 1-2 and the pattern's layout, without the pattern (no vertices or indices yet):
+  // what RealtimeRecorder records from. tessellate() is prepareFrame() then the pattern.
+  const RealtimeFrame& prepareFrame(const Camera& camera);
+
   const std::vector<BezierPatch>& patches() const { return patches_; }
 
   // The last frame's pattern again, on the fp32 mirror (shaders/lib/stitch_pattern.h as C++):
@@ -85,6 +90,7 @@ class RealtimeTessellator {
                        std::vector<uint32_t>& indices) const;
 
  private:
+  friend class RealtimeRecorder;
   std::vector<BezierPatch> patches_;
   std::vector<RationalBezierPatch> homogeneous_;  // weights 1, for the screen transform
   std::vector<gpu::BicubicPatch> gpuPatches_;

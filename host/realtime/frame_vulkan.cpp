@@ -13,9 +13,7 @@
 #include "eval/evaluator.h"
 #include "geometry/rational.h"
 #include "realtime/detail/stitch_mirror.h"
-#include "stitch_pattern_comp.h"
-#include "vk/buffer.h"
-#include "vk/pipeline.h"
+#include "realtime/detail/stitch_pattern_runner.h"
 
 namespace tessera {
 namespace {
@@ -57,53 +55,6 @@ bool countsOf(const gpu::DivisionResult& gpuCounts, const RationalBezierPatch& w
 
 }  // namespace
 
-// The pattern pipeline and its buffers, kept between frames.
-class StitchPatternRunner {
- public:
-  StitchPatternRunner(vk::Context& context, const std::vector<gpu::BicubicPatch>& patches,
-                      const std::vector<gpu::vec4>& edgePoints)
-      : context_(context),
-        pipeline_(context, {"stitch_pattern.comp", kSpirv_stitch_pattern_comp,
-                            sizeof(kSpirv_stitch_pattern_comp), 6, sizeof(gpu::StitchPush), {}}) {
-    vk::ensureCapacity(context_, patches_, std::max<size_t>(1, patches.size()) *
-                                               sizeof(gpu::BicubicPatch), vk::BufferUse::Upload);
-    vk::ensureCapacity(context_, edges_, std::max<size_t>(1, edgePoints.size()) *
-                                             sizeof(gpu::vec4), vk::BufferUse::Upload);
-    if (!patches.empty()) patches_.upload(patches);
-    if (!edgePoints.empty()) edges_.upload(edgePoints);
-  }
-
-  void run(const std::vector<gpu::StitchPatch>& records, const std::vector<uint32_t>& items,
-           size_t vertexCount, size_t indexCount) {
-    const uint64_t limit = context_.info().maxStorageBufferRange;
-    const size_t vertexBytes = vertexCount * sizeof(gpu::GridVertex);
-    if (limit && (vertexBytes > limit || indexCount * sizeof(uint32_t) > limit))
-      throw std::length_error("real-time pattern: " + std::to_string(vertexBytes) +
-                              " bytes of vertices exceed the device's storage buffer range");
-    vk::ensureCapacity(context_, records_, records.size() * sizeof(gpu::StitchPatch),
-                       vk::BufferUse::Upload);
-    vk::ensureCapacity(context_, items_, items.size() * sizeof(uint32_t), vk::BufferUse::Upload);
-    vk::ensureCapacity(context_, vertices_, vertexBytes, vk::BufferUse::Readback);
-    vk::ensureCapacity(context_, indices_, indexCount * sizeof(uint32_t), vk::BufferUse::Readback);
-    records_.upload(records);
-    items_.upload(items);
-    gpu::StitchPush push{uint32_t(items.size()), kDegenerateEpsFp32, 0, 0};
-    context_.submitAndWait([&](VkCommandBuffer cmd) {
-      pipeline_.dispatch(cmd, {&patches_, &records_, &edges_, &items_, &vertices_, &indices_},
-                         &push, push.itemCount);
-      vk::computeToHostBarrier(context_, cmd);
-    });
-  }
-
-  const gpu::GridVertex* vertices() const { return vertices_.as<gpu::GridVertex>(); }
-  const uint32_t* indices() const { return indices_.as<uint32_t>(); }
-
- private:
-  vk::Context& context_;
-  vk::ComputePipeline pipeline_;
-  vk::Buffer patches_, edges_, records_, items_, vertices_, indices_;
-};
-
 RealtimeTessellator::RealtimeTessellator(vk::Context& context, std::vector<BezierPatch> patches,
                                          const RealtimeOptions& options)
     : patches_(std::move(patches)), options_(options), context_(context) {
@@ -132,6 +83,19 @@ RealtimeTessellator::RealtimeTessellator(vk::Context& context, std::vector<Bezie
 RealtimeTessellator::~RealtimeTessellator() = default;
 
 const RealtimeFrame& RealtimeTessellator::tessellate(const Camera& camera) {
+  prepareFrame(camera);
+  Stopwatch stopwatch;
+  if (!frame_.records.empty()) {
+    runner_->run(frame_.records, items_, frame_.vertexCount, 3 * frame_.triangles);
+    frame_.vertices = runner_->vertices();
+    frame_.indices = runner_->indices();
+    ++frame_.dispatches;
+  }
+  frame_.patternSeconds = stopwatch.elapsedSeconds();
+  return frame_;
+}
+
+const RealtimeFrame& RealtimeTessellator::prepareFrame(const Camera& camera) {
   frame_ = RealtimeFrame{};
   Stopwatch stopwatch;
   // The batch: visible patches first, then every edge of a visible patch, once.
@@ -246,15 +210,6 @@ const RealtimeFrame& RealtimeTessellator::tessellate(const Camera& camera) {
   frame_.vertexCount = vertexCount;
   frame_.triangles = triangleCount;
   frame_.layoutSeconds = stopwatch.elapsedSeconds();
-
-  stopwatch.restart();
-  if (!frame_.records.empty()) {
-    runner_->run(frame_.records, items_, vertexCount, 3 * triangleCount);
-    frame_.vertices = runner_->vertices();
-    frame_.indices = runner_->indices();
-    ++frame_.dispatches;
-  }
-  frame_.patternSeconds = stopwatch.elapsedSeconds();
   return frame_;
 }
 

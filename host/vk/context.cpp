@@ -72,21 +72,41 @@ Context::Context(const ContextOptions& options) {
   }
 }
 
+Context::Context(const ExternalDevice& external) : ownsDevice_(false) {
+  try {
+    Stopwatch step;
+    adoptDevice(external);
+    timings_.deviceMs = step.elapsedMs();
+    step.restart();
+    createPipelineCache();
+    timings_.pipelineCacheMs = step.elapsedMs();
+  } catch (...) {
+    release();
+    throw;
+  }
+}
+
 Context::~Context() { release(); }
 
 void Context::release() {
   // Without its table (loading failed) a handle cannot be destroyed; that only happens when
   // Vulkan itself is broken.
   if (device_ && deviceTable_) {
-    deviceTable_->vkDeviceWaitIdle(device_);
+    // A borrowed device: our own submits were waited on; the engine waits for the frames it
+    // submitted (docs/realtime.md) and may be using its queues from other threads.
+    if (ownsDevice_) deviceTable_->vkDeviceWaitIdle(device_);
     if (pipelineCache_) {
       savePipelineCache();
       deviceTable_->vkDestroyPipelineCache(device_, pipelineCache_, nullptr);
     }
     if (fence_) deviceTable_->vkDestroyFence(device_, fence_, nullptr);
     if (commandPool_) deviceTable_->vkDestroyCommandPool(device_, commandPool_, nullptr);
-    deviceTable_->vkDestroyDevice(device_, nullptr);
+    if (ownsDevice_) deviceTable_->vkDestroyDevice(device_, nullptr);
     device_ = VK_NULL_HANDLE;
+  }
+  if (!ownsDevice_) {  // the engine's instance: leave it alone
+    instance_ = VK_NULL_HANDLE;
+    return;
   }
   if (messenger_ && instanceTable_) {
     instanceTable_->vkDestroyDebugUtilsMessengerEXT(instance_, messenger_, nullptr);
@@ -198,7 +218,58 @@ void Context::createDevice() {
   if (!deviceTable_->vkCmdPushDescriptorSetKHR)
     throw VulkanUnavailable("device '" + info_.name + "' lacks vkCmdPushDescriptorSetKHR");
   deviceTable_->vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+  createCommandObjects();
+}
 
+void Context::adoptDevice(const ExternalDevice& external) {
+  if (!external.instance || !external.physicalDevice || !external.device || !external.queue)
+    throw VulkanUnavailable(
+        "engine interop: the instance, physical device, device and queue must all be given");
+  ensureLoaded();
+  instance_ = external.instance;
+  physical_ = external.physicalDevice;
+  instanceTable_ = std::make_unique<InstanceTable>(loadInstanceTable(instance_));
+  info_ = describeDevice(*instanceTable_, physical_, 0);
+  if (!info_.usable)
+    throw VulkanUnavailable("engine interop: device '" + info_.name +
+                            "' is unusable: " + info_.unusableReason);
+  instanceTable_->vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
+  uint32_t familyCount = 0;
+  instanceTable_->vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount, nullptr);
+  std::vector<VkQueueFamilyProperties> families(familyCount);
+  instanceTable_->vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount,
+                                                           families.data());
+  if (external.queueFamily >= familyCount)
+    throw VulkanUnavailable("engine interop: queue family " +
+                            std::to_string(external.queueFamily) + " does not exist on '" +
+                            info_.name + "' (" + std::to_string(familyCount) + " families)");
+  const VkQueueFamilyProperties& family = families[external.queueFamily];
+  if (!(family.queueFlags & VK_QUEUE_COMPUTE_BIT))
+    throw VulkanUnavailable("engine interop: queue family " +
+                            std::to_string(external.queueFamily) +
+                            " has no compute (VK_QUEUE_COMPUTE_BIT), which every Tessera "
+                            "pipeline needs");
+  queueFamily_ = external.queueFamily;
+  queue_ = external.queue;
+  queueGraphics_ = family.queueFlags & VK_QUEUE_GRAPHICS_BIT;
+  timestampValidBits_ = family.timestampValidBits;
+  // The engine chose the features; Tessera's compute pipelines need none beyond Vulkan 1.0's,
+  // only the optional benchmark peer reads these (left off: we cannot see what was enabled).
+  enabledFeatures_ = VkPhysicalDeviceFeatures{};
+  device_ = external.device;
+  deviceTable_ = std::make_unique<DeviceTable>(loadDeviceTable(instance_, device_));
+  // vkGetDeviceProcAddr returns null for an extension the device was created without.
+  if (!deviceTable_->vkCmdPushDescriptorSetKHR)
+    throw VulkanUnavailable("engine interop: device '" + info_.name + "' was created without " +
+                            VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME +
+                            " (add it to VkDeviceCreateInfo::ppEnabledExtensionNames)");
+  createCommandObjects();
+}
+
+void Context::createCommandObjects() {
+  VkPhysicalDeviceProperties properties{};
+  instanceTable_->vkGetPhysicalDeviceProperties(physical_, &properties);
+  minStorageOffsetAlignment_ = properties.limits.minStorageBufferOffsetAlignment;
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
   poolInfo.queueFamilyIndex = queueFamily_;

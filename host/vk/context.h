@@ -70,12 +70,31 @@ struct DeviceInfo {
   std::string typeName() const;
 };
 
+// An engine's own Vulkan objects, for a context that borrows them (docs/api.md, "Engine
+// interop"). The device must be created from `physicalDevice` of `instance` with
+// VK_KHR_push_descriptor enabled; `queue` is queue 0.. of `queueFamily`, which must support
+// compute. Tessera never destroys them: they must outlive the context.
+struct ExternalDevice {
+  VkInstance instance = VK_NULL_HANDLE;
+  VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
+  VkDevice device = VK_NULL_HANDLE;
+  uint32_t queueFamily = 0;
+  VkQueue queue = VK_NULL_HANDLE;
+};
+
 // Lists the physical devices (opens its own short-lived instance).
 std::vector<DeviceInfo> listDevices();
 
 class Context {
  public:
   explicit Context(const ContextOptions& options = {});
+  // Borrows an engine's instance, device and queue: device functions through volk's device
+  // table for that device (vk/loader.h), no instance or device of its own. Checks what
+  // Tessera's pipelines need (Vulkan 1.1, push descriptors, a compute queue) and throws
+  // VulkanUnavailable naming what is missing. Validation messages go to the engine's own
+  // messenger (validationMessages() stays empty). The queue is used by submitAndWait (the
+  // division counts): the caller must not use it from another thread meanwhile.
+  explicit Context(const ExternalDevice& external);
   ~Context();
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
@@ -88,6 +107,9 @@ class Context {
   const DeviceInfo& info() const { return info_; }
   const VkPhysicalDeviceMemoryProperties& memoryProperties() const { return memory_; }
   bool validationEnabled() const { return validationEnabled_; }
+  // False for a context borrowing an engine's device (ExternalDevice).
+  bool ownsDevice() const { return ownsDevice_; }
+  VkDeviceSize minStorageBufferOffsetAlignment() const { return minStorageOffsetAlignment_; }
   bool timestampsSupported() const { return timestampValidBits_ > 0; }
   uint32_t timestampValidBits() const { return timestampValidBits_; }
   bool queueSupportsGraphics() const { return queueGraphics_; }
@@ -119,6 +141,8 @@ class Context {
   void createInstance(const ContextOptions& options);
   void choosePhysicalDevice(const std::string& selector);
   void createDevice();
+  void adoptDevice(const ExternalDevice& external);
+  void createCommandObjects();
   void createPipelineCache();
   void release();
   void savePipelineCache();
@@ -143,6 +167,8 @@ class Context {
   size_t pipelineCacheLoadedBytes_ = 0;
   VkPhysicalDeviceFeatures enabledFeatures_{};
   bool validationEnabled_ = false;
+  bool ownsDevice_ = true;
+  VkDeviceSize minStorageOffsetAlignment_ = 1;
   std::function<void(const std::string&)> onValidationMessage_;
   mutable std::mutex timingsMutex_;
   ContextTimings timings_;

@@ -88,15 +88,27 @@ ComputePipeline::~ComputePipeline() {
 
 void ComputePipeline::dispatch(VkCommandBuffer cmd, std::initializer_list<const Buffer*> buffers,
                                const void* pushConstants, uint32_t invocations) const {
-  if (buffers.size() != bufferCount_)
-    throw std::invalid_argument(name_ + ": expected " + std::to_string(bufferCount_) +
-                                " buffers, got " + std::to_string(buffers.size()));
-  if (invocations == 0) return;
-  const DeviceTable& vk = context_.vk();
-  vk.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
   std::vector<VkDescriptorBufferInfo> infos;
   infos.reserve(buffers.size());
   for (const Buffer* b : buffers) infos.push_back({b->handle(), 0, VK_WHOLE_SIZE});
+  dispatch(cmd, infos, pushConstants, invocations);
+}
+
+void ComputePipeline::dispatch(VkCommandBuffer cmd,
+                               const std::vector<VkDescriptorBufferInfo>& infos,
+                               const void* pushConstants, uint32_t invocations) const {
+  if (infos.size() != bufferCount_)
+    throw std::invalid_argument(name_ + ": expected " + std::to_string(bufferCount_) +
+                                " buffers, got " + std::to_string(infos.size()));
+  for (const VkDescriptorBufferInfo& info : infos)
+    if (info.offset % context_.minStorageBufferOffsetAlignment() != 0)
+      throw std::invalid_argument(name_ + ": buffer offset " + std::to_string(info.offset) +
+                                  " is not a multiple of minStorageBufferOffsetAlignment (" +
+                                  std::to_string(context_.minStorageBufferOffsetAlignment()) +
+                                  ")");
+  if (invocations == 0) return;
+  const DeviceTable& vk = context_.vk();
+  vk.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
   std::vector<VkWriteDescriptorSet> writes(infos.size());
   for (uint32_t i = 0; i < infos.size(); ++i) {
     writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;

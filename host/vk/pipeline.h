@@ -41,6 +41,10 @@ class ComputePipeline {
   // count exceeds maxComputeWorkGroupCount[0] (shaders use linearInvocationIndex()).
   void dispatch(VkCommandBuffer cmd, std::initializer_list<const Buffer*> buffers,
                 const void* pushConstants, uint32_t invocations) const;
+  // The same with buffer ranges (an engine's buffers at an offset: engine interop). Offsets
+  // must be multiples of minStorageBufferOffsetAlignment.
+  void dispatch(VkCommandBuffer cmd, const std::vector<VkDescriptorBufferInfo>& buffers,
+                const void* pushConstants, uint32_t invocations) const;
 
   const std::string& name() const { return name_; }
 
