@@ -1,4 +1,4 @@
-// Engine interop (host/realtime/frame_record.h, vk::ExternalDevice): the test makes its own
+// Engine interop (host/realtime/frame_record_vulkan.h, vk::ExternalDevice): the test makes its own
 // instance and device as an engine would (its own loader handle, validation with
 // synchronisation checks, its own messenger), borrows them for a Tessera context, records
 // frames into its own command buffers and buffers, submits with its own fence, and requires
@@ -19,7 +19,7 @@
 
 #include "gpu_test_context.h"
 #include "io/bpt_reader.h"
-#include "realtime/frame_record.h"
+#include "realtime/frame_record_vulkan.h"
 #include "vk/context.h"
 
 using namespace tessera;

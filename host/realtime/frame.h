@@ -29,8 +29,8 @@ namespace vk {
 class Context;
 }
 class DivisionCounter;
-class StitchPatternRunner;  // detail/stitch_pattern_runner.h: the pattern pipeline, buffers
-class RealtimeRecorder;     // frame_record.h: the frame recorded into an engine's commands
+class StitchPatternRunner;  // detail/stitch_pattern_runner_vulkan.h: the pattern pipeline, buffers
+class RealtimeRecorder;     // frame_record_vulkan.h: the frame recorded into an engine's commands
 
 struct RealtimeOptions {
   double tolerancePixels = 1.0;

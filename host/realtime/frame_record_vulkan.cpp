@@ -1,11 +1,11 @@
-// A real-time frame recorded into an engine's command buffer (frame_record.h).
-#include "realtime/frame_record.h"
+// A real-time frame recorded into an engine's command buffer (frame_record_vulkan.h).
+#include "realtime/frame_record_vulkan.h"
 
 #include <stdexcept>
 #include <string>
 
 #include "common/stopwatch.h"
-#include "realtime/detail/stitch_pattern_runner.h"
+#include "realtime/detail/stitch_pattern_runner_vulkan.h"
 #include "vk/context.h"
 #include "vk/loader.h"
 

@@ -13,7 +13,7 @@
 #include "eval/evaluator.h"
 #include "geometry/rational.h"
 #include "realtime/detail/stitch_mirror.h"
-#include "realtime/detail/stitch_pattern_runner.h"
+#include "realtime/detail/stitch_pattern_runner_vulkan.h"
 
 namespace tessera {
 namespace {

@@ -1,7 +1,7 @@
-// The stitched pattern's pipeline, run or recorded (detail/stitch_pattern_runner.h).
+// The stitched pattern's pipeline, run or recorded (detail/stitch_pattern_runner_vulkan.h).
 #include <cstdint>  // before the generated SPIR-V array, which uses uint32_t
 
-#include "realtime/detail/stitch_pattern_runner.h"
+#include "realtime/detail/stitch_pattern_runner_vulkan.h"
 
 #include <algorithm>
 #include <stdexcept>
