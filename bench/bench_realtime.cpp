@@ -7,6 +7,10 @@
 // tolerance). The tessellation-shader peer (case 6) runs the same path in the same run, and so
 // does the second mode: rule T's adaptive tree in pixels (mesh/screen_tolerance.h) on Vulkan,
 // from scratch on every `treeStride`-th frame of the path (it is far slower per frame).
+// Tessera runs as an engine embeds it (docs/realtime.md, "Recording a frame into an engine"):
+// the bench's context plays the engine (its instance, device, queue, command buffers and
+// buffers); Tessera's context borrows that device, and each frame is prepared, then recorded
+// into the engine's command buffer and buffers and submitted by the engine.
 // Usage: bench_realtime [frames=300] [teapots=100] [tolerancePx=1] [q=4] [treeStride=10]
 //        [--json file]
 #include <glm/gtc/matrix_transform.hpp>
@@ -22,8 +26,11 @@
 #include "io/bpt_reader.h"
 #include "mesh/screen_tolerance.h"
 #include "realtime/frame.h"
+#include "realtime/frame_record_vulkan.h"
 #include "realtime/tess_shader_peer.h"
+#include "vk/buffer.h"
 #include "vk/context.h"
+#include "vk/pipeline.h"
 
 using namespace tessera;
 
@@ -46,6 +53,29 @@ struct Path {  // circles the scene, dipping closer and further (bench_tess_shad
     return glm::perspectiveRH_ZO(glm::radians(45.0f), 1920.0f / 1080.0f, 0.05f,
                                  float(10.0 * radius)) *
            glm::lookAtRH(glm::vec3(eye(frame)), glm::vec3(centre), glm::vec3(0, 0, 1));
+  }
+};
+
+// The engine's buffers for the frame, grown (doubling) when a frame needs more.
+struct EngineBuffers {
+  vk::Context& engine;
+  vk::Buffer vertices, indices, draw;
+
+  void grow(vk::Buffer& buffer, VkDeviceSize bytes, VkBufferUsageFlags usage) {
+    if (buffer.handle() && buffer.size() >= bytes) return;
+    VkDeviceSize size = std::max<VkDeviceSize>(256, buffer.size());
+    while (size < bytes) size *= 2;
+    buffer = vk::Buffer(engine, size, vk::BufferUse::Readback, usage);
+  }
+  RealtimeTargets targets(const RealtimeFrame& frame) {
+    grow(vertices, RealtimeRecorder::vertexBytes(frame),
+         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    grow(indices, RealtimeRecorder::indexBytes(frame),
+         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    grow(draw, RealtimeRecorder::kDrawCommandBytes, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
+    return {{vertices.handle(), 0, vertices.size()},
+            {indices.handle(), 0, indices.size()},
+            {draw.handle(), 0, RealtimeRecorder::kDrawCommandBytes}};
   }
 };
 
@@ -74,18 +104,38 @@ int main(int argc, char** argv) {
     }
   const Path path{0.5 * (lo + hi), 0.5 * glm::length(hi - lo), std::max(frames, 1)};
   vk::ContextOptions options;
-  vk::Context context(options);
+  vk::Context context(options);  // the engine's
   report.setDevice(context);
 
-  RealtimeTessellator tessellator(context, patches, {tolerance, 64, ratioPieces});
-  tessellator.tessellate(path.camera(0));  // warm-up: pipeline compile, buffers grown
+  vk::Context borrowed(vk::ExternalDevice{context.instance(), context.physicalDevice(),
+                                          context.device(), context.queueFamily(),
+                                          context.queue()});
+  RealtimeTessellator tessellator(borrowed, patches, {tolerance, 64, ratioPieces});
+  RealtimeRecorder recorder(tessellator, 1);
+  EngineBuffers buffers{context, {}, {}, {}};
+  // One frame as an engine runs it: prepare (host + GPU counts), record into the engine's
+  // command buffer, the engine submits and waits (with `readBack`, a barrier to the host too).
+  // The pattern's seconds: recording, submit and wait.
+  double patternSeconds = 0;
+  auto drawFrame = [&](const Camera& camera, bool readBack) -> const RealtimeFrame& {
+    const RealtimeFrame& frame = recorder.prepare(camera);
+    const Stopwatch patternStopwatch;
+    const RealtimeTargets targets = buffers.targets(frame);
+    context.submitAndWait([&](VkCommandBuffer cmd) {
+      recorder.record(cmd, targets);
+      if (readBack) vk::computeToHostBarrier(context, cmd);
+    });
+    patternSeconds = patternStopwatch.elapsedSeconds();
+    return frame;
+  };
+  drawFrame(path.camera(0), false);  // warm-up: pipeline compile, buffers grown
   std::vector<double> seconds;
   double triangles = 0, counted = 0, vertices = 0, prepare = 0, count = 0, layout = 0, pattern = 0;
   double culled = 0, fallback = 0, capped = 0, dispatches = 0, edges = 0;
   const Stopwatch stopwatch;
   for (int f = 0; f < frames; ++f) {
     const Stopwatch frameStopwatch;
-    const RealtimeFrame& frame = tessellator.tessellate(path.camera(f));
+    const RealtimeFrame& frame = drawFrame(path.camera(f), false);
     seconds.push_back(frameStopwatch.elapsedSeconds());
     triangles += double(frame.triangles);
     vertices += double(frame.vertexCount);
@@ -94,7 +144,7 @@ int main(int argc, char** argv) {
     prepare += frame.prepareSeconds;
     count += frame.countSeconds;
     layout += frame.layoutSeconds;
-    pattern += frame.patternSeconds;
+    pattern += patternSeconds;
     culled += double(frame.culled);
     fallback += double(frame.fallback);
     capped += double(frame.capped);
@@ -109,8 +159,11 @@ int main(int argc, char** argv) {
   for (int k = 0; k < 5; ++k) sampled.push_back(frames * k / 5);
   for (int f : sampled) {
     const Camera camera = path.camera(f);
-    const ScreenErrorReport e =
-        measureScreenError(tessellator.tessellate(camera), tessellator.patches(), camera, 2);
+    // Measured on the engine's buffers, as drawn.
+    RealtimeFrame drawn = drawFrame(camera, true);
+    drawn.vertices = buffers.vertices.as<gpu::GridVertex>();
+    drawn.indices = buffers.indices.as<uint32_t>();
+    const ScreenErrorReport e = measureScreenError(drawn, tessellator.patches(), camera, 2);
     maxAffine = std::max(maxAffine, e.maxAffinePixels);
     maxPerspective = std::max(maxPerspective, e.maxPerspectivePixels);
     measuredTriangles += e.triangles;
@@ -182,7 +235,8 @@ int main(int argc, char** argv) {
   bench::Table& table = report.table("real-time", "frames", title);
   table.rateUnit = "frames/s";
   const double n = std::max(frames, 1);
-  bench::Case ours{"Tessera: cull + counts + stitched pattern on Vulkan (" + context.info().name + ")",
+  bench::Case ours{"Tessera: cull + counts + stitched pattern recorded into the engine's "
+                   "commands on Vulkan (" + context.info().name + ")",
                    double(frames), timingOf(seconds)};
   ours.throughput = frames / total;
   ours.extra = {{"teapots", teapots},

@@ -100,6 +100,7 @@ class Context {
   Context& operator=(const Context&) = delete;
 
   const DeviceTable& vk() const { return *deviceTable_; }
+  VkInstance instance() const { return instance_; }
   VkDevice device() const { return device_; }
   VkPhysicalDevice physicalDevice() const { return physical_; }
   VkQueue queue() const { return queue_; }
