@@ -52,7 +52,8 @@ inline EdgeCensus censusOf(const TriangleMesh& mesh, double minArea) {
 }
 
 // T-junctions: a vertex within `eps` of the inside of an edge that only one triangle uses
-// (strictly between its ends, 1e-6 of its length away from them). There the neighbour's side is
+// (strictly between its ends, 1e-6 of its length and more than `eps` away from them: a vertex
+// within eps of an end is at that end at this resolution). There the neighbour's side is
 // split and this one is not, so the surface has a crack however small. Vertices are binned in a
 // uniform grid of cells the mean open edge's length; `largestGap` gets the longest such edge.
 inline size_t tJunctionCount(const TriangleMesh& mesh, const EdgeCensus& c, double eps,
@@ -91,7 +92,8 @@ inline size_t tJunctionCount(const TriangleMesh& mesh, const EdgeCensus& c, doub
             if (v == a || v == b) continue;
             const glm::dvec3 p(mesh.positions[v]);
             const double t = glm::dot(p - pa, d) / length2;
-            if (t > 1e-6 && t < 1 - 1e-6 && glm::length(p - (pa + t * d)) <= eps) {
+            if (t > 1e-6 && t < 1 - 1e-6 && glm::length(p - (pa + t * d)) <= eps &&
+                glm::length(p - pa) > eps && glm::length(p - pb) > eps) {
               junction = true;
               break;
             }

@@ -33,6 +33,37 @@ std::vector<uint32_t> weldIdenticalPositions(const std::vector<glm::vec3>& posit
   return remap;
 }
 
+// Triangles whose reverse is in the mesh too (a, b, c and a, c, b): where a fold's strands are
+// zipped (side_fold.h), or evaluate to one point, a fan can cover one spot from both sides.
+// The two cancel (they bound nothing), and their edges keep the neighbours they had.
+std::vector<bool> backToBackPairs(const std::vector<uint32_t>& indices) {
+  struct Hash {
+    size_t operator()(const std::array<uint32_t, 3>& k) const {
+      return (size_t(k[0]) * 73856093u) ^ (size_t(k[1]) * 19349663u) ^ (size_t(k[2]) * 83492791u);
+    }
+  };
+  // Key: the corners rotated to start at the smallest; its reverse has the other two swapped.
+  const auto keyOf = [&](size_t t, bool reversed) {
+    std::array<uint32_t, 3> k = {indices[3 * t], indices[3 * t + 1], indices[3 * t + 2]};
+    if (reversed) std::swap(k[1], k[2]);
+    std::rotate(k.begin(), std::min_element(k.begin(), k.end()), k.end());
+    return k;
+  };
+  const size_t count = indices.size() / 3;
+  std::unordered_map<std::array<uint32_t, 3>, std::vector<size_t>, Hash> open;
+  std::vector<bool> cancelled(count, false);
+  for (size_t t = 0; t < count; ++t) {
+    auto reverse = open.find(keyOf(t, true));
+    if (reverse != open.end() && !reverse->second.empty()) {
+      cancelled[reverse->second.back()] = cancelled[t] = true;
+      reverse->second.pop_back();
+      continue;
+    }
+    open[keyOf(t, false)].push_back(t);
+  }
+  return cancelled;
+}
+
 }  // namespace
 
 Backend makeMirrorBackend() {
@@ -90,6 +121,24 @@ Tessellation meshFromQueries(const std::vector<BezierPatch>& patches, QuadtreeRe
     result.trianglePatch.push_back(param.trianglePatch[k / 3]);
     result.cornerUv.insert(result.cornerUv.end(), param.cornerUv.begin() + k,
                            param.cornerUv.begin() + k + 3);
+  }
+  const std::vector<bool> cancelled = backToBackPairs(mesh.indices);
+  if (std::find(cancelled.begin(), cancelled.end(), true) != cancelled.end()) {
+    size_t kept = 0;
+    for (size_t t = 0; t < cancelled.size(); ++t) {
+      if (cancelled[t]) {
+        ++result.stats.degenerateTrianglesDropped;
+        continue;
+      }
+      for (int c = 0; c < 3; ++c) {
+        mesh.indices[3 * kept + c] = mesh.indices[3 * t + c];
+        result.cornerUv[3 * kept + c] = result.cornerUv[3 * t + c];
+      }
+      result.trianglePatch[kept++] = result.trianglePatch[t];
+    }
+    mesh.indices.resize(3 * kept);
+    result.cornerUv.resize(3 * kept);
+    result.trianglePatch.resize(kept);
   }
 
   TessellationStats& s = result.stats;

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "mesh/shared_edges.h"
+#include "mesh/side_fold.h"
 
 namespace tessera {
 namespace {
@@ -17,12 +18,12 @@ uint32_t bits(float x) {
   return b;
 }
 
-enum KeyKind : uint32_t { kPatchParam, kEdgeParam, kPosition };
+enum KeyKind : uint32_t { kPatchParam, kEdgeParam, kPosition, kFoldPosition };
 
 struct VertexKey {
   uint32_t kind;
-  uint32_t a;  // patch, edge group, or position id
-  uint64_t b;  // (u bits, v bits), canonical t bits, or 0
+  uint32_t a;  // patch, edge group, position id, or folded side
+  uint64_t b;  // (u bits, v bits), canonical t bits, 0, or the position along the fold's line
   bool operator==(const VertexKey& o) const { return kind == o.kind && a == o.a && b == o.b; }
 };
 
@@ -65,6 +66,7 @@ class Triangulator {
     mesh_.indices.reserve(leaves_.size() * 8);
     mesh_.trianglePatch.reserve(leaves_.size() * 8 / 3);
     mesh_.cornerUv.reserve(leaves_.size() * 8);
+    findFolds();
     for (const QuadLeaf& leaf : leaves_) {
       const gpu::vec4& r = leaf.rect;
       for (float v : {r.y, r.w})
@@ -76,12 +78,15 @@ class Triangulator {
           if (onSide(u, v, side, t)) {
             const SideInfo& s = topology_.sides[leaf.patchIndex][side];
             if (s.group >= 0) sharedPoints_[s.group].push_back(canonical(s, t));
+            const int32_t f = foldOf_[leaf.patchIndex][side];
+            if (f >= 0) folds_[f].corners.push_back(t);
           }
         }
     }
     for (LineIndex* lines : {&alongU_, &alongV_})
       for (auto& [key, values] : *lines) sortUnique(values);
     for (auto& values : sharedPoints_) snapTogether(values);
+    for (uint32_t f = 0; f < folds_.size(); ++f) placeFoldPoints(f);
   }
 
   ParamMesh run() {
@@ -133,6 +138,53 @@ class Triangulator {
     return positions_.emplace(key, uint32_t(positions_.size())).first->second;
   }
 
+  // A side that folds back over itself (side_fold.h) and is no other patch's: over the part
+  // it retraces, both strands are one curve, so every point on one strand is also a vertex on
+  // the others, identified by its position along the fold's line (docs/watertight.md).
+  struct FoldedSide {
+    SideFold fold;
+    uint32_t patch;
+    int side;
+    std::vector<float> corners;         // leaf corners on the side (t)
+    std::map<float, VertexKey> points;  // t → vertex: the corners and their images
+  };
+
+  void findFolds() {
+    foldOf_.assign(patches_.size(), {-1, -1, -1, -1});
+    for (uint32_t p = 0; p < patches_.size(); ++p)
+      for (int side = 0; side < 4; ++side) {
+        const SideInfo& s = topology_.sides[p][side];
+        if (s.group >= 0 || s.collapsed) continue;
+        std::optional<SideFold> fold = findSideFold(sideControlPoints(patches_[p], side));
+        if (!fold) continue;
+        foldOf_[p][side] = int32_t(folds_.size());
+        folds_.push_back({std::move(*fold), p, side, {}, {}});
+      }
+  }
+
+  // Every corner's point on every strand: the side's ends are the patch corners' vertices (as
+  // everywhere, welded by position), the rest keyed by their exact position along the line.
+  void placeFoldPoints(uint32_t f) {
+    FoldedSide& fs = folds_[f];
+    // The ends are vertices of every leaf there (onSide gives a patch corner to a v side).
+    fs.corners.insert(fs.corners.end(), {0.0f, 1.0f});
+    sortUnique(fs.corners);
+    const std::vector<glm::dvec3> ends = sideControlPoints(patches_[fs.patch], fs.side);
+    const double first = foldCoordinate(fs.fold, 0), last = foldCoordinate(fs.fold, 1);
+    const auto keyOf = [&](double s) -> VertexKey {
+      if (s == first) return {kPosition, positionId(ends.front()), 0};
+      if (s == last) return {kPosition, positionId(ends.back()), 0};
+      uint64_t b;
+      std::memcpy(&b, &s, sizeof b);
+      return {kFoldPosition, f, b};
+    };
+    for (float t : fs.corners) fs.points.emplace(t, keyOf(foldCoordinate(fs.fold, t)));
+    for (float t : fs.corners) {
+      const double s = foldCoordinate(fs.fold, t);
+      for (double image : foldImages(fs.fold, t, s)) fs.points.emplace(float(image), keyOf(s));
+    }
+  }
+
   uint32_t addVertex(const VertexKey& key, uint32_t patch, float u, float v) {
     auto [it, inserted] = index_.emplace(key, uint32_t(mesh_.vertices.size()));
     if (inserted) mesh_.vertices.push_back({patch, u, v});
@@ -156,6 +208,11 @@ class Triangulator {
       if (s.group >= 0)
         return addVertex({kEdgeParam, uint32_t(s.group), bits(snap(s.group, canonical(s, t)))},
                          patch, u, v);
+      if (const int32_t f = foldOf_[patch][side]; f >= 0) {
+        touchesFold_ = true;
+        auto it = folds_[f].points.find(t);
+        if (it != folds_[f].points.end()) return addVertex(it->second, patch, u, v);
+      }
     }
     uint64_t uv = (uint64_t(bits(u)) << 32) | bits(v);
     return addVertex({kPatchParam, patch, uv}, patch, u, v);
@@ -198,6 +255,19 @@ class Triangulator {
         }
         return;
       }
+      if (const int32_t f = foldOf_[patch][side]; f >= 0) {
+        touchesFold_ = true;
+        const std::map<float, VertexKey>& points = folds_[f].points;
+        auto first = points.upper_bound(std::min(t0, t1));
+        auto last = points.lower_bound(std::max(t0, t1));
+        std::vector<std::pair<float, VertexKey>> inside(first, last);
+        if (t0 > t1) std::reverse(inside.begin(), inside.end());
+        for (const auto& [t, key] : inside) {
+          glm::vec2 uv = alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
+          ring.push_back({addVertex(key, patch, uv.x, uv.y), uv});
+        }
+        return;
+      }
     }
     const LineIndex& lines = alongU ? alongU_ : alongV_;
     auto it = lines.find(lineKey(patch, fixed));
@@ -216,10 +286,37 @@ class Triangulator {
     mesh_.cornerUv.insert(mesh_.cornerUv.end(), {a.uv, b.uv, c.uv});
   }
 
+  // Along a fold the ring can meet one vertex twice: back to back (a, v, v, a at the fold's
+  // turn) or as a spike (a, v, a, the leaf's own surface folded onto itself). A fan over them
+  // would give zero-area and back-to-back triangles; the ring without them bounds the same
+  // surface. Returns whether anything went.
+  static bool dropFoldedBack(std::vector<RingVertex>& ring) {
+    bool changed = false;
+    for (bool again = true; again && ring.size() >= 2;) {
+      again = false;
+      const size_t n = ring.size();
+      for (size_t i = 0; i < n && !again; ++i) {
+        if (ring[i].index == ring[(i + 1) % n].index) {
+          ring.erase(ring.begin() + long((i + 1) % n));
+          again = true;
+        } else if (n >= 3 && ring[i].index == ring[(i + 2) % n].index) {
+          // Drop the spike's tip and its second base, keeping the first.
+          const size_t tip = (i + 1) % n, base = (i + 2) % n;
+          ring.erase(ring.begin() + long(std::max(tip, base)));
+          ring.erase(ring.begin() + long(std::min(tip, base)));
+          again = true;
+        }
+      }
+      changed = changed || again;
+    }
+    return changed;
+  }
+
   void triangulateLeaf(const QuadLeaf& leaf) {
     const uint32_t p = leaf.patchIndex;
     const gpu::vec4& r = leaf.rect;
     ring_.clear();
+    touchesFold_ = false;
     // Counter-clockwise: bottom (v0, u rising), right (u1, v rising), top (v1, u falling),
     // left (u0, v falling); each edge contributes its start corner and interior vertices.
     push(ring_, p, r.x, r.y);
@@ -231,7 +328,9 @@ class Triangulator {
     push(ring_, p, r.x, r.w);
     edgeInterior(p, false, r.x, r.w, r.y, ring_);
 
-    if (ring_.size() == 4) {
+    const bool folded = touchesFold_ && dropFoldedBack(ring_);
+    if (ring_.size() < 3) return;
+    if (ring_.size() == 4 && !folded) {
       emit(p, ring_[0], ring_[1], ring_[2]);
       emit(p, ring_[0], ring_[2], ring_[3]);
       return;
@@ -250,6 +349,9 @@ class Triangulator {
   PatchTopology topology_;
   LineIndex alongU_, alongV_;
   std::vector<std::vector<float>> sharedPoints_;  // per group, canonical parameters
+  std::vector<std::array<int32_t, 4>> foldOf_;    // per patch side, index in folds_ or -1
+  std::vector<FoldedSide> folds_;
+  bool touchesFold_ = false;  // the leaf being triangulated has a vertex on a folded side
   std::map<std::array<uint64_t, 3>, uint32_t> positions_;
   std::unordered_map<VertexKey, uint32_t, VertexKeyHash> index_;
   ParamMesh mesh_;

@@ -8,6 +8,8 @@
 //   parameter along the shared curve, so both sides reference the very same vertices.
 // - Patch corners and collapsed boundaries are welded by their exact control-point position;
 //   triangles that collapse onto an edge are dropped.
+// - An unshared side that folds back along its line (side_fold.h) is zipped to itself: a
+//   point on one strand is a vertex on every strand that retraces it.
 // Vertices are (patch, u, v) only: positions come from an evaluator (GPU or CPU) afterwards.
 #pragma once
 #include <cstdint>
