@@ -135,6 +135,7 @@ struct ClassifyPush {
 TESSERA_CONST(uint, kColourShaded, 0u);  // one porcelain colour
 TESSERA_CONST(uint, kColourDepth, 1u);   // sequential palette by quad-tree level, clamped
 TESSERA_CONST(uint, kColourPatch, 2u);   // categorical palette by patch id, cycling
+TESSERA_CONST(uint, kColourFlat, 3u);    // grey level = the value, unlit (the viewer's text)
 
 // The palettes in sRGB, as lists that both languages expand into an array
 // (GLSL: vec3[](LIST), C++: {LIST}), so that the CLI's legend shows the shader's colours.

@@ -32,6 +32,10 @@ vec3 baseColour() {
 }
 
 void main() {
+  if (pc.colourMode == kColourFlat) {  // overlay text and its backdrop: no light, no wires
+    outColour = vec4(vec3(triangleValue), 1.0);
+    return;
+  }
   vec3 n = worldNormal;
   // Opposite vertex normals can cancel; the facet normal stands in for them.
   if (dot(n, n) < 1e-12) n = cross(dFdx(worldPosition), dFdy(worldPosition));

@@ -25,5 +25,6 @@ void addPaperTableCommand(CLI::App& app, int& exitCode);
 void addReduceCommand(CLI::App& app, int& exitCode);
 void addDivisionsCommand(CLI::App& app, int& exitCode);
 void addLoopCommands(CLI::App& app, int& exitCode);  // loop, limit, fit, join
+void addViewCommand(CLI::App& app, int& exitCode);
 
 }  // namespace tessera::cli

@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   tessera::cli::addReduceCommand(app, exitCode);
   tessera::cli::addDivisionsCommand(app, exitCode);
   tessera::cli::addLoopCommands(app, exitCode);
+  tessera::cli::addViewCommand(app, exitCode);
   tessera::cli::refuseBadNumbers(app);
   // Ctrl-C or kill during a write: no temporary file left behind (host/io/atomic_file.h).
   tessera::removePendingTempFilesOnSignals();

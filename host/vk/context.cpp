@@ -61,7 +61,7 @@ Context::Context(const ContextOptions& options) {
       if (env) selector = env;
     }
     choosePhysicalDevice(selector);
-    createDevice();
+    createDevice(options.deviceExtensions);
     timings_.deviceMs = step.elapsedMs();
     step.restart();
     createPipelineCache();
@@ -136,6 +136,8 @@ void Context::createInstance(const ContextOptions& options) {
                     (hasInstanceExtension(nullptr, VK_EXT_DEBUG_UTILS_EXTENSION_NAME) ||
                      hasInstanceExtension(kValidationLayer, VK_EXT_DEBUG_UTILS_EXTENSION_NAME));
   if (debugUtils) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  extensions.insert(extensions.end(), options.instanceExtensions.begin(),
+                    options.instanceExtensions.end());
 
   // Messages during vkCreateInstance itself reach this messenger through pNext.
   VkDebugUtilsMessengerCreateInfoEXT messengerInfo{
@@ -177,7 +179,7 @@ void Context::choosePhysicalDevice(const std::string& selector) {
   instanceTable_->vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
 }
 
-void Context::createDevice() {
+void Context::createDevice(const std::vector<const char*>& extraDeviceExtensions) {
   uint32_t familyCount = 0;
   instanceTable_->vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount, nullptr);
   std::vector<VkQueueFamilyProperties> families(familyCount);
@@ -202,7 +204,8 @@ void Context::createDevice() {
   queueInfo.queueFamilyIndex = queueFamily_;
   queueInfo.queueCount = 1;
   queueInfo.pQueuePriorities = &priority;
-  const auto& extensions = requiredDeviceExtensions();
+  std::vector<const char*> extensions = requiredDeviceExtensions();
+  extensions.insert(extensions.end(), extraDeviceExtensions.begin(), extraDeviceExtensions.end());
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queueInfo;

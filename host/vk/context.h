@@ -34,6 +34,10 @@ struct ContextOptions {
   // Called for every validation message at warning or error severity (tests fail on any).
   // Default: print to stderr.
   std::function<void(const std::string&)> onValidationMessage;
+  // Extra extensions a window needs (the viewer: VK_KHR_surface and the platform's surface
+  // extension on the instance, VK_KHR_swapchain on the device). Names must outlive the call.
+  std::vector<const char*> instanceExtensions;
+  std::vector<const char*> deviceExtensions;
 };
 
 // Where a context's fixed cost goes: wall-clock milliseconds, for `--stats` (the `setup` section)
@@ -141,7 +145,7 @@ class Context {
  private:
   void createInstance(const ContextOptions& options);
   void choosePhysicalDevice(const std::string& selector);
-  void createDevice();
+  void createDevice(const std::vector<const char*>& extraDeviceExtensions);
   void adoptDevice(const ExternalDevice& external);
   void createCommandObjects();
   void createPipelineCache();

@@ -3,7 +3,8 @@
 #    backend's, like a _vulkan.cpp) includes no Vulkan: not host/vk/,
 #    not <vulkan/...>, not <volk.h>, not the generated SPIR-V headers (*_comp.h);
 # 2. no file sits directly in host/ except README.md;
-# 3. a core stage never includes the CLI, the experiments or the render layer.
+# 3. a core stage never includes the CLI, the experiments or the render layer;
+# 4. GLFW is the viewer's alone: only host/viewer/window_glfw.cpp includes it.
 set(stages common geometry eval bspline quadtree mesh division reduction loop realtime)
 set(violations "")
 foreach(stage ${stages})
@@ -28,7 +29,19 @@ foreach(f ${loose})
     string(APPEND violations "  host/${name}: a file outside a stage folder\n")
   endif()
 endforeach()
+file(GLOB_RECURSE all_sources "${SOURCE_DIR}/host/*.h" "${SOURCE_DIR}/host/*.cpp"
+     "${SOURCE_DIR}/include/*.h")
+foreach(src ${all_sources})
+  if(src MATCHES "/host/viewer/window_glfw\\.cpp$")
+    continue()
+  endif()
+  file(STRINGS "${src}" includes REGEX "^[ \t]*#[ \t]*include[ \t]*<GLFW/")
+  if(includes)
+    file(RELATIVE_PATH rel "${SOURCE_DIR}" "${src}")
+    string(APPEND violations "  ${rel}: includes GLFW (only host/viewer/window_glfw.cpp may)\n")
+  endif()
+endforeach()
 if(violations)
   message(FATAL_ERROR "layering violations (docs/architecture.md):\n${violations}")
 endif()
-message(STATUS "layering: core stages include no Vulkan, CLI, experiments or render code; host/ holds only folders")
+message(STATUS "layering: core stages include no Vulkan, CLI, experiments or render code; host/ holds only folders; GLFW only in the viewer's window")
