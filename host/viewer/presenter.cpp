@@ -27,64 +27,6 @@ VkFormat chooseDepthFormat(const vk::Context& context) {
              : VK_FORMAT_D16_UNORM;
 }
 
-// Colour: cleared, ends ready to present. Depth: cleared, not kept. The incoming dependency
-// orders this frame's clears after the previous frame's writes; the outgoing one makes the
-// colour writes visible to a screenshot's copy.
-VkRenderPass createPresentRenderPass(const vk::Context& context, VkFormat colour,
-                                     VkFormat depth) {
-  VkAttachmentDescription attachments[2]{};
-  attachments[0].format = colour;
-  attachments[0].samples = VK_SAMPLE_COUNT_1_BIT;
-  attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  attachments[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-  attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  attachments[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  attachments[0].finalLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
-  attachments[1] = attachments[0];
-  attachments[1].format = depth;
-  attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  attachments[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-  VkAttachmentReference colourRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-  VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
-  VkSubpassDescription subpass{};
-  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-  subpass.colorAttachmentCount = 1;
-  subpass.pColorAttachments = &colourRef;
-  subpass.pDepthStencilAttachment = &depthRef;
-
-  const VkPipelineStageFlags attachmentStages = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
-                                                VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
-                                                VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-  VkSubpassDependency dependencies[2]{};
-  dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
-  dependencies[0].dstSubpass = 0;
-  dependencies[0].srcStageMask = attachmentStages;
-  dependencies[0].dstStageMask = attachmentStages;
-  dependencies[0].srcAccessMask =
-      VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-  dependencies[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
-                                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
-                                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-  dependencies[1].srcSubpass = 0;
-  dependencies[1].dstSubpass = VK_SUBPASS_EXTERNAL;
-  dependencies[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-  dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-  dependencies[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
-  dependencies[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-
-  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-  info.attachmentCount = 2;
-  info.pAttachments = attachments;
-  info.subpassCount = 1;
-  info.pSubpasses = &subpass;
-  info.dependencyCount = 2;
-  info.pDependencies = dependencies;
-  VkRenderPass pass = VK_NULL_HANDLE;
-  VK_CHECK(context.vk().vkCreateRenderPass(context.device(), &info, nullptr, &pass));
-  return pass;
-}
-
 void imageBarrier(const vk::DeviceTable& vk, VkCommandBuffer cmd, VkImage image,
                   VkImageLayout from, VkImageLayout to, VkPipelineStageFlags srcStage,
                   VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
@@ -155,7 +97,10 @@ void Presenter::createTargets() {
   depth_ = vk::Image(context_, {extent.width, extent.height, depthFormat_,
                                 VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
                                 VK_IMAGE_ASPECT_DEPTH_BIT, VK_SAMPLE_COUNT_1_BIT});
-  renderPass_ = createPresentRenderPass(context_, swapchain_->format(), depthFormat_);
+  // vk/graphics.h's colour + depth pass, the colour ending ready to present.
+  renderPass_ = vk::createColourDepthRenderPass(context_, swapchain_->format(), depthFormat_,
+                                                VK_SAMPLE_COUNT_1_BIT,
+                                                VK_IMAGE_LAYOUT_PRESENT_SRC_KHR);
   for (VkImageView view : swapchain_->views()) {
     VkImageView attachments[2] = {view, depth_.view()};
     VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};

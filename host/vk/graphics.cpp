@@ -6,7 +6,7 @@
 namespace tessera::vk {
 
 VkRenderPass createColourDepthRenderPass(const Context& context, VkFormat colour, VkFormat depth,
-                                         VkSampleCountFlagBits samples) {
+                                         VkSampleCountFlagBits samples, VkImageLayout pictureLayout) {
   const bool resolve = samples != VK_SAMPLE_COUNT_1_BIT;
   VkAttachmentDescription attachments[3]{};
   attachments[0].format = colour;
@@ -17,7 +17,7 @@ VkRenderPass createColourDepthRenderPass(const Context& context, VkFormat colour
   attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
   attachments[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   attachments[0].finalLayout =
-      resolve ? VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+      resolve ? VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL : pictureLayout;
   attachments[1] = attachments[0];
   attachments[1].format = depth;
   attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
@@ -26,7 +26,7 @@ VkRenderPass createColourDepthRenderPass(const Context& context, VkFormat colour
   attachments[2].samples = VK_SAMPLE_COUNT_1_BIT;
   attachments[2].loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
   attachments[2].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  attachments[2].finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  attachments[2].finalLayout = pictureLayout;
 
   VkAttachmentReference colourRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
   VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};

@@ -13,10 +13,12 @@ namespace tessera::vk {
 
 // Attachments 0 colour and 1 depth, both `samples`; with multisampling, 2 is the
 // single-sample resolve target. The picture (colour, or the resolve target) ends in
-// TRANSFER_SRC_OPTIMAL for a copy to the host. Dependencies order the clears after earlier
-// draws into the same attachments (frame after frame) and the copy after the last write.
-VkRenderPass createColourDepthRenderPass(const Context& context, VkFormat colour, VkFormat depth,
-                                         VkSampleCountFlagBits samples);
+// `pictureLayout`: TRANSFER_SRC_OPTIMAL for a copy to the host, PRESENT_SRC_KHR for a swapchain
+// image. Dependencies order the clears after earlier draws into the same attachments (frame
+// after frame) and a copy after the last write.
+VkRenderPass createColourDepthRenderPass(
+    const Context& context, VkFormat colour, VkFormat depth, VkSampleCountFlagBits samples,
+    VkImageLayout pictureLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
 
 struct ShaderStage {
   VkShaderStageFlagBits stage;
