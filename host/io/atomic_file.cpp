@@ -112,10 +112,16 @@ TempFile createTempNextTo(const std::string& path, const fs::path& target, const
   for (int attempt = 0; attempt < 100; ++attempt) {
     fs::path candidate = dir / ("." + stem + ".tmp-" + std::to_string(::getpid()) + "-" +
                                 std::to_string(counter.fetch_add(1)));
+    // Registered before it exists: a signal between open() and a later registration (a
+    // preempted process under load) left the file behind. A signal before open() unlinks a
+    // name that is not there, or a stale file of a recycled pid: no harm either way.
+    const int slot = registerPendingTempFile(candidate.c_str());
     int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd >= 0) return {candidate.string(), fd, registerPendingTempFile(candidate.c_str())};
-    if (errno != EEXIST)
-      ioFail(path, "cannot create a temporary file in directory '" + dir.string() + "'", errno);
+    if (fd >= 0) return {candidate.string(), fd, slot};
+    const int err = errno;
+    forgetPendingTempFile(slot);
+    if (err != EEXIST)
+      ioFail(path, "cannot create a temporary file in directory '" + dir.string() + "'", err);
   }
   ioFail(path,
          "cannot find an unused temporary file name in directory '" + dir.string() + "'", EEXIST);
