@@ -38,12 +38,17 @@ echo "sanitize: build $((SECONDS - start)) s"
 export ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp:print_suppressions=0
-# The random "never under-divides" sweeps run a quarter of their patches here: the Release run
-# has the full statistics; the sanitizers look for memory and UB errors (docs/hardening.md).
+# The statistical sweeps (never under-divides, rule T's random patches, fp32 against double)
+# run a share of their samples here (tests/sweep_share.h): the Release run has the full
+# statistics; the sanitizers look for memory and UB errors (docs/hardening.md).
 export TESSERA_TEST_SWEEP_SHARE=0.25
 cd "$build_dir"
 start=$SECONDS
-ctest --output-on-failure -j "$(nproc)" -L cpu -LE fuzz
+# Paper 002's division table (the Catch2 case and the `tessera divisions` CLI case) runs the
+# division methods the never-under-divides sweeps above also run, over 20 views: 80 s of CPU
+# under ASan for no path of its own, so it runs in the Release suite only.
+ctest --output-on-failure -j "$(nproc)" -L cpu -LE fuzz \
+  -E "Division table: |divisions prints the comparison table"
 echo "sanitize: CPU tests $((SECONDS - start)) s"
 if [[ $gpu == 1 ]]; then
   # The Vulkan loader dlcloses the driver and the validation layer before LeakSanitizer's

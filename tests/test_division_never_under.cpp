@@ -12,6 +12,7 @@
 #include "division/deviation.h"
 #include "division_samples.h"
 #include "geometry/homogeneous_net.h"
+#include "sweep_share.h"
 
 using namespace tessera;
 using namespace tessera::test;
@@ -97,14 +98,7 @@ Tally runPatches(uint32_t seed, int count, DivisionMethod method, double tol) {
   return t;
 }
 
-// The share of the random patches these sweeps run: 1 in the Release suite; scripts/sanitize.sh
-// sets TESSERA_TEST_SWEEP_SHARE=0.25, since under ASan they took 4 minutes of CPU and the
-// sanitizers look for memory and UB errors, which a quarter of the same patches reaches.
-double sweepShare() {
-  const char* text = std::getenv("TESSERA_TEST_SWEEP_SHARE");
-  const double share = text ? std::atof(text) : 1.0;
-  return share > 0.0 && share <= 1.0 ? share : 1.0;
-}
+using test::sweepShare;  // sweep_share.h: a quarter under the sanitizers
 int swept(int count) { return std::max(36, int(count * sweepShare())); }
 
 // Enough grids measured, enough of them with zero and with negative weights.
