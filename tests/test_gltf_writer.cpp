@@ -352,9 +352,41 @@ TEST_CASE("gltf: an invalid mesh throws and leaves the file as it was", "[gltf]"
   CHECK(readWhole(path) == "before");
 }
 
+TEST_CASE("gltf: B-rep faces become one primitive each, sharing the vertices", "[gltf]") {
+  const TriangleMesh mesh = flatGrid(4);  // 18 triangles
+  std::vector<uint32_t> faces(mesh.triangleCount());
+  for (size_t t = 0; t < faces.size(); ++t) faces[t] = t % 3 == 0 ? 7 : 2;  // faces 2 and 7
+  std::ostringstream out;
+  writeGlb(out, mesh, &faces);
+  const Glb glb = parseGlb(out.str());
+  const json& primitives = glb.document.at("meshes").at(0).at("primitives");
+  REQUIRE(primitives.size() == 2);
+  std::vector<uint32_t> seen;
+  for (size_t k = 0; k < primitives.size(); ++k) {
+    const json& p = primitives[k];
+    const uint32_t face = p.at("extras").at("face");
+    CHECK(face == (k == 0 ? 2u : 7u));  // increasing face order
+    CHECK(p.at("attributes") == primitives[0].at("attributes"));
+    const AccessorData a = accessor(glb, p.at("indices"));
+    std::vector<uint32_t> expected;
+    for (size_t t = 0; t < faces.size(); ++t)
+      if (faces[t] == face) expected.insert(expected.end(), &mesh.indices[3 * t], &mesh.indices[3 * t] + 3);
+    REQUIRE(a.count == expected.size());
+    for (size_t i = 0; i < a.count; ++i) CHECK(u16At(glb.bin, a.offset + 2 * i) == expected[i]);
+    seen.insert(seen.end(), expected.begin(), expected.end());
+  }
+  CHECK(seen.size() == mesh.indices.size());
+  faces.pop_back();
+  CHECK_THROWS_AS(writeGlb(out, mesh, &faces), std::invalid_argument);
+}
+
 // Hidden: run by CTest as the setup of the validator test, not in the normal suite.
 TEST_CASE("gltf: write the validator's sample files", "[.gltf-samples]") {
   const fs::path dir = fs::path(TESSERA_BINARY_DIR) / "tests" / "gltf_samples";
   fs::create_directories(dir);
   for (const auto& [name, mesh] : validatorSamples()) writeGlbFile((dir / name).string(), mesh);
+  const TriangleMesh grid = flatGrid(5);
+  std::vector<uint32_t> faces(grid.triangleCount());
+  for (size_t t = 0; t < faces.size(); ++t) faces[t] = uint32_t(t / 8);
+  writeGlbFile((dir / "face_primitives.glb").string(), grid, &faces);
 }

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <map>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
@@ -133,6 +134,15 @@ struct DocumentBuilder {
   }
 };
 
+// The triangles of each face in increasing face order, each face's in mesh order; without
+// faces, all triangles as one group.
+std::map<uint32_t, std::vector<uint32_t>> trianglesByFace(const TriangleMesh& mesh,
+                                                          const std::vector<uint32_t>* faces) {
+  std::map<uint32_t, std::vector<uint32_t>> groups;
+  for (uint32_t t = 0; t < mesh.triangleCount(); ++t) groups[faces ? (*faces)[t] : 0].push_back(t);
+  return groups;
+}
+
 nlohmann::json emptyScene() {
   return {{"asset", {{"version", "2.0"}, {"generator", "tessera"}}},
           {"scene", 0},
@@ -146,8 +156,13 @@ void putChunkHeader(LittleEndianBytes& glb, uint32_t type, size_t length) {
 
 }  // namespace
 
-void writeGlb(std::ostream& out, const TriangleMesh& mesh) {
+void writeGlb(std::ostream& out, const TriangleMesh& mesh,
+              const std::vector<uint32_t>* triangleFace) {
   mesh.validate();
+  if (triangleFace && triangleFace->size() != mesh.triangleCount())
+    throw std::invalid_argument("writeGlb: " + std::to_string(triangleFace->size()) +
+                                " face indices for " + std::to_string(mesh.triangleCount()) +
+                                " triangles");
   nlohmann::json document = emptyScene();
   DocumentBuilder builder;
 
@@ -183,23 +198,32 @@ void writeGlb(std::ostream& out, const TriangleMesh& mesh) {
 
     // Every index is below vertexCount; 65535 itself would be read as primitive restart.
     const bool shortIndices = vertexCount <= 65535;
-    const size_t offset = builder.beginView();
-    for (uint32_t index : mesh.indices) {
-      if (shortIndices)
-        builder.bin.putU16(uint16_t(index));
-      else
-        builder.bin.putU32(index);
+    auto addIndices = [&](const std::vector<uint32_t>& triangles) {
+      const size_t offset = builder.beginView();
+      for (uint32_t t : triangles)
+        for (int corner = 0; corner < 3; ++corner) {
+          const uint32_t index = mesh.indices[3 * size_t(t) + corner];
+          if (shortIndices)
+            builder.bin.putU16(uint16_t(index));
+          else
+            builder.bin.putU32(index);
+        }
+      return builder.endView(offset, kElementArrayBuffer,
+                             shortIndices ? kUnsignedShort : kUnsignedInt, "SCALAR",
+                             3 * triangles.size());
+    };
+    nlohmann::json primitives = nlohmann::json::array();
+    for (const auto& [face, triangles] : trianglesByFace(mesh, triangleFace)) {
+      nlohmann::json primitive = {
+          {"attributes", attributes}, {"indices", addIndices(triangles)}, {"mode", kTriangles}};
+      if (triangleFace) primitive["extras"] = {{"face", face}};
+      primitives.push_back(std::move(primitive));
     }
-    const int indices = builder.endView(offset, kElementArrayBuffer,
-                                        shortIndices ? kUnsignedShort : kUnsignedInt, "SCALAR",
-                                        mesh.indices.size());
 
     document["buffers"] = {{{"byteLength", builder.bin.size()}}};
     document["bufferViews"] = std::move(builder.bufferViews);
     document["accessors"] = std::move(builder.accessors);
-    document["meshes"] = {
-        {{"primitives",
-          {{{"attributes", attributes}, {"indices", indices}, {"mode", kTriangles}}}}}};
+    document["meshes"] = {{{"primitives", std::move(primitives)}}};
     document["nodes"] = {{{"mesh", 0}}};
     document["scenes"] = {{{"nodes", {0}}}};
   }
@@ -229,8 +253,9 @@ void writeGlb(std::ostream& out, const TriangleMesh& mesh) {
   }
 }
 
-void writeGlbFile(const std::string& path, const TriangleMesh& mesh) {
-  writeFileAtomically(path, [&](std::ostream& out) { writeGlb(out, mesh); });
+void writeGlbFile(const std::string& path, const TriangleMesh& mesh,
+                  const std::vector<uint32_t>* triangleFace) {
+  writeFileAtomically(path, [&](std::ostream& out) { writeGlb(out, mesh, triangleFace); });
 }
 
 }  // namespace tessera

@@ -7,7 +7,7 @@
 //   BIN     chunk length, "BIN\0", the buffer, padded with 0      to 4 bytes
 // The document holds one buffer (the BIN chunk), one bufferView per attribute and one for
 // the indices (each starting on a 4-byte boundary, tightly packed, so no byteStride), one
-// accessor per bufferView, one mesh with one TRIANGLES primitive, one node and one scene;
+// accessor per bufferView, one mesh with one TRIANGLES primitive (one per face, below), one node and one scene;
 // asset.generator is "tessera". Vertex views have target ARRAY_BUFFER (34962), the index
 // view ELEMENT_ARRAY_BUFFER (34963). No material: viewers use the spec's default.
 //
@@ -34,17 +34,23 @@
 #pragma once
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "mesh/mesh.h"
 
 namespace tessera {
 
 // Validate the mesh (std::invalid_argument if malformed) and write it to `out` as GLB.
-void writeGlb(std::ostream& out, const TriangleMesh& mesh);
+// With triangleFace (one entry per triangle: the B-rep face it belongs to, issue 17), the mesh
+// has one primitive per face, in increasing face order, all sharing the vertex accessors, each
+// with its own indices and "extras": {"face": <index>}; without it, one primitive.
+void writeGlb(std::ostream& out, const TriangleMesh& mesh,
+              const std::vector<uint32_t>* triangleFace = nullptr);
 
 // Same, into the file at `path` via writeFileAtomically: the whole file or, on any error,
 // nothing (InputError of kind Io for I/O failures). An invalid mesh throws
 // std::invalid_argument and leaves the file as it was.
-void writeGlbFile(const std::string& path, const TriangleMesh& mesh);
+void writeGlbFile(const std::string& path, const TriangleMesh& mesh,
+                  const std::vector<uint32_t>* triangleFace = nullptr);
 
 }  // namespace tessera
