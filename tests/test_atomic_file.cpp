@@ -13,33 +13,13 @@
 
 #include "io/atomic_file.h"
 #include "io/errors.h"
+#include "scratch_dir.h"
 
 using namespace tessera;
 namespace fs = std::filesystem;
+using test::ScratchDir;
 
 namespace {
-
-// A fresh directory under the system temp directory, removed with everything in it.
-struct ScratchDir {
-  fs::path path;
-  ScratchDir() {
-    static int counter = 0;
-    path = fs::temp_directory_path() /
-           ("tessera_test_atomic_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-    fs::create_directories(path);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
-
-std::string readWhole(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 std::vector<std::string> entries(const fs::path& dir) {
   std::vector<std::string> names;
@@ -54,15 +34,15 @@ const std::string kLargeChunk(300000, 'x');
 }  // namespace
 
 TEST_CASE("atomic file: writes the whole content and leaves nothing else", "[io][atomic]") {
-  ScratchDir dir;
+  ScratchDir dir("atomic");
   const fs::path target = dir.path / "out.txt";
   writeFileAtomically(target.string(), [](std::ostream& out) { out << "hello\n" << 42 << '\n'; });
-  CHECK(readWhole(target) == "hello\n42\n");
+  CHECK(test::readWholeFile(target) == "hello\n42\n");
   CHECK(entries(dir.path) == std::vector<std::string>{"out.txt"});
 }
 
 TEST_CASE("atomic file: binary bytes and large blocks pass unchanged", "[io][atomic]") {
-  ScratchDir dir;
+  ScratchDir dir("atomic");
   const fs::path target = dir.path / "out.bin";
   std::string bytes;
   for (int k = 0; k < 200000; ++k) bytes += static_cast<char>(k * 7 % 256);  // '\0', '\r', '\n' …
@@ -70,11 +50,11 @@ TEST_CASE("atomic file: binary bytes and large blocks pass unchanged", "[io][ato
     out.write(bytes.data(), 10);                                      // through the buffer
     out.write(bytes.data() + 10, std::streamsize(bytes.size() - 10));  // around it
   });
-  CHECK(readWhole(target) == bytes);
+  CHECK(test::readWholeFile(target) == bytes);
 }
 
 TEST_CASE("atomic file: a relative path in the current directory", "[io][atomic]") {
-  ScratchDir dir;
+  ScratchDir dir("atomic");
   const fs::path previous = fs::current_path();
   fs::current_path(dir.path);
   try {
@@ -84,24 +64,24 @@ TEST_CASE("atomic file: a relative path in the current directory", "[io][atomic]
     throw;
   }
   fs::current_path(previous);
-  CHECK(readWhole(dir.path / "plain.txt") == "x");
+  CHECK(test::readWholeFile(dir.path / "plain.txt") == "x");
   CHECK(entries(dir.path) == std::vector<std::string>{"plain.txt"});
 }
 
 TEST_CASE("atomic file: replacing an existing file keeps its permissions", "[io][atomic]") {
-  ScratchDir dir;
+  ScratchDir dir("atomic");
   const fs::path target = dir.path / "mesh.obj";
   std::ofstream(target) << "old";
   fs::permissions(target, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
   writeFileAtomically(target.string(), [](std::ostream& out) { out << "new"; });
-  CHECK(readWhole(target) == "new");
+  CHECK(test::readWholeFile(target) == "new");
   CHECK(fs::status(target).permissions() ==
         (fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read));
   CHECK(entries(dir.path) == std::vector<std::string>{"mesh.obj"});
 }
 
 TEST_CASE("atomic file: a writer throwing midway leaves the target untouched", "[io][atomic]") {
-  ScratchDir dir;
+  ScratchDir dir("atomic");
   const fs::path target = dir.path / "mesh.ply";
   auto failingWriter = [](std::ostream& out) {
     out << kLargeChunk;
@@ -111,7 +91,7 @@ TEST_CASE("atomic file: a writer throwing midway leaves the target untouched", "
   SECTION("an existing target keeps its old content") {
     std::ofstream(target) << "the old mesh";
     CHECK_THROWS_WITH(writeFileAtomically(target.string(), failingWriter), "writer gave up");
-    CHECK(readWhole(target) == "the old mesh");
+    CHECK(test::readWholeFile(target) == "the old mesh");
     CHECK(entries(dir.path) == std::vector<std::string>{"mesh.ply"});
   }
   SECTION("a missing target stays missing") {
@@ -122,7 +102,7 @@ TEST_CASE("atomic file: a writer throwing midway leaves the target untouched", "
 }
 
 TEST_CASE("atomic file: a failed stream is an Io error and nothing is written", "[io][atomic]") {
-  ScratchDir dir;
+  ScratchDir dir("atomic");
   const fs::path target = dir.path / "out.txt";
   std::ofstream(target) << "keep";
   try {
@@ -136,12 +116,12 @@ TEST_CASE("atomic file: a failed stream is an Io error and nothing is written", 
     CHECK(e.file() == target.string());
     CHECK(std::string(e.what()).find("stream failed") != std::string::npos);
   }
-  CHECK(readWhole(target) == "keep");
+  CHECK(test::readWholeFile(target) == "keep");
   CHECK(entries(dir.path) == std::vector<std::string>{"out.txt"});
 }
 
 TEST_CASE("atomic file: a nonexistent directory is a clear Io error", "[io][atomic]") {
-  ScratchDir dir;
+  ScratchDir dir("atomic");
   const std::string target = (dir.path / "no" / "such" / "dir" / "mesh.obj").string();
   bool writerCalled = false;
   try {
@@ -162,7 +142,7 @@ TEST_CASE("atomic file: a nonexistent directory is a clear Io error", "[io][atom
 }
 
 TEST_CASE("atomic file: a directory in the way is an Io error", "[io][atomic]") {
-  ScratchDir dir;
+  ScratchDir dir("atomic");
   const fs::path target = dir.path / "taken";
   fs::create_directory(target);
   try {

@@ -17,32 +17,13 @@
 #include "io/atomic_file.h"
 #include "io/errors.h"
 #include "io/pending_temp_files.h"
+#include "scratch_dir.h"
 
 using namespace tessera;
 namespace fs = std::filesystem;
+using test::ScratchDir;
 
 namespace {
-
-struct ScratchDir {
-  fs::path path;
-  ScratchDir() {
-    static int counter = 0;
-    path = fs::temp_directory_path() /
-           ("tessera_test_group_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-    fs::create_directories(path);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
-
-std::string contentOf(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 void put(const fs::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
@@ -62,21 +43,21 @@ std::function<void(std::ostream&)> text(const std::string& t) {
 }  // namespace
 
 TEST_CASE("atomic group: commit writes every file, nothing else is left", "[io][atomic]") {
-  ScratchDir dir;
+  ScratchDir dir("group");
   put(dir.path / "a.txt", "old a");
   AtomicFileGroup group;
   group.stage((dir.path / "a.txt").string(), text("new a"));
   group.stage((dir.path / "b.txt").string(), text("new b"));
-  CHECK(contentOf(dir.path / "a.txt") == "old a");  // staged, not yet visible
+  CHECK(test::readWholeFile(dir.path / "a.txt") == "old a");  // staged, not yet visible
   group.commit();
-  CHECK(contentOf(dir.path / "a.txt") == "new a");
-  CHECK(contentOf(dir.path / "b.txt") == "new b");
+  CHECK(test::readWholeFile(dir.path / "a.txt") == "new a");
+  CHECK(test::readWholeFile(dir.path / "b.txt") == "new b");
   CHECK(entries(dir.path) == std::vector<std::string>{"a.txt", "b.txt"});
 }
 
 TEST_CASE("atomic group: a failure after one file is staged leaves every target as it was",
           "[io][atomic]") {
-  ScratchDir dir;
+  ScratchDir dir("group");
   put(dir.path / "mesh.obj", "old mesh");
   SECTION("the second writer throws") {
     AtomicFileGroup group;
@@ -95,14 +76,14 @@ TEST_CASE("atomic group: a failure after one file is staged leaves every target 
     AtomicFileGroup group;
     group.stage((dir.path / "mesh.obj").string(), text("new mesh"));
   }
-  CHECK(contentOf(dir.path / "mesh.obj") == "old mesh");
+  CHECK(test::readWholeFile(dir.path / "mesh.obj") == "old mesh");
   std::vector<std::string> left = entries(dir.path);
   left.erase(std::remove(left.begin(), left.end(), "stats.json"), left.end());
   CHECK(left == std::vector<std::string>{"mesh.obj"});  // no temporary file
 }
 
 TEST_CASE("atomic file: a symbolic link is written through, and stays a link", "[io][atomic]") {
-  ScratchDir dir;
+  ScratchDir dir("group");
   fs::create_directory(dir.path / "real");
   put(dir.path / "real" / "mesh.obj", "old");
   fs::create_symlink("real/mesh.obj", dir.path / "link.obj");
@@ -113,14 +94,14 @@ TEST_CASE("atomic file: a symbolic link is written through, and stays a link", "
   CHECK(fs::is_symlink(dir.path / "link.obj"));
   CHECK(fs::is_symlink(dir.path / "chain.obj"));
   CHECK(fs::is_symlink(dir.path / "dangling.obj"));
-  CHECK(contentOf(dir.path / "real" / "mesh.obj") == "through two links");
-  CHECK(contentOf(dir.path / "real" / "new.obj") == "made");
+  CHECK(test::readWholeFile(dir.path / "real" / "mesh.obj") == "through two links");
+  CHECK(test::readWholeFile(dir.path / "real" / "new.obj") == "made");
   CHECK(entries(dir.path / "real") == std::vector<std::string>{"mesh.obj", "new.obj"});
 }
 
 TEST_CASE("validateWritable: a missing folder or a directory in the way, before the work",
           "[io][atomic]") {
-  ScratchDir dir;
+  ScratchDir dir("group");
   const std::string missing = (dir.path / "missing" / "out.obj").string();
   try {
     validateWritable(missing);
@@ -141,7 +122,7 @@ TEST_CASE("validateWritable: a missing folder or a directory in the way, before 
 TEST_CASE("atomic file: SIGINT and SIGTERM remove pending temporary files", "[io][atomic]") {
   for (const int signal : {SIGINT, SIGTERM}) {
     INFO("signal " << signal);
-    ScratchDir dir;
+    ScratchDir dir("group");
     int ready[2];
     REQUIRE(::pipe(ready) == 0);
     const pid_t child = ::fork();

@@ -12,25 +12,11 @@
 #include "input_error_checks.h"
 #include "io/bpt_reader.h"
 #include "io/errors.h"
+#include "scratch_dir.h"
 
 using namespace tessera;
 
 namespace {
-
-// A fresh directory under the system temp directory, removed with everything in it.
-struct ScratchDir {
-  std::filesystem::path path;
-  ScratchDir() {
-    static int counter = 0;
-    path = std::filesystem::temp_directory_path() /
-           ("tessera_test_bpt_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-    std::filesystem::create_directories(path);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path, ec);
-  }
-};
 
 std::vector<BezierPatch> parse(const std::string& text) {
   std::istringstream in(text);
@@ -186,7 +172,7 @@ TEST_CASE("bpt: malformed files name the error kind, file, line and reason", "[i
 }
 
 TEST_CASE("bpt: readBpt names the path in its errors", "[io][bpt]") {
-  ScratchDir dir;
+  test::ScratchDir dir("bpt");
   SECTION("a malformed file on disk") {
     const std::string path = (dir.path / "bad.bpt").string();
     std::ofstream(path) << "1\n1 1\n0 0 0\n";

@@ -22,33 +22,14 @@
 #include "io/bpt_reader.h"
 #include "io/gltf_writer.h"
 #include "mesh/tessellate.h"
+#include "scratch_dir.h"
 
 using namespace tessera;
 namespace fs = std::filesystem;
+using test::ScratchDir;
 using nlohmann::json;
 
 namespace {
-
-struct ScratchDir {
-  fs::path path;
-  ScratchDir() {
-    static int counter = 0;
-    path = fs::temp_directory_path() /
-           ("tessera_test_gltf_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-    fs::create_directories(path);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
-
-std::string readWhole(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
-}
 
 uint32_t u32At(const std::string& bytes, size_t offset) {
   uint32_t value = 0;
@@ -212,10 +193,10 @@ TEST_CASE("gltf: the teapot parses back to the mesh, bit for bit", "[gltf]") {
   const TriangleMesh& mesh = t.mesh;
   REQUIRE(mesh.triangleCount() > 0);
 
-  ScratchDir dir;
+  ScratchDir dir("gltf");
   const fs::path path = dir.path / "teapot.glb";
   writeGlbFile(path.string(), mesh);
-  const std::string bytes = readWhole(path);
+  const std::string bytes = test::readWholeFile(path);
   const Glb glb = parseGlb(bytes);
   REQUIRE_FALSE(glb.bin.empty());
   const json& doc = glb.document;
@@ -342,14 +323,14 @@ TEST_CASE("gltf: a mesh without triangles is a valid empty scene", "[gltf]") {
 }
 
 TEST_CASE("gltf: an invalid mesh throws and leaves the file as it was", "[gltf]") {
-  ScratchDir dir;
+  ScratchDir dir("gltf");
   const fs::path path = dir.path / "kept.glb";
   { std::ofstream(path) << "before"; }
   TriangleMesh mesh;
   mesh.positions = {{0, 0, 0}, {1, 0, 0}};
   mesh.indices = {0, 1, 2};
   CHECK_THROWS_AS(writeGlbFile(path.string(), mesh), std::invalid_argument);
-  CHECK(readWhole(path) == "before");
+  CHECK(test::readWholeFile(path) == "before");
 }
 
 TEST_CASE("gltf: B-rep faces become one primitive each, sharing the vertices", "[gltf]") {

@@ -19,32 +19,13 @@
 #include "io/obj_writer.h"
 #include "io/ply_writer.h"
 #include "mesh/mesh.h"
+#include "scratch_dir.h"
 
 using namespace tessera;
 namespace fs = std::filesystem;
+using test::ScratchDir;
 
 namespace {
-
-struct ScratchDir {
-  fs::path path;
-  ScratchDir() {
-    static int counter = 0;
-    path = fs::temp_directory_path() /
-           ("tessera_test_mesh_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-    fs::create_directories(path);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
-
-std::string readWhole(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 std::vector<std::string> lines(const std::string& text) {
   std::vector<std::string> result;
@@ -152,11 +133,11 @@ TEST_CASE("mesh: validate accepts consistent meshes and rejects broken ones", "[
 }
 
 TEST_CASE("obj: positions, uvs, normals and faces parse back", "[io][obj]") {
-  ScratchDir dir;
+  ScratchDir dir("mesh");
   const TriangleMesh mesh = square();
   const fs::path path = dir.path / "square.obj";
   writeObjFile(path.string(), mesh);
-  const auto all = lines(readWhole(path));
+  const auto all = lines(test::readWholeFile(path));
 
   CHECK(countPrefix(all, "v ") == 4);
   CHECK(countPrefix(all, "vt ") == 4);
@@ -217,13 +198,13 @@ TEST_CASE("obj: face forms follow the attributes present", "[io][obj]") {
 }
 
 TEST_CASE("ply: header and byte size are exact", "[io][ply]") {
-  ScratchDir dir;
+  ScratchDir dir("mesh");
   const TriangleMesh mesh = square();
 
   SECTION("with normals") {
     const fs::path path = dir.path / "square.ply";
     writePlyFile(path.string(), mesh);
-    const std::string bytes = readWhole(path);
+    const std::string bytes = test::readWholeFile(path);
     const size_t headerSize = kPlyHeaderWithNormals.size();
     REQUIRE(bytes.size() == headerSize + 4 * 6 * 4 + 2 * (1 + 3 * 4));
     CHECK(bytes.substr(0, headerSize) == kPlyHeaderWithNormals);
@@ -275,7 +256,7 @@ TEST_CASE("ply: header and byte size are exact", "[io][ply]") {
 }
 
 TEST_CASE("mesh writers: bad meshes and bad paths leave no file behind", "[io][obj][ply]") {
-  ScratchDir dir;
+  ScratchDir dir("mesh");
   TriangleMesh broken = square();
   broken.indices[5] = 99;
   const fs::path obj = dir.path / "broken.obj";

@@ -27,6 +27,7 @@
 #include "io/png_writer.h"
 #include "render/offscreen.h"
 #include "mesh/tessellate.h"
+#include "scratch_dir.h"
 
 using namespace tessera;
 namespace fs = std::filesystem;
@@ -83,20 +84,6 @@ double differingFraction(const std::vector<uint8_t>& a, const std::vector<uint8_
       }
   return double(differing) / double(pixels);
 }
-
-struct ScratchDir {
-  fs::path path;
-  ScratchDir() {
-    static int counter = 0;
-    path = fs::temp_directory_path() / ("tessera_test_render_" + std::to_string(::getpid()) +
-                                        "_" + std::to_string(counter++));
-    fs::create_directories(path);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
 
 std::vector<uint8_t> readBytes(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -220,7 +207,7 @@ TEST_CASE("render: a rendered teapot written as PNG reads back pixel for pixel",
   const Tessellation& t = teapot(SplitRule::TrueMax);
   std::vector<uint8_t> rgba = renderMesh(context, t.mesh, triangleLevels(t),
                                          smallPicture(RenderOptions::Colour::Depth, true));
-  ScratchDir dir;
+  test::ScratchDir dir("render");
   fs::path path = dir.path / "teapot.png";
   writePngFile(path.string(), rgba, kWidth, kHeight);
   std::vector<uint8_t> file = readBytes(path);
@@ -246,7 +233,7 @@ TEST_CASE("png: signature, round trip, and refused extents", "[render][png]") {
   const int w = 7, h = 5;
   std::vector<uint8_t> rgba(w * h * 4);
   for (size_t i = 0; i < rgba.size(); ++i) rgba[i] = uint8_t(i * 37);
-  ScratchDir dir;
+  test::ScratchDir dir("render");
   fs::path path = dir.path / "tiny.png";
   writePngFile(path.string(), rgba, w, h);
   std::vector<uint8_t> file = readBytes(path);
