@@ -82,6 +82,9 @@ TESSERA_CONST(uint, kToleranceSplitCapMax, 16u);
 // Rule T in screen space (host/mesh/screen_tolerance.h; set on the host, never by a shader):
 TESSERA_CONST(uint, kCauseCulled, 9u);    // the node's hull is outside one clip plane: unseen
 TESSERA_CONST(uint, kCauseEyePlane, 10u);  // the near plane cuts the node at the eye-plane depth
+// Trimmed faces (host/trim/trim_frontier.h; set on the host): the node lies outside its face's
+// trim loops (kTrimOutside), so it ends here and the mesher drops it.
+TESSERA_CONST(uint, kCauseTrimmedAway, 11u);
 // Rule T on rational patches: the pieces per direction on which the `split` bounds take the
 // weight ratios where a weight of the node's net vanishes (DivisionOptions::ratioPieces).
 TESSERA_CONST(int, kToleranceRatioPieces, 4);
@@ -261,6 +264,54 @@ struct StitchPush {
 struct TessPeerPush {
   vec4 viewProjection[4];  // clip from world, glm column order, Vulkan clip space
   vec4 params;             // viewport width, height (pixels), tolerance (pixels), max factor
+};
+
+
+// ---- Nodes against trim loops (shaders/trim_classify.comp.glsl, shaders/lib/trim_classify.h,
+// host/trim/trim_classifier.h; docs/trimmed_faces.md, "Classifying nodes against trim loops") ----
+
+// What a node rectangle is to its face's trim loops (one uint per TrimQuery).
+TESSERA_CONST(uint, kTrimOutside, 0u);   // no segment within the margin, even crossing parity: no material
+TESSERA_CONST(uint, kTrimInside, 1u);    // no segment within the margin, odd parity (or no loops): all material
+TESSERA_CONST(uint, kTrimCrossing, 2u);  // a segment meets the rectangle grown by the margin
+// 4u (u = 2⁻²⁴): the rounding bound factor of an fp32 orientation test, above Shewchuk's
+// (3 + 16u)·u for inputs that are fp32 values (lib/trim_classify.h).
+TESSERA_CONST(float, kTrimOrientErrorFactor, 2.384185791015625e-7f);
+
+// One trimmed face: its loops' segments are segments[firstSegment .. firstSegment + segmentCount),
+// each a vec4 (a.u, a.v, b.u, b.v) in the face's (u, v) domain, fp32.
+struct TrimFace {
+  vec4 box;            // the segments' bounding box (u0, v0, u1, v1), from the fp32 segments
+  uint firstSegment;
+  uint segmentCount;   // 0: the face has no loops, every node is inside
+  float margin;        // m: rectangles grow by m before the segment test (rounded up to fp32)
+  uint pad;
+};
+
+// One Bézier piece of a face (= one patch of the quad-tree): its [0,1]² maps onto `rect`.
+struct TrimPiece {
+  vec4 rect;  // the piece's rectangle u0, v0, u1, v1 in its face's (u, v) domain, fp32
+  uint face;
+  uint pad0;
+  uint pad1;
+  uint pad2;
+};
+
+// One node to classify: `rect` (u0, v0, u1, v1) in piece `piece`'s [0,1]² (a QuadNode's rect).
+struct TrimQuery {
+  vec4 rect;
+  uint piece;
+  uint pad0;
+  uint pad1;
+  uint pad2;
+};
+
+// Push constants of trim_classify.comp.glsl.
+struct TrimPush {
+  uint queryCount;
+  uint pad0;
+  uint pad1;
+  uint pad2;
 };
 
 
