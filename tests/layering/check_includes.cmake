@@ -5,7 +5,7 @@
 # 2. no file sits directly in host/ except README.md;
 # 3. a core stage never includes the CLI, the experiments or the render layer;
 # 4. GLFW is the viewer's alone: only host/viewer/window_glfw.cpp includes it.
-set(stages common geometry eval bspline quadtree mesh division reduction loop realtime)
+set(stages common geometry eval bspline quadtree mesh division reduction loop realtime trim)
 set(violations "")
 foreach(stage ${stages})
   file(GLOB_RECURSE sources "${SOURCE_DIR}/host/${stage}/*.h" "${SOURCE_DIR}/host/${stage}/*.cpp")

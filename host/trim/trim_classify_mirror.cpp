@@ -1,0 +1,47 @@
+// The fp32 mirror of shaders/trim_classify.comp.glsl: the same source text
+// (shaders/lib/trim_classify.h) compiled as C++ with -ffp-contract=off, so on lavapipe it
+// agrees with the shader bit for bit.
+#include "common/glsl_builtins.h"
+#include "trim/trim_classifier.h"
+
+namespace tessera {
+namespace mirror::glsl {
+namespace {
+
+#include "shaders/lib/shared_glsl_cpp.h"
+
+// The shader's storage buffers, as members of the same names, so that the shared text reads
+// them unchanged.
+struct TrimKernel {
+  const TrimFace* faces;
+  const TrimPiece* pieces;
+  const vec4* segments;
+#include "shaders/lib/trim_classify.h"
+};
+
+}  // namespace
+}  // namespace mirror::glsl
+
+namespace {
+
+class MirrorTrimClassifier final : public TrimClassifier {
+ public:
+  std::string name() const override { return "mirror (fp32)"; }
+  std::vector<uint32_t> classify(const TrimSet& set,
+                                 const std::vector<gpu::TrimQuery>& queries) override {
+    validateTrimQueries(set, queries);
+    mirror::glsl::TrimKernel kernel{set.faces.data(), set.pieces.data(),
+                                          set.segments.data()};
+    std::vector<uint32_t> out(queries.size());
+    for (size_t i = 0; i < queries.size(); ++i) out[i] = kernel.classifyTrimNode(queries[i]);
+    return out;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<TrimClassifier> makeMirrorTrimClassifier() {
+  return std::make_unique<MirrorTrimClassifier>();
+}
+
+}  // namespace tessera
