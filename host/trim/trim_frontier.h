@@ -1,0 +1,46 @@
+// Trimmed quad-trees: a NodeClassifier decorator that, after each level's decisions (rules
+// B–D or T), classifies the level's nodes against their faces' trim loops and ends every node
+// outside as a leaf with cause gpu::kCauseTrimmedAway, never split further; inside and
+// crossing nodes keep their decisions. A separate pass: without it the tree is exactly the
+// untrimmed one. Patch k of the tree is piece k of the TrimSet.
+#pragma once
+#include <memory>
+
+#include "quadtree/quadtree.h"
+#include "trim/trim_classifier.h"
+
+namespace tessera {
+
+class TrimmingClassifier final : public NodeClassifier {
+ public:
+  // `inner` decides the nodes, `trim` classifies them against `set`; all three must outlive it.
+  TrimmingClassifier(NodeClassifier& inner, const TrimSet& set, TrimClassifier& trim);
+
+  std::string name() const override;
+  void beginTree(const PatchSet& patches) override;
+  void classify(const PatchSet& patches, const std::vector<gpu::QuadNode>& nodes,
+                const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
+                LevelStats& stats) override;
+  size_t maxBatchNodes() const override { return inner_.maxBatchNodes(); }
+  size_t maxPatchBufferBytes() const override { return inner_.maxPatchBufferBytes(); }
+
+  size_t trimmedAway() const { return trimmedAway_; }  // nodes ended as kCauseTrimmedAway
+  double trimMs() const { return trimMs_; }             // time in the trim classifier
+
+ private:
+  NodeClassifier& inner_;
+  const TrimSet& set_;
+  TrimClassifier& trim_;
+  size_t groupFirst_ = 0, groupSize_ = 0;  // buildQuadtree's patch groups come in order
+  size_t trimmedAway_ = 0;
+  double trimMs_ = 0;
+  std::vector<gpu::TrimQuery> queries_;
+};
+
+// buildQuadtree with the trimming pass. Throws std::invalid_argument when the set's piece
+// count is not the patch count.
+QuadtreeResult buildTrimmedQuadtree(const PatchSet& patches, const QuadtreeOptions& options,
+                                    NodeClassifier& classifier, const TrimSet& set,
+                                    TrimClassifier& trim);
+
+}  // namespace tessera
