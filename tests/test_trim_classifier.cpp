@@ -1,0 +1,161 @@
+// Quad-tree nodes against trim loops (host/trim/trim_classifier.h): the fp32 mirror against
+// the double reference (never a crossing missed, inside/outside never swapped, differences only
+// within the margin band), Vulkan against the mirror bit for bit, and the trimming pass of the
+// quad-tree frontier (host/trim/trim_frontier.h).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <random>
+
+#include "common/stopwatch.h"
+#include "gpu_test_context.h"
+#include "patch_samples.h"
+#include "trim/trim_classifier.h"
+#include "trim/trim_frontier.h"
+#include "trim_samples.h"
+
+using namespace tessera;
+using namespace tessera::test;
+
+namespace {
+
+const char* className(uint32_t c) {
+  return c == gpu::kTrimInside ? "inside" : c == gpu::kTrimOutside ? "outside" : "crossing";
+}
+
+}  // namespace
+
+TEST_CASE("Trim classification: the fp32 mirror never misses a crossing and differs from the "
+          "double reference only within the margin band",
+          "[trim]") {
+  const TrimSet set = trimSampleSet();
+  const std::vector<gpu::TrimQuery> queries = trimSampleQueries(set, 4000, 1701);
+  const auto reference = makeReferenceTrimClassifier()->classify(set, queries);
+  const auto mirror = makeMirrorTrimClassifier()->classify(set, queries);
+  REQUIRE(mirror.size() == queries.size());
+  std::array<size_t, 3> counts{};
+  size_t band = 0, missed = 0, swapped = 0, outsideBand = 0;
+  for (size_t i = 0; i < queries.size(); ++i) {
+    ++counts[reference[i]];
+    if (mirror[i] == reference[i]) continue;
+    if (reference[i] == gpu::kTrimCrossing) {
+      ++missed;
+    } else if (mirror[i] != gpu::kTrimCrossing) {
+      ++swapped;
+    } else {
+      ++band;
+      // The mirror's crossing must be a segment within 1.25 m of the rectangle in double
+      // (m + the 10u·U of rounding the derivation allows, with m = 64u·U).
+      const float margin = set.faces[set.pieces[queries[i].piece].face].margin;
+      if (classifyTrimNodeReference(set, queries[i], 1.25 * double(margin)) != gpu::kTrimCrossing)
+        ++outsideBand;
+    }
+    if (missed + swapped + outsideBand > 0 && missed + swapped + outsideBand <= 5)
+      std::printf("  query %zu (piece %u, rect %.9g %.9g %.9g %.9g): reference %s, mirror %s\n", i,
+                  queries[i].piece, queries[i].rect.x, queries[i].rect.y, queries[i].rect.z,
+                  queries[i].rect.w, className(reference[i]), className(mirror[i]));
+  }
+  std::printf("trim mirror vs reference: %zu nodes (reference: %zu outside, %zu inside, %zu "
+              "crossing); %zu differ: %zu mirror crossings near a loop (%zu of them beyond 1.25 m "
+              "in double), %zu crossings missed, %zu inside/outside swapped\n",
+              queries.size(), counts[0], counts[1], counts[2], band + missed + swapped, band,
+              outsideBand, missed, swapped);
+  CHECK(missed == 0);
+  CHECK(swapped == 0);
+  CHECK(outsideBand == 0);
+  // The samples exercise all three answers.
+  CHECK(counts[gpu::kTrimOutside] > 1000);
+  CHECK(counts[gpu::kTrimInside] > 1000);
+  CHECK(counts[gpu::kTrimCrossing] > 1000);
+}
+
+TEST_CASE("Trim classification: touching counts as crossing; a face without loops is inside",
+          "[trim]") {
+  const TrimSet set = trimSampleSet();
+  // Face 3's square has its sides on u, v = 1/4 and 3/4 (piece 6 is [0,1]²).
+  const std::vector<gpu::TrimQuery> queries = {
+      {{0.75f, 0.75f, 1.0f, 1.0f}, 6, 0, 0, 0},     // touches the square's corner only
+      {{0.25f, 0.25f, 0.75f, 0.75f}, 6, 0, 0, 0},   // its sides are the loop
+      {{0.375f, 0.375f, 0.625f, 0.625f}, 6, 0, 0, 0},  // strictly inside
+      {{0.8f, 0.8f, 0.9f, 0.9f}, 6, 0, 0, 0},       // strictly outside
+      {{0.0f, 0.0f, 1.0f, 1.0f}, 8, 0, 0, 0},       // face 4: no loops
+      {{0.0f, 0.0f, 1.0f, 1.0f}, 6, 0, 0, 0},       // contains the whole loop
+  };
+  const std::vector<uint32_t> expected = {gpu::kTrimCrossing, gpu::kTrimCrossing,
+                                          gpu::kTrimInside,   gpu::kTrimOutside,
+                                          gpu::kTrimInside,   gpu::kTrimCrossing};
+  CHECK(makeReferenceTrimClassifier()->classify(set, queries) == expected);
+  CHECK(makeMirrorTrimClassifier()->classify(set, queries) == expected);
+}
+
+TEST_CASE("Trim classification: bad input names the face, loop, point or query", "[trim]") {
+  using Loops = std::vector<std::vector<std::vector<glm::dvec2>>>;
+  CHECK_THROWS_WITH(packTrimSet(Loops{{{{0, 0}, {1, NAN}, {0, 1}}}}, {{0, {0, 0, 1, 1}}}),
+                    Catch::Contains("face 0, loop 0, point 1"));
+  CHECK_THROWS_WITH(packTrimSet(Loops{{}}, {{1, {0, 0, 1, 1}}}),
+                    Catch::Contains("piece 0 names face 1"));
+  CHECK_THROWS_WITH(packTrimSet(Loops{{}}, {{0, {0, 0, 0, 1}}}),
+                    Catch::Contains("piece 0 of face 0"));
+  const TrimSet set = trimSampleSet();
+  CHECK_THROWS_WITH(makeMirrorTrimClassifier()->classify(set, {{{0, 0, 1, 1}, 99, 0, 0, 0}}),
+                    Catch::Contains("query 0 names piece 99"));
+}
+
+TEST_CASE("Trim classification: Vulkan equals the fp32 mirror bit for bit", "[trim][gpu]") {
+  const TrimSet set = trimSampleSet();
+  const std::vector<gpu::TrimQuery> queries = trimSampleQueries(set, 4000, 1702);
+  auto vulkan = makeVulkanTrimClassifier(gpuContext());
+  const auto gpuResults = vulkan->classify(set, queries);
+  const auto mirror = makeMirrorTrimClassifier()->classify(set, queries);
+  REQUIRE(gpuResults.size() == mirror.size());
+  size_t differ = 0;
+  for (size_t i = 0; i < mirror.size(); ++i)
+    if (gpuResults[i] != mirror[i] && ++differ <= 5)
+      std::printf("  query %zu: GPU %s, mirror %s\n", i, className(gpuResults[i]),
+                  className(mirror[i]));
+  std::printf("trim classification on %s: %zu nodes, %zu differ from the mirror\n",
+              vulkan->name().c_str(), mirror.size(), differ);
+  CHECK(differ == 0);
+  requireValidationClean();
+}
+
+// Timing, not a check (hidden: `tessera_tests "[trim-bench]"`): `nodes` tree cells of levels
+// 5..10 on one face whose loop has 1000 segments (a wavy circle filling most of the piece).
+TEST_CASE("Trim classification timing: 100k nodes against 1000 segments", "[.][trim-bench][gpu]") {
+  std::vector<glm::dvec2> wavy;
+  for (int k = 0; k < 1000; ++k) {
+    const double angle = 2.0 * M_PI * k / 1000, r = 0.4 + 0.05 * std::sin(17.0 * angle);
+    wavy.push_back({0.5 + r * std::cos(angle), 0.5 + r * std::sin(angle)});
+  }
+  const TrimSet set = packTrimSet({{wavy}}, {{0, {0, 0, 1, 1}}});
+  std::mt19937 rng(9);
+  std::vector<gpu::TrimQuery> queries;
+  for (int k = 0; k < 100000; ++k) {
+    const uint32_t cells = 1u << (5 + rng() % 6);
+    const float size = 1.0f / float(cells), i = float(rng() % cells), j = float(rng() % cells);
+    queries.push_back({{i * size, j * size, (i + 1) * size, (j + 1) * size}, 0, 0, 0, 0});
+  }
+  auto mirror = makeMirrorTrimClassifier();
+  auto vulkan = makeVulkanTrimClassifier(gpuContext());
+  std::vector<uint32_t> a, b;
+  double mirrorMs = 1e300, vulkanMs = 1e300;
+  for (int run = 0; run < 3; ++run) {
+    const Stopwatch m;
+    a = mirror->classify(set, queries);
+    mirrorMs = std::min(mirrorMs, m.elapsedMs());
+    const Stopwatch v;
+    b = vulkan->classify(set, queries);
+    vulkanMs = std::min(vulkanMs, v.elapsedMs());
+  }
+  std::array<size_t, 3> counts{};
+  for (uint32_t c : a) ++counts[c];
+  std::printf("trim classification, %zu nodes x %zu segments (%zu outside, %zu inside, %zu "
+              "crossing): mirror %.1f ms (one core), %s %.1f ms (with transfers); best of 3\n",
+              queries.size(), set.segments.size(), counts[0], counts[1], counts[2], mirrorMs,
+              vulkan->name().c_str(), vulkanMs);
+  CHECK(a == b);
+}
