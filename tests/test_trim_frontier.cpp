@@ -10,6 +10,7 @@
 #include <random>
 #include <tuple>
 
+#include "gpu_test_context.h"
 #include "patch_samples.h"
 #include "trim/trim_frontier.h"
 #include "trim_samples.h"
@@ -40,20 +41,41 @@ class RecordingClassifier final : public NodeClassifier {
 using LeafKey = std::tuple<uint32_t, uint64_t, uint32_t>;  // patch, path, level
 LeafKey keyOf(const QuadLeaf& leaf) { return {leaf.patchIndex, leaf.path, leaf.level}; }
 
+// Field by field, floats by their bits (QuadLeaf has padding).
+bool sameLeaf(const QuadLeaf& a, const QuadLeaf& b) {
+  const auto bits = [](const void* x, const void* y, size_t n) { return std::memcmp(x, y, n) == 0; };
+  return bits(&a.rect, &b.rect, sizeof a.rect) && a.patchIndex == b.patchIndex &&
+         a.level == b.level && a.cause == b.cause && a.path == b.path &&
+         bits(&a.linearity, &b.linearity, sizeof(float)) &&
+         bits(&a.flatness, &b.flatness, sizeof(float)) && bits(&a.split, &b.split, sizeof a.split);
+}
+
+// One face over [0, 2] × [0, 1], two curved pieces side by side, trimmed to a disc; rule T at
+// 2·10⁻⁴ of the patches' size.
+struct TrimmedSquare {
+  std::vector<BezierPatch> patches = randomBicubicPatches(2, 77);
+  std::vector<std::vector<glm::dvec2>> loops = {circleLoop({1.0, 0.5}, 0.42, 300, false)};
+  TrimSet set = packTrimSet({loops}, {{0, {0, 0, 1, 1}}, {0, {1, 0, 2, 1}}});
+  PatchSet patchSet = toPatchSet(patches);
+  QuadtreeOptions options;
+  TrimmedSquare() {
+    glm::dvec3 lo(1e300), hi(-1e300);
+    for (const BezierPatch& p : patches)
+      for (const glm::dvec3& c : p.cp) lo = glm::min(lo, c), hi = glm::max(hi, c);
+    options = toleranceOptions(2e-4 * glm::length(hi - lo));
+  }
+};
+
 }  // namespace
 
 TEST_CASE("Trimmed quad-tree: nodes outside the loops end as kCauseTrimmedAway leaves, the rest "
           "is the untrimmed tree, and its leaves cover the trim region",
           "[trim][quadtree]") {
-  // One face over [0, 2] × [0, 1], two curved pieces side by side, trimmed to a disc.
-  const std::vector<BezierPatch> patches = randomBicubicPatches(2, 77);
-  const std::vector<std::vector<glm::dvec2>> loops = {circleLoop({1.0, 0.5}, 0.42, 300, false)};
-  const TrimSet set = packTrimSet({loops}, {{0, {0, 0, 1, 1}}, {0, {1, 0, 2, 1}}});
-  glm::dvec3 lo(1e300), hi(-1e300);
-  for (const BezierPatch& p : patches)
-    for (const glm::dvec3& c : p.cp) lo = glm::min(lo, c), hi = glm::max(hi, c);
-  const QuadtreeOptions options = toleranceOptions(2e-4 * glm::length(hi - lo));
-  const PatchSet patchSet = toPatchSet(patches);
+  const TrimmedSquare face;
+  const std::vector<std::vector<glm::dvec2>>& loops = face.loops;
+  const TrimSet& set = face.set;
+  const QuadtreeOptions& options = face.options;
+  const PatchSet& patchSet = face.patchSet;
 
   auto plainClassifier = makeMirrorClassifier();
   const QuadtreeResult plain = buildQuadtree(patchSet, options, *plainClassifier);
@@ -91,7 +113,7 @@ TEST_CASE("Trimmed quad-tree: nodes outside the loops end as kCauseTrimmedAway l
     }
     ++kept;
     const auto found = plainLeaves.find(keyOf(leaf));
-    if (found == plainLeaves.end() || std::memcmp(&found->second, &leaf, sizeof leaf) != 0)
+    if (found == plainLeaves.end() || !sameLeaf(found->second, leaf))
       ++notInPlain;
   }
   // Random points of the disc lie in kept leaves; points of trimmed leaves lie outside it.
@@ -138,4 +160,27 @@ TEST_CASE("Trimmed quad-tree: nodes outside the loops end as kCauseTrimmedAway l
   CHECK(discPoints > 1000);
   CHECK(uncovered == 0);
   CHECK(trimmedButInside == 0);
+}
+
+TEST_CASE("Trimmed quad-tree: the Vulkan trim classifier gives the mirror's tree bit for bit",
+          "[trim][quadtree][gpu]") {
+  const TrimmedSquare face;
+  auto inner = makeMirrorClassifier();
+  auto mirrorTrim = makeMirrorTrimClassifier();
+  auto vulkanTrim = makeVulkanTrimClassifier(gpuContext());
+  const QuadtreeResult mirror =
+      buildTrimmedQuadtree(face.patchSet, face.options, *inner, face.set, *mirrorTrim);
+  const QuadtreeResult vulkan =
+      buildTrimmedQuadtree(face.patchSet, face.options, *inner, face.set, *vulkanTrim);
+  REQUIRE(vulkan.leaves.size() == mirror.leaves.size());
+  size_t differ = 0;
+  for (size_t i = 0; i < mirror.leaves.size(); ++i)
+    if (!sameLeaf(mirror.leaves[i], vulkan.leaves[i])) ++differ;
+  std::printf("trimmed tree with %s: %zu leaves, %zu differ from the mirror's\n",
+              vulkanTrim->name().c_str(), mirror.leaves.size(), differ);
+  CHECK(differ == 0);
+  CHECK_THROWS_WITH(buildTrimmedQuadtree(toPatchSet(randomBicubicPatches(3, 1)), face.options,
+                                         *inner, face.set, *mirrorTrim),
+                    Catch::Contains("3 patches but 2 trim pieces"));
+  requireValidationClean();
 }
