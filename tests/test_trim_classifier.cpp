@@ -73,6 +73,37 @@ TEST_CASE("Trim classification: the fp32 mirror never misses a crossing and diff
   CHECK(counts[gpu::kTrimCrossing] > 1000);
 }
 
+TEST_CASE("Trim classification: segments placed within two margins of a node's side, far from "
+          "the origin, are never missed by the mirror",
+          "[trim]") {
+  const NearSideSamples samples = nearSideTrimSamples(20000, 404);
+  const TrimSet& set = samples.set;
+  const std::vector<gpu::TrimQuery>& queries = samples.queries;
+  const auto reference = makeReferenceTrimClassifier()->classify(set, queries);
+  const auto mirror = makeMirrorTrimClassifier()->classify(set, queries);
+  size_t referenceCrossing = 0, band = 0, beyondBand = 0, missed = 0, swapped = 0;
+  for (size_t q = 0; q < queries.size(); ++q) {
+    referenceCrossing += reference[q] == gpu::kTrimCrossing;
+    if (mirror[q] == reference[q]) continue;
+    if (reference[q] == gpu::kTrimCrossing) ++missed;
+    else if (mirror[q] != gpu::kTrimCrossing) ++swapped;
+    else {
+      ++band;
+      const double margin = double(set.faces[q].margin);
+      if (classifyTrimNodeReference(set, queries[q], 1.25 * margin) != gpu::kTrimCrossing)
+        ++beyondBand;
+    }
+  }
+  std::printf("trim near-side segments: %zu nodes, %zu crossing by the reference, %zu more by the "
+              "mirror (the band; %zu of them beyond 1.25 m in double), %zu missed, %zu swapped\n",
+              queries.size(), referenceCrossing, band, beyondBand, missed, swapped);
+  CHECK(missed == 0);
+  CHECK(swapped == 0);
+  CHECK(beyondBand == 0);
+  CHECK(band > 1000);  // the distances reach into the band on both sides of it
+  CHECK(referenceCrossing > 1000);
+}
+
 TEST_CASE("Trim classification: touching counts as crossing, and a face without loops is inside",
           "[trim]") {
   const TrimSet set = trimSampleSet();
@@ -106,20 +137,25 @@ TEST_CASE("Trim classification: bad input names the face, loop, point or query",
 }
 
 TEST_CASE("Trim classification: Vulkan equals the fp32 mirror bit for bit", "[trim][gpu]") {
-  const TrimSet set = trimSampleSet();
-  const std::vector<gpu::TrimQuery> queries = trimSampleQueries(set, 4000, 1702);
   auto vulkan = makeVulkanTrimClassifier(gpuContext());
-  const auto gpuResults = vulkan->classify(set, queries);
-  const auto mirror = makeMirrorTrimClassifier()->classify(set, queries);
-  REQUIRE(gpuResults.size() == mirror.size());
-  size_t differ = 0;
-  for (size_t i = 0; i < mirror.size(); ++i)
-    if (gpuResults[i] != mirror[i] && ++differ <= 5)
-      std::printf("  query %zu: GPU %s, mirror %s\n", i, className(gpuResults[i]),
-                  className(mirror[i]));
-  std::printf("trim classification on %s: %zu nodes, %zu differ from the mirror\n",
-              vulkan->name().c_str(), mirror.size(), differ);
-  CHECK(differ == 0);
+  const TrimSet samples = trimSampleSet();
+  const NearSideSamples nearSide = nearSideTrimSamples(20000, 405);
+  const std::pair<const TrimSet*, std::vector<gpu::TrimQuery>> cases[] = {
+      {&samples, trimSampleQueries(samples, 4000, 1702)}, {&nearSide.set, nearSide.queries}};
+  for (const auto& [set, queries] : cases) {
+    const auto gpuResults = vulkan->classify(*set, queries);
+    const auto mirror = makeMirrorTrimClassifier()->classify(*set, queries);
+    REQUIRE(gpuResults.size() == mirror.size());
+    size_t differ = 0;
+    for (size_t i = 0; i < mirror.size(); ++i)
+      if (gpuResults[i] != mirror[i] && ++differ <= 5)
+        std::printf("  query %zu: GPU %s, mirror %s\n", i, className(gpuResults[i]),
+                    className(mirror[i]));
+    std::printf("trim classification on %s: %zu nodes (%s), %zu differ from the mirror\n",
+                vulkan->name().c_str(), mirror.size(),
+                set == &samples ? "hand-made loops" : "segments near node sides", differ);
+    CHECK(differ == 0);
+  }
   requireValidationClean();
 }
 

@@ -1,5 +1,6 @@
 #include "trim_samples.h"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -58,6 +59,41 @@ TrimSet trimSampleSet() {
   pieces.push_back({5, {1000, -50, 1005, -40}});
   pieces.push_back({5, {1005, -50, 1010, -40}});
   return packTrimSet(faces, pieces);
+}
+
+NearSideSamples nearSideTrimSamples(uint32_t count, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<std::vector<std::vector<glm::dvec2>>> faces;
+  std::vector<TrimPieceRect> pieces;
+  std::vector<gpu::TrimQuery> queries;
+  for (uint32_t k = 0; k < count; ++k) {
+    const glm::dvec2 origin(std::ldexp(unit(rng), int(rng() % 24) - 4),
+                            -std::ldexp(unit(rng), int(rng() % 24) - 4));
+    const double size = std::ldexp(1.0 + unit(rng), int(rng() % 8) - 4);
+    const glm::dvec4 rect(origin.x, origin.y, origin.x + size, origin.y + 1.5 * size);
+    const double scale = std::max({std::abs(rect.x), std::abs(rect.y), std::abs(rect.z), std::abs(rect.w)});
+    const double margin = std::ldexp(scale, -18);
+    const uint32_t level = rng() % 8, cells = 1u << level;
+    const float i = float(rng() % cells), j = float(rng() % cells), cell = 1.0f / float(cells);
+    const gpu::vec4 node(i * cell, j * cell, (i + 1) * cell, (j + 1) * cell);
+    // The node's side in face uv (double), the segment along it at distance d, slope ±s.
+    const double u0 = rect.x + double(node.x) * size, u1 = rect.x + double(node.z) * size;
+    const double v0 = rect.y + double(node.y) * 1.5 * size, v1 = rect.y + double(node.w) * 1.5 * size;
+    const double d = (4.0 * unit(rng) - 2.0) * margin, slope = (unit(rng) - 0.5) * 1e-5;
+    const double along = unit(rng) < 0.5 ? 0.0 : 0.25 * (u1 - u0);
+    glm::dvec2 a, b;
+    switch (rng() % 4) {
+      case 0: a = {u0 + along, v0 - d}; b = {u1, v0 - d + slope * (u1 - u0)}; break;        // below
+      case 1: a = {u0 + along, v1 + d}; b = {u1, v1 + d + slope * (u1 - u0)}; break;        // above
+      case 2: a = {u0 - d, v0}; b = {u0 - d + slope * (v1 - v0), v1 - along}; break;        // left
+      default: a = {u1 + d, v0}; b = {u1 + d + slope * (v1 - v0), v1 - along}; break;       // right
+    }
+    faces.push_back({{a, b}});
+    pieces.push_back({k, rect});
+    queries.push_back({node, k, 0u, 0u, 0u});
+  }
+  return {packTrimSet(faces, pieces), queries};
 }
 
 std::vector<gpu::TrimQuery> trimSampleQueries(const TrimSet& set, size_t perPiece, uint32_t seed) {
