@@ -1,0 +1,121 @@
+// Readers: STEPControl_Reader, IGESControl_Reader (both XSControl_Reader) and BRepTools::Read.
+#include "cad/cad_file.h"
+
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <IFSelect_ReturnStatus.hxx>
+#include <IGESControl_Reader.hxx>
+#include <Interface_InterfaceModel.hxx>
+#include <STEPControl_Reader.hxx>
+#include <StepData_StepModel.hxx>
+#include <Standard_Failure.hxx>
+#include <TransferBRep.hxx>
+#include <Transfer_TransientProcess.hxx>
+#include <XSControl_TransferReader.hxx>
+#include <XSControl_WorkSession.hxx>
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+
+#include "tessera/errors.h"
+
+namespace tessera {
+namespace {
+
+std::string lowerExtension(const std::string& path) {
+  auto dot = path.find_last_of('.');
+  auto slash = path.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string ext = path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+const char* statusName(IFSelect_ReturnStatus status) {
+  switch (status) {
+    case IFSelect_RetVoid: return "nothing read (RetVoid)";
+    case IFSelect_RetDone: return "done";
+    case IFSelect_RetError: return "the file is not valid (RetError)";
+    case IFSelect_RetFail: return "reading failed (RetFail)";
+    case IFSelect_RetStop: return "reading stopped (RetStop)";
+  }
+  return "unknown status";
+}
+
+// Every entity the transfer turned into a face, by the face's TShape (faces that shape healing
+// replaced after the transfer are not found: their labels then carry no entity).
+void recordFaceEntities(XSControl_Reader& reader, CadFile& file) {
+  const Handle(XSControl_TransferReader)& transfer = reader.WS()->TransferReader();
+  const Handle(Interface_InterfaceModel)& model = reader.WS()->Model();
+  if (transfer.IsNull() || model.IsNull()) return;
+  const Handle(Transfer_TransientProcess)& process = transfer->TransientProcess();
+  if (process.IsNull()) return;
+  auto step = Handle(StepData_StepModel)::DownCast(model);
+  for (int i = 1; i <= process->NbMapped(); ++i) {
+    const Handle(Standard_Transient)& entity = process->Mapped(i);
+    const TopoDS_Shape shape = TransferBRep::ShapeResult(process, entity);
+    if (shape.IsNull() || shape.ShapeType() != TopAbs_FACE) continue;
+    std::string type = model->TypeName(entity, Standard_False);
+    // IGES names the class ("IGESSolid_Face"): drop its package; STEP names the entity type.
+    if (auto underscore = type.find('_'); underscore != std::string::npos &&
+        type.find_first_of("abcdefghijklmnopqrstuvwxyz") < underscore)
+      type = type.substr(underscore + 1);
+    file.faceEntities[shape.TShape().get()] =
+        step.IsNull() ? "entity " + std::to_string(model->Number(entity)) + " " + type
+                      : "#" + std::to_string(step->IdentLabel(entity)) + " " + type;
+  }
+}
+
+// Both exchange readers: read, transfer every root, keep all roots as one shape (a compound
+// of located instances for an assembly).
+void readExchange(XSControl_Reader& reader, CadFile& file, const char* format) {
+  IFSelect_ReturnStatus status = reader.ReadFile(file.path.c_str());
+  if (status != IFSelect_RetDone)
+    throw InputError(InputErrorKind::Syntax, file.path, 0,
+                     std::string("the ") + format + " reader could not read it: " + statusName(status));
+  if (reader.TransferRoots() == 0)
+    throw InputError(InputErrorKind::Topology, file.path, 0,
+                     std::string("the ") + format + " file holds no shape that transfers");
+  file.shape = reader.OneShape();
+  recordFaceEntities(reader, file);
+}
+
+}  // namespace
+
+CadFile readCadFile(const std::string& path) {
+  CadFile file;
+  file.path = path;
+  if (!std::ifstream(path, std::ios::binary))
+    throw InputError(InputErrorKind::Io, path, 0, "cannot open the file");
+  const std::string ext = lowerExtension(path);
+  try {
+    if (ext == "step" || ext == "stp") {
+      STEPControl_Reader reader;
+      readExchange(reader, file, "STEP");
+    } else if (ext == "iges" || ext == "igs") {
+      IGESControl_Reader reader;
+      readExchange(reader, file, "IGES");
+    } else if (ext == "brep") {
+      BRep_Builder builder;
+      if (!BRepTools::Read(file.shape, path.c_str(), builder))
+        throw InputError(InputErrorKind::Syntax, path, 0, "BRepTools::Read could not read it");
+    } else {
+      throw InputError(InputErrorKind::Syntax, path, 0,
+                       "unknown CAD extension '." + ext + "' (.step, .stp, .iges, .igs, .brep)");
+    }
+  } catch (const Standard_Failure& failure) {
+    throw InputError(InputErrorKind::Syntax, path, 0,
+                     std::string("Open CASCADE failed reading it: ") + failure.GetMessageString());
+  }
+  if (file.shape.IsNull())
+    throw InputError(InputErrorKind::Topology, path, 0, "the file yields no shape");
+  return file;
+}
+
+std::string faceEntityLabel(const CadFile& file, const TopoDS_Face& face) {
+  auto found = file.faceEntities.find(face.TShape().get());
+  return found == file.faceEntities.end() ? "" : found->second;
+}
+
+}  // namespace tessera
