@@ -1,0 +1,34 @@
+// Every B-rep edge discretised once (docs/cad.md, "Edges"): parameters along the edge and the
+// shared points they become. Faces map the same parameters through their own pcurves, so the
+// two faces of an edge take the very same 3D points: the mesh is watertight across faces.
+#pragma once
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <vector>
+
+namespace tessera {
+
+struct EdgeSamples {
+  std::vector<double> params;      // increasing, first and last the edge's range
+  std::vector<uint32_t> pointIds;  // one per parameter; the ends are the vertices' points
+  bool degenerated = false;        // a pole: every id is the vertex's
+  double maxChordDeviation = 0.0;  // measured (see discretiseEdge)
+};
+
+struct SharedPoints {
+  std::vector<glm::dvec3> positions;
+  std::vector<double> tolerances;  // the vertex's or edge's OCCT tolerance
+};
+
+// The rule: a straight edge is one segment; any other starts as 4 segments (a closed edge
+// then bounds an area) and a segment [a, b] is halved while the curve, sampled at 15 interior
+// parameters, lies farther than delta from the chord. The deviation is measured, not proven:
+// a wiggle between samples of a segment can escape it (docs/cad.md). A degenerated edge (a
+// point in 3D, a segment in uv) gets 8 segments, all at its vertex's point.
+// The edge is taken FORWARD. The vertex with index k in `vertices` is shared point k − 1 (the
+// vertices come first in SharedPoints); the edge's interior samples are appended to `points`.
+EdgeSamples discretiseEdge(const TopoDS_Shape& edge, double delta,
+                           const TopTools_IndexedMapOfShape& vertices, SharedPoints& points);
+
+}  // namespace tessera

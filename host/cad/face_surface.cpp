@@ -1,0 +1,222 @@
+// Face surface → non-periodic NURBS → rational Bézier pieces, and the (u, v) → (u', v') map.
+#include "cad/face_surface.h"
+
+#include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomConvert.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <algorithm>
+#include <cmath>
+
+#include "bspline/bspline.h"
+#include "cad/detail/number_text.h"
+#include "geometry/bezier.h"
+
+namespace tessera {
+namespace {
+
+glm::dvec3 toGlm(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
+
+// The flat knot vector (each knot repeated by its multiplicity).
+std::vector<double> flatKnots(const Handle(Geom_BSplineSurface)& s, bool alongU) {
+  const int count = alongU ? s->NbUPoles() + s->UDegree() + 1 : s->NbVPoles() + s->VDegree() + 1;
+  TColStd_Array1OfReal seq(1, count);
+  if (alongU) s->UKnotSequence(seq); else s->VKnotSequence(seq);
+  return std::vector<double>(seq.begin(), seq.end());
+}
+
+// Knot insertion is linear in the control points, so the Bézier pieces of the homogeneous
+// surface (w·P, w) are those of (w·P) and of (w) taken apart; dividing gives the rational pieces.
+std::vector<BezierPatchPiece> rationalPieces(const Handle(Geom_BSplineSurface)& s) {
+  BSplineSurface weighted, weights;
+  weighted.degreeU = weights.degreeU = s->UDegree();
+  weighted.degreeV = weights.degreeV = s->VDegree();
+  weighted.knotsU = weights.knotsU = flatKnots(s, true);
+  weighted.knotsV = weights.knotsV = flatKnots(s, false);
+  weighted.countU = weights.countU = s->NbUPoles();
+  weighted.countV = weights.countV = s->NbVPoles();
+  const bool rational = s->IsURational() || s->IsVRational();
+  for (int i = 1; i <= s->NbUPoles(); ++i)
+    for (int j = 1; j <= s->NbVPoles(); ++j) {
+      const double w = s->Weight(i, j);
+      weighted.cp.push_back(toGlm(s->Pole(i, j)) * w);
+      weights.cp.push_back({w, 0.0, 0.0});
+    }
+  std::vector<BezierPatchPiece> pieces = bezierPatches(weighted);
+  const std::vector<BezierPatchPiece> weightPieces = bezierPatches(weights);
+  for (size_t k = 0; k < pieces.size(); ++k) {
+    BezierPatch& patch = pieces[k].patch;
+    if (rational) patch.weights.resize(patch.cp.size());
+    for (size_t c = 0; c < patch.cp.size(); ++c) {
+      const double w = weightPieces[k].patch.cp[c].x;
+      if (!(w > 0.0)) throw CadFaceError("a NURBS weight is not positive after knot insertion");
+      patch.cp[c] /= w;
+      if (rational) patch.weights[c] = w;
+    }
+  }
+  return pieces;
+}
+
+double poleDiagonal(const Handle(Geom_BSplineSurface)& s) {
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (int i = 1; i <= s->NbUPoles(); ++i)
+    for (int j = 1; j <= s->NbVPoles(); ++j) {
+      lo = glm::min(lo, toGlm(s->Pole(i, j)));
+      hi = glm::max(hi, toGlm(s->Pole(i, j)));
+    }
+  return glm::length(hi - lo);
+}
+
+// The distinct knot whose iso-line is longest: f (or g) is solved on it, away from poles.
+double longestIsoKnot(const FaceSurface& f, bool knotAlongU) {
+  const Handle(Geom_BSplineSurface)& s = f.nurbs;
+  double u0, u1, v0, v1;
+  s->Bounds(u0, u1, v0, v1);
+  // The domain's knots only: a surface made non-periodic keeps knots outside its bounds.
+  const int first = knotAlongU ? s->FirstUKnotIndex() : s->FirstVKnotIndex();
+  const int last = knotAlongU ? s->LastUKnotIndex() : s->LastVKnotIndex();
+  double best = -1.0, bestKnot = knotAlongU ? u0 : v0;
+  for (int k = first; k <= last; ++k) {
+    const double knot = knotAlongU ? s->UKnot(k) : s->VKnot(k);
+    double length = 0.0;
+    gp_Pnt previous;
+    for (int i = 0; i <= 8; ++i) {
+      const double t = knotAlongU ? v0 + (v1 - v0) * i / 8.0 : u0 + (u1 - u0) * i / 8.0;
+      gp_Pnt p = knotAlongU ? f.original->Value(knot, t) : f.original->Value(t, knot);
+      if (i > 0) length += p.Distance(previous);
+      previous = p;
+    }
+    if (length > best) best = length, bestKnot = knot;
+  }
+  return bestKnot;
+}
+
+void shiftKnots(const Handle(Geom_BSplineSurface)& s, bool alongU, double shift) {
+  double n0, n1, m0, m1;
+  s->Bounds(n0, n1, m0, m1);
+  if (std::abs(shift) <= 1e-9 * std::max({1.0, std::abs(n0), std::abs(n1), std::abs(m0), std::abs(m1)}))
+    return;
+  TColStd_Array1OfReal knots(1, alongU ? s->NbUKnots() : s->NbVKnots());
+  if (alongU) s->UKnots(knots); else s->VKnots(knots);
+  for (double& k : knots) k += shift;
+  if (alongU) s->SetUKnots(knots); else s->SetVKnots(knots);
+}
+
+}  // namespace
+
+glm::dvec2 FaceSurface::mapUv(const gp_Pnt2d& uv) const {
+  if (!reparametrised) return {uv.X(), uv.Y()};
+  // Gauss–Newton on |N(u', vRef) − S(u, vRef)|² (and likewise for v): vRef is a knot, which
+  // both parametrisations share, so the iso-lines are the same curve.
+  auto solve = [&](double t, bool alongU) {
+    const gp_Pnt target = alongU ? original->Value(t, vRef) : original->Value(uRef, t);
+    double lo, hi, c0, c1;
+    if (alongU) nurbs->Bounds(lo, hi, c0, c1); else nurbs->Bounds(c0, c1, lo, hi);
+    const double width = hi - lo;
+    double x = t;
+    for (int iteration = 0; iteration < 40; ++iteration) {
+      gp_Pnt p;
+      gp_Vec du, dv;
+      nurbs->D1(alongU ? x : uRef, alongU ? vRef : x, p, du, dv);
+      const gp_Vec d = alongU ? du : dv;
+      const double dd = d.SquareMagnitude();
+      if (dd == 0.0) break;
+      // A step never leaves the domain by more than its width (the map fixes the ends).
+      const double step = gp_Vec(p, target).Dot(d) / dd;
+      x = std::clamp(x + step, lo - width, hi + width);
+      if (std::abs(step) <= 1e-15 * std::max(1.0, std::abs(x))) break;
+    }
+    return x;
+  };
+  return {solve(uv.X(), true), solve(uv.Y(), false)};
+}
+
+FaceSurface convertFaceSurface(const TopoDS_Face& face) {
+  FaceSurface result;
+  result.original = BRep_Tool::Surface(face);
+  if (result.original.IsNull()) throw CadFaceError("the face has no surface");
+  Handle(Geom_Surface) basis = result.original;
+  while (auto trimmed = Handle(Geom_RectangularTrimmedSurface)::DownCast(basis))
+    basis = trimmed->BasisSurface();
+  result.original = basis;
+
+  double u0, u1, v0, v1;
+  BRepTools::UVBounds(face, u0, u1, v0, v1);
+  double a, b, c, d;
+  basis->Bounds(a, b, c, d);
+  if (!basis->IsUPeriodic()) u0 = std::max(u0, a), u1 = std::min(u1, b);
+  if (!basis->IsVPeriodic()) v0 = std::max(v0, c), v1 = std::min(v1, d);
+  // A face that wraps a whole period can come out a hair wider than it (pcurve tolerance);
+  // Geom_RectangularTrimmedSurface would then take the excess modulo the period and keep a
+  // sliver. One period exactly; the hair lies outside the pieces' domain.
+  if (basis->IsUPeriodic()) u1 = std::min(u1, u0 + basis->UPeriod());
+  if (basis->IsVPeriodic()) v1 = std::min(v1, v0 + basis->VPeriod());
+  // A sliver whose wires run back and forth along one curve has no area to mesh.
+  if (!(u1 - u0 > 1e-12 * std::max(1.0, std::abs(u0))) || !(v1 - v0 > 1e-12 * std::max(1.0, std::abs(v0))))
+    throw CadFaceError("zero-area face: its uv bounds are [" + cad_detail::numberText(u0) + ", " +
+                       cad_detail::numberText(u1) + "] × [" + cad_detail::numberText(v0) + ", " + cad_detail::numberText(v1) + "]");
+
+  Handle(Geom_Surface) bounded = new Geom_RectangularTrimmedSurface(basis, u0, u1, v0, v1);
+  result.nurbs = GeomConvert::SurfaceToBSplineSurface(bounded);
+  if (result.nurbs.IsNull()) throw CadFaceError("GeomConvert gave no NURBS form");
+  if (result.nurbs->IsUPeriodic()) result.nurbs->SetUNotPeriodic();
+  if (result.nurbs->IsVPeriodic()) result.nurbs->SetVNotPeriodic();
+  // Geom_RectangularTrimmedSurface moves a periodic range into the surface's first period;
+  // the pcurves stay where they were, so move the knots back by that whole number of periods.
+  double n0, n1, m0, m1;
+  result.nurbs->Bounds(n0, n1, m0, m1);
+  shiftKnots(result.nurbs, true, u0 - n0);
+  shiftKnots(result.nurbs, false, v0 - m0);
+  if (result.nurbs->UDegree() > kMaxDegree || result.nurbs->VDegree() > kMaxDegree)
+    throw CadFaceError("surface degree " + std::to_string(result.nurbs->UDegree()) + "×" +
+                       std::to_string(result.nurbs->VDegree()) + " is above 7");
+
+  // Same parametrisation? Compare at a grid of interior points; if not, solve f and g and
+  // check that they reproduce the surface (separability, see the header).
+  const double scale = std::max(1e-300, poleDiagonal(result.nurbs));
+  result.nurbs->Bounds(n0, n1, m0, m1);
+  // Fractions that are neither knots nor span middles of an even split, where the angle and
+  // the rational parameter agree.
+  const double fractions[] = {0.0613, 0.2371, 0.4159, 0.5873, 0.7741, 0.9387};
+  double identityGap = 0.0;
+  for (double fu : fractions)
+    for (double fv : fractions) {
+      const double u = n0 + (n1 - n0) * fu, v = m0 + (m1 - m0) * fv;
+      identityGap = std::max(identityGap, result.nurbs->Value(u, v).Distance(basis->Value(u, v)));
+    }
+  if (identityGap > 1e-10 * scale) {
+    result.reparametrised = true;
+    result.uRef = longestIsoKnot(result, true);
+    result.vRef = longestIsoKnot(result, false);
+    double gap = 0.0;
+    for (double fu : fractions)
+      for (double fv : fractions) {
+        const double u = n0 + (n1 - n0) * fu, v = m0 + (m1 - m0) * fv;
+        const glm::dvec2 mapped = result.mapUv(gp_Pnt2d(u, v));
+        gap = std::max(gap, result.nurbs->Value(mapped.x, mapped.y).Distance(basis->Value(u, v)));
+      }
+    if (gap > 1e-9 * scale)
+      throw CadFaceError("the NURBS form's parameters are not a separable change of the face's (off by " +
+                         cad_detail::numberText(gap) + ")");
+  }
+  result.pieces = rationalPieces(result.nurbs);
+  return result;
+}
+
+glm::dvec3 piecesPoint(const std::vector<BezierPatchPiece>& pieces, glm::dvec2 uv) {
+  const BezierPatchPiece* best = nullptr;
+  double bestOutside = 1e300;
+  for (const auto& piece : pieces) {
+    const double du = std::max({piece.u0 - uv.x, uv.x - piece.u1, 0.0});
+    const double dv = std::max({piece.v0 - uv.y, uv.y - piece.v1, 0.0});
+    if (du + dv < bestOutside) bestOutside = du + dv, best = &piece;
+    if (bestOutside == 0.0) break;
+  }
+  if (!best) return glm::dvec3(0.0);
+  const double s = (uv.x - best->u0) / (best->u1 - best->u0);
+  const double r = (uv.y - best->v0) / (best->v1 - best->v0);
+  return patchPoint(best->patch, s, r);
+}
+
+}  // namespace tessera

@@ -1,0 +1,50 @@
+// A B-rep face's surface as Tessera's rational Bézier pieces (docs/cad.md, "Surfaces").
+// The face's surface is converted to a non-periodic NURBS over the face's uv bounds
+// (GeomConvert: exact rational forms for planes, cylinders, cones, spheres, tori, surfaces of
+// revolution and extrusion), then cut into rational Bézier pieces by Tessera's knot insertion
+// (bspline/to_bezier.h) applied to the weighted points (w·x, w·y, w·z) and the weights.
+//
+// Exact rational forms of circles are not parametrised by angle, so for a converted analytic
+// surface the NURBS parameter (u', v') differs from the face's (u, v) inside each span. OCCT
+// converts these surfaces as tensor products, so the change is separable: u' = f(u),
+// v' = g(v), with f and g fixing the knots. mapUv finds f and g by Newton's method on one
+// iso-line per direction and the conversion checks the result at interior points.
+#pragma once
+#include <Geom_BSplineSurface.hxx>
+#include <Geom_Surface.hxx>
+#include <TopoDS_Face.hxx>
+#include <gp_Pnt2d.hxx>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "bspline/to_bezier.h"
+
+namespace tessera {
+
+// Why a face could not be converted; toTrimmedModel adds the file and the face.
+class CadFaceError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct FaceSurface {
+  Handle(Geom_Surface) original;      // the face's surface, located (BRep_Tool::Surface)
+  Handle(Geom_BSplineSurface) nurbs;  // non-periodic, over the face's uv bounds
+  bool reparametrised = false;        // true when (u', v') ≠ (u, v) (a converted analytic surface)
+  double uRef = 0.0, vRef = 0.0;      // the iso-lines f and g are solved on (see mapUv)
+  std::vector<BezierPatchPiece> pieces;
+
+  // The face's (u, v) (its pcurves' parameters) → the pieces' (u', v').
+  glm::dvec2 mapUv(const gp_Pnt2d& uv) const;
+};
+
+// Throws CadFaceError (a degree above 7, a surface GeomConvert cannot convert exactly, a
+// reparametrisation that does not check out) or lets Standard_Failure through.
+FaceSurface convertFaceSurface(const TopoDS_Face& face);
+
+// The point of the pieces at (u', v'): the piece whose rectangle holds it (the nearest at the
+// edges of the domain).
+glm::dvec3 piecesPoint(const std::vector<BezierPatchPiece>& pieces, glm::dvec2 uv);
+
+}  // namespace tessera

@@ -1,0 +1,54 @@
+// B-rep shape → TrimmedModel (host/trim/trimmed_face.h), the input of the trimmed-face mesher
+// (docs/cad.md). Every face's surface becomes rational Bézier pieces (face_surface.h); every
+// edge is discretised once to δ (edge_samples.h) and its samples are shared points; each
+// face's wires become loops of those points, mapped to uv through the face's own pcurves.
+#pragma once
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <string>
+#include <vector>
+
+#include "cad/cad_file.h"
+#include "cad/edge_samples.h"
+#include "trim/trimmed_face.h"
+
+namespace tessera {
+
+struct CadFaceFailure {
+  uint32_t faceIndex = 0;
+  std::string label;    // "face 3 (#345 AdvancedFace)"
+  std::string reason;
+  std::string message;  // "<file>: face 3 (#345 AdvancedFace): <reason>"
+};
+
+// An edge whose 3D curve and pcurve on a face lie farther apart than the edge's tolerance claims
+// (a file's SameParameter flag can be wrong): the face's boundary points (the edge's shared 3D
+// samples) are then off the face's surface by up to `gap`. The face is kept; the gap is told.
+struct CadEdgeWarning {
+  uint32_t faceIndex = 0;
+  uint32_t edgeIndex = 0;
+  double gap = 0.0;        // the largest |S(pcurve(t)) − C(t)| over the edge's samples
+  double tolerance = 0.0;  // what OCCT's tolerance said
+  std::string message;
+};
+
+struct CadImport {
+  TrimmedModel model;                  // the faces that converted
+  std::vector<CadFaceFailure> failures;  // the faces that did not, never dropped silently
+  std::vector<CadEdgeWarning> warnings;  // edges off their faces' surfaces beyond tolerance
+  // The B-rep's maps (index k ↔ OCCT's index k + 1): faces in TrimmedFace::faceIndex order.
+  TopTools_IndexedMapOfShape faces, edges, vertices;
+  std::vector<EdgeSamples> edgeSamples;  // per edge of `edges`
+  std::vector<double> pointTolerances;   // per shared point: its vertex's or edge's tolerance
+  double delta = 0.0;
+  double maxChordDeviation = 0.0;        // measured over every edge
+  size_t loopsReversed = 0;              // loops whose uv orientation had to be flipped
+};
+
+// δ by default: 0.1% of the shape's bounding-box diagonal (the CLI's rule T default).
+double defaultCadTolerance(const TopoDS_Shape& shape);
+
+// Converts every face; a face that fails is listed in failures (with the file's path and the
+// face's index and entity) and the rest go on. Throws ArgumentError unless delta > 0.
+CadImport toTrimmedModel(const CadFile& file, double delta);
+
+}  // namespace tessera
