@@ -1,0 +1,322 @@
+// CAD import (issue 17, docs/cad.md): STEP/IGES/BRep → TrimmedModel, checked against OCCT.
+#ifdef TESSERA_HAVE_CAD
+#include <catch2/catch.hpp>
+
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopTools_ListOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <unistd.h>
+
+#include "cad/cad_file.h"
+#include "cad/face_surface.h"
+#include "cad/to_trimmed.h"
+#include "cad_test_shapes.h"
+#include "tessera/errors.h"
+
+using namespace tessera;
+
+namespace {
+
+const char* kIdfLibrary = "/usr/share/freecad/Mod/Idf/Idflibs";
+
+struct ImportFigures {
+  size_t faces = 0, edges = 0, points = 0, failures = 0, loopsReversed = 0;
+  double pieceGap = 0.0;  // pieces vs the OCCT surface, at the same face parameters
+  double loopGap = 0.0;   // loop uv through the pieces vs the shared point
+  size_t loopOutside = 0; // loop points farther than their OCCT tolerance (+ 1e-6 of the size)...
+  size_t loopUnwarned = 0;  // ...and of those, the ones no CadEdgeWarning told of
+  size_t warnings = 0, zeroArea = 0;
+  double chord = 0.0;     // the edges' measured chord deviation
+  double delta = 0.0;
+};
+
+double diagonal(const TopoDS_Shape& shape) {
+  Bnd_Box box;
+  BRepBndLib::Add(shape, box);
+  return std::sqrt(box.SquareExtent());
+}
+
+double signedArea(const std::vector<glm::dvec2>& uv) {
+  double twice = 0.0;
+  for (size_t k = 0; k < uv.size(); ++k)
+    twice += uv[k].x * uv[(k + 1) % uv.size()].y - uv[k].y * uv[(k + 1) % uv.size()].x;
+  return 0.5 * twice;
+}
+
+using IdPair = std::pair<uint32_t, uint32_t>;
+IdPair unordered(uint32_t a, uint32_t b) { return {std::min(a, b), std::max(a, b)}; }
+
+// Everything the import promises, checked against OCCT's own answers; returns the figures.
+ImportFigures checkImport(const CadFile& file) {
+  const double size = diagonal(file.shape);
+  const double delta = defaultCadTolerance(file.shape);
+  const CadImport in = toTrimmedModel(file, delta);
+  ImportFigures figures;
+  figures.delta = delta;
+  figures.faces = in.faces.Extent();
+  figures.edges = in.edges.Extent();
+  figures.points = in.model.sharedPoints.size();
+  figures.failures = in.failures.size();
+  figures.loopsReversed = in.loopsReversed;
+  figures.chord = in.maxChordDeviation;
+  // Zero-area slivers (wires back and forth along one curve) are the one accepted failure.
+  std::set<uint32_t> failed;
+  for (const auto& failure : in.failures) {
+    std::printf("  %s\n", failure.message.c_str());
+    failed.insert(failure.faceIndex);
+    if (failure.reason.rfind("zero-area face", 0) == 0) ++figures.zeroArea;
+  }
+  CHECK(figures.zeroArea == in.failures.size());
+  figures.warnings = in.warnings.size();
+  std::set<std::pair<uint32_t, uint32_t>> warnedPoints;  // (face, point id) on a warned edge
+  for (const auto& warning : in.warnings) {
+    std::printf("  warning: %s\n", warning.message.c_str());
+    for (uint32_t id : in.edgeSamples[warning.edgeIndex].pointIds) warnedPoints.insert({warning.faceIndex, id});
+  }
+  CHECK(in.model.faces.size() + in.failures.size() == static_cast<size_t>(in.faces.Extent()));
+  CHECK(in.maxChordDeviation <= delta);
+
+  // Segments of the edges' samples: each loop step must be one of them (closed loops of edges).
+  std::set<IdPair> edgeSegments;
+  for (const auto& samples : in.edgeSamples)
+    for (size_t k = 0; k + 1 < samples.pointIds.size(); ++k)
+      edgeSegments.insert(unordered(samples.pointIds[k], samples.pointIds[k + 1]));
+  std::map<IdPair, std::set<uint32_t>> facesOfSegment;
+
+  for (const TrimmedFace& face : in.model.faces) {
+    const TopoDS_Face source = TopoDS::Face(in.faces(static_cast<int>(face.faceIndex) + 1));
+    CHECK(face.reversed == (source.Orientation() == TopAbs_REVERSED));
+    // Pieces against OCCT's surface at a grid of the face's own (u, v).
+    const FaceSurface surface = convertFaceSurface(TopoDS::Face(source.Oriented(TopAbs_FORWARD)));
+    double u0, u1, v0, v1;
+    surface.nurbs->Bounds(u0, u1, v0, v1);
+    for (int i = 0; i <= 4; ++i)
+      for (int j = 0; j <= 4; ++j) {
+        const gp_Pnt2d uv(u0 + (u1 - u0) * i / 4.0, v0 + (v1 - v0) * j / 4.0);
+        const gp_Pnt p = surface.original->Value(uv.X(), uv.Y());
+        figures.pieceGap = std::max(figures.pieceGap,
+            glm::length(piecesPoint(face.pieces, surface.mapUv(uv)) - glm::dvec3(p.X(), p.Y(), p.Z())));
+      }
+    // Loops: closed chains of edge segments, outer counter-clockwise, holes clockwise, every
+    // point's uv on the pieces at its shared point (within the OCCT tolerance of its edge).
+    size_t outer = 0;
+    for (size_t k = 1; k < face.loops.size(); ++k)
+      if (std::abs(signedArea(face.loops[k].uv)) > std::abs(signedArea(face.loops[outer].uv))) outer = k;
+    for (size_t k = 0; k < face.loops.size(); ++k) {
+      const TrimLoop& loop = face.loops[k];
+      REQUIRE(loop.uv.size() == loop.pointIds.size());
+      CHECK((signedArea(loop.uv) > 0.0) == (k == outer));
+      for (size_t p = 0; p < loop.uv.size(); ++p) {
+        const uint32_t a = loop.pointIds[p], b = loop.pointIds[(p + 1) % loop.uv.size()];
+        const IdPair segment = unordered(a, b);
+        if (!edgeSegments.count(segment)) {
+          UNSCOPED_INFO(face.label << ": loop step " << a << " → " << b << " is no edge segment");
+          CHECK(edgeSegments.count(segment) == 1);
+        }
+        facesOfSegment[segment].insert(face.faceIndex);
+        const double gap = glm::length(piecesPoint(face.pieces, loop.uv[p]) - in.model.sharedPoints[a]);
+        figures.loopGap = std::max(figures.loopGap, gap);
+        if (gap > in.pointTolerances[a] + 1e-6 * size) {
+          ++figures.loopOutside;
+          if (!warnedPoints.count({face.faceIndex, a})) ++figures.loopUnwarned;
+        }
+      }
+    }
+  }
+  CHECK(figures.pieceGap <= 1e-9 * size);
+  CHECK(figures.loopUnwarned == 0);
+
+  // Each non-degenerate edge's first segment is used by exactly the faces OCCT says use it.
+  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
+  TopExp::MapShapesAndAncestors(file.shape, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+  size_t mismatched = 0;
+  for (int e = 1; e <= in.edges.Extent(); ++e) {
+    const EdgeSamples& samples = in.edgeSamples[static_cast<size_t>(e - 1)];
+    if (samples.degenerated) continue;
+    std::set<uint32_t> expected;
+    if (edgeFaces.Contains(in.edges(e)))
+      for (const auto& f : edgeFaces.FindFromKey(in.edges(e)))
+        if (!failed.count(static_cast<uint32_t>(in.faces.FindIndex(f) - 1)))
+          expected.insert(static_cast<uint32_t>(in.faces.FindIndex(f) - 1));
+    const IdPair first = unordered(samples.pointIds[0], samples.pointIds[1]);
+    const std::set<uint32_t> used = facesOfSegment.count(first) ? facesOfSegment.at(first) : std::set<uint32_t>{};
+    if (used != expected) ++mismatched;
+  }
+  CHECK(mismatched == 0);
+  return figures;
+}
+
+void printFigures(const std::string& name, const ImportFigures& f, double ms) {
+  std::printf("cad import %-30s faces %4zu  edges %4zu  points %6zu  failed %zu (zero-area %zu)  "
+              "reversed loops %zu  δ %.3g  chord %.3g  piece gap %.2e  loop gap %.2e (%zu beyond "
+              "tolerance, %zu edge warnings)  %.0f ms\n",
+              name.c_str(), f.faces, f.edges, f.points, f.failures, f.zeroArea, f.loopsReversed,
+              f.delta, f.chord, f.pieceGap, f.loopGap, f.loopOutside, f.warnings, ms);
+}
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::vector<std::string> idfFiles() {
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(kIdfLibrary)) {
+    const std::string ext = entry.path().extension().string();
+    if (ext == ".stp" || ext == ".igs") files.push_back(entry.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+struct ScratchDir {
+  std::filesystem::path path;
+  ScratchDir() {
+    path = std::filesystem::temp_directory_path() / ("tessera_test_cad_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(path);
+  }
+  ~ScratchDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path, ec);
+  }
+};
+
+}  // namespace
+
+TEST_CASE("cad: shapes built with OCCT convert face by face, exactly and watertight", "[cad]") {
+  for (const auto& named : test::occtTestShapes()) {
+    INFO(named.name);
+    const auto start = std::chrono::steady_clock::now();
+    const ImportFigures figures = checkImport(CadFile{named.name, named.shape, {}});
+    printFigures(named.name, figures, millisecondsSince(start));
+    CHECK(figures.faces > 0);
+  }
+}
+
+TEST_CASE("cad: every model of FreeCAD's IDF library imports, every face converted", "[cad]") {
+  const std::vector<std::string> files = idfFiles();
+  if (files.empty()) {
+    WARN("no FreeCAD IDF library at " << kIdfLibrary << " (Debian freecad-common): skipped");
+    return;
+  }
+  ImportFigures total;
+  const auto all = std::chrono::steady_clock::now();
+  for (const auto& path : files) {
+    INFO(path);
+    const auto start = std::chrono::steady_clock::now();
+    const ImportFigures f = checkImport(readCadFile(path));
+    printFigures(std::filesystem::path(path).filename().string(), f, millisecondsSince(start));
+    total.faces += f.faces, total.edges += f.edges, total.points += f.points;
+    total.failures += f.failures, total.loopsReversed += f.loopsReversed, total.loopOutside += f.loopOutside;
+    total.warnings += f.warnings, total.zeroArea += f.zeroArea;
+    total.pieceGap = std::max(total.pieceGap, f.pieceGap), total.loopGap = std::max(total.loopGap, f.loopGap);
+    total.chord = std::max(total.chord, f.chord);
+  }
+  printFigures("IDF library (" + std::to_string(files.size()) + " files)", total, millisecondsSince(all));
+  CHECK(files.size() == 32);
+}
+
+TEST_CASE("cad: an assembly gives every instance at its place", "[cad]") {
+  const std::string dir = kIdfLibrary;
+  if (!std::filesystem::exists(dir + "/I22_2_5_16withEPL22_6_16.stp")) {
+    WARN("no FreeCAD IDF library: skipped");
+    return;
+  }
+  const CadFile both = readCadFile(dir + "/I22_2_5_16withEPL22_6_16.stp");
+  const CadFile first = readCadFile(dir + "/I22_2_5_16.stp");
+  const CadFile second = readCadFile(dir + "/EPL22_6_16.stp");
+  TopTools_IndexedMapOfShape f0, f1, f2, solids;
+  TopExp::MapShapes(both.shape, TopAbs_FACE, f0);
+  TopExp::MapShapes(first.shape, TopAbs_FACE, f1);
+  TopExp::MapShapes(second.shape, TopAbs_FACE, f2);
+  TopExp::MapShapes(both.shape, TopAbs_SOLID, solids);
+  std::printf("cad assembly: %d faces = %d + %d, %d solids, diagonals %.3f vs %.3f and %.3f\n",
+              f0.Extent(), f1.Extent(), f2.Extent(), solids.Extent(), diagonal(both.shape),
+              diagonal(first.shape), diagonal(second.shape));
+  CHECK(f0.Extent() == f1.Extent() + f2.Extent());
+  REQUIRE(solids.Extent() >= 2);
+  // The instances are placed apart: their boxes differ, and the whole is larger than either.
+  Bnd_Box a, b;
+  BRepBndLib::Add(solids(1), a);
+  BRepBndLib::Add(solids(solids.Extent()), b);
+  CHECK(a.CornerMin().Distance(b.CornerMin()) + a.CornerMax().Distance(b.CornerMax()) > 1e-3);
+  CHECK(diagonal(both.shape) > std::max(diagonal(first.shape), diagonal(second.shape)) - 1e-9);
+  const CadImport in = toTrimmedModel(both, defaultCadTolerance(both.shape));
+  CHECK(in.failures.empty());
+  CHECK(in.model.faces.size() == static_cast<size_t>(f0.Extent()));
+}
+
+TEST_CASE("cad: face labels carry the STEP entity", "[cad]") {
+  const std::string path = std::string(kIdfLibrary) + "/SOT23.stp";
+  if (!std::filesystem::exists(path)) return;
+  const CadImport in = toTrimmedModel(readCadFile(path), 0.01);
+  REQUIRE(!in.model.faces.empty());
+  std::printf("cad label: %s\n", in.model.faces.front().label.c_str());
+  CHECK(in.model.faces.front().label.rfind("face 0 (#", 0) == 0);
+  CHECK(in.model.faces.front().label.find("FACE)") != std::string::npos);
+}
+
+TEST_CASE("cad: unreadable files are refused naming the file", "[cad]") {
+  ScratchDir dir;
+  const std::string garbage = (dir.path / "garbage.step").string();
+  std::ofstream(garbage) << "this is not ISO-10303-21\n";
+  const std::string unknown = (dir.path / "model.xyz").string();
+  std::ofstream(unknown) << "x";
+  const std::string missing = (dir.path / "missing.igs").string();
+  for (const std::string& path : {garbage, unknown, missing}) {
+    INFO(path);
+    try {
+      readCadFile(path);
+      FAIL("no error");
+    } catch (const InputError& e) {
+      std::printf("cad refused: %s\n", e.what());
+      CHECK(e.file() == path);
+      CHECK(std::string(e.what()).find(path) != std::string::npos);
+    }
+  }
+}
+
+TEST_CASE("cad: a .BREP file reads whatever the extension's case", "[cad]") {
+  ScratchDir dir;
+  const std::string path = (dir.path / "box.BREP").string();
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(1.0, 2.0, 3.0).Shape();
+  REQUIRE(BRepTools::Write(box, path.c_str()));
+  const CadFile file = readCadFile(path);
+  const CadImport in = toTrimmedModel(file, 0.01);
+  CHECK(in.model.faces.size() == 6);
+  CHECK(in.failures.empty());
+  CHECK(in.model.sharedPoints.size() == 8);  // a box's edges are straight: vertices only
+}
+
+TEST_CASE("cad: a face that fails is reported, the others kept", "[cad]") {
+  TopoDS_Compound both;
+  BRep_Builder builder;
+  builder.MakeCompound(both);
+  builder.Add(both, test::degreeEightFace());
+  builder.Add(both, BRepPrimAPI_MakeBox(1.0, 1.0, 1.0).Shape());
+  const CadImport in = toTrimmedModel(CadFile{"compound.step", both, {}}, 0.01);
+  REQUIRE(in.failures.size() == 1);
+  std::printf("cad failure: %s\n", in.failures[0].message.c_str());
+  CHECK(in.failures[0].faceIndex == 0);
+  CHECK(in.failures[0].message.find("compound.step: face 0: ") == 0);
+  CHECK(in.failures[0].reason.find("above 7") != std::string::npos);
+  CHECK(in.model.faces.size() == 6);
+  CHECK_THROWS_AS(toTrimmedModel(CadFile{"x", both, {}}, 0.0), ArgumentError);
+}
+#endif
