@@ -18,6 +18,8 @@ packages=(
   # bench/: the Open CASCADE peer (bench_occt), JSON merging and the plot of scripts/bench.sh
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
   libocct-visualization-dev jq gnuplot-nox
+  # host/cad/ (tessera_cad): the STEP and IGES readers; its tests read FreeCAD's IDF library
+  libocct-data-exchange-dev freecad-common
   # bench/bench_reduction: SISL's curve data reduction (s1940), the peer of the reduction
   libsisl-dev
 )

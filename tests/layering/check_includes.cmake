@@ -4,7 +4,9 @@
 #    not <vulkan/...>, not <volk.h>, not the generated SPIR-V headers (*_comp.h);
 # 2. no file sits directly in host/ except README.md;
 # 3. a core stage never includes the CLI, the experiments or the render layer;
-# 4. GLFW is the viewer's alone: only host/viewer/window_glfw.cpp includes it.
+# 4. GLFW is the viewer's alone: only host/viewer/window_glfw.cpp includes it;
+# 5. Open CASCADE is the CAD stage's alone (tessera_cad): only host/cad/ includes its headers
+#    (<*.hxx>), and no core stage includes host/cad/ (rule 1's list).
 set(stages common geometry eval bspline quadtree mesh division reduction loop realtime trim)
 set(violations "")
 foreach(stage ${stages})
@@ -15,7 +17,7 @@ foreach(stage ${stages})
     endif()
     file(STRINGS "${src}" includes REGEX "^[ \t]*#[ \t]*include")
     foreach(line ${includes})
-      if(line MATCHES "\"vk/|<vulkan/|<volk\\.h>|_comp\\.h\"|\"cli/|\"experiments/|\"render/")
+      if(line MATCHES "\"vk/|<vulkan/|<volk\\.h>|_comp\\.h\"|\"cli/|\"experiments/|\"render/|\"cad/")
         file(RELATIVE_PATH rel "${SOURCE_DIR}" "${src}")
         string(APPEND violations "  ${rel}: ${line}\n")
       endif()
@@ -41,7 +43,17 @@ foreach(src ${all_sources})
     string(APPEND violations "  ${rel}: includes GLFW (only host/viewer/window_glfw.cpp may)\n")
   endif()
 endforeach()
+foreach(src ${all_sources})
+  if(src MATCHES "/host/cad/")
+    continue()
+  endif()
+  file(STRINGS "${src}" includes REGEX "^[ \t]*#[ \t]*include[ \t]*<[A-Za-z0-9_]+\\.hxx>")
+  if(includes)
+    file(RELATIVE_PATH rel "${SOURCE_DIR}" "${src}")
+    string(APPEND violations "  ${rel}: includes Open CASCADE (only host/cad/ may)\n")
+  endif()
+endforeach()
 if(violations)
   message(FATAL_ERROR "layering violations (docs/architecture.md):\n${violations}")
 endif()
-message(STATUS "layering: core stages include no Vulkan, CLI, experiments or render code; host/ holds only folders; GLFW only in the viewer's window")
+message(STATUS "layering: core stages include no Vulkan, CLI, experiments or render code; host/ holds only folders; GLFW only in the viewer's window; Open CASCADE only in host/cad/")
