@@ -22,12 +22,12 @@
 #include <fstream>
 #include <map>
 #include <set>
-#include <unistd.h>
 
 #include "cad/cad_file.h"
 #include "cad/face_surface.h"
 #include "cad/to_trimmed.h"
 #include "cad_test_shapes.h"
+#include "scratch_dir.h"
 #include "tessera/errors.h"
 
 using namespace tessera;
@@ -185,18 +185,6 @@ std::vector<std::string> idfFiles() {
   return files;
 }
 
-struct ScratchDir {
-  std::filesystem::path path;
-  ScratchDir() {
-    path = std::filesystem::temp_directory_path() / ("tessera_test_cad_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(path);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path, ec);
-  }
-};
-
 }  // namespace
 
 TEST_CASE("cad: shapes built with OCCT convert face by face, exactly and watertight", "[cad]") {
@@ -282,7 +270,7 @@ TEST_CASE("cad: face labels carry the STEP entity", "[cad]") {
 }
 
 TEST_CASE("cad: unreadable files are refused naming the file", "[cad]") {
-  ScratchDir dir;
+  test::ScratchDir dir("cad");
   const std::string garbage = (dir.path / "garbage.step").string();
   std::ofstream(garbage) << "this is not ISO-10303-21\n";
   const std::string unknown = (dir.path / "model.xyz").string();
@@ -302,7 +290,7 @@ TEST_CASE("cad: unreadable files are refused naming the file", "[cad]") {
 }
 
 TEST_CASE("cad: a .BREP file reads whatever the extension's case", "[cad]") {
-  ScratchDir dir;
+  test::ScratchDir dir("cad");
   const std::string path = (dir.path / "box.BREP").string();
   const TopoDS_Shape box = BRepPrimAPI_MakeBox(1.0, 2.0, 3.0).Shape();
   REQUIRE(BRepTools::Write(box, path.c_str()));
