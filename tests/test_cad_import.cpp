@@ -29,6 +29,7 @@
 #include "cad_test_shapes.h"
 #include "scratch_dir.h"
 #include "tessera/errors.h"
+#include "trim/trim_classifier.h"
 
 using namespace tessera;
 
@@ -160,6 +161,8 @@ ImportFigures checkImport(const CadFile& file) {
     if (used != expected) ++mismatched;
   }
   CHECK(mismatched == 0);
+  // The GPU trim classification's packing (trim/trim_classifier.h) takes the model as it is.
+  CHECK_NOTHROW(packTrimSet(in.model));
   return figures;
 }
 
