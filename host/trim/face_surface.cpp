@@ -1,0 +1,76 @@
+#include "trim/face_surface.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "geometry/bezier.h"
+#include "geometry/closest_point.h"
+
+namespace tessera {
+
+FaceSurface::FaceSurface(const TrimmedFace& face) : face_(&face) {
+  for (const BezierPatchPiece& p : face.pieces) {
+    us_.push_back(p.u0), us_.push_back(p.u1);
+    vs_.push_back(p.v0), vs_.push_back(p.v1);
+  }
+  for (auto* sides : {&us_, &vs_}) {
+    std::sort(sides->begin(), sides->end());
+    sides->erase(std::unique(sides->begin(), sides->end()), sides->end());
+  }
+  if (us_.size() < 2 || vs_.size() < 2) return;
+  const size_t cellsV = vs_.size() - 1;
+  cellPiece_.assign((us_.size() - 1) * cellsV, -1);
+  for (size_t k = 0; k < face.pieces.size(); ++k) {
+    const BezierPatchPiece& p = face.pieces[k];
+    const size_t i0 = std::lower_bound(us_.begin(), us_.end(), p.u0) - us_.begin();
+    const size_t i1 = std::lower_bound(us_.begin(), us_.end(), p.u1) - us_.begin();
+    const size_t j0 = std::lower_bound(vs_.begin(), vs_.end(), p.v0) - vs_.begin();
+    const size_t j1 = std::lower_bound(vs_.begin(), vs_.end(), p.v1) - vs_.begin();
+    for (size_t i = i0; i < i1; ++i)
+      for (size_t j = j0; j < j1; ++j) cellPiece_[i * cellsV + j] = int(k);
+  }
+}
+
+size_t FaceSurface::pieceAt(glm::dvec2 uv) const {
+  if (!cellPiece_.empty()) {
+    const auto cell = [](const std::vector<double>& sides, double x) {
+      const size_t i = std::upper_bound(sides.begin(), sides.end(), x) - sides.begin();
+      return std::clamp(i, size_t(1), sides.size() - 1) - 1;
+    };
+    const int piece = cellPiece_[cell(us_, uv.x) * (vs_.size() - 1) + cell(vs_, uv.y)];
+    if (piece >= 0) return size_t(piece);
+  }
+  size_t best = 0;  // a hole in the grid of pieces: the nearest rectangle
+  double bestDistance = std::numeric_limits<double>::infinity();
+  for (size_t k = 0; k < face_->pieces.size(); ++k) {
+    const BezierPatchPiece& p = face_->pieces[k];
+    const glm::dvec2 clamped(std::clamp(uv.x, p.u0, p.u1), std::clamp(uv.y, p.v0, p.v1));
+    const double d = glm::length(clamped - uv);
+    if (d < bestDistance) best = k, bestDistance = d;
+  }
+  return best;
+}
+
+glm::dvec2 FaceSurface::localUv(size_t piece, glm::dvec2 uv) const {
+  const BezierPatchPiece& p = face_->pieces[piece];
+  return glm::clamp(glm::dvec2((uv.x - p.u0) / (p.u1 - p.u0), (uv.y - p.v0) / (p.v1 - p.v0)),
+                    0.0, 1.0);
+}
+
+glm::dvec2 FaceSurface::faceUv(size_t piece, glm::dvec2 local) const {
+  const BezierPatchPiece& p = face_->pieces[piece];
+  return {p.u0 + local.x * (p.u1 - p.u0), p.v0 + local.y * (p.v1 - p.v0)};
+}
+
+glm::dvec3 FaceSurface::point(glm::dvec2 uv) const {
+  const size_t piece = pieceAt(uv);
+  const glm::dvec2 local = localUv(piece, uv);
+  return patchPoint(face_->pieces[piece].patch, local.x, local.y);
+}
+
+double FaceSurface::distance(const glm::dvec3& target, glm::dvec2 guess) const {
+  const size_t piece = pieceAt(guess);
+  return closestPointOnPatch(face_->pieces[piece].patch, target, localUv(piece, guess)).distance;
+}
+
+}  // namespace tessera

@@ -1,0 +1,31 @@
+// A trimmed face's surface as one function of the face's (u, v): the Bézier piece whose
+// rectangle holds (u, v), evaluated in double (the reference kernel). Points outside every
+// piece go to the nearest piece, clamped to its rectangle (trim loops may overhang the
+// surface's domain by the CAD model's tolerance).
+#pragma once
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "trim/trimmed_face.h"
+
+namespace tessera {
+
+class FaceSurface {
+ public:
+  explicit FaceSurface(const TrimmedFace& face);
+  // The piece for (u, v) and (u, v) in its local [0,1]² (clamped).
+  size_t pieceAt(glm::dvec2 uv) const;
+  glm::dvec2 localUv(size_t piece, glm::dvec2 uv) const;
+  glm::dvec2 faceUv(size_t piece, glm::dvec2 local) const;
+  glm::dvec3 point(glm::dvec2 uv) const;
+  // Distance from `target` to the surface, by the closest-point search on the piece of
+  // `guess` started there (closest_point.h): an upper bound of the true distance.
+  double distance(const glm::dvec3& target, glm::dvec2 guess) const;
+
+ private:
+  const TrimmedFace* face_;
+  std::vector<double> us_, vs_;       // the pieces' sorted distinct sides
+  std::vector<int> cellPiece_;        // (us_.size()−1)·(vs_.size()−1) cells → piece or −1
+};
+
+}  // namespace tessera

@@ -1,0 +1,266 @@
+#include "trim/gap_triangulate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <set>
+
+#include "trim/trim_cut.h"
+
+namespace tessera {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double cross(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
+
+// The counter-clockwise angle from `from` to `to`, in [0, 2π).
+double ccwAngle(glm::dvec2 from, glm::dvec2 to) {
+  double angle = std::atan2(cross(from, to), glm::dot(from, to));
+  return angle < 0 ? angle + 2 * kPi : angle;
+}
+
+double signedArea(const std::vector<glm::dvec2>& points, const std::vector<uint32_t>& loop) {
+  double area = 0;
+  for (size_t k = 0; k < loop.size(); ++k)
+    area += cross(points[loop[k]], points[loop[(k + 1) % loop.size()]]);
+  return 0.5 * area;
+}
+
+// Edges → closed loops of vertex ids.
+std::vector<std::vector<uint32_t>> closedLoops(
+    const std::vector<glm::dvec2>& points,
+    const std::vector<std::pair<uint32_t, uint32_t>>& edges, size_t& failures) {
+  std::multimap<uint32_t, uint32_t> outgoing;  // vertex → edge index
+  for (uint32_t e = 0; e < edges.size(); ++e) outgoing.emplace(edges[e].first, e);
+  std::vector<bool> used(edges.size(), false);
+  std::vector<std::vector<uint32_t>> loops;
+  for (uint32_t start = 0; start < edges.size(); ++start) {
+    if (used[start]) continue;
+    std::vector<uint32_t> loop{edges[start].first};
+    used[start] = true;
+    uint32_t from = edges[start].first, at = edges[start].second;
+    bool closed = false;
+    for (size_t steps = 0; steps <= edges.size(); ++steps) {
+      // The way on that turns first clockwise from the way back keeps the region on the left.
+      const glm::dvec2 back = points[from] - points[at];
+      int64_t best = -1;
+      double bestAngle = 0;
+      auto range = outgoing.equal_range(at);
+      for (auto it = range.first; it != range.second; ++it) {
+        const uint32_t e = it->second;
+        if (used[e] && e != start) continue;
+        const glm::dvec2 way = points[edges[e].second] - points[at];
+        double clockwise = 2 * kPi - ccwAngle(back, way);  // in (0, 2π]
+        if (best < 0 || clockwise < bestAngle) best = e, bestAngle = clockwise;
+      }
+      if (best < 0) break;
+      if (uint32_t(best) == start) {
+        closed = true;
+        break;
+      }
+      used[best] = true;
+      loop.push_back(at);
+      from = at;
+      at = edges[best].second;
+    }
+    if (closed && loop.size() >= 3)
+      loops.push_back(std::move(loop));
+    else
+      ++failures;
+  }
+  return loops;
+}
+
+// Whether direction d leaves vertex `at` into the region (strictly between its edges).
+bool insideWedge(glm::dvec2 prev, glm::dvec2 at, glm::dvec2 next, glm::dvec2 d) {
+  const double wedge = ccwAngle(next - at, prev - at);
+  const double angle = ccwAngle(next - at, d);
+  return angle > 0 && angle < (wedge == 0 ? 2 * kPi : wedge);
+}
+
+// Joins `hole` into `polygon` by a bridge from the nearest hole vertex visible from a polygon
+// vertex. `others` are the edges of holes still to join: the bridge must cross none of them.
+bool bridgeHole(const std::vector<glm::dvec2>& points, std::vector<uint32_t>& polygon,
+                const std::vector<uint32_t>& hole,
+                const std::vector<std::pair<uint32_t, uint32_t>>& others, double scale) {
+  struct Candidate {
+    double distance;
+    size_t p, h;
+  };
+  std::vector<Candidate> candidates;
+  for (size_t p = 0; p < polygon.size(); ++p)
+    for (size_t h = 0; h < hole.size(); ++h)
+      candidates.push_back({glm::length(points[polygon[p]] - points[hole[h]]), p, h});
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
+  const double touch = 1e-13 * scale;
+  auto clear = [&](uint32_t a, uint32_t b, uint32_t e0, uint32_t e1) {
+    const glm::dvec2 pa = points[a], pb = points[b], q0 = points[e0], q1 = points[e1];
+    if (q0 == pa || q0 == pb || q1 == pa || q1 == pb) return true;  // an edge at an end
+    return segmentDistance(pa, pb, q0, q1) > touch;
+  };
+  for (const Candidate& c : candidates) {
+    const uint32_t p = polygon[c.p], m = hole[c.h];
+    const size_t n = polygon.size(), k = hole.size();
+    if (p == m || points[p] == points[m]) {
+      if (p != m) continue;  // two ids at one place: not a bridge we can make
+    } else {
+      const glm::dvec2 d = points[m] - points[p];
+      if (!insideWedge(points[polygon[(c.p + n - 1) % n]], points[p],
+                       points[polygon[(c.p + 1) % n]], d))
+        continue;
+      if (!insideWedge(points[hole[(c.h + k - 1) % k]], points[m], points[hole[(c.h + 1) % k]],
+                       -d))
+        continue;
+      bool visible = true;
+      for (size_t e = 0; e < n && visible; ++e)
+        visible = clear(p, m, polygon[e], polygon[(e + 1) % n]);
+      for (size_t e = 0; e < k && visible; ++e) visible = clear(p, m, hole[e], hole[(e + 1) % k]);
+      for (size_t e = 0; e < others.size() && visible; ++e)
+        visible = clear(p, m, others[e].first, others[e].second);
+      if (!visible) continue;
+    }
+    // polygon[..p], m round the hole back to m, p again, the rest of the polygon (p == m: the
+    // hole is spliced in at its shared vertex, which then appears twice).
+    std::vector<uint32_t> joined(polygon.begin(), polygon.begin() + c.p + 1);
+    for (size_t j = (p == m ? 1 : 0); j <= k; ++j) joined.push_back(hole[(c.h + j) % k]);
+    if (p != m) joined.push_back(p);
+    joined.insert(joined.end(), polygon.begin() + c.p + 1, polygon.end());
+    polygon = std::move(joined);
+    return true;
+  }
+  return false;
+}
+
+bool insideOrOnTriangle(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+  return cross(b - a, p - a) >= 0 && cross(c - b, p - b) >= 0 && cross(a - c, p - c) >= 0;
+}
+
+// Ear clipping of a weakly simple counter-clockwise polygon (ids may repeat at bridges and
+// pinches). A vertex is an ear when its corner is strictly convex and no other vertex, at a
+// place other than the ear's three corners, lies inside the ear or on its sides.
+void clipEars(const std::vector<glm::dvec2>& points, std::vector<uint32_t> polygon,
+              std::vector<std::array<uint32_t, 3>>& triangles, size_t& failures) {
+  while (polygon.size() > 3) {
+    const size_t n = polygon.size();
+    size_t ear = n, fallback = n;
+    double fallbackArea = 0;
+    for (size_t i = 0; i < n && ear == n; ++i) {
+      const glm::dvec2 a = points[polygon[(i + n - 1) % n]], b = points[polygon[i]],
+                       c = points[polygon[(i + 1) % n]];
+      const double area = cross(b - a, c - b);
+      if (area <= 0) continue;
+      if (area > fallbackArea) fallback = i, fallbackArea = area;
+      bool empty = true;
+      for (size_t j = 0; j < n && empty; ++j) {
+        const glm::dvec2 p = points[polygon[j]];
+        if (p == a || p == b || p == c) continue;
+        empty = !insideOrOnTriangle(p, a, b, c);
+      }
+      if (empty) ear = i;
+    }
+    if (ear == n) {
+      ++failures;
+      if (fallback == n) return;  // nothing convex is left: a degenerate remainder
+      ear = fallback;
+    }
+    triangles.push_back({polygon[(ear + n - 1) % n], polygon[ear], polygon[(ear + 1) % n]});
+    polygon.erase(polygon.begin() + ear);
+  }
+  if (polygon.size() == 3 &&
+      cross(points[polygon[1]] - points[polygon[0]], points[polygon[2]] - points[polygon[1]]) > 0)
+    triangles.push_back({polygon[0], polygon[1], polygon[2]});
+}
+
+}  // namespace
+
+GapTriangulation triangulateGap(const std::vector<glm::dvec2>& points,
+                                const std::vector<std::pair<uint32_t, uint32_t>>& edges) {
+  GapTriangulation result;
+  if (edges.empty()) return result;
+  std::vector<std::vector<uint32_t>> loops = closedLoops(points, edges, result.failures);
+  glm::dvec2 lo = points[edges[0].first], hi = lo;
+  for (const auto& e : edges) lo = glm::min(lo, points[e.first]), hi = glm::max(hi, points[e.first]);
+  const double scale = std::max(hi.x - lo.x, hi.y - lo.y);
+
+  std::vector<size_t> outers, holes;
+  std::vector<double> areas(loops.size());
+  for (size_t l = 0; l < loops.size(); ++l) {
+    areas[l] = signedArea(points, loops[l]);
+    (areas[l] > 0 ? outers : holes).push_back(l);
+  }
+  std::vector<std::vector<size_t>> holesOf(loops.size());
+  for (size_t h : holes) {
+    // A point of the hole's boundary: the middle of its first edge (on no other loop).
+    const glm::dvec2 probe = 0.5 * (points[loops[h][0]] + points[loops[h][1]]);
+    int64_t around = -1;
+    for (size_t o : outers) {
+      std::vector<TrimSegment> segments;
+      for (size_t k = 0; k < loops[o].size(); ++k)
+        segments.push_back({points[loops[o][k]], points[loops[o][(k + 1) % loops[o].size()]]});
+      if (trimWindingNumber(segments, probe) > 0 && (around < 0 || areas[o] < areas[around]))
+        around = int64_t(o);
+    }
+    if (around < 0)
+      ++result.failures;
+    else
+      holesOf[around].push_back(h);
+  }
+  for (size_t o : outers) {
+    std::vector<uint32_t> polygon = loops[o];
+    const std::vector<size_t>& inner = holesOf[o];
+    for (size_t i = 0; i < inner.size(); ++i) {
+      std::vector<std::pair<uint32_t, uint32_t>> others;
+      for (size_t j = i + 1; j < inner.size(); ++j)
+        for (size_t k = 0; k < loops[inner[j]].size(); ++k)
+          others.push_back({loops[inner[j]][k], loops[inner[j]][(k + 1) % loops[inner[j]].size()]});
+      if (!bridgeHole(points, polygon, loops[inner[i]], others, scale)) ++result.failures;
+    }
+    clipEars(points, polygon, result.triangles, result.failures);
+  }
+  flipTowardsDelaunay(points, edges, result.triangles);
+  return result;
+}
+
+void flipTowardsDelaunay(const std::vector<glm::dvec2>& points,
+                         const std::vector<std::pair<uint32_t, uint32_t>>& fixed,
+                         std::vector<std::array<uint32_t, 3>>& triangles) {
+  const auto key = [](uint32_t a, uint32_t b) { return std::pair<uint32_t, uint32_t>(std::minmax(a, b)); };
+  std::set<std::pair<uint32_t, uint32_t>> constrained;
+  for (const auto& e : fixed) constrained.insert(key(e.first, e.second));
+  for (int pass = 0; pass < 64; ++pass) {
+    std::map<std::pair<uint32_t, uint32_t>, std::vector<uint32_t>> users;
+    for (uint32_t t = 0; t < triangles.size(); ++t)
+      for (int k = 0; k < 3; ++k) users[key(triangles[t][k], triangles[t][(k + 1) % 3])].push_back(t);
+    std::vector<bool> touched(triangles.size(), false);
+    bool flipped = false;
+    for (const auto& [edge, ts] : users) {
+      if (ts.size() != 2 || constrained.count(edge) || touched[ts[0]] || touched[ts[1]]) continue;
+      // Triangle 0 is (a, b, c) counter-clockwise with the edge a→b; triangle 1 holds b→a, d.
+      std::array<uint32_t, 3> t0 = triangles[ts[0]], t1 = triangles[ts[1]];
+      int k0 = 0;
+      while (!(key(t0[k0], t0[(k0 + 1) % 3]) == edge)) ++k0;
+      const uint32_t a = t0[k0], b = t0[(k0 + 1) % 3], c = t0[(k0 + 2) % 3];
+      uint32_t d = t1[0] + t1[1] + t1[2] - a - b;
+      if (d == c || (t1[0] != a && t1[1] != a && t1[2] != a)) continue;
+      const glm::dvec2 pa = points[a], pb = points[b], pc = points[c], pd = points[d];
+      // d in the circumcircle of the counter-clockwise (a, b, c): the in-circle determinant > 0.
+      const glm::dvec2 ad = pa - pd, bd = pb - pd, cd = pc - pd;
+      const double inCircle = glm::dot(ad, ad) * cross(bd, cd) - glm::dot(bd, bd) * cross(ad, cd) +
+                              glm::dot(cd, cd) * cross(ad, bd);
+      const double scale2 = glm::dot(ad, ad) + glm::dot(bd, bd) + glm::dot(cd, cd);
+      if (!(inCircle > 1e-12 * scale2 * scale2)) continue;
+      // The new triangles (c, a, d) and (d, b, c) must both be counter-clockwise.
+      if (!(cross(pa - pc, pd - pa) > 0 && cross(pb - pd, pc - pb) > 0)) continue;
+      triangles[ts[0]] = {c, a, d};
+      triangles[ts[1]] = {d, b, c};
+      touched[ts[0]] = touched[ts[1]] = true;
+      flipped = true;
+    }
+    if (!flipped) break;
+  }
+}
+
+}  // namespace tessera

@@ -1,0 +1,311 @@
+#include "trim/mesher.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "quadtree/quadtree.h"
+#include "trim/face_surface.h"
+#include "trim/gap_triangulate.h"
+#include "trim/trim_cut.h"
+
+namespace tessera {
+namespace {
+
+std::string faceName(const TrimmedFace& face, size_t position) {
+  return face.label.empty() ? "face " + std::to_string(position) : face.label;
+}
+
+double cross(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
+
+// One face's vertices in its own (u, v). A trim point is keyed by its shared id and uv (a seam
+// edge brings the same id twice, at u = 0 and u = 2π), a quad-tree vertex by its mesh vertex
+// and uv (a collapsed edge welds corners of different uv into one vertex).
+struct FaceVertex {
+  glm::dvec2 uv;
+  glm::dvec3 position;
+  int64_t sharedId = -1;  // ≥ 0: a trim point
+};
+
+struct FaceTriangle {
+  std::array<uint32_t, 3> v;
+  bool gap = false;
+};
+
+class FaceBuilder {
+ public:
+  FaceBuilder(double weldDistance) : weld_(weldDistance) {}
+  std::vector<FaceVertex> vertices;
+
+  uint32_t vertex(std::map<int64_t, std::vector<uint32_t>>& keyed, int64_t key, glm::dvec2 uv,
+                  const glm::dvec3& position, int64_t sharedId) {
+    for (uint32_t v : keyed[key])
+      if (glm::length(vertices[v].uv - uv) <= weld_) return v;
+    vertices.push_back({uv, position, sharedId});
+    keyed[key].push_back(uint32_t(vertices.size() - 1));
+    return uint32_t(vertices.size() - 1);
+  }
+
+ private:
+  double weld_;
+};
+
+// Largest parametric deviation over the samples (i, j, k)/n of a triangle.
+double parametricDeviation(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
+                           const std::array<uint32_t, 3>& t, int n) {
+  double worst = 0;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j) {
+      const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
+      const glm::dvec2 uv = a * vs[t[0]].uv + b * vs[t[1]].uv + c * vs[t[2]].uv;
+      const glm::dvec3 p = a * vs[t[0]].position + b * vs[t[1]].position + c * vs[t[2]].position;
+      worst = std::max(worst, glm::length(p - surface.point(uv)));
+    }
+  return worst;
+}
+
+double geometricDeviation(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
+                          const std::array<uint32_t, 3>& t, int n) {
+  double worst = 0;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j) {
+      const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
+      const glm::dvec2 uv = a * vs[t[0]].uv + b * vs[t[1]].uv + c * vs[t[2]].uv;
+      const glm::dvec3 p = a * vs[t[0]].position + b * vs[t[1]].position + c * vs[t[2]].position;
+      worst = std::max(worst, surface.distance(p, uv));
+    }
+  return worst;
+}
+
+using EdgeKey = std::pair<uint32_t, uint32_t>;
+EdgeKey edgeKey(uint32_t a, uint32_t b) { return std::minmax(a, b); }
+
+// Splits gap triangles whose measured deviation exceeds δ: the longest edge that is not a trim
+// segment at its midpoint (with the triangle across it, kept or gap, so no T-junction), or at
+// the centroid when all three are trim segments. Trim segments are never split: the face
+// across the B-rep edge uses them as they are.
+size_t refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
+                 std::vector<FaceTriangle>& triangles, const std::set<EdgeKey>& trimEdges,
+                 const TrimmedMeshOptions& options) {
+  size_t splits = 0;
+  for (int round = 0; round < options.maxRefineRounds; ++round) {
+    std::map<EdgeKey, std::vector<uint32_t>> users;
+    for (uint32_t t = 0; t < triangles.size(); ++t)
+      for (int k = 0; k < 3; ++k)
+        users[edgeKey(triangles[t].v[k], triangles[t].v[(k + 1) % 3])].push_back(t);
+    std::vector<bool> touched(triangles.size(), false);
+    const size_t count = triangles.size();
+    bool any = false;
+    for (uint32_t t = 0; t < count; ++t) {
+      if (!triangles[t].gap || touched[t]) continue;
+      if (parametricDeviation(surface, vs, triangles[t].v, options.deviationSubdivisions) <=
+          options.tolerance)
+        continue;
+      const std::array<uint32_t, 3> v = triangles[t].v;
+      int longest = -1;
+      double longestLength = 0;
+      for (int k = 0; k < 3; ++k) {
+        if (trimEdges.count(edgeKey(v[k], v[(k + 1) % 3]))) continue;
+        const double length = glm::length(vs[v[k]].uv - vs[v[(k + 1) % 3]].uv);
+        if (length > longestLength) longest = k, longestLength = length;
+      }
+      if (longest < 0) {  // three trim segments: a centre point
+        const glm::dvec2 uv = (vs[v[0]].uv + vs[v[1]].uv + vs[v[2]].uv) / 3.0;
+        vs.push_back({uv, surface.point(uv), -1});
+        const uint32_t m = uint32_t(vs.size() - 1);
+        triangles[t] = {{v[0], v[1], m}, true};
+        triangles.push_back({{v[1], v[2], m}, true});
+        triangles.push_back({{v[2], v[0], m}, true});
+        touched[t] = true;
+        ++splits, any = true;
+        continue;
+      }
+      const uint32_t a = v[longest], b = v[(longest + 1) % 3];
+      const std::vector<uint32_t>& across = users[edgeKey(a, b)];
+      if (std::any_of(across.begin(), across.end(), [&](uint32_t u) { return touched[u]; }))
+        continue;
+      const glm::dvec2 uv = 0.5 * (vs[a].uv + vs[b].uv);
+      vs.push_back({uv, surface.point(uv), -1});
+      const uint32_t m = uint32_t(vs.size() - 1);
+      for (uint32_t u : across) {
+        const std::array<uint32_t, 3> w = triangles[u].v;
+        int k = 0;
+        while (edgeKey(w[k], w[(k + 1) % 3]) != edgeKey(a, b)) ++k;
+        // (w_k, w_k+1, w_k+2) → (w_k, m, w_k+2) and (m, w_k+1, w_k+2): same orientation.
+        triangles[u].v = {w[k], m, w[(k + 2) % 3]};
+        triangles.push_back({{m, w[(k + 1) % 3], w[(k + 2) % 3]}, triangles[u].gap});
+        touched[u] = true;
+      }
+      ++splits, any = true;
+    }
+    if (!any) break;
+  }
+  return splits;
+}
+
+}  // namespace
+
+void validateTrimmedModel(const TrimmedModel& model) {
+  for (size_t f = 0; f < model.faces.size(); ++f) {
+    const TrimmedFace& face = model.faces[f];
+    const auto fail = [&](const std::string& why) {
+      throw std::invalid_argument("trimmed model: " + faceName(face, f) + ": " + why);
+    };
+    if (face.pieces.empty()) fail("no surface pieces");
+    for (size_t k = 0; k < face.pieces.size(); ++k) {
+      const BezierPatchPiece& p = face.pieces[k];
+      if (!(std::isfinite(p.u0) && std::isfinite(p.u1) && std::isfinite(p.v0) &&
+            std::isfinite(p.v1) && p.u1 > p.u0 && p.v1 > p.v0))
+        fail("piece " + std::to_string(k) + " has an empty or non-finite rectangle");
+    }
+    for (size_t l = 0; l < face.loops.size(); ++l) {
+      const TrimLoop& loop = face.loops[l];
+      const std::string name = "loop " + std::to_string(l);
+      if (loop.uv.size() < 3) fail(name + " has " + std::to_string(loop.uv.size()) + " points");
+      if (loop.pointIds.size() != loop.uv.size())
+        fail(name + " has " + std::to_string(loop.pointIds.size()) + " point ids for " +
+             std::to_string(loop.uv.size()) + " points");
+      for (size_t k = 0; k < loop.uv.size(); ++k) {
+        if (!std::isfinite(loop.uv[k].x) || !std::isfinite(loop.uv[k].y))
+          fail(name + " point " + std::to_string(k) + " is not finite");
+        if (loop.pointIds[k] >= model.sharedPoints.size())
+          fail(name + " point " + std::to_string(k) + " has id " +
+               std::to_string(loop.pointIds[k]) + " past the " +
+               std::to_string(model.sharedPoints.size()) + " shared points");
+      }
+    }
+  }
+}
+
+TrimmedMesh meshTrimmedModel(const TrimmedModel& model, const TrimmedMeshOptions& options,
+                             Backend& backend) {
+  if (!(options.tolerance > 0) || !std::isfinite(options.tolerance))
+    throw std::invalid_argument("meshTrimmedModel: the tolerance must be finite and > 0");
+  validateTrimmedModel(model);
+  TrimmedMesh out;
+  std::vector<int64_t> sharedVertex(model.sharedPoints.size(), -1);
+  for (size_t f = 0; f < model.faces.size(); ++f) {
+    const TrimmedFace& face = model.faces[f];
+    TrimmedFaceStats stats;
+    stats.faceIndex = face.faceIndex;
+    const FaceSurface surface(face);
+
+    // The face's size in (u, v) sets the two length scales: vertices this close are one
+    // (rounding of the same point), and a trim segment this close to a triangle makes it
+    // Crossing (a conservative call: dropping a triangle only re-triangulates its place).
+    glm::dvec2 lo(face.pieces[0].u0, face.pieces[0].v0), hi = lo;
+    for (const BezierPatchPiece& p : face.pieces)
+      lo = glm::min(lo, {p.u0, p.v0}), hi = glm::max(hi, {p.u1, p.v1});
+    for (const TrimLoop& loop : face.loops)
+      for (glm::dvec2 uv : loop.uv) lo = glm::min(lo, uv), hi = glm::max(hi, uv);
+    const double size = std::max(hi.x - lo.x, hi.y - lo.y);
+    FaceBuilder builder(1e-9 * size);
+    const double margin = 1e-9 * size;
+
+    std::vector<BezierPatch> patches;
+    for (const BezierPatchPiece& p : face.pieces) patches.push_back(p.patch);
+    const Tessellation tess = tessellate(patches, toleranceOptions(options.tolerance), backend);
+    stats.quadtreeTriangles = tess.mesh.triangleCount();
+
+    std::map<int64_t, std::vector<uint32_t>> meshKeyed, trimKeyed;
+    const TrimSegmentIndex index(face.loops);
+    std::vector<FaceTriangle> triangles;
+    for (size_t t = 0; t < tess.mesh.triangleCount(); ++t) {
+      std::array<uint32_t, 3> v;
+      std::array<glm::dvec2, 3> uv;
+      for (int k = 0; k < 3; ++k) {
+        const uint32_t id = tess.mesh.indices[3 * t + k];
+        uv[k] = surface.faceUv(tess.trianglePatch[t], glm::dvec2(tess.cornerUv[3 * t + k]));
+        v[k] = builder.vertex(meshKeyed, id, uv[k], glm::dvec3(tess.mesh.positions[id]), -1);
+      }
+      const double area = cross(uv[1] - uv[0], uv[2] - uv[0]);
+      if (area == 0) continue;
+      if (area < 0) std::swap(v[1], v[2]), std::swap(uv[1], uv[2]);
+      if (!face.loops.empty() && classifyTrimTriangle(uv, index, margin) != TrimClass::Inside)
+        continue;
+      triangles.push_back({v, false});
+    }
+    stats.keptTriangles = triangles.size();
+
+    // The gap: bounded by the trim segments (material on their left) and by the kept
+    // triangles' open edges, reversed.
+    std::vector<std::pair<uint32_t, uint32_t>> gapEdges;
+    std::set<EdgeKey> trimEdges;
+    for (const TrimLoop& loop : face.loops) {
+      std::vector<uint32_t> ids;
+      for (size_t k = 0; k < loop.uv.size(); ++k) {
+        const uint32_t id = loop.pointIds[k];
+        ids.push_back(builder.vertex(trimKeyed, id, loop.uv[k], model.sharedPoints[id], id));
+      }
+      for (size_t k = 0; k < ids.size(); ++k) {
+        const uint32_t a = ids[k], b = ids[(k + 1) % ids.size()];
+        if (a == b) continue;  // a repeated point
+        gapEdges.push_back({a, b});
+        trimEdges.insert(edgeKey(a, b));
+      }
+    }
+    if (!face.loops.empty()) {
+      std::set<EdgeKey> directed;
+      for (const FaceTriangle& t : triangles)
+        for (int k = 0; k < 3; ++k) directed.insert({t.v[k], t.v[(k + 1) % 3]});
+      for (const auto& [a, b] : directed)
+        if (!directed.count({b, a})) gapEdges.push_back({b, a});
+      std::vector<glm::dvec2> points;
+      for (const FaceVertex& v : builder.vertices) points.push_back(v.uv);
+      const GapTriangulation gap = triangulateGap(points, gapEdges);
+      stats.gapFailures = gap.failures;
+      for (const auto& t : gap.triangles) triangles.push_back({t, true});
+      stats.refinementSplits =
+          refineGap(surface, builder.vertices, triangles, trimEdges, options);
+    }
+
+    // Emit: trim points as their shared vertex, the rest as this face's own vertices.
+    std::vector<FaceVertex>& vs = builder.vertices;
+    std::vector<int64_t> global(vs.size(), -1);
+    auto globalOf = [&](uint32_t v) -> uint32_t {
+      if (global[v] >= 0) return uint32_t(global[v]);
+      int64_t* slot = vs[v].sharedId >= 0 ? &sharedVertex[vs[v].sharedId] : &global[v];
+      if (*slot < 0) {
+        *slot = int64_t(out.mesh.positions.size());
+        out.mesh.positions.push_back(glm::vec3(vs[v].position));
+        out.mesh.uvs.push_back(glm::vec2(vs[v].uv));
+        out.mesh.patchIds.push_back(uint32_t(f));
+      }
+      global[v] = *slot;
+      return uint32_t(*slot);
+    };
+    for (const FaceTriangle& t : triangles) {
+      std::array<uint32_t, 3> v = t.v;
+      if (face.reversed) std::swap(v[1], v[2]);
+      const uint32_t g0 = globalOf(v[0]), g1 = globalOf(v[1]), g2 = globalOf(v[2]);
+      if (g0 == g1 || g1 == g2 || g0 == g2) {
+        ++stats.collapsedTriangles;
+        continue;
+      }
+      out.mesh.indices.insert(out.mesh.indices.end(), {g0, g1, g2});
+      out.triangleFace.push_back(uint32_t(f));
+      for (uint32_t k : v) out.cornerUv.push_back(vs[k].uv);
+      ++stats.triangles;
+      const double parametric =
+          parametricDeviation(surface, vs, t.v, options.deviationSubdivisions);
+      stats.maxParametricDeviation = std::max(stats.maxParametricDeviation, parametric);
+      if (t.gap)
+        stats.maxGapParametricDeviation = std::max(stats.maxGapParametricDeviation, parametric);
+      if (options.measureGeometric)
+        stats.maxGeometricDeviation =
+            std::max(stats.maxGeometricDeviation,
+                     geometricDeviation(surface, vs, t.v, options.deviationSubdivisions));
+    }
+    stats.keptTriangles = 0;
+    for (const FaceTriangle& t : triangles) (t.gap ? stats.gapTriangles : stats.keptTriangles)++;
+    out.faces.push_back(stats);
+  }
+  out.mesh.validate();
+  return out;
+}
+
+}  // namespace tessera

@@ -1,0 +1,114 @@
+#include "trim/trim_cut.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tessera {
+
+TrimSegmentIndex::TrimSegmentIndex(const std::vector<TrimLoop>& loops) {
+  for (const TrimLoop& loop : loops)
+    for (size_t k = 0; k < loop.uv.size(); ++k)
+      segments_.push_back({loop.uv[k], loop.uv[(k + 1) % loop.uv.size()]});
+  if (segments_.empty()) return;
+  lo_ = hi_ = segments_[0].a;
+  for (const TrimSegment& s : segments_) {
+    lo_ = glm::min(lo_, glm::min(s.a, s.b));
+    hi_ = glm::max(hi_, glm::max(s.a, s.b));
+  }
+  // About one segment a cell on average (√n × √n cells), at most 256 a side.
+  const int side = std::clamp(int(std::sqrt(double(segments_.size()))), 1, 256);
+  cellsU_ = cellsV_ = side;
+  cell_ = glm::max((hi_ - lo_) / double(side), glm::dvec2(1e-300));
+  bins_.assign(size_t(cellsU_) * cellsV_, {});
+  stamp_.assign(segments_.size(), 0);
+  for (uint32_t s = 0; s < segments_.size(); ++s) {
+    const glm::dvec2 a = glm::min(segments_[s].a, segments_[s].b);
+    const glm::dvec2 b = glm::max(segments_[s].a, segments_[s].b);
+    const int u0 = std::clamp(int((a.x - lo_.x) / cell_.x), 0, cellsU_ - 1);
+    const int u1 = std::clamp(int((b.x - lo_.x) / cell_.x), 0, cellsU_ - 1);
+    const int v0 = std::clamp(int((a.y - lo_.y) / cell_.y), 0, cellsV_ - 1);
+    const int v1 = std::clamp(int((b.y - lo_.y) / cell_.y), 0, cellsV_ - 1);
+    for (int i = u0; i <= u1; ++i)
+      for (int j = v0; j <= v1; ++j) bins_[size_t(i) * cellsV_ + j].push_back(s);
+  }
+}
+
+void TrimSegmentIndex::near(glm::dvec2 lo, glm::dvec2 hi, std::vector<uint32_t>& out) const {
+  out.clear();
+  if (segments_.empty() || hi.x < lo_.x || hi.y < lo_.y || lo.x > hi_.x || lo.y > hi_.y) return;
+  if (++query_ == 0) std::fill(stamp_.begin(), stamp_.end(), 0), query_ = 1;
+  const int u0 = std::clamp(int((lo.x - lo_.x) / cell_.x), 0, cellsU_ - 1);
+  const int u1 = std::clamp(int((hi.x - lo_.x) / cell_.x), 0, cellsU_ - 1);
+  const int v0 = std::clamp(int((lo.y - lo_.y) / cell_.y), 0, cellsV_ - 1);
+  const int v1 = std::clamp(int((hi.y - lo_.y) / cell_.y), 0, cellsV_ - 1);
+  for (int i = u0; i <= u1; ++i)
+    for (int j = v0; j <= v1; ++j)
+      for (uint32_t s : bins_[size_t(i) * cellsV_ + j])
+        if (stamp_[s] != query_) {
+          stamp_[s] = query_;
+          out.push_back(s);
+        }
+}
+
+int trimWindingNumber(const std::vector<TrimSegment>& segments, glm::dvec2 p) {
+  // Sunday's crossing rule: an upward edge with p strictly left of it adds 1, a downward edge
+  // with p strictly right subtracts 1 (half-open in v, so a vertex at p's height counts once).
+  int winding = 0;
+  for (const TrimSegment& s : segments) {
+    const double side = (s.b.x - s.a.x) * (p.y - s.a.y) - (p.x - s.a.x) * (s.b.y - s.a.y);
+    if (s.a.y <= p.y) {
+      if (s.b.y > p.y && side > 0) ++winding;
+    } else if (s.b.y <= p.y && side < 0) {
+      --winding;
+    }
+  }
+  return winding;
+}
+
+namespace {
+
+double cross(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
+
+double pointSegmentDistance(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
+  const glm::dvec2 d = b - a;
+  const double length2 = glm::dot(d, d);
+  const double t = length2 > 0 ? std::clamp(glm::dot(p - a, d) / length2, 0.0, 1.0) : 0.0;
+  return glm::length(p - (a + t * d));
+}
+
+bool insideTriangle(glm::dvec2 p, const std::array<glm::dvec2, 3>& t) {
+  const double d0 = cross(t[1] - t[0], p - t[0]), d1 = cross(t[2] - t[1], p - t[1]),
+               d2 = cross(t[0] - t[2], p - t[2]);
+  return (d0 >= 0 && d1 >= 0 && d2 >= 0) || (d0 <= 0 && d1 <= 0 && d2 <= 0);
+}
+
+}  // namespace
+
+double segmentDistance(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 q0, glm::dvec2 q1) {
+  const double a = cross(p1 - p0, q0 - p0), b = cross(p1 - p0, q1 - p0);
+  const double c = cross(q1 - q0, p0 - q0), d = cross(q1 - q0, p1 - q0);
+  if (((a > 0 && b < 0) || (a < 0 && b > 0)) && ((c > 0 && d < 0) || (c < 0 && d > 0)))
+    return 0;  // a proper crossing
+  return std::min({pointSegmentDistance(p0, q0, q1), pointSegmentDistance(p1, q0, q1),
+                   pointSegmentDistance(q0, p0, p1), pointSegmentDistance(q1, p0, p1)});
+}
+
+TrimClass classifyTrimTriangle(const std::array<glm::dvec2, 3>& triangle,
+                               const TrimSegmentIndex& index, double margin) {
+  const glm::dvec2 lo = glm::min(triangle[0], glm::min(triangle[1], triangle[2])) - margin;
+  const glm::dvec2 hi = glm::max(triangle[0], glm::max(triangle[1], triangle[2])) + margin;
+  thread_local std::vector<uint32_t> nearby;
+  index.near(lo, hi, nearby);
+  for (uint32_t s : nearby) {
+    const TrimSegment& seg = index.segments()[s];
+    if (insideTriangle(seg.a, triangle)) return TrimClass::Crossing;
+    for (int k = 0; k < 3; ++k)
+      if (segmentDistance(seg.a, seg.b, triangle[k], triangle[(k + 1) % 3]) <= margin)
+        return TrimClass::Crossing;
+  }
+  const glm::dvec2 centroid = (triangle[0] + triangle[1] + triangle[2]) / 3.0;
+  return trimWindingNumber(index.segments(), centroid) > 0 ? TrimClass::Inside
+                                                           : TrimClass::Outside;
+}
+
+}  // namespace tessera
