@@ -92,6 +92,26 @@ MeshCheck checkMesh(const TrimmedModel& model, const TrimmedMesh& m, const std::
   CHECK(c.census.degenerateTriangles == 0);
   CHECK(c.tJunctions == 0);
   REQUIRE(m.faces.size() == model.faces.size());
+  // The mesher's own figures sample each triangle at (i, j, k)/4; re-measure here, finer
+  // (n = 10), against the face's single piece, from the emitted fp32 positions.
+  double remeasured = 0;
+  for (size_t t = 0; t < m.triangleFace.size(); ++t) {
+    const BezierPatch& patch = model.faces[m.triangleFace[t]].pieces.at(0).patch;
+    const int n = 10;
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; i + j <= n; ++j) {
+        const double w[3] = {double(i) / n, double(j) / n, double(n - i - j) / n};
+        glm::dvec2 uv(0);
+        glm::dvec3 p(0);
+        for (int k = 0; k < 3; ++k) {
+          uv += w[k] * m.cornerUv[3 * t + k];
+          p += w[k] * glm::dvec3(m.mesh.positions[m.mesh.indices[3 * t + k]]);
+        }
+        remeasured = std::max(remeasured, glm::length(p - patchPoint(patch, uv.x, uv.y)));
+      }
+  }
+  WARN("  re-measured parametric deviation at n = 10: " << remeasured);
+  CHECK(remeasured <= delta);
   for (size_t f = 0; f < model.faces.size(); ++f) {
     const TrimmedFaceStats& s = m.faces[f];
     // The triangles' uv areas (counter-clockwise positive, clockwise for a reversed face) add
@@ -169,6 +189,16 @@ TEST_CASE("trimmed mesher: a curved bicubic face with an inner loop", "[trim]") 
   const MeshCheck c = checkMesh(model, m, "bump with a hole", delta);
   CHECK(c.census.boundaryEdges ==
         model.faces[0].loops[0].uv.size() + model.faces[0].loops[1].uv.size());
+  // The outer loop's sides are straight in 3D (z = 0 rows), so they stay long segments
+  // across the curved bump: the triangles beside them had to be split to meet δ.
+  double longest = 0;
+  const TrimLoop& outer = model.faces[0].loops[0];
+  for (size_t k = 0; k < outer.uv.size(); ++k)
+    longest = std::max(longest, glm::length(outer.uv[(k + 1) % outer.uv.size()] - outer.uv[k]));
+  WARN("longest trim segment " << longest << " (uv), " << m.faces[0].refinementSplits
+                               << " splits");
+  CHECK(longest >= 0.25);
+  CHECK(m.faces[0].refinementSplits > 0);
 }
 
 TEST_CASE("trimmed mesher: a hole inside one quad-tree triangle", "[trim]") {

@@ -20,7 +20,7 @@ namespace tessera {
 
 struct TrimmedMeshOptions {
   double tolerance = 0;            // δ, model units, > 0
-  int deviationSubdivisions = 4;   // samples (i, j, k)/n of each triangle when measuring
+  int deviationSubdivisions = 8;   // samples (i, j, k)/n of each triangle: refinement and stats
   bool measureGeometric = true;    // also the distance to the surface (slower)
   int maxRefineRounds = 24;        // splitting rounds for gap triangles over δ
 };
