@@ -12,6 +12,7 @@
 
 #include "mesh/tessellate.h"
 #include "mesh_checks.h"
+#include "trim/face_surface.h"
 #include "trim/mesher.h"
 #include "trimmed_models.h"
 
@@ -93,10 +94,11 @@ MeshCheck checkMesh(const TrimmedModel& model, const TrimmedMesh& m, const std::
   CHECK(c.tJunctions == 0);
   REQUIRE(m.faces.size() == model.faces.size());
   // The mesher's own figures sample each triangle at (i, j, k)/4; re-measure here, finer
-  // (n = 10), against the face's single piece, from the emitted fp32 positions.
+  // (n = 10), against the face's surface, from the emitted fp32 positions.
   double remeasured = 0;
+  std::vector<FaceSurface> surfaces(model.faces.begin(), model.faces.end());
   for (size_t t = 0; t < m.triangleFace.size(); ++t) {
-    const BezierPatch& patch = model.faces[m.triangleFace[t]].pieces.at(0).patch;
+    const FaceSurface& surface = surfaces[m.triangleFace[t]];
     const int n = 10;
     for (int i = 0; i <= n; ++i)
       for (int j = 0; i + j <= n; ++j) {
@@ -107,7 +109,7 @@ MeshCheck checkMesh(const TrimmedModel& model, const TrimmedMesh& m, const std::
           uv += w[k] * m.cornerUv[3 * t + k];
           p += w[k] * glm::dvec3(m.mesh.positions[m.mesh.indices[3 * t + k]]);
         }
-        remeasured = std::max(remeasured, glm::length(p - patchPoint(patch, uv.x, uv.y)));
+        remeasured = std::max(remeasured, glm::length(p - surface.point(uv)));
       }
   }
   WARN("  re-measured parametric deviation at n = 10: " << remeasured);
@@ -376,4 +378,65 @@ TEST_CASE("trimmed mesher: a bad model names the face and the loop", "[trim]") {
                     Catch::Contains("loop 0 has 2 points"));
   options.tolerance = 0;
   CHECK_THROWS_WITH(meshTrimmedModel(model, options, cpu), Catch::Contains("tolerance"));
+}
+
+TEST_CASE("trimmed mesher: a cylinder of four rational pieces with a seam, and two caps",
+          "[trim]") {
+  // The side: u ∈ [0, 2π] in four quarter-circle pieces (degree 2 × 1, weights 1, √2/2, 1),
+  // v ∈ [0, 1] the height. Its loop runs round the bottom, up the seam at u = 2π, back round
+  // the top and down the seam at u = 0: the seam's points carry the same ids on both sides.
+  // The caps are planes over [−1, 1]² (uv ∈ [0,1]²) trimmed by the same circles.
+  const double delta = 0.005;
+  const int n = 64;  // samples round the circle: chords within δ/2
+  TrimmedModel model;
+  SharedPoints shared(model);
+  TrimmedFace side;
+  for (int q = 0; q < 4; ++q) {
+    const double a = q * kPi / 2, w = std::sqrt(0.5);
+    const glm::dvec3 p0(std::cos(a), std::sin(a), 0), p2(-std::sin(a), std::cos(a), 0);
+    BezierPatch piece;
+    piece.degreeU = 2;
+    piece.degreeV = 1;
+    for (glm::dvec3 p : {p0, p0 + p2, p2})
+      for (double z : {0.0, 1.0}) piece.cp.push_back(p + glm::dvec3(0, 0, z));
+    piece.weights = {1, 1, w, w, 1, 1};
+    side.pieces.push_back({piece, a, a + kPi / 2, 0, 1});
+  }
+  const FaceSurface sideSurface(side);
+  std::vector<glm::dvec2> sideUv;
+  for (int k = 0; k <= n; ++k) sideUv.push_back({2 * kPi * k / n, 0});
+  for (int k = 1; k <= 4; ++k) sideUv.push_back({2 * kPi, k / 4.0});
+  for (int k = n - 1; k >= 0; --k) sideUv.push_back({2 * kPi * k / n, 1});
+  for (int k = 3; k >= 1; --k) sideUv.push_back({0, k / 4.0});
+  // u = 2π and u = 0 are one place: look ids up by the point at u mod 2π.
+  const auto onSide = [&](glm::dvec2 uv) {
+    return sideSurface.point({uv.x >= 2 * kPi ? 0.0 : uv.x, uv.y});
+  };
+  side.loops.push_back(loopThrough(sideUv, onSide, shared));
+  side.faceIndex = 0;
+  model.faces.push_back(side);
+  for (int top = 0; top < 2; ++top) {
+    const BezierPatch cap = planarPatch({-1, -1, double(top)}, {2, 0, 0}, {0, 2, 0});
+    std::vector<glm::dvec2> capUv;
+    for (int k = 0; k < n; ++k) {
+      const glm::dvec3 p = sideSurface.point({2 * kPi * k / n, 0});
+      capUv.push_back({(p.x + 1) / 2, (p.y + 1) / 2});
+    }
+    const auto onCap = [&](glm::dvec2 uv) { return patchPoint(cap, uv.x, uv.y); };
+    // Outward: +z on top (S_u × S_v = +z), −z below (reversed).
+    model.faces.push_back(faceOf(cap, {loopThrough(capUv, onCap, shared)}, !top, 1 + top));
+  }
+  REQUIRE(model.sharedPoints.size() == size_t(2 * n + 3));
+
+  const TrimmedMesh m = meshAt(model, delta);
+  const MeshCheck c = checkMesh(model, m, "cylinder with caps", delta);
+  CHECK(c.census.boundaryEdges == 0);
+  double volume = 0;
+  for (size_t t = 0; t < m.mesh.indices.size(); t += 3) {
+    const glm::dvec3 a(m.mesh.positions[m.mesh.indices[t]]),
+        b(m.mesh.positions[m.mesh.indices[t + 1]]), d(m.mesh.positions[m.mesh.indices[t + 2]]);
+    volume += glm::dot(a, glm::cross(b, d)) / 6;
+  }
+  WARN("cylinder volume " << volume << " (π = " << kPi << ")");
+  CHECK(volume == Approx(kPi).epsilon(0.01));
 }

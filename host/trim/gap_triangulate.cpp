@@ -227,39 +227,53 @@ GapTriangulation triangulateGap(const std::vector<glm::dvec2>& points,
 void flipTowardsDelaunay(const std::vector<glm::dvec2>& points,
                          const std::vector<std::pair<uint32_t, uint32_t>>& fixed,
                          std::vector<std::array<uint32_t, 3>>& triangles) {
-  const auto key = [](uint32_t a, uint32_t b) { return std::pair<uint32_t, uint32_t>(std::minmax(a, b)); };
-  std::set<std::pair<uint32_t, uint32_t>> constrained;
+  using Edge = std::pair<uint32_t, uint32_t>;
+  const auto key = [](uint32_t a, uint32_t b) { return Edge(std::min(a, b), std::max(a, b)); };
+  std::set<Edge> constrained;
   for (const auto& e : fixed) constrained.insert(key(e.first, e.second));
-  for (int pass = 0; pass < 64; ++pass) {
-    std::map<std::pair<uint32_t, uint32_t>, std::vector<uint32_t>> users;
-    for (uint32_t t = 0; t < triangles.size(); ++t)
-      for (int k = 0; k < 3; ++k) users[key(triangles[t][k], triangles[t][(k + 1) % 3])].push_back(t);
-    std::vector<bool> touched(triangles.size(), false);
-    bool flipped = false;
-    for (const auto& [edge, ts] : users) {
-      if (ts.size() != 2 || constrained.count(edge) || touched[ts[0]] || touched[ts[1]]) continue;
-      // Triangle 0 is (a, b, c) counter-clockwise with the edge a→b; triangle 1 holds b→a, d.
-      std::array<uint32_t, 3> t0 = triangles[ts[0]], t1 = triangles[ts[1]];
-      int k0 = 0;
-      while (!(key(t0[k0], t0[(k0 + 1) % 3]) == edge)) ++k0;
-      const uint32_t a = t0[k0], b = t0[(k0 + 1) % 3], c = t0[(k0 + 2) % 3];
-      uint32_t d = t1[0] + t1[1] + t1[2] - a - b;
-      if (d == c || (t1[0] != a && t1[1] != a && t1[2] != a)) continue;
-      const glm::dvec2 pa = points[a], pb = points[b], pc = points[c], pd = points[d];
-      // d in the circumcircle of the counter-clockwise (a, b, c): the in-circle determinant > 0.
-      const glm::dvec2 ad = pa - pd, bd = pb - pd, cd = pc - pd;
-      const double inCircle = glm::dot(ad, ad) * cross(bd, cd) - glm::dot(bd, bd) * cross(ad, cd) +
-                              glm::dot(cd, cd) * cross(ad, bd);
-      const double scale2 = glm::dot(ad, ad) + glm::dot(bd, bd) + glm::dot(cd, cd);
-      if (!(inCircle > 1e-12 * scale2 * scale2)) continue;
-      // The new triangles (c, a, d) and (d, b, c) must both be counter-clockwise.
-      if (!(cross(pa - pc, pd - pa) > 0 && cross(pb - pd, pc - pb) > 0)) continue;
-      triangles[ts[0]] = {c, a, d};
-      triangles[ts[1]] = {d, b, c};
-      touched[ts[0]] = touched[ts[1]] = true;
-      flipped = true;
-    }
-    if (!flipped) break;
+  std::map<Edge, std::vector<uint32_t>> users;  // edge → the triangles using it
+  for (uint32_t t = 0; t < triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) users[key(triangles[t][k], triangles[t][(k + 1) % 3])].push_back(t);
+  std::vector<Edge> queue;
+  for (const auto& [edge, ts] : users)
+    if (ts.size() == 2 && !constrained.count(edge)) queue.push_back(edge);
+  const auto moveUser = [&](Edge edge, uint32_t from, uint32_t to) {
+    for (uint32_t& t : users[edge])
+      if (t == from) t = to;
+  };
+  // Each flip lowers the triangulation's lifted volume, so this ends; the cap is a guard
+  // against rounding cycling two nearly cocircular flips.
+  size_t budget = 64 * (triangles.size() + 1) * (triangles.size() + 1);
+  while (!queue.empty() && budget-- > 0) {
+    const Edge edge = queue.back();
+    queue.pop_back();
+    auto found = users.find(edge);
+    if (found == users.end() || found->second.size() != 2 || constrained.count(edge)) continue;
+    const uint32_t t0 = found->second[0], t1 = found->second[1];
+    // t0 = (a, b, c) counter-clockwise with the edge a→b; t1 holds b→a and d.
+    int k0 = 0;
+    while (key(triangles[t0][k0], triangles[t0][(k0 + 1) % 3]) != edge) ++k0;
+    const uint32_t a = triangles[t0][k0], b = triangles[t0][(k0 + 1) % 3],
+                   c = triangles[t0][(k0 + 2) % 3];
+    const uint32_t d = triangles[t1][0] + triangles[t1][1] + triangles[t1][2] - a - b;
+    if (d == c) continue;
+    const glm::dvec2 pa = points[a], pb = points[b], pc = points[c], pd = points[d];
+    // d in the circumcircle of the counter-clockwise (a, b, c): the in-circle determinant > 0.
+    const glm::dvec2 ad = pa - pd, bd = pb - pd, cd = pc - pd;
+    const double inCircle = glm::dot(ad, ad) * cross(bd, cd) - glm::dot(bd, bd) * cross(ad, cd) +
+                            glm::dot(cd, cd) * cross(ad, bd);
+    const double scale2 = glm::dot(ad, ad) + glm::dot(bd, bd) + glm::dot(cd, cd);
+    if (!(inCircle > 1e-12 * scale2 * scale2)) continue;
+    // The new triangles (c, a, d) and (d, b, c) must both be counter-clockwise.
+    if (!(cross(pa - pc, pd - pa) > 0 && cross(pb - pd, pc - pb) > 0)) continue;
+    triangles[t0] = {c, a, d};
+    triangles[t1] = {d, b, c};
+    users.erase(found);
+    users[key(c, d)] = {t0, t1};
+    moveUser(key(a, d), t1, t0);
+    moveUser(key(b, c), t0, t1);
+    for (Edge e : {key(a, c), key(a, d), key(b, c), key(b, d)})
+      if (!constrained.count(e)) queue.push_back(e);
   }
 }
 

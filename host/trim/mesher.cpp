@@ -38,20 +38,17 @@ struct FaceTriangle {
 
 class FaceBuilder {
  public:
-  FaceBuilder(double weldDistance) : weld_(weldDistance) {}
   std::vector<FaceVertex> vertices;
 
+  // The vertex of `key` within `weld` of uv, or a new one.
   uint32_t vertex(std::map<int64_t, std::vector<uint32_t>>& keyed, int64_t key, glm::dvec2 uv,
-                  const glm::dvec3& position, int64_t sharedId) {
+                  const glm::dvec3& position, int64_t sharedId, double weld) {
     for (uint32_t v : keyed[key])
-      if (glm::length(vertices[v].uv - uv) <= weld_) return v;
+      if (glm::length(vertices[v].uv - uv) <= weld) return v;
     vertices.push_back({uv, position, sharedId});
     keyed[key].push_back(uint32_t(vertices.size() - 1));
     return uint32_t(vertices.size() - 1);
   }
-
- private:
-  double weld_;
 };
 
 // Largest parametric deviation over the samples (i, j, k)/n of a triangle.
@@ -203,8 +200,12 @@ TrimmedMesh meshTrimmedModel(const TrimmedModel& model, const TrimmedMeshOptions
     for (const TrimLoop& loop : face.loops)
       for (glm::dvec2 uv : loop.uv) lo = glm::min(lo, uv), hi = glm::max(hi, uv);
     const double size = std::max(hi.x - lo.x, hi.y - lo.y);
-    FaceBuilder builder(1e-9 * size);
+    FaceBuilder builder;
     const double margin = 1e-9 * size;
+    // One quad-tree vertex seen from two pieces has two fp32 local uvs (cornerUv): one
+    // vertex within 10⁻⁶ of the face; a collapsed edge's corners, a whole side apart, stay
+    // apart. Trim points are given in double: 10⁻⁹.
+    const double meshWeld = 1e-6 * size, trimWeld = 1e-9 * size;
 
     std::vector<BezierPatch> patches;
     for (const BezierPatchPiece& p : face.pieces) patches.push_back(p.patch);
@@ -220,7 +221,8 @@ TrimmedMesh meshTrimmedModel(const TrimmedModel& model, const TrimmedMeshOptions
       for (int k = 0; k < 3; ++k) {
         const uint32_t id = tess.mesh.indices[3 * t + k];
         uv[k] = surface.faceUv(tess.trianglePatch[t], glm::dvec2(tess.cornerUv[3 * t + k]));
-        v[k] = builder.vertex(meshKeyed, id, uv[k], glm::dvec3(tess.mesh.positions[id]), -1);
+        v[k] = builder.vertex(meshKeyed, id, uv[k], glm::dvec3(tess.mesh.positions[id]), -1,
+                              meshWeld);
       }
       const double area = cross(uv[1] - uv[0], uv[2] - uv[0]);
       if (area == 0) continue;
@@ -239,7 +241,8 @@ TrimmedMesh meshTrimmedModel(const TrimmedModel& model, const TrimmedMeshOptions
       std::vector<uint32_t> ids;
       for (size_t k = 0; k < loop.uv.size(); ++k) {
         const uint32_t id = loop.pointIds[k];
-        ids.push_back(builder.vertex(trimKeyed, id, loop.uv[k], model.sharedPoints[id], id));
+        ids.push_back(
+            builder.vertex(trimKeyed, id, loop.uv[k], model.sharedPoints[id], id, trimWeld));
       }
       for (size_t k = 0; k < ids.size(); ++k) {
         const uint32_t a = ids[k], b = ids[(k + 1) % ids.size()];
