@@ -33,7 +33,10 @@ struct TrimmedFaceStats {
   size_t triangles = 0;              // emitted (kept + gap − collapsed)
   size_t refinementSplits = 0;       // edges or triangles split for the gap to meet δ
   size_t collapsedTriangles = 0;     // two corners on one shared point (a pole, a seam end)
-  size_t gapFailures = 0;            // gap_triangulate.h's failures: 0 unless the loops are bad
+  // gap_triangulate.h's failures: 0 unless the loops are bad (open, crossing each other or
+  // themselves); then the face's mesh may have holes or overlaps, and a caller should report
+  // the face (its label) rather than write it silently.
+  size_t gapFailures = 0;
   // Measured over every emitted triangle at deviationSubdivisions: parametric (the triangle
   // point against the surface at the same uv mix) and geometric (distance to the surface).
   double maxParametricDeviation = 0, maxGeometricDeviation = 0;

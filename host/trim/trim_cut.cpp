@@ -4,6 +4,15 @@
 #include <cmath>
 
 namespace tessera {
+namespace {
+
+// The grid cell of coordinate x, clamped in double before the conversion (a far coordinate
+// would overflow int).
+int cellIndex(double x, double lo, double cell, int count) {
+  return int(std::clamp(std::floor((x - lo) / cell), 0.0, double(count - 1)));
+}
+
+}  // namespace
 
 TrimSegmentIndex::TrimSegmentIndex(const std::vector<TrimLoop>& loops) {
   for (const TrimLoop& loop : loops)
@@ -24,10 +33,10 @@ TrimSegmentIndex::TrimSegmentIndex(const std::vector<TrimLoop>& loops) {
   for (uint32_t s = 0; s < segments_.size(); ++s) {
     const glm::dvec2 a = glm::min(segments_[s].a, segments_[s].b);
     const glm::dvec2 b = glm::max(segments_[s].a, segments_[s].b);
-    const int u0 = std::clamp(int((a.x - lo_.x) / cell_.x), 0, cellsU_ - 1);
-    const int u1 = std::clamp(int((b.x - lo_.x) / cell_.x), 0, cellsU_ - 1);
-    const int v0 = std::clamp(int((a.y - lo_.y) / cell_.y), 0, cellsV_ - 1);
-    const int v1 = std::clamp(int((b.y - lo_.y) / cell_.y), 0, cellsV_ - 1);
+    const int u0 = cellIndex(a.x, lo_.x, cell_.x, cellsU_);
+    const int u1 = cellIndex(b.x, lo_.x, cell_.x, cellsU_);
+    const int v0 = cellIndex(a.y, lo_.y, cell_.y, cellsV_);
+    const int v1 = cellIndex(b.y, lo_.y, cell_.y, cellsV_);
     for (int i = u0; i <= u1; ++i)
       for (int j = v0; j <= v1; ++j) bins_[size_t(i) * cellsV_ + j].push_back(s);
   }
@@ -37,10 +46,10 @@ void TrimSegmentIndex::near(glm::dvec2 lo, glm::dvec2 hi, std::vector<uint32_t>&
   out.clear();
   if (segments_.empty() || hi.x < lo_.x || hi.y < lo_.y || lo.x > hi_.x || lo.y > hi_.y) return;
   if (++query_ == 0) std::fill(stamp_.begin(), stamp_.end(), 0), query_ = 1;
-  const int u0 = std::clamp(int((lo.x - lo_.x) / cell_.x), 0, cellsU_ - 1);
-  const int u1 = std::clamp(int((hi.x - lo_.x) / cell_.x), 0, cellsU_ - 1);
-  const int v0 = std::clamp(int((lo.y - lo_.y) / cell_.y), 0, cellsV_ - 1);
-  const int v1 = std::clamp(int((hi.y - lo_.y) / cell_.y), 0, cellsV_ - 1);
+  const int u0 = cellIndex(lo.x, lo_.x, cell_.x, cellsU_);
+  const int u1 = cellIndex(hi.x, lo_.x, cell_.x, cellsU_);
+  const int v0 = cellIndex(lo.y, lo_.y, cell_.y, cellsV_);
+  const int v1 = cellIndex(hi.y, lo_.y, cell_.y, cellsV_);
   for (int i = u0; i <= u1; ++i)
     for (int j = v0; j <= v1; ++j)
       for (uint32_t s : bins_[size_t(i) * cellsV_ + j])
