@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <set>
 
 #include "mesh/tessellate.h"
@@ -439,4 +440,52 @@ TEST_CASE("trimmed mesher: a cylinder of four rational pieces with a seam, and t
   }
   WARN("cylinder volume " << volume << " (π = " << kPi << ")");
   CHECK(volume == Approx(kPi).epsilon(0.01));
+}
+
+TEST_CASE("trimmed mesher: a self-crossing loop is reported, not hidden", "[trim]") {
+  // A bow tie: its two lobes wind +1 and −1, so no loop of the gap holds the −1 lobe.
+  TrimmedModel model;
+  SharedPoints shared(model);
+  const BezierPatch plane = planarPatch({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+  const auto at = [&](glm::dvec2 uv) { return patchPoint(plane, uv.x, uv.y); };
+  model.faces.push_back(faceOf(plane,
+                               {loopThrough({{0.1, 0.1}, {0.9, 0.9}, {0.9, 0.1}, {0.1, 0.9}}, at,
+                                            shared)},
+                               false, 0));
+  const TrimmedMesh m = meshAt(model, 1e-3);
+  WARN("bow tie: " << m.faces[0].triangles << " triangles, " << m.faces[0].gapFailures
+                   << " gap failures");
+  CHECK(m.faces[0].gapFailures > 0);
+}
+
+// Hidden, and allowed to fail: at δ = 10⁻⁴ the bump's gap keeps slivers 4.7·10⁻⁴ off the
+// surface (docs/trimmed_faces.md, "Limits"); it prints the worst triangles and the times.
+TEST_CASE("trimmed mesher: timing of a finely trimmed bump", "[.][trim-timing][!mayfail]") {
+  for (double delta : {1e-3, 3e-4, 1e-4}) {
+    const TrimmedModel model = bumpWithHole(delta, {0.45, 0.55}, 0.2, false);
+    Backend cpu = makeMirrorBackend();
+    TrimmedMeshOptions options;
+    options.tolerance = delta;
+    options.measureGeometric = false;
+    const auto start = std::chrono::steady_clock::now();
+    const TrimmedMesh m = meshTrimmedModel(model, options, cpu);
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const TrimmedFaceStats& s = m.faces[0];
+    WARN("δ " << delta << ": "
+              << model.faces[0].loops[0].uv.size() + model.faces[0].loops[1].uv.size()
+              << " trim points, " << s.triangles << " triangles (" << s.gapTriangles << " gap, "
+              << s.refinementSplits << " splits), max parametric " << s.maxParametricDeviation
+              << ", " << ms << " ms");
+    CHECK(s.maxParametricDeviation <= delta);
+    size_t shown = 0;
+    for (size_t t = 0; t < m.triangleFace.size() && s.maxParametricDeviation > delta; ++t) {
+      const glm::dvec2 a = m.cornerUv[3 * t], b = m.cornerUv[3 * t + 1], d = m.cornerUv[3 * t + 2];
+      const double area = 0.5 * ((b.x - a.x) * (d.y - a.y) - (b.y - a.y) * (d.x - a.x));
+      const double base = std::max({glm::length(b - a), glm::length(d - b), glm::length(a - d)});
+      if (area < 1e-6 * base * base && shown++ < 4)
+        WARN("sliver " << t << ": uv area " << area << ", corners (" << a.x << ", " << a.y
+                       << ") (" << b.x << ", " << b.y << ") (" << d.x << ", " << d.y << ")");
+    }
+  }
 }
