@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "io/errors.h"
+#include "io/input_limit.h"
 #include "io/surface_reader.h"
 #include "io/text_lines.h"
 
@@ -88,7 +89,8 @@ std::vector<BezierPatch> readSurface(const std::string& path, const std::string&
     // The extension decides, as always; a --format that agrees with it changes nothing.
     if (format == extensionOf(path)) return readSurfaceFile(path);
     std::ifstream file = openForReading(path, "a surface file");
-    return parseSurface(file, format, path);
+    BoundedInput in(file, path);
+    return parseSurface(in.stream(), format, path);
   }
   std::istringstream in(readStdin());
   return parseSurface(in, format, kStdinName);

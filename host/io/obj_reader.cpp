@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "io/errors.h"
+#include "io/input_limit.h"
 #include "io/text_lines.h"
 
 namespace tessera {
@@ -204,8 +205,9 @@ PolygonMesh parseObj(std::istream& in, const std::string& nameForMessages) {
 }
 
 PolygonMesh readObj(const std::string& path) {
-  std::ifstream in = openForReading(path, "an OBJ file");
-  return parseObj(in, path);
+  std::ifstream file = openForReading(path, "an OBJ file");
+  BoundedInput in(file, path);
+  return parseObj(in.stream(), path);
 }
 
 }  // namespace tessera

@@ -38,9 +38,32 @@ std::string readWhole(std::istream& in, const std::string& nameForMessages) {
 TextLines::TextLines(std::istream& in, std::string nameForMessages)
     : in_(in), name_(std::move(nameForMessages)) {}
 
+// std::getline into chunk_ in blocks, refusing a line longer than kMaxTextLineBytes before it
+// is all in memory: bytes without a newline (/dev/zero) stop after a megabyte.
+bool TextLines::readChunk() {
+  chunk_.clear();
+  char block[1 << 14];
+  for (;;) {
+    in_.getline(block, sizeof block);
+    const size_t n = size_t(in_.gcount());
+    // Three ways out of getline: the end of the input (the last line, without a newline, or
+    // nothing left); the newline, which gcount() counted; or a full block, the line going on.
+    const bool atEnd = in_.eof(), atNewline = !atEnd && !in_.fail();
+    if (!atEnd && !atNewline && (in_.bad() || n == 0)) return false;
+    chunk_.append(block, atNewline ? n - 1 : n);
+    if (chunk_.size() > kMaxTextLineBytes)
+      fail(InputErrorKind::Syntax, linesRead_ + 1,
+           "a line longer than " + std::to_string(kMaxTextLineBytes >> 20) +
+               " MiB (is this a text file?)");
+    if (atEnd) return !chunk_.empty();
+    if (atNewline) return true;
+    in_.clear();
+  }
+}
+
 bool TextLines::nextPhysicalLine(std::string_view& line) {
   if (chunkPos_ > chunk_.size()) {
-    if (!std::getline(in_, chunk_)) return false;
+    if (!readChunk()) return false;
     chunkPos_ = 0;
     // A UTF-8 byte order mark (Windows editors write one) is no content.
     if (linesRead_ == 0 && chunk_.compare(0, kUtf8Bom.size(), kUtf8Bom) == 0)

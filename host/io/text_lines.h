@@ -20,6 +20,9 @@ namespace tessera {
 // bounding-box diagonals computed later stay far from overflow.
 constexpr double kMaxAbsInputCoordinate = 1e15;
 
+// The longest physical line the text readers take (TextLines): longer is a Syntax error.
+constexpr size_t kMaxTextLineBytes = size_t(1) << 20;
+
 
 // Opens `path` for reading in binary mode (CRLF is handled by the parsers). A directory or an
 // unopenable file is an InputError of kind Io; `kindOfFile` completes "is a directory, not
@@ -57,6 +60,7 @@ class TextLines {
   std::string name_;
   // The next physical line (LF, CRLF or CR ended), 1-based numbering kept in linesRead_.
   bool nextPhysicalLine(std::string_view& line);
+  bool readChunk();
 
   std::string chunk_;                   // what getline read up to the next LF
   size_t chunkPos_ = std::string::npos;  // where in chunk_ the next line starts; npos: read more
