@@ -2,6 +2,7 @@
 
 #include "bspline/knots.h"
 #include "bspline/oslo.h"
+#include "common/memory_budget.h"
 
 namespace tessera {
 
@@ -53,12 +54,26 @@ std::vector<BezierPatchPiece> bezierPatches(const BSplineSurface& surface) {
   const int p = surface.degreeU;
   const int q = surface.degreeV;
   validateSurface(surface);
-  const BSplineSurface alongU =
-      refineSurface(surface, ParamDirection::U, bezierKnots(p, surface.knotsU));
-  const BSplineSurface refined =
-      refineSurface(alongU, ParamDirection::V, bezierKnots(q, surface.knotsV));
-  const std::vector<int> spansU = nonEmptySpans(p, refined.knotsU);
-  const std::vector<int> spansV = nonEmptySpans(q, refined.knotsV);
+  const std::vector<double> knotsU = bezierKnots(p, surface.knotsU);
+  const std::vector<double> knotsV = bezierKnots(q, surface.knotsV);
+  const std::vector<int> spansU = nonEmptySpans(p, knotsU);
+  const std::vector<int> spansV = nonEmptySpans(q, knotsV);
+  // Before refining: the net refined along u, then along both, and the pieces (held twice at
+  // the peak: here and as the tessellator's patch list), from the counts the knots give.
+  const uint64_t refinedU = knotsU.size() - size_t(p) - 1, refinedV = knotsV.size() - size_t(q) - 1;
+  const uint64_t pieces = saturatingMultiply(spansU.size(), spansV.size());
+  const uint64_t pieceBytes = sizeof(BezierPatchPiece) + 16 +  // 16: the allocator's header
+                              uint64_t(p + 1) * uint64_t(q + 1) * sizeof(glm::dvec3);
+  uint64_t bytes = saturatingMultiply(saturatingMultiply(refinedU, uint64_t(surface.countV)) +
+                                          saturatingMultiply(refinedU, refinedV),
+                                      sizeof(glm::dvec3));
+  bytes = saturatingAdd(bytes, saturatingMultiply(2 * pieceBytes, pieces));
+  requireWithinMemoryBudget(
+      bytes, "the degree " + std::to_string(p) + "×" + std::to_string(q) + " B-spline of " +
+                 std::to_string(surface.countU) + "×" + std::to_string(surface.countV) +
+                 " control points as " + std::to_string(pieces) + " Bézier pieces");
+  const BSplineSurface alongU = refineSurface(surface, ParamDirection::U, knotsU);
+  const BSplineSurface refined = refineSurface(alongU, ParamDirection::V, knotsV);
   std::vector<BezierPatchPiece> patches;
   patches.reserve(spansU.size() * spansV.size());
   for (int mu : spansU) {

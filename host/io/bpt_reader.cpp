@@ -6,7 +6,9 @@
 #include <fstream>
 #include <string_view>
 
+#include "common/memory_budget.h"
 #include "io/errors.h"
+#include "io/input_limit.h"
 #include "io/quoted_token.h"
 #include "io/text_lines.h"
 
@@ -115,7 +117,17 @@ std::vector<BezierPatch> parseBpt(std::istream& in, const std::string& nameForMe
   std::vector<BezierPatch> patches;
   // The count is untrusted until the patches are there: reserve only a sane amount.
   patches.reserve(static_cast<size_t>(std::min<long long>(count, 4096)));
-  for (long long p = 0; p < count; ++p) patches.push_back(parsePatch(src, p, count));
+  // The patches held so far, each a BezierPatch and its own control-point allocation (with
+  // the allocator's 16-byte header), checked as they come: the text is bounded by the
+  // input-size limit, but a short patch ("1 1" and four points) costs six times its text.
+  uint64_t bytes = 0;
+  for (long long p = 0; p < count; ++p) {
+    patches.push_back(parsePatch(src, p, count));
+    bytes += sizeof(BezierPatch) + 16 + patches.back().cp.size() * sizeof(glm::dvec3);
+    if (bytes > memoryBudget() / 2)  // the vector's growth may double it
+      requireWithinMemoryBudget(2 * bytes, nameForMessages + ": " + std::to_string(p + 1) +
+                                               " of its " + std::to_string(count) + " patches");
+  }
 
   if (src.next()) {
     const auto& tokens = src.tokens();
@@ -130,8 +142,9 @@ std::vector<BezierPatch> parseBpt(std::istream& in, const std::string& nameForMe
 }
 
 std::vector<BezierPatch> readBpt(const std::string& path) {
-  std::ifstream in = openForReading(path, "a .bpt file");
-  return parseBpt(in, path);
+  std::ifstream file = openForReading(path, "a .bpt file");
+  BoundedInput in(file, path);
+  return parseBpt(in.stream(), path);
 }
 
 }  // namespace tessera

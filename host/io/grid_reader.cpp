@@ -7,7 +7,10 @@
 #include <string_view>
 #include <vector>
 
+#include "common/memory_budget.h"
+#include "geometry/patch.h"
 #include "io/errors.h"
+#include "io/input_limit.h"
 #include "io/quoted_token.h"
 #include "io/text_lines.h"
 
@@ -46,6 +49,15 @@ GridData parseGrid(std::istream& in, const std::string& nameForMessages) {
     lines.fail(InputErrorKind::Range, "grid " + std::to_string(grid.rows) + "×" +
                                           std::to_string(grid.cols) + " has more than " +
                                           std::to_string(kGridMaxPoints) + " points");
+  // Before reading the points: the grid and what interpolateGrid makes of it, per point the
+  // point, five derivative arrays and four edge-point arrays (10 dvec3), per cell a bicubic
+  // patch (16 control points in their own allocation).
+  const uint64_t cells = uint64_t(grid.rows - 1) * uint64_t(grid.cols - 1);
+  requireWithinMemoryBudget(
+      uint64_t(count) * 10 * sizeof(glm::dvec3) +
+          cells * (sizeof(BezierPatch) + 16 + 16 * sizeof(glm::dvec3)),
+      nameForMessages + ": the " + std::to_string(grid.rows) + "×" + std::to_string(grid.cols) +
+          " grid and its " + std::to_string(cells) + " bicubic patches");
   const std::string declared = "the " + std::to_string(grid.rows) + "×" +
                                std::to_string(grid.cols) + " = " + std::to_string(count) +
                                " points declared on line " + std::to_string(lines.line());
@@ -81,8 +93,9 @@ GridData parseGrid(std::istream& in, const std::string& nameForMessages) {
 }
 
 GridData readGrid(const std::string& path) {
-  std::ifstream in = openForReading(path, "a .grid file");
-  return parseGrid(in, path);
+  std::ifstream file = openForReading(path, "a .grid file");
+  BoundedInput in(file, path);
+  return parseGrid(in.stream(), path);
 }
 
 }  // namespace tessera

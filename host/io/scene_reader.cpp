@@ -2,12 +2,15 @@
 // (io/json_document.h), then walked with the scene's rules. Format: docs/scene_format.md.
 #include "io/scene_reader.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <initializer_list>
 #include <stdexcept>
 
+#include "common/memory_budget.h"
 #include "io/errors.h"
+#include "io/input_limit.h"
 #include "io/quoted_token.h"
 #include "io/json_document.h"
 #include "io/text_lines.h"
@@ -336,15 +339,30 @@ class SceneParser {
 
 }  // namespace
 
+uint64_t estimatedSceneBytes(std::string_view text) {
+  // Every value but the root ends before a ',' or a closing bracket, so values ≤ commas +
+  // containers + 1 (a comma inside a string only raises the bound). Each is a JsonValue,
+  // held in a vector that may have doubled past it; each number then becomes a double of the
+  // scene.
+  const uint64_t values = uint64_t(std::count(text.begin(), text.end(), ',')) +
+                          uint64_t(std::count(text.begin(), text.end(), '[')) +
+                          uint64_t(std::count(text.begin(), text.end(), '{')) + 1;
+  return text.size() + values * (2 * sizeof(JsonValue) + sizeof(double));
+}
+
 Scene parseScene(std::istream& in, const std::string& nameForMessages) {
   const std::string text = readWhole(in, nameForMessages);
+  requireWithinMemoryBudget(estimatedSceneBytes(text),
+                            nameForMessages + ": its JSON document and scene (" +
+                                formatByteSize(text.size()) + " of text)");
   const JsonDocument doc = parseJsonDocument(text, nameForMessages);
   return SceneParser(doc, nameForMessages).parse();
 }
 
 Scene readScene(const std::string& path) {
-  std::ifstream in = openForReading(path, "a .json scene file");
-  return parseScene(in, path);
+  std::ifstream file = openForReading(path, "a .json scene file");
+  BoundedInput in(file, path);
+  return parseScene(in.stream(), path);
 }
 
 }  // namespace tessera

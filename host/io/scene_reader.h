@@ -15,8 +15,10 @@
 // (host/io/errors.h) naming the file, the line of the offending JSON value and the reason.
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <istream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "bspline/bspline.h"
@@ -51,6 +53,11 @@ struct Scene {
 
 // Read the file at `path`; an unreadable file is an InputError of kind Io.
 Scene readScene(const std::string& path);
+
+// The bytes parseScene holds for `text`: the text, the JSON document (whose
+// values are counted from the commas and brackets, and the scene's numbers); it throws
+// MemoryLimitError (common/memory_budget.h) before parsing when this exceeds the budget.
+uint64_t estimatedSceneBytes(std::string_view text);
 
 // Parse scene JSON from `in`; `nameForMessages` stands for the file in error messages.
 Scene parseScene(std::istream& in, const std::string& nameForMessages);

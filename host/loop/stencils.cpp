@@ -1,9 +1,11 @@
 #include "loop/stencils.h"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 #include <string>
 
+#include "common/memory_budget.h"
 #include "loop/limit.h"
 
 namespace tessera {
@@ -59,6 +61,41 @@ void StencilTable::append(const LoopMask& mask, uint32_t rowOffset) {
   offsets.push_back(uint32_t(indices.size()));
 }
 
+uint64_t estimatedLoopStencilBytes(size_t baseFaces, const LoopStencilOptions& options) {
+  // Counts on a closed triangle mesh (Euler: E = 3F/2, V ≈ F/2; boundaries change little):
+  // level l has F·4^l faces. Bytes per face of one level's LoopTopology, from its arrays:
+  // triangles 3 u32, edgeVertices and edgeFaces 1.5 pairs each, faceEdges 3 u32, edge flags
+  // 1.5 × 2 bytes, rings 2E = 3F entries of vertex and edge (u32 each), and per vertex an
+  // offset, two flags and a rule.
+  const double topologyPerFace =
+      3.0 * sizeof(uint32_t) + 1.5 * 2 * sizeof(std::array<uint32_t, 2>) + 3.0 * sizeof(uint32_t) +
+      1.5 * 2 + 3.0 * 2 * sizeof(uint32_t) +
+      0.5 * (sizeof(uint32_t) + 2 + sizeof(LoopVertexRule));
+  // The stencils that make level l + 1 from level l: V_l vertex masks of valence + 1 ≈ 7
+  // entries and E_l edge masks of 4, i.e. 9.5 F_l entries of an index and a double weight,
+  // plus 2 F_l offsets; the fp32 copy for the evaluators repeats them with float weights.
+  const double stencilPerFace = 9.5 * (2 * sizeof(uint32_t) + sizeof(double) + sizeof(float)) +
+                                2.0 * 2 * sizeof(uint32_t);
+  // Limit positions (valence + 1 ≈ 7 entries) and two tangents (≈ 6 each) per vertex of the
+  // last level, in double and fp32.
+  const double limitPerFace =
+      0.5 * ((options.limit ? 7 : 0) + (options.tangents ? 12 : 0)) *
+      (2 * sizeof(uint32_t) + sizeof(double) + sizeof(float));
+  // The evaluators' rows (3 floats per row of every level) and the output: double positions,
+  // the float TriangleMesh and its indices, per vertex (V = F/2) or face of the last level.
+  const double rowsAndOutputPerFace =
+      0.5 * (3 * sizeof(float) + sizeof(double) * 3 + sizeof(float) * 3 * (options.limit ? 2 : 1)) +
+      2 * 3 * sizeof(uint32_t);
+  double before = 0, faces = double(baseFaces);  // faces of levels 0 .. L − 1; of level L
+  for (int level = 0; level < options.levels && faces < 1e30; ++level) {
+    before += faces;
+    faces *= 4;
+  }
+  const double bytes = (before + faces) * topologyPerFace + before * stencilPerFace +
+                       faces * (limitPerFace + rowsAndOutputPerFace) + 4.0 / 3.0 * faces * 12;
+  return bytes >= 1.8e19 ? UINT64_MAX : uint64_t(bytes);
+}
+
 FloatStencilTable toFloatStencils(const StencilTable& table) {
   FloatStencilTable out;
   out.sourceRows = table.sourceRows;
@@ -73,6 +110,11 @@ LoopStencils buildLoopStencils(const LoopTopology& base, const LoopStencilOption
   if (options.levels < 0)
     throw std::invalid_argument("buildLoopStencils: negative level count " +
                                 std::to_string(options.levels));
+  requireWithinMemoryBudget(
+      estimatedLoopStencilBytes(base.faceCount(), options),
+      "Loop subdivision of " + std::to_string(base.faceCount()) + " triangles to level " +
+          std::to_string(options.levels) + " (" + std::to_string(base.faceCount()) + " × 4^" +
+          std::to_string(options.levels) + " triangles)");
   LoopStencils out;
   StencilTable& table = out.table;
   table.sourceRows = base.vertexCount;

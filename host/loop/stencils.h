@@ -55,7 +55,15 @@ struct LoopStencils {
   uint32_t tangent1Row = kLoopNone, tangent2Row = kLoopNone;
 };
 
+// Throws MemoryLimitError (common/memory_budget.h) when estimatedLoopStencilBytes exceeds the
+// memory budget, before any level is built.
 LoopStencils buildLoopStencils(const LoopTopology& base, const LoopStencilOptions& options);
+
+// The bytes buildLoopStencils and an evaluator's run hold for `baseFaces` control triangles
+// under `options` (every level's topology, the chained stencil tables in double and fp32, the
+// rows and the output mesh): faces × 4^levels times bytes per face from the structs' sizes
+// (derivation in stencils.cpp).
+uint64_t estimatedLoopStencilBytes(size_t baseFaces, const LoopStencilOptions& options);
 
 // Applies `table` in double. `rows` holds rowCount() × width values; the first sourceRows ×
 // width are read, the rest written.

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <unordered_map>
 
+#include "common/memory_budget.h"
 #include "common/stopwatch.h"
 #include "eval/evaluator.h"
 #include "geometry/general_patch.h"
@@ -20,6 +21,10 @@ QuadtreeResult uniformGrid(size_t patchCount, const QuadtreeOptions& o) {
     throw TessellationLimitError("rule A: " + std::to_string(patchCount) + " patches × " +
                                  std::to_string(cells) + " cells exceed the node budget of " +
                                  std::to_string(o.nodeBudget));
+  requireWithinMemoryBudget(
+      saturatingMultiply(saturatingMultiply(patchCount, cells), kTessellationBytesPerNode),
+      "rule A's " + std::to_string(patchCount) + " patches × " + std::to_string(cells) +
+          " cells and their mesh");
   result.leaves.reserve(patchCount * cells);
   for (uint32_t p = 0; p < patchCount; ++p)
     for (int i = 0; i < o.gridU; ++i)
@@ -265,6 +270,9 @@ void buildGroupTree(const PatchSet& patches, uint32_t firstPatch, const Quadtree
       for (auto& n : next) n.patchIndex += firstPatch;  // name the patch as the caller knows it
       throwBudgetExceeded(next, level, total, options.nodeBudget);
     }
+    requireWithinMemoryBudget(saturatingMultiply(total, kTessellationBytesPerNode),
+                              "the quad-tree's " + std::to_string(total) + " nodes at level " +
+                                  std::to_string(level + 1) + " and their mesh");
     result.peakFrontierNodes =
         std::max(result.peakFrontierNodes, waiting + batch.nodes.size() + next.size());
     waiting += next.size();
@@ -285,6 +293,9 @@ QuadtreeResult buildTree(const PatchSet& patches, const QuadtreeOptions& options
     throw TessellationLimitError(std::to_string(patches.size()) +
                                  " patches exceed the node budget of " +
                                  std::to_string(options.nodeBudget));
+  requireWithinMemoryBudget(saturatingMultiply(patches.size(), kTessellationBytesPerNode),
+                            "the quad-tree of " + std::to_string(patches.size()) +
+                                " patches and their mesh");
 
   const size_t batchNodes = frontierBatchNodes(options, classifier.maxBatchNodes());
   const size_t bufferBytes = classifier.maxPatchBufferBytes();
