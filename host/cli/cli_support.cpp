@@ -6,12 +6,15 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <new>
 #include <sstream>
 
 #include "cli/commands.h"
 #include "cli/stdio.h"
+#include "common/memory_budget.h"
 #include "io/errors.h"
 #include "io/gltf_writer.h"
+#include "io/input_limit.h"
 #include "io/obj_writer.h"
 #include "io/ply_writer.h"
 
@@ -33,8 +36,17 @@ int runReportingErrors(const std::function<int()>& body, const std::vector<std::
   } catch (const vk::VulkanError& e) {
     std::fprintf(stderr, "tessera: the Vulkan device failed: %s (try --backend cpu)\n", e.what());
     return kExitDevice;
-  } catch (const TessellationLimitError& e) {
+  } catch (const LimitError& e) {  // the node budget, the memory budget, the input size
     std::fprintf(stderr, "tessera: %s\n", e.what());
+    return kExitLimit;
+  } catch (const std::bad_alloc&) {
+    // An allocation no estimate foresaw (or the machine has less free than it said): still a
+    // limit reached, not a bug.
+    std::fprintf(stderr,
+                 "tessera: out of memory (the memory budget is %s; the machine could not "
+                 "give that much: lower it with --memory-budget SIZE so the run stops early, "
+                 "or free memory)\n",
+                 formatByteSize(memoryBudget()).c_str());
     return kExitLimit;
   } catch (const CLI::ValidationError& e) {
     std::fprintf(stderr, "tessera: %s\n", e.what());
@@ -46,6 +58,24 @@ int runReportingErrors(const std::function<int()>& body, const std::vector<std::
     std::fprintf(stderr, "tessera: internal error: %s\n", e.what());
     return kExitInternal;
   }
+}
+
+void addResourceLimitOptions(CLI::App& command) {
+  command.add_option_function<std::string>(
+      "--memory-budget",
+      [](const std::string& text) {
+        checkCommandLine([&] { setMemoryBudget(parseByteSize(text)); });
+      },
+      "stop with exit 4 when a stage's estimate exceeds SIZE (e.g. 512M, 4G; default: half of "
+      "the smallest of free memory, the cgroup limit and ulimit -v)")
+      ->type_name("SIZE");
+  command.add_option_function<std::string>(
+      "--max-input-size",
+      [](const std::string& text) {
+        checkCommandLine([&] { setMaxInputBytes(parseByteSize(text)); });
+      },
+      "refuse input files larger than SIZE with exit 4 (default 1G)")
+      ->type_name("SIZE");
 }
 
 void checkCommandLine(const std::function<void()>& check) {
@@ -143,7 +173,13 @@ void checkMeshFormat(const std::string& path, const std::string& format) {
 void writeMesh(const std::string& path, const TriangleMesh& mesh, const std::string& format) {
   const std::string chosen = meshFormat(path, format);
   if (path == kStdioPath) {
-    // Built whole first, so a failing writer leaves standard output empty.
+    // Built whole first, so a failing writer leaves standard output empty: held twice (the
+    // stream and its copy), at most ~140 bytes of OBJ text per vertex (v, vn, vt lines of
+    // 16-character numbers) and ~100 per triangle (f a/a/a b/b/b c/c/c); PLY and GLB are less.
+    requireWithinMemoryBudget(
+        2 * (uint64_t(mesh.vertexCount()) * 140 + uint64_t(mesh.triangleCount()) * 100),
+        "writing the mesh of " + std::to_string(mesh.triangleCount()) +
+            " triangles to standard output (a file is written as it goes)");
     std::ostringstream bytes(std::ios::binary);
     if (chosen == "obj")
       writeObj(bytes, mesh);

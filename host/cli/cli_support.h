@@ -34,6 +34,10 @@ int runReportingErrors(const std::function<int()>& body, const std::vector<std::
 // input (exit 2): one path for every option, so no option's range is checked twice.
 void checkCommandLine(const std::function<void()>& check);
 
+// Adds --memory-budget SIZE (common/memory_budget.h) and --max-input-size SIZE
+// (io/input_limit.h) to `command`; a bad SIZE is a usage error (exit 1).
+void addResourceLimitOptions(CLI::App& command);
+
 // Adds checks to the numeric options of every subcommand of `app` (single values and lists):
 // floating-point ones refuse nan and ±inf (CLI11 parses them as numbers, and CLI::Range lets
 // NaN through since every comparison with it is false: an option's range check would be

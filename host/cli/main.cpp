@@ -28,8 +28,11 @@ int main(int argc, char** argv) {
   // Ctrl-C or kill during a write: no temporary file left behind (host/io/atomic_file.h).
   tessera::removePendingTempFilesOnSignals();
   // Every command's --help ends with the environment variables, exit codes and docs.
-  for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; }))
+  for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) {
     command->footer(tessera::cli::helpFooter());
+    // Every command reads input and can allocate a lot (docs/hardening.md, memory budget).
+    tessera::cli::addResourceLimitOptions(*command);
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
