@@ -11,6 +11,7 @@
 #include "loop/evaluator.h"
 #include "loop_stencil_comp.h"
 #include "shaders/layout.h"
+#include "tessera/errors.h"
 #include "vk/buffer.h"
 #include "vk/pipeline.h"
 
@@ -38,11 +39,19 @@ class VulkanStencilEvaluator final : public StencilEvaluator {
         batchEnds_(table.batchEnds) {
     if (width == 0) throw std::invalid_argument("stencil evaluator: row width 0");
     const uint64_t valueBytes = uint64_t(table.rowCount()) * width * sizeof(float);
+    // Each array is one storage buffer: check every one against the range, and name the one
+    // that does not fit (the indices and weights, not the vertex data, overflow first).
     const uint64_t limit = context.info().maxStorageBufferRange;
-    if (valueBytes > limit || table.indices.size() * sizeof(uint32_t) > limit)
-      throw std::length_error("Loop stencils: " + std::to_string(valueBytes) +
-                              " bytes of vertex data exceed the device's storage buffer range (" +
-                              std::to_string(limit) + " bytes); use fewer levels");
+    const struct { const char* what; uint64_t bytes; } arrays[] = {
+        {"vertex data", valueBytes},
+        {"stencil offsets", uint64_t(table.offsets.size()) * sizeof(uint32_t)},
+        {"stencil indices", uint64_t(table.indices.size()) * sizeof(uint32_t)},
+        {"stencil weights", uint64_t(table.weights.size()) * sizeof(float)}};
+    for (const auto& array : arrays)
+      if (array.bytes > limit)
+        throw LimitError("Loop stencils: " + std::to_string(array.bytes) + " bytes of " +
+                         array.what + " exceed the device's storage buffer range (" +
+                         std::to_string(limit) + " bytes); use fewer levels or --backend cpu");
     offsets_ = uploadArray(context, table.offsets.data(), table.offsets.size() * sizeof(uint32_t));
     indices_ = uploadArray(context, table.indices.data(), table.indices.size() * sizeof(uint32_t));
     weights_ = uploadArray(context, table.weights.data(), table.weights.size() * sizeof(float));
