@@ -351,7 +351,9 @@ uint64_t estimatedSceneBytes(std::string_view text) {
 }
 
 Scene parseScene(std::istream& in, const std::string& nameForMessages) {
-  const std::string text = readWhole(in, nameForMessages);
+  // JSON holds no raw NUL (RFC 8259: control characters are escaped), so the parser fails at
+  // the first one whatever follows it.
+  const std::string text = readWhole(in, nameForMessages, /*stopAfterNul=*/true);
   requireWithinMemoryBudget(estimatedSceneBytes(text),
                             nameForMessages + ": its JSON document and scene (" +
                                 formatByteSize(text.size()) + " of text)");

@@ -29,8 +29,12 @@ constexpr size_t kMaxTextLineBytes = size_t(1) << 20;
 // <kindOfFile>", e.g. "an OBJ file".
 std::ifstream openForReading(const std::string& path, const char* kindOfFile);
 
-// All of `in` as one string; a read error (badbit) is an InputError of kind Io.
-std::string readWhole(std::istream& in, const std::string& nameForMessages);
+// All of `in` as one string; a read error (badbit) is an InputError of kind Io. With
+// `stopAfterNul`, reading stops at the end of the 64 KiB block holding the first NUL byte: for
+// formats whose text can hold no NUL (JSON), the parser's error is then the same, at or
+// before that byte, and /dev/zero or binary garbage costs a block, not the input-size limit.
+std::string readWhole(std::istream& in, const std::string& nameForMessages,
+                      bool stopAfterNul = false);
 
 // The UTF-8 byte order mark some editors put at the start of a text file.
 constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
