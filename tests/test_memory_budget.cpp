@@ -60,7 +60,7 @@ TEST_CASE("an estimate over the budget is a LimitError naming both and the optio
     const std::string message = e.what();
     INFO(message);
     CHECK(message.find("the test's array needs about 3.00 GiB") != std::string::npos);
-    CHECK(message.find("memory budget of 64 MiB") != std::string::npos);
+    CHECK(message.find("memory budget of 64.0 MiB") != std::string::npos);
     CHECK(message.find("--memory-budget SIZE") != std::string::npos);
   }
   CHECK_THROWS_AS(requireWithinMemoryBudget(saturatingMultiply(1ull << 40, 1ull << 40), "x"),
@@ -99,7 +99,7 @@ TEST_CASE("a BoundedInput stops at the input-size limit", "[io][memory]") {
     FAIL("read past the limit");
   } catch (const LimitError& e) {
     CHECK(std::string(e.what()).find("big.txt: the input is larger than the input-size limit of "
-                                     "98 KiB") != std::string::npos);
+                                     "97.7 KiB") != std::string::npos);
   }
   setMaxInputBytes(saved);
 }

@@ -136,7 +136,8 @@ std::string formatByteSize(uint64_t bytes) {
     ++u;
   }
   char text[32];
-  std::snprintf(text, sizeof text, value < 10 ? "%.2f %s" : "%.0f %s", value, units[u]);
+  std::snprintf(text, sizeof text, value < 10 ? "%.2f %s" : value < 100 ? "%.1f %s" : "%.0f %s",
+                value, units[u]);
   return text;
 }
 
