@@ -125,8 +125,9 @@ std::vector<BezierPatch> parseBpt(std::istream& in, const std::string& nameForMe
     patches.push_back(parsePatch(src, p, count));
     bytes += sizeof(BezierPatch) + 16 + patches.back().cp.size() * sizeof(glm::dvec3);
     if (bytes > memoryBudget() / 2)  // the vector's growth may double it
-      requireWithinMemoryBudget(2 * bytes, nameForMessages + ": " + std::to_string(p + 1) +
-                                               " of its " + std::to_string(count) + " patches");
+      requireWithinMemoryBudget(2 * bytes, nameForMessages + ": holding " +
+                                               std::to_string(p + 1) + " of its " +
+                                               std::to_string(count) + " patches");
   }
 
   if (src.next()) {
