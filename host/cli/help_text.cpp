@@ -22,7 +22,7 @@ std::string helpFooter() {
          code(kExitOk, "success") + code(kExitUsage, "bad command line") +
          code(kExitBadInput, "unreadable or invalid input (file:line: reason)") +
          code(kExitNoVulkan, "--backend vulkan and no usable Vulkan device") +
-         code(kExitLimit, "a resource limit was reached (node budget)") +
+         code(kExitLimit, "a resource limit was reached (node budget, --memory-budget, --max-input-size)") +
          code(kExitOutput, "the output could not be written (nothing left behind)") +
          code(kExitDevice, "the Vulkan device failed mid-run") +
          code(kExitInternal, "internal error (a bug: please report it)") +
