@@ -28,4 +28,10 @@ run - "$tessera" tessellate "$big/patches_30k.bpt" --backend cpu -q -m A --grid 
 run 2 "$tessera" tessellate "$big/x.json" --backend cpu -q
 run 2 "$tessera" tessellate "$big/x.bpt" --backend cpu -q
 run - "$tessera" loop "$torus" -l 8 --backend cpu
+# A budget above the address space: the estimate passes, the allocation fails, and the
+# std::bad_alloc backstop still exits 4, naming the budget.
+run - "$tessera" tessellate "$big/patches_30k.bpt" --backend cpu -q -m A --grid 64 \
+  --node-budget 1000000000000 --memory-budget 1T
+grep -q "out of memory (the memory budget is 1.00 TiB" "$out/stderr" ||
+  { echo "  the backstop's message is missing"; failed=1; }
 exit $failed
