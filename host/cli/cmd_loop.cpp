@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <optional>
 
 #include "cli/cli_support.h"
@@ -83,10 +84,23 @@ int runRefine(const LoopArgs& a) {
   std::vector<float> rows(stencils.table.rowCount() * 3, 0.0f);
   for (size_t v = 0; v < shape.positions.size(); ++v)
     for (int c = 0; c < 3; ++c) rows[3 * v + c] = float(shape.positions[v][c]);
-  auto evaluator = chosen.context
-                       ? makeVulkanStencilEvaluator(*chosen.context, toFloatStencils(stencils.table), 3)
-                       : makeReferenceStencilEvaluator(stencils.table, 3);
-  evaluator->apply(rows);
+  std::unique_ptr<StencilEvaluator> evaluator;
+  try {
+    evaluator = chosen.context
+                    ? makeVulkanStencilEvaluator(*chosen.context, toFloatStencils(stencils.table), 3)
+                    : makeReferenceStencilEvaluator(stencils.table, 3);
+    evaluator->apply(rows);  // rows past the control vertices change only on success
+  } catch (const vk::VulkanError& e) {
+    // As tessellate does (tessellateWithFallback): with --backend auto, a device that fails
+    // mid-run hands the work to the CPU.
+    if (a.backend != "auto" || !chosen.context) throw;
+    std::fprintf(stderr, "tessera: the Vulkan device failed (%s); falling back to the CPU backend\n",
+                 e.what());
+    evaluator = makeReferenceStencilEvaluator(stencils.table, 3);
+    chosen.backend = makeMirrorBackend();  // its classifier holds the context: drop it first
+    chosen.context.reset();
+    evaluator->apply(rows);
+  }
   const LoopTopology& last = stencils.topology.back();
   auto rowsAt = [&](uint32_t first) {
     std::vector<glm::dvec3> out(last.vertexCount);
