@@ -65,6 +65,15 @@ tessera_limit_case("/dev/zero as x.bpt: a line longer than 1 MiB is refused" 2
 tessera_limit_case("/dev/zero as x.obj: a line longer than 1 MiB is refused" 2
   "x.obj:1: a line longer than 1 MiB" loop ${BIG_DIR}/x.obj --backend cpu)
 
+# CAD files (Open CASCADE reads by path): a device is refused, a file over the limit too.
+if(TESSERA_HAVE_CAD)
+  tessera_limit_case("/dev/zero as x.step is refused: not a regular file" 2
+    "x.step: not a regular file" info ${BIG_DIR}/x.step)
+  tessera_limit_case("a STEP file over --max-input-size is refused before Open CASCADE reads it" 4
+    "bspline_200.step: the input is larger than the input-size limit of 100 bytes"
+    info ${BIG_DIR}/bspline_200.step --max-input-size 100)
+endif()
+
 # Bad sizes are a bad command line (exit 1), like any other bad option value.
 foreach(bad 0 12Q -5 1.5.2 M 1e3 nan)
   tessera_limit_case("--memory-budget ${bad} is a usage error" 1

@@ -6,7 +6,8 @@
 #   bspline_200.json   one degree-7 B-spline of 200×200 control points (37,249 pieces)
 #   patches_30k.bpt    30,000 bilinear patches
 #   teapots_100.bpt    100 teapots
-#   x.bpt x.grid x.obj x.json   symbolic links to /dev/zero
+#   bspline_200.step   722 bytes of text named .step (for the input-size limit)
+#   x.bpt x.grid x.obj x.json x.step   symbolic links to /dev/zero
 file(MAKE_DIRECTORY ${DIR})
 file(WRITE ${DIR}/grid_4096.grid "4096 4096\n0 0 0\n")
 
@@ -31,6 +32,9 @@ file(WRITE ${DIR}/bspline_200.json
 string(REPEAT "1 1\n0 0 0\n0 1 0\n1 0 0\n1 1 0\n" 30000 bilinear)
 file(WRITE ${DIR}/patches_30k.bpt "30000\n${bilinear}")
 
+# Not a STEP model: only its size matters (refused before Open CASCADE opens it).
+file(WRITE ${DIR}/bspline_200.step "ISO-10303-21;\n${knots}\n")
+
 file(READ ${TEAPOT} teapot)
 string(REGEX REPLACE "^[ \t]*[0-9]+[ \t\r]*\n" "" teapotPatches "${teapot}")
 string(REGEX MATCH "^[ \t]*[0-9]+" teapotCount "${teapot}")
@@ -39,7 +43,7 @@ math(EXPR total "${teapotCount} * 100")
 string(REPEAT "${teapotPatches}" 100 teapots)
 file(WRITE ${DIR}/teapots_100.bpt "${total}\n${teapots}")
 
-foreach(ext bpt grid obj json)
+foreach(ext bpt grid obj json step)
   file(REMOVE ${DIR}/x.${ext})
   file(CREATE_LINK /dev/zero ${DIR}/x.${ext} SYMBOLIC)
 endforeach()

@@ -15,8 +15,11 @@
 #include <XSControl_WorkSession.hxx>
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <fstream>
+#include <system_error>
 
+#include "common/input_size.h"
 #include "tessera/errors.h"
 
 namespace tessera {
@@ -88,6 +91,12 @@ CadFile readCadFile(const std::string& path) {
   file.path = path;
   if (!std::ifstream(path, std::ios::binary))
     throw InputError(InputErrorKind::Io, path, 0, "cannot open the file");
+  // Open CASCADE reads by path, so its reading cannot be bounded as it goes: a device or a
+  // FIFO (/dev/zero behind x.step) is refused, and a file's size is checked first.
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw InputError(InputErrorKind::Io, path, 0, "not a regular file (CAD files are read by path)");
+  requireInputWithinLimit(std::filesystem::file_size(path, ec), path);
   const std::string ext = lowerExtension(path);
   try {
     if (ext == "step" || ext == "stp") {

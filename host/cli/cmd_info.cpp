@@ -2,6 +2,7 @@
 #include <cctype>
 #include <cstdio>
 
+#include "cli/cli_support.h"
 #include "cli/commands.h"
 #include "io/errors.h"
 #include "io/surface_reader.h"
@@ -45,11 +46,12 @@ void addInfoCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("input", input, "input surface file (.bpt or .grid), or a CAD model (.step, .iges, .brep)")
       ->required();
   cmd->callback([&exitCode] {
-    try {
+    // Every error through the one mapping to exit codes (a limit is 4, not an abort).
+    exitCode = runReportingErrors([] {
       if (isCadFile(input)) {
 #ifdef TESSERA_HAVE_CAD
         describeCad(input);
-        return;
+        return int(kExitOk);
 #else
         throw InputError(InputErrorKind::Syntax, input, 0,
                          "this tessera was built without Open CASCADE's data exchange (host/cad/)");
@@ -62,10 +64,8 @@ void addInfoCommand(CLI::App& app, int& exitCode) {
       std::printf("%s: %zu patches\n", input.c_str(), patches.size());
       if (!patches.empty())
         std::printf("bounds: (%g, %g, %g) .. (%g, %g, %g)\n", lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
-    } catch (const InputError& e) {
-      std::fprintf(stderr, "tessera: %s\n", e.what());
-      exitCode = kExitBadInput;
-    }
+      return int(kExitOk);
+    }, {});
   });
 }
 

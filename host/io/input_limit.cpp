@@ -1,27 +1,8 @@
 #include "io/input_limit.h"
 
-#include <atomic>
-
-#include "common/memory_budget.h"
 #include "io/errors.h"
 
 namespace tessera {
-namespace {
-
-std::atomic<uint64_t> maxInput{kDefaultMaxInputBytes};
-
-}  // namespace
-
-uint64_t maxInputBytes() { return maxInput.load(); }
-void setMaxInputBytes(uint64_t bytes) { maxInput.store(bytes); }
-
-void requireInputWithinLimit(uint64_t bytes, const std::string& name) {
-  if (bytes <= maxInputBytes()) return;
-  throw MemoryLimitError(name + ": the input is larger than the input-size limit of " +
-                         formatByteSize(maxInputBytes()) +
-                         " (an endless device such as /dev/zero? raise the limit with "
-                         "--max-input-size SIZE)");
-}
 
 BoundedInput::BoundedInput(std::istream& source, std::string nameForMessages)
     : buffer_(source.rdbuf(), std::move(nameForMessages)), stream_(&buffer_) {

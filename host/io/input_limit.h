@@ -10,14 +10,9 @@
 #include <streambuf>
 #include <string>
 
+#include "common/input_size.h"  // maxInputBytes, requireInputWithinLimit
+
 namespace tessera {
-
-constexpr uint64_t kDefaultMaxInputBytes = uint64_t(1) << 30;
-uint64_t maxInputBytes();
-void setMaxInputBytes(uint64_t bytes);
-
-// Throws MemoryLimitError naming `name` when `bytes` read so far exceed maxInputBytes().
-void requireInputWithinLimit(uint64_t bytes, const std::string& name);
 
 // A stream over `source`'s buffer that throws (through the stream, which then has badbit set)
 // once more than maxInputBytes() have been taken from it.
