@@ -1,0 +1,306 @@
+// Case 7, CAD models (issue 17): every STEP and IGES model of FreeCAD's IDF library
+// (/usr/share/freecad/Mod/Idf/Idflibs/, Debian's freecad-common), meshed at two tolerances
+// relative to each model's bounding-box diagonal by Open CASCADE's BRepMesh_IncrementalMesh
+// (linear deflection δ, angular 0.5 rad, serial and parallel) and by Tessera's trimmed-face
+// path (host/cad/ + host/trim/: faces to rational Bézier pieces, edges discretised once to δ,
+// rule T per face, the cut along the trim loops), on the CPU mirror and on Vulkan.
+// Reading the file is left out of every time (both use OCCT's reader); Tessera's time is the
+// conversion to its trimmed faces plus the meshing, OCCT's is BRepMesh on a cleaned shape.
+// Both meshes are measured by the same code: the distance from sample points of every
+// triangle ((i, j, k)/3 barycentric, corners included) to the face's own surface
+// (GeomAPI_ProjectPointOnSurf within the face's uv bounds), the largest over the corpus, as a
+// multiple of δ. A point the projection cannot place is counted, not guessed.
+// Usage: bench_cad [relative tolerances = 0.001,0.0001] [--dir folder] [--json file]
+#include <BRepBndLib.hxx>
+#include <BRepMesh_IncrementalMesh.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <Geom_Surface.hxx>
+#include <Poly_Triangulation.hxx>
+#include <Standard_Version.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Face.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bench_report.h"
+#include "cad/cad_file.h"
+#include "cad/to_trimmed.h"
+#include "common/stopwatch.h"
+#include "mesh/tessellate.h"
+#include "trim/mesher.h"
+#include "vk/context.h"
+
+using namespace tessera;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kIdfLibrary = "/usr/share/freecad/Mod/Idf/Idflibs";
+
+// A triangle soup with each triangle's face: what the deviation measure takes from either mesher.
+struct FaceTriangles {
+  std::vector<gp_Pnt> corners;   // 3 per triangle
+  std::vector<TopoDS_Face> face;  // 1 per triangle
+};
+
+// Largest distance of the triangles' sample points to their faces' surfaces.
+struct Deviation {
+  double max = 0;
+  size_t samples = 0, unprojected = 0;
+};
+
+Deviation measureDistance(const FaceTriangles& mesh) {
+  Deviation d;
+  // Triangles of one face are consecutive in both meshers' output, so the projector is set up
+  // once per run of triangles on one face.
+  GeomAPI_ProjectPointOnSurf projector;
+  TopoDS_Face current;  // instances of one face differ by location: IsEqual compares both
+  for (size_t t = 0; t < mesh.face.size(); ++t) {
+    const TopoDS_Face& face = mesh.face[t];
+    if (!face.IsEqual(current)) {
+      current = face;
+      double u0, u1, v0, v1;
+      BRepTools::UVBounds(face, u0, u1, v0, v1);
+      projector.Init(BRep_Tool::Surface(face), u0, u1, v0, v1);
+    }
+    const gp_Pnt* c = &mesh.corners[3 * t];
+    for (int i = 0; i <= 3; ++i)
+      for (int j = 0; i + j <= 3; ++j) {
+        const int k = 3 - i - j;
+        const gp_Pnt p((i * c[0].XYZ() + j * c[1].XYZ() + k * c[2].XYZ()) / 3.0);
+        projector.Perform(p);
+        ++d.samples;
+        if (projector.NbPoints() == 0) {
+          ++d.unprojected;
+          continue;
+        }
+        d.max = std::max(d.max, projector.LowerDistance());
+      }
+  }
+  return d;
+}
+
+FaceTriangles occtTriangles(const TopoDS_Shape& shape) {
+  FaceTriangles out;
+  for (TopExp_Explorer e(shape, TopAbs_FACE); e.More(); e.Next()) {
+    const TopoDS_Face& face = TopoDS::Face(e.Current());
+    TopLoc_Location location;
+    Handle(Poly_Triangulation) tri = BRep_Tool::Triangulation(face, location);
+    if (tri.IsNull()) continue;
+    for (int t = 1; t <= tri->NbTriangles(); ++t) {
+      int n[3];
+      tri->Triangle(t).Get(n[0], n[1], n[2]);
+      for (int corner : n) out.corners.push_back(tri->Node(corner).Transformed(location));
+      out.face.push_back(face);
+    }
+  }
+  return out;
+}
+
+FaceTriangles tesseraTriangles(const TrimmedMesh& mesh, const CadImport& import) {
+  FaceTriangles out;
+  for (size_t t = 0; t < mesh.triangleFace.size(); ++t) {
+    for (int corner = 0; corner < 3; ++corner) {
+      const glm::vec3& p = mesh.mesh.positions[mesh.mesh.indices[3 * t + corner]];
+      out.corners.emplace_back(p.x, p.y, p.z);
+    }
+    const uint32_t faceIndex = import.model.faces[mesh.triangleFace[t]].faceIndex;
+    out.face.push_back(TopoDS::Face(import.faces.FindKey(int(faceIndex) + 1)));
+  }
+  return out;
+}
+
+double diagonalOf(const TopoDS_Shape& shape) {
+  Bnd_Box box;
+  BRepBndLib::Add(shape, box);
+  return box.IsVoid() ? 1.0 : std::sqrt(box.SquareExtent());
+}
+
+// The sum over the corpus of each model's min and median: the corpus meshed once, file by file.
+struct Totals {
+  double minSeconds = 0, medianSeconds = 0;
+  size_t triangles = 0;
+  double worstRatio = 0;  // largest measured distance / δ over the models
+  std::string worstModel;
+  size_t samples = 0, unprojected = 0;
+  nlohmann::json perModel = nlohmann::json::array();
+
+  void add(const std::string& model, const bench::Timing& time, size_t count, const Deviation& d,
+           double delta) {
+    minSeconds += time.minSeconds;
+    medianSeconds += time.medianSeconds;
+    triangles += count;
+    samples += d.samples;
+    unprojected += d.unprojected;
+    if (d.max / delta > worstRatio) {
+      worstRatio = d.max / delta;
+      worstModel = model;
+    }
+    perModel.push_back({{"model", model},
+                        {"triangles", count},
+                        {"minSeconds", time.minSeconds},
+                        {"distanceOverDelta", d.max / delta}});
+  }
+};
+
+struct Models {
+  std::vector<std::string> paths;
+  std::vector<CadFile> files;
+};
+
+Models readCorpus(const std::string& folder) {
+  Models m;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    std::string ext = entry.path().extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+    if (ext == ".stp" || ext == ".step" || ext == ".igs" || ext == ".iges")
+      m.paths.push_back(entry.path().string());
+  }
+  std::sort(m.paths.begin(), m.paths.end());
+  for (const std::string& path : m.paths) m.files.push_back(readCadFile(path));
+  return m;
+}
+
+void runTolerance(bench::Report& report, const Models& models, double relative,
+                  std::vector<std::pair<std::string, Backend*>>& backends) {
+  Totals occt[2];
+  std::vector<Totals> tessera(backends.size());
+  size_t failedFaces = 0, faces = 0;
+  for (size_t f = 0; f < models.files.size(); ++f) {
+    const CadFile& file = models.files[f];
+    const std::string name = fs::path(file.path).filename().string();
+    const double delta = relative * diagonalOf(file.shape);
+    for (int parallel = 0; parallel < 2; ++parallel) {
+      size_t count = 0;
+      std::vector<double> seconds;
+      for (int run = 0; run <= bench::kMinRuns; ++run) {  // run 0 warms up
+        BRepTools::Clean(file.shape);
+        const Stopwatch clock;
+        BRepMesh_IncrementalMesh mesher(file.shape, delta, Standard_False, 0.5,
+                                        parallel ? Standard_True : Standard_False);
+        if (run > 0) seconds.push_back(clock.elapsedSeconds());
+      }
+      std::sort(seconds.begin(), seconds.end());
+      const FaceTriangles soup = occtTriangles(file.shape);
+      count = soup.face.size();
+      const Deviation d = parallel ? Deviation{} : measureDistance(soup);
+      occt[parallel].add(name, {seconds.front(), seconds[seconds.size() / 2], int(seconds.size())},
+                         count, parallel ? Deviation{} : d, delta);
+    }
+    for (size_t b = 0; b < backends.size(); ++b) {
+      TrimmedMeshOptions options;
+      options.tolerance = delta;
+      options.measureGeometric = false;  // measured below by the bench's own code
+      CadImport import;
+      TrimmedMesh mesh;
+      const bench::Timing time = bench::timeRepeated(bench::kMinRuns, [&] {
+        import = toTrimmedModel(file, delta);
+        mesh = meshTrimmedModel(import.model, options, *backends[b].second);
+      });
+      if (b == 0) {
+        faces += import.model.faces.size() + import.failures.size();
+        failedFaces += import.failures.size();
+      }
+      tessera[b].add(name, time, mesh.mesh.triangleCount(),
+                     measureDistance(tesseraTriangles(mesh, import)), delta);
+    }
+    std::fprintf(stderr, "%s at %g of its diagonal: OCCT %zu triangles, Tessera %zu\n",
+                 name.c_str(), relative, occt[0].perModel.back()["triangles"].get<size_t>(),
+                 tessera[0].perModel.back()["triangles"].get<size_t>());
+  }
+
+  char title[320];
+  std::snprintf(title, sizeof title,
+                "FreeCAD IDF library, %zu models (%zu faces, %zu failed to convert), δ = %g of "
+                "each model's diagonal; times are sums over the models of each one's min "
+                "(median) of %d runs; distance = largest measured distance to the face's surface "
+                "/ δ",
+                models.files.size(), faces, failedFaces, relative, bench::kMinRuns);
+  char tableName[64];
+  std::snprintf(tableName, sizeof tableName, "IDF %g", relative);
+  bench::Table& table = report.table(tableName, "triangles", title);
+  table.rateUnit = "corpora/s";  // the ratio is then the speed-up over OCCT serial
+  auto addCase = [&](const std::string& path, const Totals& totals, const Totals* measured) {
+    bench::Case c{path, double(totals.triangles),
+                  {totals.minSeconds, totals.medianSeconds, bench::kMinRuns}};
+    c.throughput = 1.0 / totals.minSeconds;
+    const Totals& m = measured ? *measured : totals;
+    c.extra = {{"distanceOverDelta", m.worstRatio},
+               {"worstModel", m.worstModel},
+               {"samples", m.samples},
+               {"unprojectedSamples", m.unprojected},
+               {"perModel", totals.perModel}};
+    c.extra["speedupVsOcctParallel"] = occt[1].minSeconds / totals.minSeconds;
+    c.extra["trianglesVsOcct"] = double(totals.triangles) / double(occt[0].triangles);
+    table.cases.push_back(c);
+    std::fprintf(stderr,
+                 "%-40s %8zu triangles (%.2fx OCCT), %.4f s (%.1fx faster than OCCT parallel), "
+                 "distance/δ %.3f (%s), %zu of %zu samples unprojected\n",
+                 path.c_str(), totals.triangles, double(totals.triangles) / double(occt[0].triangles),
+                 totals.minSeconds, occt[1].minSeconds / totals.minSeconds, m.worstRatio,
+                 m.worstModel.c_str(), m.unprojected, m.samples);
+  };
+  addCase("OCCT BRepMesh, serial", occt[0], nullptr);
+  addCase("OCCT BRepMesh, parallel (all cores)", occt[1], &occt[0]);  // the same mesh
+  for (size_t b = 0; b < backends.size(); ++b)
+    addCase("Tessera trimmed faces, " + backends[b].first, tessera[b], nullptr);
+  report.print(table);
+}
+
+std::vector<double> parseList(const std::string& text) {
+  std::vector<double> values;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) values.push_back(std::stod(item));
+  return values;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bench::Report report("cad", argc, argv);
+  std::vector<double> relatives = {1e-3, 1e-4};
+  std::string folder = kIdfLibrary;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--dir" && i + 1 < argc)
+      folder = argv[++i];
+    else
+      relatives = parseList(arg);
+  }
+  if (!fs::is_directory(folder)) {
+    std::fprintf(stderr, "bench_cad: %s is not a folder (install freecad-common: scripts/deps.sh)\n",
+                 folder.c_str());
+    return 2;
+  }
+  const Models models = readCorpus(folder);
+  report.note("corpus", folder);
+  report.note("models", models.paths.size());
+  report.note("occtVersion", OCC_VERSION_COMPLETE);
+
+  Backend cpu = makeMirrorBackend();
+  std::vector<std::pair<std::string, Backend*>> backends = {{"CPU (fp32 mirror)", &cpu}};
+  std::unique_ptr<vk::Context> context;
+  Backend vulkan;
+  try {
+    context = std::make_unique<vk::Context>();
+    vulkan = makeVulkanBackend(*context);
+    report.setDevice(*context);
+    backends.push_back({"Vulkan", &vulkan});
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_cad: no Vulkan device (%s): CPU only\n", e.what());
+  }
+  for (double relative : relatives) runTolerance(report, models, relative, backends);
+  report.finish();
+  return 0;
+}
