@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/cad_job.h"
 #include "cli/camera_options.h"
 #include "cli/cli_support.h"
 #include "cli/commands.h"
@@ -48,7 +49,27 @@ struct TessellateArgs {
   bool lowerBound = false;  // --lower-bound: N_min and triangles / N_min (rule T's report has it too)
   std::vector<std::string> formats;  // --format: for `-`, or a path whose extension cannot tell
   CameraArgs camera;  // --view / --view-projection / --viewport: the camera of "--tolerance 1px"
+  bool skipBadFaces = false;  // CAD models: mesh the faces that converted (cad_job.h)
 };
+
+// A CAD model (.step, .iges, .brep) goes through host/cad/ and host/trim/ (cad_job.h).
+int runCad(const TessellateArgs& a) {
+  CadCommand c;
+  c.input = a.input;
+  c.output = a.output;
+  c.stats = a.stats;
+  c.tolerance = a.tolerance;
+  c.method = a.method;
+  c.backend = a.backend;
+  c.device = a.device;
+  c.formats = a.formats;
+  c.json = a.json;
+  c.quiet = a.quiet;
+  c.skipBadFaces = a.skipBadFaces;
+  c.camera = a.camera.given();
+  c.lowerBound = a.lowerBound;
+  return tessellateCadModel(c);
+}
 
 // "N" or "NxM" (also "N×M"), each 1..4096: the cells of rule A's uniform grid.
 void parseGrid(const std::string& text, int& gridU, int& gridV) {
@@ -99,6 +120,7 @@ SplitRule chooseRule(const TessellateArgs& a) {
 }
 
 int run(const TessellateArgs& a) {
+  if (isCadInput(a.input)) return runCad(a);
   QuadtreeOptions options;
   ToleranceSpec toleranceSpec;
   // Every option is checked before any work, by the library's own checks: a value out of
@@ -273,8 +295,8 @@ int run(const TessellateArgs& a) {
 // The options `tessellate` and `stats` share.
 void addTessellateOptions(CLI::App* cmd, TessellateArgs& args) {
   cmd->add_option("input", args.input,
-                  "input surface file (.bpt, .grid or .json); - reads standard input (needs "
-                  "--format)")
+                  "input surface file (.bpt, .grid or .json), or a CAD model (.step/.stp, "
+                  ".iges/.igs, .brep); - reads standard input (needs --format)")
       ->required();
   cmd->add_option("--format", args.formats,
                   "the format where no extension tells it (- or another name): bpt, grid or "
@@ -313,6 +335,9 @@ void addTessellateOptions(CLI::App* cmd, TessellateArgs& args) {
                 "measure the mesh's deviation from the true surface, geometric and parametric. "
                 "Off by default: it can cost more than the tessellation (89% of a 2000-teapot "
                 "run); without it the summary omits it and reports show null");
+  cmd->add_flag("--skip-bad-faces", args.skipBadFaces,
+                "CAD models (.step, .iges, .brep): mesh the faces that converted and list the "
+                "others, instead of refusing the model");
   cmd->add_flag("--lower-bound", args.lowerBound,
                 "report the asymptotic lower bound on the triangles of any mesh within δ and "
                 "this mesh's triangles over it (docs/lower_bound.md). δ is rule T's tolerance, "

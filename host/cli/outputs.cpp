@@ -57,7 +57,7 @@ void checkOutputs(const std::vector<NamedFile>& inputs, const std::vector<NamedF
 }
 
 void stageMesh(AtomicFileGroup& group, const std::string& path, const TriangleMesh& mesh,
-               const std::string& format) {
+               const std::string& format, const std::vector<uint32_t>* triangleFace) {
   const std::string chosen = meshFormat(path, format);
   group.stage(path, [&](std::ostream& out) {
     if (chosen == "obj")
@@ -65,7 +65,7 @@ void stageMesh(AtomicFileGroup& group, const std::string& path, const TriangleMe
     else if (chosen == "ply")
       writePly(out, mesh);
     else
-      writeGlb(out, mesh);
+      writeGlb(out, mesh, triangleFace);
   });
 }
 

@@ -24,7 +24,9 @@ struct NamedFile {
 void checkOutputs(const std::vector<NamedFile>& inputs, const std::vector<NamedFile>& outputs);
 
 // Stages `mesh` in `group`, in `format` or that of `path`'s extension (checkMeshFormat).
+// triangleFace (a CAD model's face per triangle) gives a .glb one primitive per face.
 void stageMesh(AtomicFileGroup& group, const std::string& path, const TriangleMesh& mesh,
-               const std::string& format = "");
+               const std::string& format = "",
+               const std::vector<uint32_t>* triangleFace = nullptr);
 
 }  // namespace tessera::cli

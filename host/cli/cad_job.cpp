@@ -1,0 +1,193 @@
+#include "cli/cad_job.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+
+#include "cli/commands.h"
+#include "cli/outputs.h"
+#include "cli/stdio.h"
+#include "common/stopwatch.h"
+#include "io/errors.h"
+#include "io/stats_report.h"
+#include "vk/context.h"
+#ifdef TESSERA_HAVE_CAD
+#include "cad/cad_file.h"
+#include "cad/to_trimmed.h"
+#endif
+
+namespace tessera::cli {
+
+bool isCadInput(const std::string& path) {
+  std::string lower = path;
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  for (const std::string ext : {".step", ".stp", ".iges", ".igs", ".brep"})
+    if (lower.size() > ext.size() && lower.compare(lower.size() - ext.size(), ext.size(), ext) == 0)
+      return true;
+  return false;
+}
+
+#ifdef TESSERA_HAVE_CAD
+
+CadResult runCadJob(const CadJob& job, ChosenBackend& chosen) {
+  CadResult result;
+  Stopwatch clock;
+  const CadFile file = readCadFile(job.input);
+  result.readMs = clock.elapsedMs();
+  // defaultCadTolerance is 0.1% of the diagonal: the diagonal itself, for relative tolerances.
+  result.diagonal = defaultCadTolerance(file.shape) / 1e-3;
+  result.delta = job.tolerance.relative ? job.tolerance.value * result.diagonal
+                                        : job.tolerance.value;
+  clock.restart();
+  CadImport import = toTrimmedModel(file, result.delta);
+  result.importMs = clock.elapsedMs();
+  result.faces = size_t(import.faces.Extent());
+  result.edges = size_t(import.edges.Extent());
+  result.sharedPoints = import.model.sharedPoints.size();
+  result.maxChordDeviation = import.maxChordDeviation;
+  for (const CadFaceFailure& f : import.failures) result.failures.push_back(f.message);
+  for (const CadEdgeWarning& w : import.warnings) result.warnings.push_back(w.message);
+  if (!import.failures.empty() && !job.skipBadFaces) {
+    std::string reason = std::to_string(import.failures.size()) + " of " +
+                         std::to_string(result.faces) + " faces could not be converted (" +
+                         "--skip-bad-faces meshes the others):";
+    for (const CadFaceFailure& f : import.failures) reason += "\n  " + f.label + ": " + f.reason;
+    throw InputError(InputErrorKind::Syntax, job.input, 0, reason);
+  }
+  TrimmedMeshOptions options;
+  options.tolerance = result.delta;
+  clock.restart();
+  result.mesh = meshTrimmedModel(import.model, options, chosen.backend);
+  result.meshMs = clock.elapsedMs();
+  // The faces' indices in the model (TrimmedFace::faceIndex), not their place in the list of
+  // faces that converted: what the glb's primitives and the stats name.
+  for (uint32_t& face : result.mesh.triangleFace) face = import.model.faces[face].faceIndex;
+  return result;
+}
+
+#else
+
+CadResult runCadJob(const CadJob& job, ChosenBackend&) {
+  throw InputError(InputErrorKind::Syntax, job.input, 0,
+                   "this tessera was built without Open CASCADE's data exchange (host/cad/)");
+}
+
+#endif
+
+nlohmann::json cadStatsToJson(const CadResult& r) {
+  nlohmann::json faces = nlohmann::json::array();
+  double parametric = 0, geometric = 0;
+  for (const TrimmedFaceStats& f : r.mesh.faces) {
+    parametric = std::max(parametric, f.maxParametricDeviation);
+    geometric = std::max(geometric, f.maxGeometricDeviation);
+    faces.push_back({{"face", f.faceIndex},
+                     {"triangles", f.triangles},
+                     {"maxDeviation",
+                      {{"parametric", f.maxParametricDeviation},
+                       {"geometric", f.maxGeometricDeviation}}}});
+  }
+  return {{"tolerance", {{"delta", r.delta}, {"diagonal", r.diagonal}}},
+          {"faces", r.faces},
+          {"facesMeshed", r.mesh.faces.size()},
+          {"failedFaces", r.failures},
+          {"edgeWarnings", r.warnings},
+          {"edges", r.edges},
+          {"sharedPoints", r.sharedPoints},
+          {"maxEdgeChordDeviation", r.maxChordDeviation},
+          {"triangles", r.mesh.mesh.triangleCount()},
+          {"vertices", r.mesh.mesh.vertexCount()},
+          {"maxDeviation", {{"parametric", parametric}, {"geometric", geometric}}},
+          {"timeMs", {{"read", r.readMs}, {"import", r.importMs}, {"mesh", r.meshMs}}},
+          {"perFace", faces}};
+}
+
+namespace {
+
+double largest(const CadResult& r, double TrimmedFaceStats::*field) {
+  double value = 0;
+  for (const TrimmedFaceStats& f : r.mesh.faces) value = std::max(value, f.*field);
+  return value;
+}
+
+void printCadSummary(FILE* to, const std::string& input, const CadResult& r,
+                     const std::string& toleranceText, const ChosenBackend& chosen) {
+  std::fprintf(to, "%s: %zu faces (%zu meshed), %zu edges, tolerance %.4g (%s), backend %s%s%s\n",
+               input.c_str(), r.faces, r.mesh.faces.size(), r.edges, r.delta,
+               toleranceText.c_str(), chosen.backend.name.c_str(), chosen.context ? " on " : "",
+               chosen.deviceName().c_str());
+  std::fprintf(to,
+               "triangles %zu, vertices %zu; measured deviation %.3g geometric, %.3g parametric; "
+               "edge chords within %.3g (measured)\n",
+               r.mesh.mesh.triangleCount(), r.mesh.mesh.vertexCount(),
+               largest(r, &TrimmedFaceStats::maxGeometricDeviation),
+               largest(r, &TrimmedFaceStats::maxParametricDeviation), r.maxChordDeviation);
+  for (const std::string& f : r.failures) std::fprintf(to, "skipped: %s\n", f.c_str());
+  for (const std::string& w : r.warnings) std::fprintf(to, "warning: %s\n", w.c_str());
+  std::fprintf(to, "time: read %.1f ms, faces and edges %.1f ms, mesh %.1f ms\n", r.readMs,
+               r.importMs, r.meshMs);
+}
+
+}  // namespace
+
+int tessellateCadModel(const CadCommand& c) {
+  ToleranceSpec spec;
+  checkCommandLine([&] {
+    if (!c.method.empty() && c.method != "T" && c.method != "t")
+      throw std::invalid_argument("-m " + c.method +
+                                  ": a CAD model is meshed to a tolerance (rule T); leave out -m");
+    if (!c.tolerance.empty()) spec = parseTolerance(c.tolerance);
+    if (spec.pixels)
+      throw std::invalid_argument("--tolerance '" + c.tolerance +
+                                  "': a CAD model takes a distance or a percentage, not pixels");
+    if (c.camera)
+      throw std::invalid_argument("--view / --view-projection: not for CAD models (yet)");
+    if (c.lowerBound)
+      throw std::invalid_argument("--lower-bound: not for CAD models (yet)");
+  });
+  const StreamFormats formats = parseFormats(c.formats);
+  if (c.output == kStdioPath || c.stats == kStdioPath)
+    throw CLI::ValidationError("--output", "a CAD model's mesh and report go to files (or --json)");
+  if (!c.output.empty()) checkMeshFormat(c.output, formats.output);
+  checkOutputs({{"input", c.input}}, {{"-o", c.output}, {"--stats", c.stats}});
+  AtomicFileGroup files;
+
+  ChosenBackend chosen = chooseBackend(c.backend, c.device);
+  const CadJob job{c.input, spec, c.skipBadFaces};
+  CadResult r;
+  try {
+    r = runCadJob(job, chosen);
+  } catch (const vk::VulkanError& e) {
+    if (c.backend != "auto" || !chosen.context) throw;
+    std::fprintf(stderr, "tessera: the Vulkan device failed (%s); falling back to the CPU backend\n",
+                 e.what());
+    chosen.backend = makeMirrorBackend();
+    chosen.context.reset();
+    r = runCadJob(job, chosen);
+  }
+  if (!c.output.empty()) stageMesh(files, c.output, r.mesh.mesh, formats.output, &r.mesh.triangleFace);
+  char diagonal[32];
+  std::snprintf(diagonal, sizeof diagonal, "%g", r.diagonal);
+  const std::string toleranceText =
+      spec.relative ? spec.text + " of the diagonal " + diagonal : "model units";
+  if (!c.stats.empty() || c.json) {
+    nlohmann::json report = cadStatsToJson(r);
+    report["tolerance"]["given"] = spec.text;
+    report["run"] = {{"input", c.input},
+                     {"output", c.output.empty() ? nlohmann::json() : nlohmann::json(c.output)},
+                     {"backend", chosen.backend.name},
+                     {"device", chosen.context ? nlohmann::json(chosen.deviceName()) : nlohmann::json()}};
+    if (!c.stats.empty()) files.stage(c.stats, [&](std::ostream& out) { writeStats(out, report); });
+    if (c.json)
+      std::printf("%s\n", report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
+  }
+  files.commit();
+  if (!c.quiet && !c.json) {
+    printCadSummary(stdout, c.input, r, toleranceText, chosen);
+    if (!c.output.empty()) std::printf("wrote %s\n", c.output.c_str());
+    if (!c.stats.empty()) std::printf("wrote %s\n", c.stats.c_str());
+  }
+  return kExitOk;
+}
+
+}  // namespace tessera::cli
