@@ -12,6 +12,7 @@
 
 #include <stb_easy_font.h>
 
+#include "cli/cad_job.h"
 #include "cli/cli_support.h"
 #include "cli/commands.h"
 #include "cli/outputs.h"
@@ -134,11 +135,68 @@ std::string panelLabel(const Panel& panel) {
   return label.str();
 }
 
+// The PNG to its file, or whole to standard output (a failure leaves stdout empty).
+void writePicture(const std::string& output, const std::vector<uint8_t>& picture, int width,
+                  int height) {
+  if (output == kStdioPath) {
+    std::ostringstream png(std::ios::binary);
+    writePng(png, picture, width, height);
+    writeStdout(png.str());
+  } else {
+    writePngFile(output, picture, width, height);
+  }
+}
+
+// A CAD model (issue 17, cad_job.h): its trimmed faces meshed at one δ on the device that
+// draws, coloured by face with --colour patch.
+int renderCad(const RenderArgs& a, RenderOptions options) {
+  ToleranceSpec spec;
+  checkCommandLine([&] {
+    if (!a.sideBySide.empty())
+      throw std::invalid_argument("--side-by-side: a CAD model is meshed one way (to a tolerance)");
+    if (a.methodGiven && a.method != "T" && a.method != "t")
+      throw std::invalid_argument("-m " + a.method +
+                                  ": a CAD model is meshed to a tolerance (rule T); leave out -m");
+    if (options.colour == RenderOptions::Colour::Depth)
+      throw std::invalid_argument("--colour depth: a CAD model's faces have no single quad-tree "
+                                  "level; use shaded or patch (by face)");
+    if (!a.tolerance.empty()) spec = parseTolerance(a.tolerance);
+    if (spec.pixels)
+      throw std::invalid_argument("--tolerance '" + a.tolerance +
+                                  "': a CAD model takes a distance or a percentage, not pixels");
+  });
+  checkOutputs({{"input", a.input}}, {{"-o", a.output}});
+  vk::ContextOptions vkOptions;
+  vkOptions.device = a.device;
+  ChosenBackend chosen;
+  chosen.context = std::make_unique<vk::Context>(vkOptions);
+  if (!chosen.context->queueSupportsGraphics())
+    throw vk::VulkanUnavailable("device '" + chosen.deviceName() +
+                                "' cannot draw (no graphics queue); choose another with --device");
+  chosen.backend = makeVulkanBackend(*chosen.context);
+  const CadResult r = runCadJob({a.input, spec, false}, chosen);
+  std::vector<float> values;
+  if (options.colour == RenderOptions::Colour::Patch)
+    values.assign(r.mesh.triangleFace.begin(), r.mesh.triangleFace.end());
+  const std::vector<uint8_t> picture = renderMesh(*chosen.context, r.mesh.mesh, values, options);
+  writePicture(a.output, picture, options.width, options.height);
+  if (!a.quiet) {
+    FILE* const to = a.output == kStdioPath ? stderr : stdout;
+    std::fprintf(to, "%s: %zu faces, %zu triangles, tolerance %.4g, on %s\n", a.input.c_str(),
+                 r.mesh.faces.size(), r.mesh.mesh.triangleCount(), r.delta,
+                 chosen.deviceName().c_str());
+    std::fprintf(to, "wrote %s (%dx%d)\n", a.output == kStdioPath ? kStdoutName : a.output.c_str(),
+                 options.width, options.height);
+  }
+  return kExitOk;
+}
+
 int run(const RenderArgs& a) {
   RenderOptions options;
   options.colour = parseColour(a.colour);
   options.wireframe = a.wireframe;
   parseSize(a.size, options);
+  if (isCadInput(a.input)) return renderCad(a, options);
   std::vector<SplitRule> rules;
   if (a.sideBySide.empty()) {
     rules.push_back(parseMethod(a.method, "--method"));
@@ -239,13 +297,7 @@ int run(const RenderArgs& a) {
                   &picture[(size_t(y) * width + x0) * 4]);
   }
   const bool toStdout = a.output == kStdioPath;
-  if (toStdout) {
-    std::ostringstream png(std::ios::binary);  // whole, so a failure leaves stdout empty
-    writePng(png, picture, width, height);
-    writeStdout(png.str());
-  } else {
-    writePngFile(a.output, picture, width, height);
-  }
+  writePicture(a.output, picture, width, height);
 
   if (!a.quiet) {
     FILE* const to = toStdout ? stderr : stdout;  // never into the picture
@@ -268,7 +320,10 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   static RenderArgs args;
   CLI::App* cmd = app.add_subcommand(
       "render", "Tessellate a surface file on the GPU and draw it offscreen to a PNG (needs Vulkan)");
-  cmd->add_option("input", args.input, "input surface file (.bpt or .grid)")->required();
+  cmd->add_option("input", args.input,
+                  "input surface file (.bpt, .grid or .json), or a CAD model (.step/.stp, "
+                  ".iges/.igs, .brep)")
+      ->required();
   cmd->add_option("-o,--output", args.output, "output picture (.png); - writes it to standard output")->required();
   CLI::Option* method = cmd->add_option("-m,--method", args.method,
                   "split rule: A uniform grid, B midpoint, C sampled κ max, D true κ max")
