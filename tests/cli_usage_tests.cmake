@@ -72,3 +72,21 @@ add_test(NAME "cli: join --levels-second 0 joins the unrefined second mesh"
           -o ${CMAKE_CURRENT_BINARY_DIR}/cli_join_levels_second_0.obj)
 set_tests_properties("cli: join --levels-second 0 joins the unrefined second mesh" PROPERTIES
   LABELS cpu PASS_REGULAR_EXPRESSION "levels 1/0, .*wrote ")
+
+# --precision double is for OBJ and PLY: glTF has no double attributes (issue 18).
+foreach(command tessellate limit)
+  set(input ${USAGE_DATA}/teapot.bpt)
+  if(command STREQUAL "limit")
+    set(input ${USAGE_DATA}/loop/ball.obj)
+  endif()
+  add_test(NAME "cli usage: ${command} --precision double with .glb"
+    COMMAND ${CMAKE_COMMAND} -DCMD=$<TARGET_FILE:tessera> "-DARGS=${command};${input};--precision;double"
+            -DOUTPUT=${CMAKE_CURRENT_BINARY_DIR}/cli_usage_never_written.glb -DEXPECT_CODE=1
+            "-DEXPECT_TEXT=glTF \\(.glb\\) has no double vertex attributes"
+            -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_exit.cmake)
+  set_tests_properties("cli usage: ${command} --precision double with .glb" PROPERTIES LABELS cpu)
+endforeach()
+tessera_usage_error("loop --precision double on Vulkan" "Vulkan computes in fp32"
+                    loop ${USAGE_DATA}/loop/ball.obj --precision double --backend vulkan)
+tessera_usage_error("--precision half" "--precision: half not in"
+                    tessellate nofile.bpt --precision half)

@@ -8,6 +8,12 @@
 #include <opensubdiv/far/primvarRefiner.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+
+#include "io/obj_reader.h"
+#include "scratch_dir.h"
 
 #include "loop/limit.h"
 #include "loop/shapes.h"
@@ -136,4 +142,51 @@ TEST_CASE("OpenSubdiv's VTX_BOUNDARY_EDGE_ONLY differs from our rules exactly at
     }
   }
   REQUIRE(moved == 2);
+}
+
+namespace {
+
+void writeControlObj(const std::string& path, const LoopShape& s) {
+  std::ofstream out(path);
+  out << std::setprecision(17);
+  for (const auto& p : s.positions) out << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
+  for (size_t t = 0; t < s.topology.triangles.size(); t += 3)
+    out << "f " << s.topology.triangles[t] + 1 << ' ' << s.topology.triangles[t + 1] + 1 << ' '
+        << s.topology.triangles[t + 2] + 1 << '\n';
+}
+
+// `tessera limit` on `s` at kLevels, the output read back: the limit positions in our numbering.
+std::vector<glm::dvec3> limitThroughCli(const LoopShape& s, const std::string& extraOptions) {
+  test::ScratchDir dir("osd_cli");
+  const std::string in = (dir.path / "control.obj").string();
+  const std::string out = (dir.path / "limit.obj").string();
+  writeControlObj(in, s);
+  const std::string command = std::string(TESSERA_BINARY_DIR) + "/tessera limit " + in + " -l " +
+                              std::to_string(kLevels) + " --backend cpu " + extraOptions + " -o " +
+                              out + " > /dev/null";
+  REQUIRE(std::system(command.c_str()) == 0);
+  return readObj(out).positions;
+}
+
+}  // namespace
+
+TEST_CASE("tessera limit --precision double matches OpenSubdiv as the library does",
+          "[loop][opensubdiv][cli]") {
+  // The CLI's fp32 output holds about 7 digits; with --precision double it carries the
+  // double stencils' result, which agrees with PrimvarRefinerReal<double> to rounding.
+  const LoopShape s = loopBunny(2, 5);
+  LoopLevels ours = refineLoop(buildLoopTopology(s.topology), s.positions, kLevels);
+  OsdResult theirs =
+      refineWithOpenSubdiv(s, ours, OpenSubdiv::Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
+  const double size = extent(s.positions);
+  const auto inFloat = limitThroughCli(s, "");
+  const auto inDouble = limitThroughCli(s, "--precision double");
+  REQUIRE(inFloat.size() == theirs.limit.size());
+  REQUIRE(inDouble.size() == theirs.limit.size());
+  const double worstFloat = worstDifference(theirs.limit, theirs.ours[kLevels], inFloat) / size;
+  const double worstDouble = worstDifference(theirs.limit, theirs.ours[kLevels], inDouble) / size;
+  WARN("tessera limit -l " << kLevels << " vs OpenSubdiv's limit points, × size: fp32 output "
+                           << worstFloat << ", --precision double " << worstDouble);
+  REQUIRE(worstDouble < 1e-14);
+  REQUIRE(worstFloat > 1e-9);  // the fp32 output really is rounded: the option matters
 }

@@ -170,7 +170,8 @@ void checkMeshFormat(const std::string& path, const std::string& format) {
   meshFormat(path, format);
 }
 
-void writeMesh(const std::string& path, const TriangleMesh& mesh, const std::string& format) {
+void writeMesh(const std::string& path, const TriangleMesh& mesh, const std::string& format,
+               const MeshWriteOptions& options) {
   const std::string chosen = meshFormat(path, format);
   if (path == kStdioPath) {
     // Built whole first, so a failing writer leaves standard output empty: held twice (the
@@ -182,16 +183,16 @@ void writeMesh(const std::string& path, const TriangleMesh& mesh, const std::str
             " triangles to standard output (a file is written as it goes)");
     std::ostringstream bytes(std::ios::binary);
     if (chosen == "obj")
-      writeObj(bytes, mesh);
+      writeObj(bytes, mesh, options);
     else if (chosen == "ply")
-      writePly(bytes, mesh);
+      writePly(bytes, mesh, options);
     else
       writeGlb(bytes, mesh);
     writeStdout(bytes.str());
   } else if (chosen == "obj") {
-    writeObjFile(path, mesh);
+    writeObjFile(path, mesh, options);
   } else if (chosen == "ply") {
-    writePlyFile(path, mesh);
+    writePlyFile(path, mesh, options);
   } else {
     writeGlbFile(path, mesh);
   }

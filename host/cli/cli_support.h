@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "io/mesh_write_options.h"
 #include "mesh/screen_tolerance.h"
 #include "mesh/tessellate.h"
 #include "vk/context.h"
@@ -20,7 +21,8 @@ namespace tessera::cli {
 void checkMeshFormat(const std::string& path, const std::string& format = "");
 // Writes `mesh` atomically in `format`, or that of `path`'s extension (checked as above);
 // to `-`, the whole mesh is built in memory and then written to standard output.
-void writeMesh(const std::string& path, const TriangleMesh& mesh, const std::string& format = "");
+void writeMesh(const std::string& path, const TriangleMesh& mesh, const std::string& format = "",
+               const MeshWriteOptions& options = {});
 
 // Runs `body`; prints any exception as "tessera: <message>" on stderr and returns its exit code
 // (commands.h). An Io error on one of `outputs` is kExitOutput; `vulkanHint` prefixes a

@@ -50,13 +50,10 @@ TriangleMesh loopMesh(const std::vector<glm::dvec3>& positions,
   TriangleMesh mesh;
   for (const auto& p : positions) mesh.positions.push_back(glm::vec3(p));
   for (const auto& n : normals) mesh.normals.push_back(glm::vec3(n));
+  mesh.positionsDouble = positions;  // what --precision double writes
+  mesh.normalsDouble = normals;
   mesh.indices = triangles;
   return mesh;
-}
-
-void writeLoopMesh(const std::string& path, const std::vector<glm::dvec3>& positions,
-                   const std::vector<uint32_t>& triangles, const std::vector<glm::dvec3>& normals) {
-  writeMesh(path, loopMesh(positions, triangles, normals));
 }
 
 struct LoopArgs {
@@ -68,38 +65,58 @@ struct LoopArgs {
   std::optional<int> levelsA, levelsB;  // join; unset: chosen by area (LoopJoinOptions)
   std::vector<double> cut;  // paste: nx ny nz d
   std::string picture;      // join: inputs, placement and result as one PNG
+  MeshOutputArgs mesh;      // --precision
 };
 
 // Refines on the chosen backend through the stencil tables; with `limit`, the last level's
 // vertices pushed to the limit surface, with limit normals.
 int runRefine(const LoopArgs& a) {
   checkMeshFormat(a.output);
+  const MeshWriteOptions writeOptions = meshWriteOptions(a.mesh, a.output);
+  const bool inDouble = writeOptions.precision == MeshPrecision::Double;
+  if (inDouble && a.backend == "vulkan")
+    throw CLI::ValidationError("--precision", "double refines in double on the CPU; Vulkan "
+                                              "computes in fp32: use --backend cpu or auto");
   checkOutputs({{"input", a.input}}, {{"-o", a.output}});
   const LoopShape shape = readControlMesh(a.input);
   LoopStencilOptions options;
   options.levels = a.levels;
   options.limit = options.tangents = a.limit;
   LoopStencils stencils = buildLoopStencils(buildLoopTopology(shape.topology), options);
-  ChosenBackend chosen = chooseBackend(a.backend, a.device);
-  std::vector<float> rows(stencils.table.rowCount() * 3, 0.0f);
-  for (size_t v = 0; v < shape.positions.size(); ++v)
-    for (int c = 0; c < 3; ++c) rows[3 * v + c] = float(shape.positions[v][c]);
-  std::unique_ptr<StencilEvaluator> evaluator;
-  try {
-    evaluator = chosen.context
-                    ? makeVulkanStencilEvaluator(*chosen.context, toFloatStencils(stencils.table), 3)
-                    : makeReferenceStencilEvaluator(stencils.table, 3);
-    evaluator->apply(rows);  // rows past the control vertices change only on success
-  } catch (const vk::VulkanError& e) {
-    // As tessellate does (tessellateWithFallback): with --backend auto, a device that fails
-    // mid-run hands the work to the CPU.
-    if (a.backend != "auto" || !chosen.context) throw;
-    std::fprintf(stderr, "tessera: the Vulkan device failed (%s); falling back to the CPU backend\n",
-                 e.what());
-    evaluator = makeReferenceStencilEvaluator(stencils.table, 3);
-    chosen.backend = makeMirrorBackend();  // its classifier holds the context: drop it first
-    chosen.context.reset();
-    evaluator->apply(rows);
+  // --precision double: the stencils applied in double (the reference, without the rounding
+  // to fp32), so the output keeps what OpenSubdiv's PrimvarRefinerReal<double> gives.
+  std::vector<double> rows(stencils.table.rowCount() * 3, 0.0);
+  std::string evaluatorName = "the CPU in double";
+  if (inDouble) {
+    for (size_t v = 0; v < shape.positions.size(); ++v)
+      for (int c = 0; c < 3; ++c) rows[3 * v + c] = shape.positions[v][c];
+    applyStencils(stencils.table, rows, 3);
+  } else {
+    ChosenBackend chosen = chooseBackend(a.backend, a.device);
+    std::vector<float> floatRows(stencils.table.rowCount() * 3, 0.0f);
+    for (size_t v = 0; v < shape.positions.size(); ++v)
+      for (int c = 0; c < 3; ++c) floatRows[3 * v + c] = float(shape.positions[v][c]);
+    std::unique_ptr<StencilEvaluator> evaluator;
+    try {
+      evaluator =
+          chosen.context
+              ? makeVulkanStencilEvaluator(*chosen.context, toFloatStencils(stencils.table), 3)
+              : makeReferenceStencilEvaluator(stencils.table, 3);
+      evaluator->apply(floatRows);  // rows past the control vertices change only on success
+    } catch (const vk::VulkanError& e) {
+      // As tessellate does (tessellateWithFallback): with --backend auto, a device that fails
+      // mid-run hands the work to the CPU.
+      if (a.backend != "auto" || !chosen.context) throw;
+      std::fprintf(stderr,
+                   "tessera: the Vulkan device failed (%s); falling back to the CPU backend\n",
+                   e.what());
+      evaluator = makeReferenceStencilEvaluator(stencils.table, 3);
+      chosen.backend = makeMirrorBackend();  // its classifier holds the context: drop it first
+      chosen.context.reset();
+      evaluator->apply(floatRows);
+    }
+    rows.assign(floatRows.begin(), floatRows.end());
+    evaluatorName = evaluator->name();
   }
   const LoopTopology& last = stencils.topology.back();
   auto rowsAt = [&](uint32_t first) {
@@ -116,17 +133,20 @@ int runRefine(const LoopArgs& a) {
       normals.push_back(glm::length(n) > 0 ? glm::normalize(n) : glm::dvec3(0.0));
     }
   }
-  writeLoopMesh(a.output, rowsAt(a.limit ? stencils.limitRow : stencils.levelRow.back()),
-                last.triangles, normals);
+  writeMesh(a.output,
+            loopMesh(rowsAt(a.limit ? stencils.limitRow : stencils.levelRow.back()),
+                     last.triangles, normals),
+            "", writeOptions);
   std::printf("%s: %zu triangles, level %d%s on %s: wrote %s (%u vertices, %zu triangles)\n",
               a.input.c_str(), shape.topology.triangles.size() / 3, a.levels,
-              a.limit ? " limit" : "", evaluator->name().c_str(), a.output.c_str(),
+              a.limit ? " limit" : "", evaluatorName.c_str(), a.output.c_str(),
               last.vertexCount, last.faceCount());
   return kExitOk;
 }
 
 int runFit(const LoopArgs& a) {
   checkMeshFormat(a.output);
+  const MeshWriteOptions writeOptions = meshWriteOptions(a.mesh, a.output);
   checkOutputs({{"cage", a.input}, {"target", a.target}}, {{"-o", a.output}});
   LoopShape cage = readControlMesh(a.input);
   const PolygonMesh target = readObj(a.target);
@@ -140,7 +160,7 @@ int runFit(const LoopArgs& a) {
   options.energyThreshold = a.threshold;
   options.maxIterations = a.iterations;
   const LoopFitReport report = fitLoopToSurface(topology, cage.positions, bvh, options);
-  writeLoopMesh(a.output, cage.positions, cage.topology.triangles, {});
+  writeMesh(a.output, loopMesh(cage.positions, cage.topology.triangles, {}), "", writeOptions);
   std::printf("fit %s to %s: E %.6g -> %.6g in %d steps, max |p_inf - q| %.6g: wrote %s\n",
               a.input.c_str(), a.target.c_str(), report.energy.front(), report.energy.back(),
               report.iterations, report.maxDistance, a.output.c_str());
@@ -149,6 +169,7 @@ int runFit(const LoopArgs& a) {
 
 int runJoin(const LoopArgs& a) {
   checkMeshFormat(a.output);
+  const MeshWriteOptions writeOptions = meshWriteOptions(a.mesh, a.output);
   checkOutputs({{"first", a.input}, {"second", a.target}}, {{"-o", a.output}, {"--picture", a.picture}});
   LoopShape first = readControlMesh(a.input);
   const LoopShape second = readControlMesh(a.target);
@@ -162,7 +183,8 @@ int runJoin(const LoopArgs& a) {
   const LoopJoinResult r = joinLoopMeshes(first, second, options);
   // The mesh and the picture are written together, both or neither.
   AtomicFileGroup files;
-  stageMesh(files, a.output, loopMesh(r.mesh.positions, r.mesh.topology.triangles, {}));
+  stageMesh(files, a.output, loopMesh(r.mesh.positions, r.mesh.topology.triangles, {}), "",
+            nullptr, writeOptions);
   std::string drawnOn;
   if (!a.picture.empty()) {
     vk::ContextOptions vkOptions;
@@ -198,6 +220,7 @@ void addLoopCommands(CLI::App& app, int& exitCode) {
     cmd->add_option("-l,--levels", args.levels, "refinement levels")->check(CLI::Range(0, 8));
     cmd->add_option("--backend", args.backend, "vulkan, cpu or auto")->check(CLI::IsMember({"vulkan", "cpu", "auto"}));
     cmd->add_option("--device", args.device, "Vulkan device (name substring or index)");
+    addMeshOutputOptions(cmd, args.mesh);
     cmd->callback([&exitCode, limit] {
       args.limit = limit;
       exitCode = runReportingErrors([] { return runRefine(args); }, {args.output});
@@ -217,6 +240,7 @@ void addLoopCommands(CLI::App& app, int& exitCode) {
   fit->add_option("--threshold", args.threshold, "stop when E = Σ|p∞ − q|² is below this (≥ 0)")
       ->check(CLI::NonNegativeNumber);
   fit->add_option("--iterations", args.iterations, "at most this many steps")->check(CLI::Range(1, 100000));
+  addMeshOutputOptions(fit, args.mesh);
   fit->callback([&exitCode] { exitCode = runReportingErrors([] { return runFit(args); }, {args.output}); });
   CLI::App* join = app.add_subcommand("join", "Join two closed Loop control meshes by local refinement");
   join->add_option("first", args.input, "first control mesh (.obj)")->required();
@@ -232,6 +256,7 @@ void addLoopCommands(CLI::App& app, int& exitCode) {
   join->add_option("--paste-plane", args.cut, "paste: keep the first mesh's part where n·x ≥ d (nx ny nz d)")->expected(4);
   join->add_option("--picture", args.picture, "also draw inputs, placement and result (.png, needs Vulkan)");
   join->add_option("--device", args.device, "Vulkan device for --picture (name substring or index)");
+  addMeshOutputOptions(join, args.mesh);
   join->callback([&exitCode] {
     exitCode = runReportingErrors([] { return runJoin(args); }, {args.output, args.picture},
                                   "join --picture needs a Vulkan device that draws");

@@ -20,6 +20,7 @@
 #include "io/obj_writer.h"
 #include "io/ply_writer.h"
 #include "io/stats_report.h"
+#include "mesh/double_vertices.h"
 #include "mesh/lower_bound.h"
 #include "mesh/tessellate.h"
 #include "quadtree/tolerance.h"
@@ -50,6 +51,7 @@ struct TessellateArgs {
   std::vector<std::string> formats;  // --format: for `-`, or a path whose extension cannot tell
   CameraArgs camera;  // --view / --view-projection / --viewport: the camera of "--tolerance 1px"
   bool skipBadFaces = false;  // CAD models: mesh the faces that converted (cad_job.h)
+  MeshOutputArgs mesh;  // --precision
 };
 
 // A CAD model (.step, .iges, .brep) goes through host/cad/ and host/trim/ (cad_job.h).
@@ -170,6 +172,7 @@ int run(const TessellateArgs& a) {
     throw CLI::ValidationError("--output", "only one of -o -, --stats - and --json may use "
                                            "standard output");
   if (!a.output.empty()) checkMeshFormat(a.output, formats.output);
+  const MeshWriteOptions writeOptions = meshWriteOptions(a.mesh, a.output, formats.output);
   const std::string inputFormat = surfaceFormat(a.input, formats.input);
   // Before the work: no output overwrites the input or another output, and each can be written.
   checkOutputs({{"input", a.input}}, {{"-o", a.output}, {"--stats", a.stats}});
@@ -190,7 +193,10 @@ int run(const TessellateArgs& a) {
       tessellateWithFallback(chosen, a.backend, patches, options, view ? &*view : nullptr);
   const std::unique_ptr<vk::Context>& context = chosen.context;
   const Backend& backend = chosen.backend;
-  if (!a.output.empty() && !meshToStdout) stageMesh(files, a.output, t.mesh, formats.output);
+  if (writeOptions.precision == MeshPrecision::Double && !a.output.empty())
+    evaluateVerticesInDouble(t.mesh, patches);
+  if (!a.output.empty() && !meshToStdout)
+    stageMesh(files, a.output, t.mesh, formats.output, nullptr, writeOptions);
   // The deviation from the true surface (both metrics, host/mesh/deviation.h) is what the
   // thresholds are for, but measuring it can cost more than the tessellation (89% of a
   // 2000-teapot run), so it is measured only with --deviation; reports then show null.
@@ -288,7 +294,7 @@ int run(const TessellateArgs& a) {
     if (!a.stats.empty() && !statsToStdout) std::fprintf(to, "wrote %s\n", a.stats.c_str());
   }
   // Last, once everything else succeeded: standard output gets the whole mesh or nothing.
-  if (meshToStdout) writeMesh(a.output, t.mesh, formats.output);
+  if (meshToStdout) writeMesh(a.output, t.mesh, formats.output, writeOptions);
   return kExitOk;
 }
 
@@ -359,6 +365,7 @@ void addTessellateCommand(CLI::App& app, int& exitCode) {
                   "standard output)");
   cmd->add_flag("--json", args.json,
                 "print the statistics report (JSON) to stdout instead of the summary");
+  addMeshOutputOptions(cmd, args.mesh);
   cmd->callback([&exitCode] {
     exitCode = runReportingErrors([] { return run(args); },
                                   {args.output, args.stats, kStdoutName});

@@ -57,16 +57,40 @@ void checkOutputs(const std::vector<NamedFile>& inputs, const std::vector<NamedF
 }
 
 void stageMesh(AtomicFileGroup& group, const std::string& path, const TriangleMesh& mesh,
-               const std::string& format, const std::vector<uint32_t>* triangleFace) {
+               const std::string& format, const std::vector<uint32_t>* triangleFace,
+               const MeshWriteOptions& options) {
   const std::string chosen = meshFormat(path, format);
   group.stage(path, [&](std::ostream& out) {
     if (chosen == "obj")
-      writeObj(out, mesh);
+      writeObj(out, mesh, options);
     else if (chosen == "ply")
-      writePly(out, mesh);
+      writePly(out, mesh, options);
     else
       writeGlb(out, mesh, triangleFace);
   });
+}
+
+void addMeshOutputOptions(CLI::App* cmd, MeshOutputArgs& args) {
+  cmd->add_option("--precision", args.precision,
+                  "float or double: how OBJ and PLY carry positions and normals. double writes "
+                  "17 significant digits in OBJ and `double` properties in PLY, with the values "
+                  "computed in double where the command has them; not for .glb (fp32 only)")
+      ->check(CLI::IsMember({"float", "double"}))
+      ->capture_default_str();
+}
+
+MeshWriteOptions meshWriteOptions(const MeshOutputArgs& args, const std::string& path,
+                                  const std::string& format) {
+  MeshWriteOptions options;
+  if (args.precision == "double") {
+    if (!path.empty() && meshFormat(path, format) == "glb")
+      throw CLI::ValidationError("--precision",
+                                 "double is for .obj and .ply outputs: glTF (.glb) has no double "
+                                 "vertex attributes; write .obj or .ply, or leave out "
+                                 "--precision double");
+    options.precision = MeshPrecision::Double;
+  }
+  return options;
 }
 
 }  // namespace tessera::cli

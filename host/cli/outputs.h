@@ -5,7 +5,10 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "io/atomic_file.h"
+#include "io/mesh_write_options.h"
 #include "mesh/tessellate.h"
 
 namespace tessera::cli {
@@ -27,6 +30,18 @@ void checkOutputs(const std::vector<NamedFile>& inputs, const std::vector<NamedF
 // triangleFace (a CAD model's face per triangle) gives a .glb one primitive per face.
 void stageMesh(AtomicFileGroup& group, const std::string& path, const TriangleMesh& mesh,
                const std::string& format = "",
-               const std::vector<uint32_t>* triangleFace = nullptr);
+               const std::vector<uint32_t>* triangleFace = nullptr,
+               const MeshWriteOptions& options = {});
+
+// The mesh options of every command that writes one: --precision float|double.
+struct MeshOutputArgs {
+  std::string precision = "float";
+};
+void addMeshOutputOptions(CLI::App* cmd, MeshOutputArgs& args);
+
+// The writers' options for the mesh output `path` (in `format`, or by its extension). Refuses
+// --precision double for glb (CLI::ValidationError, exit 1): glTF has no double attributes.
+MeshWriteOptions meshWriteOptions(const MeshOutputArgs& args, const std::string& path,
+                                  const std::string& format = "");
 
 }  // namespace tessera::cli

@@ -16,8 +16,10 @@ class LineBuilder {
   void put(const char* literal) { text_ += literal; }
   void put(char c) { text_ += c; }
 
-  // Shortest representation that parses back to exactly `value`.
-  void putFloat(float value) {
+  // Shortest representation that parses back to exactly `value` (float: at most 9 significant
+  // digits; double: at most 17).
+  template <typename Real>
+  void putReal(Real value) {
     char digits[32];
     auto result = std::to_chars(digits, digits + sizeof digits, value);
     text_.append(digits, result.ptr);
@@ -45,20 +47,33 @@ class LineBuilder {
   std::string text_;
 };
 
-void putVec3(LineBuilder& line, const char* tag, const glm::vec3& v) {
+template <typename Vec3>
+void putVec3(LineBuilder& line, const char* tag, const Vec3& v) {
   line.put(tag);
   line.put(' ');
-  line.putFloat(v.x);
+  line.putReal(v.x);
   line.put(' ');
-  line.putFloat(v.y);
+  line.putReal(v.y);
   line.put(' ');
-  line.putFloat(v.z);
+  line.putReal(v.z);
   line.endLine();
+}
+
+// Positions or normals at the asked precision: the double copies where the mesh has them.
+void putVectors(LineBuilder& line, const char* tag, const std::vector<glm::vec3>& floats,
+                const std::vector<glm::dvec3>& doubles, MeshPrecision precision) {
+  if (precision == MeshPrecision::Float) {
+    for (const glm::vec3& p : floats) putVec3(line, tag, p);
+  } else if (!doubles.empty()) {
+    for (const glm::dvec3& p : doubles) putVec3(line, tag, p);
+  } else {
+    for (const glm::vec3& p : floats) putVec3(line, tag, glm::dvec3(p));
+  }
 }
 
 }  // namespace
 
-void writeObj(std::ostream& out, const TriangleMesh& mesh) {
+void writeObj(std::ostream& out, const TriangleMesh& mesh, const MeshWriteOptions& options) {
   mesh.validate();
   const bool hasUvs = !mesh.uvs.empty();
   const bool hasNormals = !mesh.normals.empty();
@@ -71,15 +86,15 @@ void writeObj(std::ostream& out, const TriangleMesh& mesh) {
   line.put(" triangles");
   line.endLine();
 
-  for (const glm::vec3& p : mesh.positions) putVec3(line, "v", p);
+  putVectors(line, "v", mesh.positions, mesh.positionsDouble, options.precision);
   for (const glm::vec2& uv : mesh.uvs) {
     line.put("vt ");
-    line.putFloat(uv.x);
+    line.putReal(uv.x);
     line.put(' ');
-    line.putFloat(uv.y);
+    line.putReal(uv.y);
     line.endLine();
   }
-  for (const glm::vec3& n : mesh.normals) putVec3(line, "vn", n);
+  putVectors(line, "vn", mesh.normals, mesh.normalsDouble, options.precision);
 
   for (size_t t = 0; t < mesh.triangleCount(); ++t) {
     line.put('f');
@@ -101,8 +116,9 @@ void writeObj(std::ostream& out, const TriangleMesh& mesh) {
   line.flush();
 }
 
-void writeObjFile(const std::string& path, const TriangleMesh& mesh) {
-  writeFileAtomically(path, [&](std::ostream& out) { writeObj(out, mesh); });
+void writeObjFile(const std::string& path, const TriangleMesh& mesh,
+                  const MeshWriteOptions& options) {
+  writeFileAtomically(path, [&](std::ostream& out) { writeObj(out, mesh, options); });
 }
 
 }  // namespace tessera

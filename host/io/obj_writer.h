@@ -5,21 +5,25 @@
 // indices: "f a b c", "f a/a b/b c/c" (uvs), "f a//a b//b c//c" (normals) or "f a/a/a …"
 // (both); every attribute shares the position's index. Floats are written as the shortest
 // decimal that reads back to the same float (std::to_chars: exact round trip, independent of
-// the locale). OBJ has no per-vertex slot for patch ids, so patchIds are not written.
+// the locale); with MeshPrecision::Double, positions and normals as the shortest decimal that
+// reads back to the same double (at most 17 significant digits), uvs stay fp32. OBJ has no
+// per-vertex slot for patch ids, so patchIds are not written.
 #pragma once
 #include <ostream>
 #include <string>
 
+#include "io/mesh_write_options.h"
 #include "mesh/mesh.h"
 
 namespace tessera {
 
 // Validate the mesh (std::invalid_argument if malformed) and write it to `out`.
-void writeObj(std::ostream& out, const TriangleMesh& mesh);
+void writeObj(std::ostream& out, const TriangleMesh& mesh, const MeshWriteOptions& options = {});
 
 // Same, into the file at `path` via writeFileAtomically: the whole file or, on any error,
 // nothing (InputError of kind Io for I/O failures). An invalid mesh throws
 // std::invalid_argument and leaves the file as it was.
-void writeObjFile(const std::string& path, const TriangleMesh& mesh);
+void writeObjFile(const std::string& path, const TriangleMesh& mesh,
+                  const MeshWriteOptions& options = {});
 
 }  // namespace tessera

@@ -28,6 +28,13 @@ class ByteSink {
     putU32(bits);
   }
 
+  void putF64(double value) {
+    uint64_t bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    putU32(uint32_t(bits));
+    putU32(uint32_t(bits >> 32));
+  }
+
   void flush() {
     out_.write(bytes_.data(), static_cast<std::streamsize>(bytes_.size()));
     bytes_.clear();
@@ -39,20 +46,16 @@ class ByteSink {
   std::string bytes_;
 };
 
-std::string plyHeader(const TriangleMesh& mesh) {
+std::string plyHeader(const TriangleMesh& mesh, const MeshWriteOptions& options) {
+  const std::string real = options.precision == MeshPrecision::Double ? "double" : "float";
   std::string header =
       "ply\n"
       "format binary_little_endian 1.0\n"
       "comment Tessera triangle mesh\n"
-      "element vertex " + std::to_string(mesh.vertexCount()) + "\n"
-      "property float x\n"
-      "property float y\n"
-      "property float z\n";
+      "element vertex " + std::to_string(mesh.vertexCount()) + "\n";
+  for (const char* name : {"x", "y", "z"}) header += "property " + real + " " + name + "\n";
   if (!mesh.normals.empty())
-    header +=
-        "property float nx\n"
-        "property float ny\n"
-        "property float nz\n";
+    for (const char* name : {"nx", "ny", "nz"}) header += "property " + real + " " + name + "\n";
   header += "element face " + std::to_string(mesh.triangleCount()) + "\n"
             "property list uchar uint vertex_indices\n"
             "end_header\n";
@@ -61,15 +64,25 @@ std::string plyHeader(const TriangleMesh& mesh) {
 
 }  // namespace
 
-void writePly(std::ostream& out, const TriangleMesh& mesh) {
+void writePly(std::ostream& out, const TriangleMesh& mesh, const MeshWriteOptions& options) {
   mesh.validate();
   ByteSink sink(out);
-  sink.putText(plyHeader(mesh));
+  sink.putText(plyHeader(mesh, options));
   const bool hasNormals = !mesh.normals.empty();
+  const bool inDouble = options.precision == MeshPrecision::Double;
+  // The double copy where the mesh has one, else the fp32 value widened.
+  const auto putVector = [&](const std::vector<glm::vec3>& floats,
+                             const std::vector<glm::dvec3>& doubles, size_t v) {
+    for (int c = 0; c < 3; ++c) {
+      if (!inDouble)
+        sink.putF32(floats[v][c]);
+      else
+        sink.putF64(doubles.empty() ? double(floats[v][c]) : doubles[v][c]);
+    }
+  };
   for (size_t v = 0; v < mesh.vertexCount(); ++v) {
-    for (int c = 0; c < 3; ++c) sink.putF32(mesh.positions[v][c]);
-    if (hasNormals)
-      for (int c = 0; c < 3; ++c) sink.putF32(mesh.normals[v][c]);
+    putVector(mesh.positions, mesh.positionsDouble, v);
+    if (hasNormals) putVector(mesh.normals, mesh.normalsDouble, v);
   }
   for (size_t t = 0; t < mesh.triangleCount(); ++t) {
     sink.putU8(3);
@@ -78,8 +91,9 @@ void writePly(std::ostream& out, const TriangleMesh& mesh) {
   sink.flush();
 }
 
-void writePlyFile(const std::string& path, const TriangleMesh& mesh) {
-  writeFileAtomically(path, [&](std::ostream& out) { writePly(out, mesh); });
+void writePlyFile(const std::string& path, const TriangleMesh& mesh,
+                  const MeshWriteOptions& options) {
+  writeFileAtomically(path, [&](std::ostream& out) { writePly(out, mesh, options); });
 }
 
 }  // namespace tessera

@@ -12,22 +12,25 @@
 //   property list uchar uint vertex_indices
 //   end_header
 // then V vertices of 12 (or 24 with normals) bytes and F faces of 13 bytes (count 3, three
-// uint32 indices). Each header line ends in a single '\n'. uvs and patchIds are not written:
+// uint32 indices). With MeshPrecision::Double the six vertex properties are `double` (8 bytes
+// each: 24 or 48 bytes a vertex). Each header line ends in a single '\n'. uvs and patchIds are not written:
 // the standard PLY readers have no common names for them.
 #pragma once
 #include <ostream>
 #include <string>
 
+#include "io/mesh_write_options.h"
 #include "mesh/mesh.h"
 
 namespace tessera {
 
 // Validate the mesh (std::invalid_argument if malformed) and write it to `out`.
-void writePly(std::ostream& out, const TriangleMesh& mesh);
+void writePly(std::ostream& out, const TriangleMesh& mesh, const MeshWriteOptions& options = {});
 
 // Same, into the file at `path` via writeFileAtomically: the whole file or, on any error,
 // nothing (InputError of kind Io for I/O failures). An invalid mesh throws
 // std::invalid_argument and leaves the file as it was.
-void writePlyFile(const std::string& path, const TriangleMesh& mesh);
+void writePlyFile(const std::string& path, const TriangleMesh& mesh,
+                  const MeshWriteOptions& options = {});
 
 }  // namespace tessera

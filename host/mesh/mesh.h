@@ -1,5 +1,6 @@
 // The tessellator's output: an indexed triangle mesh in fp32 (what the GPU produces and what
-// OBJ/PLY carry). Plain data; the writers live in host/io/.
+// OBJ/PLY carry by default), with optional double copies of positions and normals. Plain data;
+// the writers live in host/io/.
 #pragma once
 #include <glm/glm.hpp>
 
@@ -18,6 +19,11 @@ struct TriangleMesh {
   std::vector<glm::vec3> normals;
   std::vector<glm::vec2> uvs;       // the (u, v) parameter of the vertex on its patch
   std::vector<uint32_t> patchIds;   // index of the source patch
+  // Optional double-precision copies, empty or one per position: what a producer that computes
+  // in double (Loop on the reference backend, fit, join, the tessellation's vertices evaluated
+  // again in double) hands to the writers' double precision (io/mesh_write_options.h).
+  std::vector<glm::dvec3> positionsDouble;
+  std::vector<glm::dvec3> normalsDouble;
   // Three per triangle, counter-clockwise seen from the side the normals point to.
   std::vector<uint32_t> indices;
 
@@ -38,6 +44,8 @@ struct TriangleMesh {
     checkSize(normals.size(), "normals");
     checkSize(uvs.size(), "uvs");
     checkSize(patchIds.size(), "patchIds");
+    checkSize(positionsDouble.size(), "positionsDouble");
+    checkSize(normalsDouble.size(), "normalsDouble");
     // Indices are uint32_t, so more vertices could not all be addressed.
     if (positions.size() > std::numeric_limits<uint32_t>::max())
       throw std::invalid_argument("TriangleMesh: more vertices than 32-bit indices can address");
@@ -59,6 +67,8 @@ struct TriangleMesh {
     checkFinite(positions, 3, "positions");
     checkFinite(normals, 3, "normals");
     checkFinite(uvs, 2, "uvs");
+    checkFinite(positionsDouble, 3, "positionsDouble");
+    checkFinite(normalsDouble, 3, "normalsDouble");
   }
 };
 
