@@ -195,6 +195,7 @@ int run(const TessellateArgs& a) {
   const Backend& backend = chosen.backend;
   if (writeOptions.precision == MeshPrecision::Double && !a.output.empty())
     evaluateVerticesInDouble(t.mesh, patches);
+  if (writeOptions.metadata) t.mesh.trianglePatchIds = t.trianglePatch;
   if (!a.output.empty() && !meshToStdout)
     stageMesh(files, a.output, t.mesh, formats.output, nullptr, writeOptions);
   // The deviation from the true surface (both metrics, host/mesh/deviation.h) is what the

@@ -77,6 +77,10 @@ void addMeshOutputOptions(CLI::App* cmd, MeshOutputArgs& args) {
                   "computed in double where the command has them; not for .glb (fp32 only)")
       ->check(CLI::IsMember({"float", "double"}))
       ->capture_default_str();
+  cmd->add_flag("--metadata", args.metadata,
+                "also write where each vertex comes from, where the mesh has it: PLY vertex "
+                "properties u, v and patch; OBJ 'g patch_<id>' groups. Off by default (files "
+                "stay as before)");
 }
 
 MeshWriteOptions meshWriteOptions(const MeshOutputArgs& args, const std::string& path,
@@ -90,6 +94,7 @@ MeshWriteOptions meshWriteOptions(const MeshOutputArgs& args, const std::string&
                                  "--precision double");
     options.precision = MeshPrecision::Double;
   }
+  options.metadata = args.metadata;
   return options;
 }
 

@@ -33,9 +33,10 @@ void stageMesh(AtomicFileGroup& group, const std::string& path, const TriangleMe
                const std::vector<uint32_t>* triangleFace = nullptr,
                const MeshWriteOptions& options = {});
 
-// The mesh options of every command that writes one: --precision float|double.
+// The mesh options of every command that writes one: --precision float|double, --metadata.
 struct MeshOutputArgs {
   std::string precision = "float";
+  bool metadata = false;
 };
 void addMeshOutputOptions(CLI::App* cmd, MeshOutputArgs& args);
 

@@ -12,6 +12,11 @@ enum class MeshPrecision {
 
 struct MeshWriteOptions {
   MeshPrecision precision = MeshPrecision::Float;
+  // Also the patch metadata, where the mesh has it: PLY vertex properties u, v (float) and
+  // patch (uint), the names assimp, VTK and meshio read; OBJ `g patch_<id>` lines before each
+  // run of triangles of one patch (trianglePatchIds). Off by default, so files written before
+  // stay byte for byte the same.
+  bool metadata = false;
 };
 
 }  // namespace tessera

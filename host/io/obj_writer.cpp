@@ -96,7 +96,14 @@ void writeObj(std::ostream& out, const TriangleMesh& mesh, const MeshWriteOption
   }
   putVectors(line, "vn", mesh.normals, mesh.normalsDouble, options.precision);
 
+  const bool groups = options.metadata && !mesh.trianglePatchIds.empty();
   for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+    // A group line where the patch changes; OBJ readers merge groups of one name.
+    if (groups && (t == 0 || mesh.trianglePatchIds[t] != mesh.trianglePatchIds[t - 1])) {
+      line.put("g patch_");
+      line.putInteger(mesh.trianglePatchIds[t]);
+      line.endLine();
+    }
     line.put('f');
     for (int corner = 0; corner < 3; ++corner) {
       const uint64_t index = uint64_t(mesh.indices[3 * t + corner]) + 1;  // OBJ counts from 1

@@ -7,7 +7,8 @@
 // decimal that reads back to the same float (std::to_chars: exact round trip, independent of
 // the locale); with MeshPrecision::Double, positions and normals as the shortest decimal that
 // reads back to the same double (at most 17 significant digits), uvs stay fp32. OBJ has no
-// per-vertex slot for patch ids, so patchIds are not written.
+// per-vertex slot for patch ids, so patchIds are not written; with options.metadata a
+// "g patch_<id>" line (trianglePatchIds) starts each run of triangles of one patch.
 #pragma once
 #include <ostream>
 #include <string>

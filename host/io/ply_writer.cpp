@@ -56,6 +56,8 @@ std::string plyHeader(const TriangleMesh& mesh, const MeshWriteOptions& options)
   for (const char* name : {"x", "y", "z"}) header += "property " + real + " " + name + "\n";
   if (!mesh.normals.empty())
     for (const char* name : {"nx", "ny", "nz"}) header += "property " + real + " " + name + "\n";
+  if (options.metadata && !mesh.uvs.empty()) header += "property float u\nproperty float v\n";
+  if (options.metadata && !mesh.patchIds.empty()) header += "property uint patch\n";
   header += "element face " + std::to_string(mesh.triangleCount()) + "\n"
             "property list uchar uint vertex_indices\n"
             "end_header\n";
@@ -83,6 +85,11 @@ void writePly(std::ostream& out, const TriangleMesh& mesh, const MeshWriteOption
   for (size_t v = 0; v < mesh.vertexCount(); ++v) {
     putVector(mesh.positions, mesh.positionsDouble, v);
     if (hasNormals) putVector(mesh.normals, mesh.normalsDouble, v);
+    if (options.metadata && !mesh.uvs.empty()) {
+      sink.putF32(mesh.uvs[v].x);
+      sink.putF32(mesh.uvs[v].y);
+    }
+    if (options.metadata && !mesh.patchIds.empty()) sink.putU32(mesh.patchIds[v]);
   }
   for (size_t t = 0; t < mesh.triangleCount(); ++t) {
     sink.putU8(3);

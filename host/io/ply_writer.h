@@ -13,8 +13,10 @@
 //   end_header
 // then V vertices of 12 (or 24 with normals) bytes and F faces of 13 bytes (count 3, three
 // uint32 indices). With MeshPrecision::Double the six vertex properties are `double` (8 bytes
-// each: 24 or 48 bytes a vertex). Each header line ends in a single '\n'. uvs and patchIds are not written:
-// the standard PLY readers have no common names for them.
+// each: 24 or 48 bytes a vertex). With options.metadata, after those: `property float u`,
+// `property float v` (when the mesh has uvs) and `property uint patch` (patchIds): the names
+// assimp and VTK read as texture coordinates, and meshio keeps as point data (a welded
+// vertex's patch is one of those that share it). Each header line ends in a single '\n'.
 #pragma once
 #include <ostream>
 #include <string>

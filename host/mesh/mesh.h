@@ -26,6 +26,9 @@ struct TriangleMesh {
   std::vector<glm::dvec3> normalsDouble;
   // Three per triangle, counter-clockwise seen from the side the normals point to.
   std::vector<uint32_t> indices;
+  // Optional, empty or one per triangle: its source patch (a welded vertex's patchIds entry
+  // names only one of the patches that share it). OBJ's patch groups come from it.
+  std::vector<uint32_t> trianglePatchIds;
 
   size_t vertexCount() const { return positions.size(); }
   size_t triangleCount() const { return indices.size() / 3; }
@@ -52,6 +55,10 @@ struct TriangleMesh {
     if (indices.size() % 3 != 0)
       throw std::invalid_argument("TriangleMesh: index count " + std::to_string(indices.size()) +
                                   " is not a multiple of 3");
+    if (!trianglePatchIds.empty() && trianglePatchIds.size() != indices.size() / 3)
+      throw std::invalid_argument("TriangleMesh: trianglePatchIds has " +
+                                  std::to_string(trianglePatchIds.size()) + " entries for " +
+                                  std::to_string(indices.size() / 3) + " triangles");
     for (size_t k = 0; k < indices.size(); ++k)
       if (indices[k] >= positions.size())
         throw std::invalid_argument("TriangleMesh: index " + std::to_string(k) + " is " +
