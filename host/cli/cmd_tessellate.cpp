@@ -22,6 +22,7 @@
 #include "io/stats_report.h"
 #include "mesh/double_vertices.h"
 #include "mesh/lower_bound.h"
+#include "mesh/result_warnings.h"
 #include "mesh/tessellate.h"
 #include "quadtree/tolerance.h"
 #include "vk/context.h"
@@ -216,6 +217,15 @@ int run(const TessellateArgs& a) {
     geometric =
         measureDeviationPerPatch(t, patches, deviation->subdivisions, DeviationMetric::Geometric);
   }
+  // Degenerate but valid results: warned about, not refused (host/mesh/result_warnings.h).
+  std::vector<double> geometricPerPatch;
+  if (geometric)
+    for (const DeviationReport& r : geometric->perPatch) geometricPerPatch.push_back(r.maxDeviation);
+  const std::vector<ResultWarning> warnings =
+      findResultWarnings(t, patches, geometric ? &geometricPerPatch : nullptr);
+  if (!a.quiet)
+    for (const ResultWarning& w : warnings)
+      std::fprintf(stderr, "tessera: warning: %s\n", w.message.c_str());
   std::optional<TriangleLowerBound> bound;
   if (wantBound) {
     const double delta = ruleT ? options.tolerance : geometric->total.maxDeviation;
@@ -229,6 +239,7 @@ int run(const TessellateArgs& a) {
     if (bound) addLowerBound(report, *bound);
     else addUncomputedLowerBound(report);
     if (ruleT) addToleranceReport(report, t, toleranceSpec, options.tolerance);
+    addWarnings(report, warnings);
     report["run"] = {{"input", inputName},
                      {"output", a.output.empty() ? nlohmann::json() : nlohmann::json(a.output)},
                      {"backend", backend.name},

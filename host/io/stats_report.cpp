@@ -236,4 +236,10 @@ void writeStatsFile(const std::string& path, const nlohmann::json& report) {
   writeFileAtomically(path, [&](std::ostream& out) { writeStats(out, report); });
 }
 
+void addWarnings(nlohmann::json& report, const std::vector<ResultWarning>& warnings) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const ResultWarning& w : warnings) list.push_back({{"code", w.code}, {"message", w.message}});
+  report["warnings"] = list;
+}
+
 }  // namespace tessera

@@ -11,6 +11,7 @@
 
 #include "mesh/deviation.h"
 #include "mesh/lower_bound.h"
+#include "mesh/result_warnings.h"
 #include "geometry/patch.h"
 #include "quadtree/quadtree.h"
 #include "quadtree/tolerance.h"
@@ -53,6 +54,10 @@ void addUnmeasuredGeometricDeviation(nlohmann::json& report);
 void addLowerBound(nlohmann::json& report, const TriangleLowerBound& bound);
 // The same keys as null, for a report without the bound.
 void addUncomputedLowerBound(nlohmann::json& report);
+
+// The report's "warnings": one {"code", "message"} object per condition of
+// findResultWarnings (host/mesh/result_warnings.h); an empty array when there is none.
+void addWarnings(nlohmann::json& report, const std::vector<ResultWarning>& warnings);
 
 // Totals, timings and per-level numbers only (no per-patch section).
 nlohmann::json statsToJson(const TessellationStats& stats);
