@@ -90,3 +90,5 @@ tessera_usage_error("loop --precision double on Vulkan" "Vulkan computes in fp32
                     loop ${USAGE_DATA}/loop/ball.obj --precision double --backend vulkan)
 tessera_usage_error("--precision half" "--precision: half not in"
                     tessellate nofile.bpt --precision half)
+tessera_usage_error("loop --boundary both" "--boundary: both not in"
+                    loop ${USAGE_DATA}/loop/ball.obj --boundary both)

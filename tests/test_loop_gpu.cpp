@@ -72,6 +72,23 @@ TEST_CASE("Loop stencils on Vulkan: bit-exact with the fp32 mirror, close to dou
   test::requireValidationClean();
 }
 
+TEST_CASE("Loop stencils on Vulkan: the EdgeOnly boundary rule as on the mirror", "[gpu][loop]") {
+  // The stencils carry the rule, so every backend follows it: bit-exact with the mirror on
+  // lavapipe, close to double.
+  vk::Context& context = test::gpuContext();
+  LoopShape s = loopGrid(9, 7, 3);
+  s.topology.boundary = LoopBoundary::EdgeOnly;
+  LoopStencilOptions options;
+  options.levels = 3;
+  options.limit = options.tangents = true;
+  const StencilParity r = runParity(s, options, 3);
+  WARN(s.name << " EdgeOnly on " << context.info().name << ": " << r.bitMismatches
+              << " floats differ from the mirror, max |GPU − double| " << r.worstVsDouble);
+  if (context.info().isLavapipe()) REQUIRE(r.bitMismatches == 0);
+  REQUIRE(r.worstVsDouble <= 2e-6 * r.largest);
+  test::requireValidationClean();
+}
+
 TEST_CASE("Loop stencils on Vulkan: apply() again with new control data", "[gpu][loop]") {
   // An evaluator keeps its table: moving the control vertices (as fitting does) and applying
   // again gives the refinement of the new cage.

@@ -144,6 +144,57 @@ TEST_CASE("OpenSubdiv's VTX_BOUNDARY_EDGE_ONLY differs from our rules exactly at
   REQUIRE(moved == 2);
 }
 
+TEST_CASE("LoopBoundary::EdgeOnly agrees with OpenSubdiv's VTX_BOUNDARY_EDGE_ONLY",
+          "[loop][opensubdiv]") {
+  // The grid has two boundary vertices of a single triangle; with EdgeOnly they are crease
+  // vertices on both sides, and every level and the limit points and normals must agree.
+  LoopShape s = loopGrid(7, 6, 2);
+  s.topology.boundary = LoopBoundary::EdgeOnly;
+  const LoopTopology base = buildLoopTopology(s.topology);
+  size_t singleTriangleCorners = 0;
+  for (uint32_t v = 0; v < base.vertexCount; ++v)
+    if (base.vertexBoundary[v] && base.faceValence(v) == 1) {
+      ++singleTriangleCorners;
+      REQUIRE(base.vertexRule[v] == LoopVertexRule::Crease);
+    }
+  REQUIRE(singleTriangleCorners == 2);
+  LoopLevels ours = refineLoop(base, s.positions, kLevels);
+  REQUIRE(ours.topology.back().boundary == LoopBoundary::EdgeOnly);
+  OsdResult theirs = refineWithOpenSubdiv(s, ours, osd::osdBoundaryRule(s.topology.boundary));
+  const double size = extent(s.positions);
+  double worstLevel = 0;
+  for (int l = 1; l <= kLevels; ++l)
+    worstLevel = std::max(worstLevel, worstDifference(theirs.levels[l], theirs.ours[l],
+                                                      ours.positions[l]) / size);
+  const LoopTopology& last = ours.topology.back();
+  const auto limit = loopLimitPositions(last, ours.positions.back());
+  const double worstLimit = worstDifference(theirs.limit, theirs.ours[kLevels], limit) / size;
+  const auto normals = loopLimitNormals(last, ours.positions.back());
+  double worstNormal = 0;
+  for (size_t i = 0; i < theirs.limit.size(); ++i) {
+    const glm::dvec3 t1(theirs.tangent1[i].x, theirs.tangent1[i].y, theirs.tangent1[i].z);
+    const glm::dvec3 t2(theirs.tangent2[i].x, theirs.tangent2[i].y, theirs.tangent2[i].z);
+    worstNormal = std::max(worstNormal, glm::length(glm::normalize(glm::cross(t1, t2)) -
+                                                    normals[theirs.ours[kLevels][i]]));
+  }
+  // The rule matters: under EdgeAndCorner the two corners stay where they are.
+  LoopShape cornered = s;
+  cornered.topology.boundary = LoopBoundary::EdgeAndCorner;
+  const LoopLevels kept = refineLoop(buildLoopTopology(cornered.topology), s.positions, 1);
+  double cornerMoved = 0;
+  for (uint32_t v = 0; v < base.vertexCount; ++v)
+    cornerMoved = std::max(cornerMoved, glm::length(kept.positions[1][v] - ours.positions[1][v]));
+  WARN("EdgeOnly vs OpenSubdiv EDGE_ONLY on " << s.name << ": levels 1-" << kLevels << " "
+                                              << worstLevel << " × size, limit points "
+                                              << worstLimit << ", normals " << worstNormal
+                                              << "; EdgeAndCorner moves level 1 by up to "
+                                              << cornerMoved);
+  REQUIRE(worstLevel < 1e-12);
+  REQUIRE(worstLimit < 1e-12);
+  REQUIRE(worstNormal < 1e-9);
+  REQUIRE(cornerMoved > 1e-3 * size);
+}
+
 namespace {
 
 void writeControlObj(const std::string& path, const LoopShape& s) {
@@ -189,4 +240,21 @@ TEST_CASE("tessera limit --precision double matches OpenSubdiv as the library do
                            << worstFloat << ", --precision double " << worstDouble);
   REQUIRE(worstDouble < 1e-14);
   REQUIRE(worstFloat > 1e-9);  // the fp32 output really is rounded: the option matters
+}
+
+TEST_CASE("tessera limit --boundary edge matches OpenSubdiv's VTX_BOUNDARY_EDGE_ONLY",
+          "[loop][opensubdiv][cli]") {
+  LoopShape s = loopGrid(7, 6, 2);
+  s.topology.boundary = LoopBoundary::EdgeOnly;
+  LoopLevels ours = refineLoop(buildLoopTopology(s.topology), s.positions, kLevels);
+  OsdResult theirs = refineWithOpenSubdiv(s, ours, OpenSubdiv::Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+  const double size = extent(s.positions);
+  const auto edge = limitThroughCli(s, "--precision double --boundary edge");
+  const auto corner = limitThroughCli(s, "--precision double");
+  const double worstEdge = worstDifference(theirs.limit, theirs.ours[kLevels], edge) / size;
+  const double worstCorner = worstDifference(theirs.limit, theirs.ours[kLevels], corner) / size;
+  WARN("tessera limit on " << s.name << " vs OpenSubdiv EDGE_ONLY, × size: --boundary edge "
+                           << worstEdge << ", the default (corner) " << worstCorner);
+  REQUIRE(worstEdge < 1e-14);
+  REQUIRE(worstCorner > 1e-3);
 }

@@ -26,7 +26,8 @@ namespace tessera::cli {
 namespace {
 
 // A triangle control mesh from OBJ; topology errors name the file and the face's line.
-LoopShape readControlMesh(const std::string& path) {
+LoopShape readControlMesh(const std::string& path,
+                          LoopBoundary boundary = LoopBoundary::EdgeAndCorner) {
   PolygonMesh polygons = readObj(path);
   validateTriangles(polygons, path);
   validateManifold(polygons, path);
@@ -34,6 +35,7 @@ LoopShape readControlMesh(const std::string& path) {
   shape.name = std::filesystem::path(path).stem().string();
   shape.positions = polygons.positions;
   shape.topology.vertexCount = uint32_t(polygons.positions.size());
+  shape.topology.boundary = boundary;
   for (const auto& face : polygons.faces)
     shape.topology.triangles.insert(shape.topology.triangles.end(), face.begin(), face.end());
   try {
@@ -66,6 +68,7 @@ struct LoopArgs {
   std::vector<double> cut;  // paste: nx ny nz d
   std::string picture;      // join: inputs, placement and result as one PNG
   MeshOutputArgs mesh;      // --precision
+  std::string boundary = "corner";  // loop, limit: OpenSubdiv's EDGE_AND_CORNER, or "edge"
 };
 
 // Refines on the chosen backend through the stencil tables; with `limit`, the last level's
@@ -78,7 +81,8 @@ int runRefine(const LoopArgs& a) {
     throw CLI::ValidationError("--precision", "double refines in double on the CPU; Vulkan "
                                               "computes in fp32: use --backend cpu or auto");
   checkOutputs({{"input", a.input}}, {{"-o", a.output}});
-  const LoopShape shape = readControlMesh(a.input);
+  const LoopShape shape = readControlMesh(
+      a.input, a.boundary == "edge" ? LoopBoundary::EdgeOnly : LoopBoundary::EdgeAndCorner);
   LoopStencilOptions options;
   options.levels = a.levels;
   options.limit = options.tangents = a.limit;
@@ -221,6 +225,12 @@ void addLoopCommands(CLI::App& app, int& exitCode) {
     cmd->add_option("--backend", args.backend, "vulkan, cpu or auto")->check(CLI::IsMember({"vulkan", "cpu", "auto"}));
     cmd->add_option("--device", args.device, "Vulkan device (name substring or index)");
     addMeshOutputOptions(cmd, args.mesh);
+    cmd->add_option("--boundary", args.boundary,
+                    "a boundary vertex of a single triangle: corner (kept in place, OpenSubdiv's "
+                    "VTX_BOUNDARY_EDGE_AND_CORNER) or edge (a crease vertex, rounded off: "
+                    "VTX_BOUNDARY_EDGE_ONLY, OpenSubdiv's default)")
+        ->check(CLI::IsMember({"edge", "corner"}))
+        ->capture_default_str();
     cmd->callback([&exitCode, limit] {
       args.limit = limit;
       exitCode = runReportingErrors([] { return runRefine(args); }, {args.output});

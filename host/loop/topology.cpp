@@ -70,6 +70,7 @@ LoopTopology buildLoopTopology(const LoopControlTopology& control) {
   checkTriangles(control);
   LoopTopology t;
   t.vertexCount = control.vertexCount;
+  t.boundary = control.boundary;
   t.triangles = control.triangles;
   const uint32_t halfEdgeCount = uint32_t(t.triangles.size());
   const auto tail = [&](uint32_t h) { return t.triangles[h]; };
@@ -186,7 +187,8 @@ LoopTopology buildLoopTopology(const LoopControlTopology& control) {
     uint32_t sharp = 0;
     for (uint32_t k = t.ringOffsets[v]; k < t.ringOffsets[v + 1]; ++k)
       sharp += t.edgeSharp[t.ringEdges[k]];
-    const bool singleFace = t.vertexBoundary[v] && t.faceValence(v) == 1;
+    const bool singleFace = control.boundary == LoopBoundary::EdgeAndCorner &&
+                            t.vertexBoundary[v] && t.faceValence(v) == 1;
     if (t.vertexMarkedCorner[v] || singleFace || sharp >= 3)
       t.vertexRule[v] = LoopVertexRule::Corner;
     else if (sharp == 2)
@@ -199,6 +201,7 @@ LoopTopology buildLoopTopology(const LoopControlTopology& control) {
 
 LoopTopology refineLoopTopology(const LoopTopology& coarse) {
   LoopControlTopology fine;
+  fine.boundary = coarse.boundary;
   const uint32_t n = coarse.vertexCount;
   fine.vertexCount = n + uint32_t(coarse.edgeCount());
   fine.triangles.reserve(coarse.triangles.size() * 4);

@@ -33,11 +33,18 @@ class LoopTopologyError : public std::invalid_argument {
 
 // How a vertex moves under refinement and where its limit lies. Sharp edges are boundary
 // edges and crease edges; a vertex on 0 or 1 sharp edges is smooth (1: a dart, refined as
-// smooth), on exactly 2 a crease vertex, on 3 or more a corner. Boundary vertices of a single
-// triangle and vertices the caller marks are corners too (OpenSubdiv's
-// VTX_BOUNDARY_EDGE_AND_CORNER): they never move.
+// smooth), on exactly 2 a crease vertex, on 3 or more a corner. Vertices the caller marks are
+// corners too, and with LoopBoundary::EdgeAndCorner so are boundary vertices of a single
+// triangle: they never move.
 enum class LoopVertexRule : uint8_t { Smooth, Dart, Crease, Corner };
 const char* loopVertexRuleName(LoopVertexRule rule);
+
+// OpenSubdiv's boundary interpolation (Sdc::Options::VtxBoundaryInterpolation). Both make
+// boundary edges sharp; they differ only at a boundary vertex of a single triangle:
+//   EdgeOnly       (VTX_BOUNDARY_EDGE_ONLY, OpenSubdiv's default): a crease vertex like any
+//                  other boundary vertex, so the surface's corner is rounded off;
+//   EdgeAndCorner  (VTX_BOUNDARY_EDGE_AND_CORNER, Tessera's default): a corner, kept in place.
+enum class LoopBoundary : uint8_t { EdgeOnly, EdgeAndCorner };
 
 // Triangles, infinitely sharp crease edges and corner vertices: what the caller describes.
 struct LoopControlTopology {
@@ -45,10 +52,12 @@ struct LoopControlTopology {
   std::vector<uint32_t> triangles;  // 3 per face, counter-clockwise seen from outside
   std::vector<std::array<uint32_t, 2>> creases;  // edges by their two vertices (either order)
   std::vector<uint32_t> corners;                 // vertices that stay fixed
+  LoopBoundary boundary = LoopBoundary::EdgeAndCorner;
 };
 
 struct LoopTopology {
   uint32_t vertexCount = 0;
+  LoopBoundary boundary = LoopBoundary::EdgeAndCorner;  // as given, inherited when refined
   std::vector<uint32_t> triangles;  // 3 per face
   // Edge e joins edgeVertices[e] (lower index first) and separates edgeFaces[e] (the second is
   // kLoopNone on a boundary). Edge i of face f, faceEdges[3f + i], joins corners i and i + 1.
@@ -88,7 +97,7 @@ LoopTopology buildLoopTopology(const LoopControlTopology& control);
 // One level of Loop refinement, topology only. Vertex v keeps its index (the "even" vertex);
 // the new "odd" vertex on edge e is vertexCount + e. Face f (a, b, c) with edge vertices
 // ab, bc, ca becomes faces 4f..4f+3: (a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca).
-// Creases split into two creases; marked corners stay corners.
+// Creases split into two creases; marked corners stay corners; the boundary rule is kept.
 LoopTopology refineLoopTopology(const LoopTopology& coarse);
 
 }  // namespace tessera

@@ -5,8 +5,9 @@
 //
 // Options that make OpenSubdiv follow docs/loop.md:
 //   VTX_BOUNDARY_EDGE_AND_CORNER  boundary edges sharp, and a boundary vertex of a single face
-//                                 a corner (ours: LoopVertexRule::Corner). EDGE_ONLY would refine
-//                                 such a vertex with the crease rule instead.
+//                                 a corner (ours: LoopBoundary::EdgeAndCorner, the default).
+//   VTX_BOUNDARY_EDGE_ONLY        such a vertex refined with the crease rule instead (ours:
+//                                 LoopBoundary::EdgeOnly); osdBoundaryRule maps ours to theirs.
 //   creases and marked corners    sharpness Sdc::Crease::SHARPNESS_INFINITE
 //   CREASE_UNIFORM (default)      infinitely sharp creases need no Chaikin rule
 #pragma once
@@ -25,6 +26,11 @@ using BoundaryRule = OpenSubdiv::Sdc::Options::VtxBoundaryInterpolation;
 std::unique_ptr<TopologyRefiner> makeLoopRefiner(
     const LoopControlTopology& control,
     BoundaryRule boundary = OpenSubdiv::Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
+
+inline BoundaryRule osdBoundaryRule(LoopBoundary boundary) {
+  return boundary == LoopBoundary::EdgeOnly ? OpenSubdiv::Sdc::Options::VTX_BOUNDARY_EDGE_ONLY
+                                            : OpenSubdiv::Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER;
+}
 
 // ours[l][i]: our index (host/loop/topology.h numbering at level l) of OpenSubdiv's vertex i at
 // level l, for l = 0 .. refiner.GetMaxLevel(); `levels` are our topologies of the same levels.
