@@ -49,7 +49,9 @@ std::vector<ManifestRow> readManifest() {
 
 void readAsTheCliOrMeshUserWould(const std::string& path) {
   if (std::filesystem::path(path).extension() == ".obj") {
-    validateManifold(readObj(path), path);
+    const PolygonMesh mesh = readObj(path);
+    validateManifold(mesh, path);
+    validateNoIsolatedVertices(mesh, path);
   } else {
     readSurfaceFile(path);
   }

@@ -160,6 +160,10 @@ TEST_CASE("Loop topology rejects bad input with a message naming the culprit", "
     CHECK_THAT(errorOf(triangles(7, both)), Contains("vertex 0 is non-manifold"));
   }
   CHECK_THAT(errorOf(triangles(4, {0, 1, 2})), Contains("vertex 3 is used by no triangle"));
+  // The same triangle twice, opposite orientations: every edge has two faces, consistently
+  // oriented, but the refined mesh would be no manifold: refused here, not in refinement.
+  CHECK_THAT(errorOf(triangles(3, {0, 1, 2, 0, 2, 1})),
+             Contains("triangles 0 and 1 are the same triangle in opposite orientations"));
   CHECK_THAT(errorOf(triangles(3, {0, 1, 5})), Contains("triangle 0 uses vertex 5"));
   CHECK_THAT(errorOf(triangles(3, {0, 1, 1})), Contains("repeats a vertex"));
   CHECK_THAT(errorOf(triangles(3, {0, 1})), Contains("not a multiple of 3"));

@@ -31,6 +31,7 @@ LoopShape readControlMesh(const std::string& path,
   PolygonMesh polygons = readObj(path);
   validateTriangles(polygons, path);
   validateManifold(polygons, path);
+  validateNoIsolatedVertices(polygons, path);
   LoopShape shape;
   shape.name = std::filesystem::path(path).stem().string();
   shape.positions = polygons.positions;

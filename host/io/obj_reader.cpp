@@ -101,6 +101,7 @@ class ObjParser {
       if (c < 3) p[static_cast<int>(c)] = value;
     }
     mesh_.positions.push_back(p);
+    mesh_.vertexLines.push_back(lines_.line());
   }
 
   // One index of a corner: 1-based, negative counts back from the latest element.

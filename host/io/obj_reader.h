@@ -35,6 +35,8 @@ struct PolygonMesh {
   // The 1-based line of each face in its file, for messages; may be empty for a mesh built in
   // code (messages then name the face by number only).
   std::vector<int> faceLines;
+  // The 1-based line of each "v" record, likewise (may be empty).
+  std::vector<int> vertexLines;
 };
 
 // Read the file at `path`; an unreadable file is an InputError of kind Io.
@@ -46,14 +48,20 @@ PolygonMesh parseObj(std::istream& in, const std::string& nameForMessages);
 // Topology error naming the first face that is not a triangle and its line.
 void validateTriangles(const PolygonMesh& mesh, const std::string& nameForMessages);
 
+// Topology error naming the first vertex that no face uses, 1-based as in the file, and its
+// "v" line: a Loop control mesh cannot take isolated vertices.
+void validateNoIsolatedVertices(const PolygonMesh& mesh, const std::string& nameForMessages);
+
 // Topology error unless the faces form an oriented 2-manifold with boundary: no face uses a
 // vertex twice, no edge is shared by more than two faces (the message names the edge's
 // vertices, 1-based as in the file), and two faces sharing an edge run it in opposite
 // directions (consistent orientation; the message names both faces' lines), and the faces
 // around each vertex form one fan joined by edges (two fans touching only at the vertex, a
 // "bow tie", make the surface touch itself: the message names the vertex and a face of each
-// fan). Holes — edges of only one face — are allowed. Not checked: faces that intersect
-// geometrically.
+// fan). No two faces have the same corners: the same triangle twice, in opposite orientations,
+// passes every check above (a closed "pillow" of two faces) but is no surface that Loop
+// refinement can take (the message names both faces' lines). Holes — edges of only one face —
+// are allowed. Not checked: faces that intersect geometrically.
 void validateManifold(const PolygonMesh& mesh, const std::string& nameForMessages);
 
 }  // namespace tessera

@@ -1,6 +1,7 @@
-// The topology checks over a parsed polygon mesh (validateTriangles, validateManifold); rules in
-// obj_reader.h.
+// The topology checks over a parsed polygon mesh (validateTriangles, validateNoIsolatedVertices,
+// validateManifold); rules in obj_reader.h.
 #include <algorithm>
+#include <map>
 #include <cstdint>
 #include <numeric>
 #include <string>
@@ -56,7 +57,58 @@ void validateTriangles(const PolygonMesh& mesh, const std::string& nameForMessag
                            " corners; only triangles are accepted here");
 }
 
+void validateNoIsolatedVertices(const PolygonMesh& mesh, const std::string& nameForMessages) {
+  std::vector<char> used(mesh.positions.size(), 0);
+  for (const auto& face : mesh.faces)
+    for (uint32_t v : face)
+      if (v < used.size()) used[v] = 1;
+  for (size_t v = 0; v < used.size(); ++v)
+    if (!used[v])
+      throw InputError(InputErrorKind::Topology, nameForMessages,
+                       v < mesh.vertexLines.size() ? mesh.vertexLines[v] : 0,
+                       "vertex " + std::to_string(v + 1) +
+                           " is used by no face (isolated vertices are not supported in a "
+                           "control mesh)");
+}
+
+namespace {
+
+// Faces with the same corners in any order: the same triangle twice (two-sided when the
+// orientations are opposite, which the edge checks alone accept). Throws the InputError.
+void checkRepeatedFaces(const PolygonMesh& mesh, const std::string& nameForMessages) {
+  std::map<std::vector<uint32_t>, size_t> seen;
+  for (size_t f = 0; f < mesh.faces.size(); ++f) {
+    std::vector<uint32_t> corners = mesh.faces[f];
+    std::sort(corners.begin(), corners.end());
+    const auto [at, inserted] = seen.emplace(corners, f);
+    if (inserted) continue;
+    const size_t first = at->second;
+    std::string vertices;
+    for (uint32_t v : mesh.faces[first]) vertices += (vertices.empty() ? "" : ", ") + std::to_string(v + 1);
+    const bool sameWinding = [&] {
+      const auto& a = mesh.faces[first];
+      const auto& b = mesh.faces[f];
+      for (size_t shift = 0; shift < a.size(); ++shift) {
+        bool equal = true;
+        for (size_t k = 0; k < a.size() && equal; ++k) equal = a[k] == b[(k + shift) % b.size()];
+        if (equal) return true;
+      }
+      return false;
+    }();
+    throw InputError(InputErrorKind::Topology, nameForMessages, faceLine(mesh, f),
+                     facesNamed(mesh, {first, f}) + " have the same corners (vertices " +
+                         vertices + ")" +
+                         (sameWinding ? ": the same face twice"
+                                      : " in opposite orientations: a two-sided face, a closed "
+                                        "surface of no volume") +
+                         "; not a manifold");
+  }
+}
+
+}  // namespace
+
 void validateManifold(const PolygonMesh& mesh, const std::string& nameForMessages) {
+  checkRepeatedFaces(mesh, nameForMessages);
   struct EdgeUse {
     size_t firstFace = 0, secondFace = 0;
     size_t firstFromCorner = 0, firstToCorner = 0;  // the first face's corners on the edge

@@ -182,6 +182,20 @@ LoopTopology buildLoopTopology(const LoopControlTopology& control) {
                               kLoopNone, v);
     t.vertexMarkedCorner[v] = 1;
   }
+  // An interior vertex of two triangles: they share both its edges, so they are one triangle
+  // in opposite orientations (a two-sided "pillow"), whose refinement is no manifold.
+  for (uint32_t v = 0; v < t.vertexCount; ++v) {
+    if (t.vertexBoundary[v] || t.valence(v) != 2) continue;
+    std::vector<uint32_t> faces;
+    for (uint32_t f = 0; f < t.faceCount(); ++f)
+      for (int c = 0; c < 3; ++c)
+        if (t.triangles[3 * f + c] == v) faces.push_back(f);
+    throw LoopTopologyError("triangles " + std::to_string(faces.front()) + " and " +
+                                std::to_string(faces.back()) +
+                                " are the same triangle in opposite orientations (a two-sided "
+                                "triangle around vertex " + std::to_string(v) + ")",
+                            faces.back(), v);
+  }
   t.vertexRule.resize(t.vertexCount);
   for (uint32_t v = 0; v < t.vertexCount; ++v) {
     uint32_t sharp = 0;
