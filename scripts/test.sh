@@ -21,6 +21,12 @@ done
 scripts/deps.sh
 scripts/build.sh
 (cd "${BUILD_DIR:-build}" && ctest --output-on-failure -j "$(nproc)" "${labels[@]}")
+# Which Vulkan device the GPU tests ran on (tests/test_gpu_device.cpp), once, in this log.
+if [[ ${#labels[@]} -eq 0 ]]; then
+  grep -a -m1 -o "Vulkan device of the GPU tests: .*" \
+    "${BUILD_DIR:-build}/Testing/Temporary/LastTest.log" ||
+    echo "test: the GPU tests' device line is missing from CTest's log" >&2
+fi
 # The library as a user takes it: install to a prefix, build examples/consumer against it with
 # find_package and with pkg-config, run both.
 scripts/check-install.sh
