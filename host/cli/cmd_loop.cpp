@@ -131,13 +131,21 @@ int runRefine(const LoopArgs& a) {
     return out;
   };
   std::vector<glm::dvec3> normals;
+  size_t zeroNormals = 0;
   if (a.limit) {
     const auto t1 = rowsAt(stencils.tangent1Row), t2 = rowsAt(stencils.tangent2Row);
     for (uint32_t v = 0; v < last.vertexCount; ++v) {
       const glm::dvec3 n = glm::cross(t1[v], t2[v]);
+      zeroNormals += !(glm::length(n) > 0);
       normals.push_back(glm::length(n) > 0 ? glm::normalize(n) : glm::dvec3(0.0));
     }
   }
+  // The "zero-normals" condition of host/mesh/result_warnings.h: written, but said.
+  if (zeroNormals > 0)
+    std::fprintf(stderr,
+                 "tessera: warning: %zu %s no limit normal (written as 0 0 0): the limit "
+                 "tangents are parallel there\n",
+                 zeroNormals, zeroNormals == 1 ? "vertex has" : "vertices have");
   writeMesh(a.output,
             loopMesh(rowsAt(a.limit ? stencils.limitRow : stencils.levelRow.back()),
                      last.triangles, normals),
