@@ -92,3 +92,7 @@ tessera_usage_error("--precision half" "--precision: half not in"
                     tessellate nofile.bpt --precision half)
 tessera_usage_error("loop --boundary both" "--boundary: both not in"
                     loop ${USAGE_DATA}/loop/ball.obj --boundary both)
+tessera_usage_error("CAD --precision double" "--precision: double: not for CAD models"
+                    tessellate nofile.step --precision double)
+tessera_usage_error("CAD --metadata" "--metadata: not for CAD models"
+                    tessellate nofile.step --metadata)

@@ -57,6 +57,10 @@ struct TessellateArgs {
 
 // A CAD model (.step, .iges, .brep) goes through host/cad/ and host/trim/ (cad_job.h).
 int runCad(const TessellateArgs& a) {
+  // The CAD mesh is fp32 with no patch parameters to carry: the mesh options do not apply.
+  if (a.mesh.precision == "double")
+    throw CLI::ValidationError("--precision", "double: not for CAD models (yet)");
+  if (a.mesh.metadata) throw CLI::ValidationError("--metadata", "not for CAD models (yet)");
   CadCommand c;
   c.input = a.input;
   c.output = a.output;
