@@ -8,9 +8,14 @@
 // conversion to its trimmed faces plus the meshing, OCCT's is BRepMesh on a cleaned shape.
 // Both meshes are measured by the same code: the distance from sample points of every
 // triangle ((i, j, k)/3 barycentric, corners included) to the face's own surface
-// (GeomAPI_ProjectPointOnSurf within the face's uv bounds), the largest over the corpus, as a
+// (GeomAPI_ProjectPointOnSurf within the face's uv bounds grown by 10⁻⁶ of their range: a
+// boundary point's foot just outside by rounding was missed, or worse, replaced by the far
+// side of a cylinder, 2R away), the largest over the corpus, as a
 // multiple of δ. A point the projection cannot place is counted, not guessed.
-// Usage: bench_cad [relative tolerances = 0.001,0.0001] [--dir folder] [--json file]
+// Usage: bench_cad [relative tolerances = 0.001,0.0001] [--dir folder] [--json file] [--cpu]
+//        [--model name-part] [--detail]
+// --cpu leaves Vulkan out; --model keeps the models whose file name contains the text;
+// --detail prints each model's worst faces (distance, unprojected samples) for both meshers.
 #include <BRepBndLib.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepTools.hxx>
@@ -20,6 +25,7 @@
 #include <Geom_Surface.hxx>
 #include <Poly_Triangulation.hxx>
 #include <Standard_Version.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
@@ -59,8 +65,30 @@ struct Deviation {
   size_t samples = 0, unprojected = 0;
 };
 
-Deviation measureDistance(const FaceTriangles& mesh) {
+// --detail: per face, the largest distance and the unprojected samples, the worst few printed.
+struct FaceDetail {
+  int face = 0;
+  double max = 0;
+  size_t samples = 0, unprojected = 0, triangles = 0;
+};
+bool gDetail = false;
+// The face's uv bounds are grown by this share of their range before projecting (see below).
+constexpr double kBoundsGrowth = 1e-6;
+
+void printDetail(const char* who, std::vector<FaceDetail> faces, double delta) {
+  std::sort(faces.begin(), faces.end(), [](const FaceDetail& a, const FaceDetail& b) {
+    return a.max != b.max ? a.max > b.max : a.unprojected > b.unprojected;
+  });
+  for (size_t k = 0; k < faces.size() && k < 8; ++k)
+    std::fprintf(stderr, "  %s face %d: %zu triangles, distance/δ %.3f, %zu of %zu unprojected\n",
+                 who, faces[k].face, faces[k].triangles, faces[k].max / delta,
+                 faces[k].unprojected, faces[k].samples);
+}
+
+Deviation measureDistance(const FaceTriangles& mesh, const TopTools_IndexedMapOfShape* map = nullptr,
+                          const char* who = nullptr, double delta = 1) {
   Deviation d;
+  std::vector<FaceDetail> details;
   // Triangles of one face are consecutive in both meshers' output, so the projector is set up
   // once per run of triangles on one face.
   GeomAPI_ProjectPointOnSurf projector;
@@ -71,8 +99,14 @@ Deviation measureDistance(const FaceTriangles& mesh) {
       current = face;
       double u0, u1, v0, v1;
       BRepTools::UVBounds(face, u0, u1, v0, v1);
-      projector.Init(BRep_Tool::Surface(face), u0, u1, v0, v1);
+      // Grown by a share of the range: a point on the face's boundary (both meshers put their
+      // boundary vertices there) has its foot on the edge of the box, and rounding can put it
+      // just outside; Extrema then finds no foot, or only a farther one (a cylinder's far side).
+      const double du = kBoundsGrowth * (u1 - u0), dv = kBoundsGrowth * (v1 - v0);
+      projector.Init(BRep_Tool::Surface(face), u0 - du, u1 + du, v0 - dv, v1 + dv);
+      if (gDetail && map) details.push_back({map->FindIndex(face) - 1});
     }
+    if (gDetail && map) ++details.back().triangles;
     const gp_Pnt* c = &mesh.corners[3 * t];
     for (int i = 0; i <= 3; ++i)
       for (int j = 0; i + j <= 3; ++j) {
@@ -80,13 +114,17 @@ Deviation measureDistance(const FaceTriangles& mesh) {
         const gp_Pnt p((i * c[0].XYZ() + j * c[1].XYZ() + k * c[2].XYZ()) / 3.0);
         projector.Perform(p);
         ++d.samples;
+        if (gDetail && map) ++details.back().samples;
         if (projector.NbPoints() == 0) {
           ++d.unprojected;
+          if (gDetail && map) ++details.back().unprojected;
           continue;
         }
         d.max = std::max(d.max, projector.LowerDistance());
+        if (gDetail && map) details.back().max = std::max(details.back().max, projector.LowerDistance());
       }
   }
+  if (gDetail && map) printDetail(who, details, delta);
   return d;
 }
 
@@ -158,12 +196,13 @@ struct Models {
   std::vector<CadFile> files;
 };
 
-Models readCorpus(const std::string& folder) {
+Models readCorpus(const std::string& folder, const std::string& filter) {
   Models m;
   for (const auto& entry : fs::directory_iterator(folder)) {
     std::string ext = entry.path().extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-    if (ext == ".stp" || ext == ".step" || ext == ".igs" || ext == ".iges")
+    if ((ext == ".stp" || ext == ".step" || ext == ".igs" || ext == ".iges") &&
+        entry.path().filename().string().find(filter) != std::string::npos)
       m.paths.push_back(entry.path().string());
   }
   std::sort(m.paths.begin(), m.paths.end());
@@ -193,7 +232,9 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
       std::sort(seconds.begin(), seconds.end());
       const FaceTriangles soup = occtTriangles(file.shape);
       count = soup.face.size();
-      const Deviation d = parallel ? Deviation{} : measureDistance(soup);
+      TopTools_IndexedMapOfShape faceMap;
+      TopExp::MapShapes(file.shape, TopAbs_FACE, faceMap);
+      const Deviation d = parallel ? Deviation{} : measureDistance(soup, &faceMap, "OCCT", delta);
       occt[parallel].add(name, {seconds.front(), seconds[seconds.size() / 2], int(seconds.size())},
                          count, parallel ? Deviation{} : d, delta);
     }
@@ -212,7 +253,8 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
         failedFaces += import.failures.size();
       }
       tessera[b].add(name, time, mesh.mesh.triangleCount(),
-                     measureDistance(tesseraTriangles(mesh, import)), delta);
+                     measureDistance(tesseraTriangles(mesh, import), &import.faces, "Tessera", delta),
+                     delta);
     }
     std::fprintf(stderr, "%s at %g of its diagonal: OCCT %zu triangles, Tessera %zu\n",
                  name.c_str(), relative, occt[0].perModel.back()["triangles"].get<size_t>(),
@@ -270,11 +312,20 @@ std::vector<double> parseList(const std::string& text) {
 int main(int argc, char** argv) {
   bench::Report report("cad", argc, argv);
   std::vector<double> relatives = {1e-3, 1e-4};
-  std::string folder = kIdfLibrary;
+  std::string folder = kIdfLibrary, filter;
+  bool cpuOnly = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--dir" && i + 1 < argc)
       folder = argv[++i];
+    else if (arg == "--model" && i + 1 < argc)
+      filter = argv[++i];
+    else if (arg == "--cpu")
+      cpuOnly = true;
+    else if (arg == "--detail")
+      gDetail = true;
+    else if (arg == "--json" && i + 1 < argc)
+      ++i;  // bench::Report's
     else
       relatives = parseList(arg);
   }
@@ -283,7 +334,7 @@ int main(int argc, char** argv) {
                  folder.c_str());
     return 2;
   }
-  const Models models = readCorpus(folder);
+  const Models models = readCorpus(folder, filter);
   report.note("corpus", folder);
   report.note("models", models.paths.size());
   report.note("occtVersion", OCC_VERSION_COMPLETE);
@@ -293,6 +344,7 @@ int main(int argc, char** argv) {
   std::unique_ptr<vk::Context> context;
   Backend vulkan;
   try {
+    if (cpuOnly) throw std::runtime_error("--cpu");
     context = std::make_unique<vk::Context>();
     vulkan = makeVulkanBackend(*context);
     report.setDevice(*context);
