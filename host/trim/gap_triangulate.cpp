@@ -134,19 +134,33 @@ bool bridgeHole(const std::vector<glm::dvec2>& points, std::vector<uint32_t>& po
   return false;
 }
 
+// A triangle whose height is under this share of its longest side is flat for the gap: three
+// points that lie on one (u, v) line up to rounding (fp32 corner uvs leave a barely positive
+// area). Such an ear or flip makes a 3D triangle across the surface's curve along that line
+// that no midpoint split repairs (docs/trimmed_faces.md, "Slivers").
+constexpr double kFlatRatio = 1e-5;
+
+// 2·area / (longest side)² = height / longest side; negative when clockwise.
+double shapeRatio(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+  const double longest2 =
+      std::max({glm::dot(b - a, b - a), glm::dot(c - b, c - b), glm::dot(a - c, a - c)});
+  return longest2 > 0 ? cross(b - a, c - a) / longest2 : 0.0;
+}
+
 bool insideOrOnTriangle(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
   return cross(b - a, p - a) >= 0 && cross(c - b, p - b) >= 0 && cross(a - c, p - c) >= 0;
 }
 
 // Ear clipping of a weakly simple counter-clockwise polygon (ids may repeat at bridges and
 // pinches). A vertex is an ear when its corner is strictly convex and no other vertex, at a
-// place other than the ear's three corners, lies inside the ear or on its sides.
+// place other than the ear's three corners, lies inside the ear or on its sides. A flat ear
+// (kFlatRatio) is taken only when no other ear is left, the fattest of them first.
 void clipEars(const std::vector<glm::dvec2>& points, std::vector<uint32_t> polygon,
               std::vector<std::array<uint32_t, 3>>& triangles, size_t& failures) {
   while (polygon.size() > 3) {
     const size_t n = polygon.size();
-    size_t ear = n, fallback = n;
-    double fallbackArea = 0;
+    size_t ear = n, fallback = n, flat = n;
+    double fallbackArea = 0, flatRatio = 0;
     for (size_t i = 0; i < n && ear == n; ++i) {
       const glm::dvec2 a = points[polygon[(i + n - 1) % n]], b = points[polygon[i]],
                        c = points[polygon[(i + 1) % n]];
@@ -159,8 +173,14 @@ void clipEars(const std::vector<glm::dvec2>& points, std::vector<uint32_t> polyg
         if (p == a || p == b || p == c) continue;
         empty = !insideOrOnTriangle(p, a, b, c);
       }
-      if (empty) ear = i;
+      if (!empty) continue;
+      const double ratio = shapeRatio(a, b, c);
+      if (ratio >= kFlatRatio)
+        ear = i;
+      else if (ratio > flatRatio)
+        flat = i, flatRatio = ratio;
     }
+    if (ear == n) ear = flat;
     if (ear == n) {
       ++failures;
       if (fallback == n) return;  // nothing convex is left: a degenerate remainder
@@ -169,9 +189,14 @@ void clipEars(const std::vector<glm::dvec2>& points, std::vector<uint32_t> polyg
     triangles.push_back({polygon[(ear + n - 1) % n], polygon[ear], polygon[(ear + 1) % n]});
     polygon.erase(polygon.begin() + ear);
   }
-  if (polygon.size() == 3 &&
-      cross(points[polygon[1]] - points[polygon[0]], points[polygon[2]] - points[polygon[1]]) > 0)
-    triangles.push_back({polygon[0], polygon[1], polygon[2]});
+  if (polygon.size() == 3) {
+    const double area =
+        cross(points[polygon[1]] - points[polygon[0]], points[polygon[2]] - points[polygon[1]]);
+    if (area > 0)
+      triangles.push_back({polygon[0], polygon[1], polygon[2]});
+    else if (area < 0)
+      ++failures;  // a clockwise remainder: the polygon crossed itself (a bow tie's other lobe)
+  }
 }
 
 }  // namespace
@@ -264,8 +289,8 @@ void flipTowardsDelaunay(const std::vector<glm::dvec2>& points,
                             glm::dot(cd, cd) * cross(ad, bd);
     const double scale2 = glm::dot(ad, ad) + glm::dot(bd, bd) + glm::dot(cd, cd);
     if (!(inCircle > 1e-12 * scale2 * scale2)) continue;
-    // The new triangles (c, a, d) and (d, b, c) must both be counter-clockwise.
-    if (!(cross(pa - pc, pd - pa) > 0 && cross(pb - pd, pc - pb) > 0)) continue;
+    // The new triangles (c, a, d) and (d, b, c) must both be counter-clockwise, and not flat.
+    if (!(shapeRatio(pc, pa, pd) >= kFlatRatio && shapeRatio(pd, pb, pc) >= kFlatRatio)) continue;
     triangles[t0] = {c, a, d};
     triangles[t1] = {d, b, c};
     users.erase(found);
