@@ -73,4 +73,25 @@ double FaceSurface::distance(const glm::dvec3& target, glm::dvec2 guess) const {
   return closestPointOnPatch(face_->pieces[piece].patch, target, localUv(piece, guess)).distance;
 }
 
+glm::dvec2 FaceSurface::meanSpeeds(glm::dvec2 lo, glm::dvec2 hi) const {
+  constexpr int kGrid = 6;
+  const glm::dvec2 h = 1e-4 * (hi - lo);
+  glm::dvec2 sum(0.0);
+  for (int i = 0; i < kGrid; ++i)
+    for (int j = 0; j < kGrid; ++j) {
+      const glm::dvec2 uv = lo + (hi - lo) * glm::dvec2((i + 0.5) / kGrid, (j + 0.5) / kGrid);
+      if (h.x > 0)
+        sum.x += glm::length(point(uv + glm::dvec2(h.x, 0)) - point(uv - glm::dvec2(h.x, 0))) /
+                 (2 * h.x);
+      if (h.y > 0)
+        sum.y += glm::length(point(uv + glm::dvec2(0, h.y)) - point(uv - glm::dvec2(0, h.y))) /
+                 (2 * h.y);
+    }
+  glm::dvec2 speeds = sum / double(kGrid * kGrid);
+  const double floor = 1e-12 * std::max({speeds.x, speeds.y, 1e-300});
+  if (!(speeds.x > floor)) speeds.x = std::max(floor, speeds.y);
+  if (!(speeds.y > floor)) speeds.y = std::max(floor, speeds.x);
+  return speeds;
+}
+
 }  // namespace tessera

@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "quadtree/quadtree.h"
+#include "trim/detail/gap_refine.h"
 #include "trim/face_surface.h"
 #include "trim/gap_triangulate.h"
 #include "trim/trim_cut.h"
@@ -16,26 +17,20 @@
 namespace tessera {
 namespace {
 
+using trim_detail::EdgeKey;
+using trim_detail::FaceTriangle;
+using trim_detail::FaceVertex;
+using trim_detail::edgeKey;
+
 std::string faceName(const TrimmedFace& face, size_t position) {
   return face.label.empty() ? "face " + std::to_string(position) : face.label;
 }
 
 double cross(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
 
-// One face's vertices in its own (u, v). A trim point is keyed by its shared id and uv (a seam
-// edge brings the same id twice, at u = 0 and u = 2π), a quad-tree vertex by its mesh vertex
-// and uv (a collapsed edge welds corners of different uv into one vertex).
-struct FaceVertex {
-  glm::dvec2 uv;
-  glm::dvec3 position;
-  int64_t sharedId = -1;  // ≥ 0: a trim point
-};
-
-struct FaceTriangle {
-  std::array<uint32_t, 3> v;
-  bool gap = false;
-};
-
+// One face's vertices (detail/gap_refine.h) in its own (u, v). A trim point is keyed by its
+// shared id and uv (a seam edge brings the same id twice, at u = 0 and u = 2π), a quad-tree
+// vertex by its mesh vertex and uv (a collapsed edge welds corners of different uv into one).
 class FaceBuilder {
  public:
   std::vector<FaceVertex> vertices;
@@ -51,20 +46,6 @@ class FaceBuilder {
   }
 };
 
-// Largest parametric deviation over the samples (i, j, k)/n of a triangle.
-double parametricDeviation(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
-                           const std::array<uint32_t, 3>& t, int n) {
-  double worst = 0;
-  for (int i = 0; i <= n; ++i)
-    for (int j = 0; i + j <= n; ++j) {
-      const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
-      const glm::dvec2 uv = a * vs[t[0]].uv + b * vs[t[1]].uv + c * vs[t[2]].uv;
-      const glm::dvec3 p = a * vs[t[0]].position + b * vs[t[1]].position + c * vs[t[2]].position;
-      worst = std::max(worst, glm::length(p - surface.point(uv)));
-    }
-  return worst;
-}
-
 double geometricDeviation(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
                           const std::array<uint32_t, 3>& t, int n) {
   double worst = 0;
@@ -76,72 +57,6 @@ double geometricDeviation(const FaceSurface& surface, const std::vector<FaceVert
       worst = std::max(worst, surface.distance(p, uv));
     }
   return worst;
-}
-
-using EdgeKey = std::pair<uint32_t, uint32_t>;
-EdgeKey edgeKey(uint32_t a, uint32_t b) { return std::minmax(a, b); }
-
-// Splits gap triangles whose measured deviation exceeds δ: the longest edge that is not a trim
-// segment at its midpoint (with the triangle across it, kept or gap, so no T-junction), or at
-// the centroid when all three are trim segments. Trim segments are never split: the face
-// across the B-rep edge uses them as they are.
-size_t refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
-                 std::vector<FaceTriangle>& triangles, const std::set<EdgeKey>& trimEdges,
-                 const TrimmedMeshOptions& options) {
-  size_t splits = 0;
-  for (int round = 0; round < options.maxRefineRounds; ++round) {
-    std::map<EdgeKey, std::vector<uint32_t>> users;
-    for (uint32_t t = 0; t < triangles.size(); ++t)
-      for (int k = 0; k < 3; ++k)
-        users[edgeKey(triangles[t].v[k], triangles[t].v[(k + 1) % 3])].push_back(t);
-    std::vector<bool> touched(triangles.size(), false);
-    const size_t count = triangles.size();
-    bool any = false;
-    for (uint32_t t = 0; t < count; ++t) {
-      if (!triangles[t].gap || touched[t]) continue;
-      if (parametricDeviation(surface, vs, triangles[t].v, options.deviationSubdivisions) <=
-          options.tolerance)
-        continue;
-      const std::array<uint32_t, 3> v = triangles[t].v;
-      int longest = -1;
-      double longestLength = 0;
-      for (int k = 0; k < 3; ++k) {
-        if (trimEdges.count(edgeKey(v[k], v[(k + 1) % 3]))) continue;
-        const double length = glm::length(vs[v[k]].uv - vs[v[(k + 1) % 3]].uv);
-        if (length > longestLength) longest = k, longestLength = length;
-      }
-      if (longest < 0) {  // three trim segments: a centre point
-        const glm::dvec2 uv = (vs[v[0]].uv + vs[v[1]].uv + vs[v[2]].uv) / 3.0;
-        vs.push_back({uv, surface.point(uv), -1});
-        const uint32_t m = uint32_t(vs.size() - 1);
-        triangles[t] = {{v[0], v[1], m}, true};
-        triangles.push_back({{v[1], v[2], m}, true});
-        triangles.push_back({{v[2], v[0], m}, true});
-        touched[t] = true;
-        ++splits, any = true;
-        continue;
-      }
-      const uint32_t a = v[longest], b = v[(longest + 1) % 3];
-      const std::vector<uint32_t>& across = users[edgeKey(a, b)];
-      if (std::any_of(across.begin(), across.end(), [&](uint32_t u) { return touched[u]; }))
-        continue;
-      const glm::dvec2 uv = 0.5 * (vs[a].uv + vs[b].uv);
-      vs.push_back({uv, surface.point(uv), -1});
-      const uint32_t m = uint32_t(vs.size() - 1);
-      for (uint32_t u : across) {
-        const std::array<uint32_t, 3> w = triangles[u].v;
-        int k = 0;
-        while (edgeKey(w[k], w[(k + 1) % 3]) != edgeKey(a, b)) ++k;
-        // (w_k, w_k+1, w_k+2) → (w_k, m, w_k+2) and (m, w_k+1, w_k+2): same orientation.
-        triangles[u].v = {w[k], m, w[(k + 2) % 3]};
-        triangles.push_back({{m, w[(k + 1) % 3], w[(k + 2) % 3]}, triangles[u].gap});
-        touched[u] = true;
-      }
-      ++splits, any = true;
-    }
-    if (!any) break;
-  }
-  return splits;
 }
 
 }  // namespace
@@ -257,13 +172,20 @@ TrimmedMesh meshTrimmedModel(const TrimmedModel& model, const TrimmedMeshOptions
         for (int k = 0; k < 3; ++k) directed.insert({t.v[k], t.v[(k + 1) % 3]});
       for (const auto& [a, b] : directed)
         if (!directed.count({b, a})) gapEdges.push_back({b, a});
+      // Triangulated in the surface's proportions (meanSpeeds), not in raw (u, v): u scaled by
+      // the speeds' ratio rounded to a power of two, so the scaling is exact and every
+      // orientation sign the gap's predicates see is the unscaled one.
+      const glm::dvec2 speeds = surface.meanSpeeds(lo, hi);
+      const glm::dvec2 metric(std::exp2(std::round(std::log2(speeds.x / speeds.y))), 1.0);
       std::vector<glm::dvec2> points;
-      for (const FaceVertex& v : builder.vertices) points.push_back(v.uv);
+      for (const FaceVertex& v : builder.vertices) points.push_back(v.uv * metric);
       const GapTriangulation gap = triangulateGap(points, gapEdges);
       stats.gapFailures = gap.failures;
       for (const auto& t : gap.triangles) triangles.push_back({t, true});
-      stats.refinementSplits =
-          refineGap(surface, builder.vertices, triangles, trimEdges, options);
+      stats.refinementSplits = trim_detail::refineGap(
+          surface, builder.vertices, triangles, trimEdges,
+          {options.tolerance, options.deviationSubdivisions, options.maxRefineRounds, metric,
+           options.gapMeasure});
     }
 
     // Emit: trim points as their shared vertex, the rest as this face's own vertices.
@@ -294,7 +216,9 @@ TrimmedMesh meshTrimmedModel(const TrimmedModel& model, const TrimmedMeshOptions
       for (uint32_t k : v) out.cornerUv.push_back(vs[k].uv);
       ++stats.triangles;
       const double parametric =
-          parametricDeviation(surface, vs, t.v, options.deviationSubdivisions);
+          trim_detail::parametricDeviation(surface, vs, t.v, options.deviationSubdivisions);
+      stats.maxTrimPointOffset =
+          std::max(stats.maxTrimPointOffset, trim_detail::cornerOffset(surface, vs, t.v));
       stats.maxParametricDeviation = std::max(stats.maxParametricDeviation, parametric);
       if (t.gap)
         stats.maxGapParametricDeviation = std::max(stats.maxGapParametricDeviation, parametric);

@@ -18,11 +18,19 @@
 
 namespace tessera {
 
+// How a gap triangle is judged against δ (docs/trimmed_faces.md, "Refine"). Geometric: the
+// distance of its sample points to the surface (closestPointOnPatch from the sample's (u, v),
+// an upper bound), what CAD users and bench_cad measure. Parametric: the distance to the surface
+// point at the same (u, v) mix, as rule T bounds the kept triangles: stronger, but on rational
+// surfaces (an exact circle is not parametrised by angle) it counts sliding along the surface.
+enum class GapMeasure { Geometric, Parametric };
+
 struct TrimmedMeshOptions {
   double tolerance = 0;            // δ, model units, > 0
   int deviationSubdivisions = 8;   // samples (i, j, k)/n of each triangle: refinement and stats
   bool measureGeometric = true;    // also the distance to the surface (slower)
   int maxRefineRounds = 24;        // splitting rounds for gap triangles over δ
+  GapMeasure gapMeasure = GapMeasure::Geometric;
 };
 
 struct TrimmedFaceStats {
@@ -41,6 +49,11 @@ struct TrimmedFaceStats {
   // point against the surface at the same uv mix) and geometric (distance to the surface).
   double maxParametricDeviation = 0, maxGeometricDeviation = 0;
   double maxGapParametricDeviation = 0;  // over the gap triangles alone
+  // The largest distance of a trim point (a shared B-rep edge point) from this face's surface:
+  // the file's edge gap where its 3D curves and pcurves disagree (CadEdgeWarning), rounding
+  // otherwise. Refinement measures triangles with their corners on the surface, so it cannot
+  // reduce this: the promise is deviation ≤ δ + maxTrimPointOffset (docs/trimmed_faces.md).
+  double maxTrimPointOffset = 0;
 };
 
 struct TrimmedMesh {

@@ -1,0 +1,72 @@
+// One face's mesh while the trimmed mesher builds it (mesher.cpp), and the refinement of its
+// gap triangles until measured within δ (docs/trimmed_faces.md, "Refine").
+#pragma once
+#include <array>
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "trim/face_surface.h"
+#include "trim/mesher.h"
+
+namespace tessera::trim_detail {
+
+// A vertex in the face's own (u, v). A trim point carries its shared id and the shared 3D
+// point (on the B-rep edge, which may lie off this face's surface by the edge's gap).
+struct FaceVertex {
+  glm::dvec2 uv;
+  glm::dvec3 position;
+  int64_t sharedId = -1;  // ≥ 0: a trim point
+};
+
+struct FaceTriangle {
+  std::array<uint32_t, 3> v;  // counter-clockwise in (u, v)
+  bool gap = false;
+};
+
+using EdgeKey = std::pair<uint32_t, uint32_t>;
+inline EdgeKey edgeKey(uint32_t a, uint32_t b) { return a < b ? EdgeKey(a, b) : EdgeKey(b, a); }
+
+// Largest |Σ bᵢ Pᵢ − S(Σ bᵢ uvᵢ)| over the barycentric samples (i, j, k)/n: the triangle against
+// the surface at the same (u, v) mix, the corners' own offsets from the surface included.
+double parametricDeviation(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
+                           const std::array<uint32_t, 3>& t, int n);
+
+// The same with every corner moved onto the surface (Pᵢ → S(uvᵢ)): the interpolation error,
+// the part that splitting the triangle reduces. parametric ≤ interpolation + the largest
+// corner offset (the sample's offset term Σ bᵢ (Pᵢ − S(uvᵢ)) is a convex mix of the corners').
+double interpolationDeviation(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
+                              const std::array<uint32_t, 3>& t, int n);
+
+// Largest |Pᵢ − S(uvᵢ)| over the corners: for a trim point, its B-rep edge's distance from this
+// face's surface (the file's edge gap); 0 for a vertex of the face's own.
+double cornerOffset(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
+                    const std::array<uint32_t, 3>& t);
+
+// The geometric counterpart of interpolationDeviation (corners on the surface).
+double interpolationDistance(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
+                             const std::array<uint32_t, 3>& t, int n);
+
+struct GapRefineOptions {
+  double tolerance = 0;         // δ
+  int subdivisions = 8;         // samples per triangle side
+  int maxRounds = 24;
+  glm::dvec2 metric{1.0, 1.0};  // (u, v) scales for shapes and lengths (FaceSurface::meanSpeeds)
+  GapMeasure measure = GapMeasure::Geometric;  // a triangle within δ parametrically is
+                                              // not searched geometrically
+};
+
+// Splits gap triangles whose interpolation deviation exceeds δ: a sliver (height below 1% of its
+// longest side) whose longest side is not a trim segment gives that side up to a flip with the
+// triangle across it (a midpoint split would keep both halves on the line); otherwise the
+// longest side that is not a trim segment is split at its (u, v) midpoint together with every
+// triangle across it (kept or gap: no T-junction), or, with three trim sides, the centroid is
+// added. Trim segments are never split: the neighbouring face uses them as they are.
+// Returns the number of splits and flips.
+size_t refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
+                 std::vector<FaceTriangle>& triangles, const std::set<EdgeKey>& trimEdges,
+                 const GapRefineOptions& options);
+
+}  // namespace tessera::trim_detail

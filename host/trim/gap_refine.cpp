@@ -1,0 +1,227 @@
+#include "trim/detail/gap_refine.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace tessera::trim_detail {
+namespace {
+
+double cross(glm::dvec2 a, glm::dvec2 b) { return a.x * b.y - a.y * b.x; }
+
+// 2·area / (longest side)² = the height over the longest side / that side (negative: clockwise).
+double shapeRatio(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+  const double longest2 =
+      std::max({glm::dot(b - a, b - a), glm::dot(c - b, c - b), glm::dot(a - c, a - c)});
+  return longest2 > 0 ? cross(b - a, c - a) / longest2 : 0.0;
+}
+
+// A sliver's longest side goes to the triangle across it by a flip when its height is under 1%
+// of that side: the flip removes it, a midpoint split would keep both halves as thin.
+constexpr double kFlipSliverRatio = 0.01;
+
+// The edge → triangles map kept in step with every split and flip.
+class EdgeUsers {
+ public:
+  explicit EdgeUsers(const std::vector<FaceTriangle>& triangles) {
+    for (uint32_t t = 0; t < triangles.size(); ++t) add(triangles[t].v, t);
+  }
+  void add(const std::array<uint32_t, 3>& v, uint32_t t) {
+    for (int k = 0; k < 3; ++k) users_[edgeKey(v[k], v[(k + 1) % 3])].push_back(t);
+  }
+  void add(uint32_t a, uint32_t b, uint32_t t) { users_[edgeKey(a, b)].push_back(t); }
+  void replace(uint32_t a, uint32_t b, uint32_t from, uint32_t to) {
+    for (uint32_t& t : users_[edgeKey(a, b)])
+      if (t == from) t = to;
+  }
+  void erase(uint32_t a, uint32_t b) { users_.erase(edgeKey(a, b)); }
+  std::vector<uint32_t> of(uint32_t a, uint32_t b) const {
+    const auto it = users_.find(edgeKey(a, b));
+    return it == users_.end() ? std::vector<uint32_t>{} : it->second;
+  }
+
+ private:
+  std::map<EdgeKey, std::vector<uint32_t>> users_;
+};
+
+// The position of the triangle's side k (its corners k, k + 1) and the rotation that puts it first.
+std::array<uint32_t, 3> rotated(const std::array<uint32_t, 3>& v, int k) {
+  return {v[k], v[(k + 1) % 3], v[(k + 2) % 3]};
+}
+
+int sideOf(const std::array<uint32_t, 3>& v, uint32_t a, uint32_t b) {
+  for (int k = 0; k < 3; ++k)
+    if (edgeKey(v[k], v[(k + 1) % 3]) == edgeKey(a, b)) return k;
+  return -1;
+}
+
+}  // namespace
+
+double parametricDeviation(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
+                           const std::array<uint32_t, 3>& t, int n) {
+  double worst = 0;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j) {
+      const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
+      const glm::dvec2 uv = a * vs[t[0]].uv + b * vs[t[1]].uv + c * vs[t[2]].uv;
+      const glm::dvec3 p = a * vs[t[0]].position + b * vs[t[1]].position + c * vs[t[2]].position;
+      worst = std::max(worst, glm::length(p - surface.point(uv)));
+    }
+  return worst;
+}
+
+double interpolationDeviation(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
+                              const std::array<uint32_t, 3>& t, int n) {
+  const glm::dvec3 s0 = surface.point(vs[t[0]].uv), s1 = surface.point(vs[t[1]].uv),
+                   s2 = surface.point(vs[t[2]].uv);
+  double worst = 0;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j) {
+      const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
+      if (i == n || j == n || i + j == 0) continue;  // a corner: 0 by construction
+      const glm::dvec2 uv = a * vs[t[0]].uv + b * vs[t[1]].uv + c * vs[t[2]].uv;
+      worst = std::max(worst, glm::length(a * s0 + b * s1 + c * s2 - surface.point(uv)));
+    }
+  return worst;
+}
+
+double interpolationDistance(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
+                             const std::array<uint32_t, 3>& t, int n) {
+  const glm::dvec3 s0 = surface.point(vs[t[0]].uv), s1 = surface.point(vs[t[1]].uv),
+                   s2 = surface.point(vs[t[2]].uv);
+  double worst = 0;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j) {
+      const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
+      if (i == n || j == n || i + j == 0) continue;
+      const glm::dvec2 uv = a * vs[t[0]].uv + b * vs[t[1]].uv + c * vs[t[2]].uv;
+      worst = std::max(worst, surface.distance(a * s0 + b * s1 + c * s2, uv));
+    }
+  return worst;
+}
+
+double cornerOffset(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
+                    const std::array<uint32_t, 3>& t) {
+  double worst = 0;
+  for (uint32_t v : t)
+    if (vs[v].sharedId >= 0)
+      worst = std::max(worst, glm::length(vs[v].position - surface.point(vs[v].uv)));
+  return worst;
+}
+
+size_t refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
+                 std::vector<FaceTriangle>& triangles, const std::set<EdgeKey>& trimEdges,
+                 const GapRefineOptions& options) {
+  EdgeUsers users(triangles);
+  const auto isTrim = [&](uint32_t a, uint32_t b) { return trimEdges.count(edgeKey(a, b)) > 0; };
+  const glm::dvec2 metric = options.metric;
+  const auto ratioOf = [&](const std::array<uint32_t, 3>& v) {
+    return shapeRatio(vs[v[0]].uv * metric, vs[v[1]].uv * metric, vs[v[2]].uv * metric);
+  };
+
+  // t = (a, b, c) with a → b its longest side, s = (b, a, d) across it: (c, a, d) and (d, b, c)
+  // when both are counter-clockwise and the thinner of them is fatter than the thinner of t and
+  // s (so a flip is never undone).
+  const auto flipSliver = [&](uint32_t t, int longest) {
+    const std::array<uint32_t, 3> v = rotated(triangles[t].v, longest);
+    const uint32_t a = v[0], b = v[1], c = v[2];
+    std::vector<uint32_t> across = users.of(a, b);
+    across.erase(std::remove(across.begin(), across.end(), t), across.end());
+    if (across.size() != 1) return false;
+    const uint32_t s = across[0];
+    const int k = sideOf(triangles[s].v, a, b);
+    const uint32_t d = triangles[s].v[(k + 2) % 3];
+    if (d == c) return false;
+    const std::array<uint32_t, 3> t2 = {c, a, d}, s2 = {d, b, c};
+    const double before = std::min(ratioOf(v), ratioOf(triangles[s].v));
+    if (!(std::min(ratioOf(t2), ratioOf(s2)) > std::max(before, 0.0))) return false;
+    triangles[t] = {t2, true};
+    triangles[s] = {s2, true};
+    users.erase(a, b);
+    users.replace(a, d, s, t);
+    users.replace(b, c, t, s);
+    users.add(c, d, t), users.add(c, d, s);
+    return true;
+  };
+
+  const auto splitSide = [&](uint32_t a, uint32_t b) {
+    const glm::dvec2 uv = 0.5 * (vs[a].uv + vs[b].uv);
+    vs.push_back({uv, surface.point(uv), -1});
+    const uint32_t m = uint32_t(vs.size() - 1);
+    for (uint32_t u : users.of(a, b)) {
+      // (p, q, r) with p → q the side → (p, m, r) and (m, q, r): the same orientation.
+      const std::array<uint32_t, 3> w = rotated(triangles[u].v, sideOf(triangles[u].v, a, b));
+      const uint32_t p = w[0], q = w[1], r = w[2], n = uint32_t(triangles.size());
+      triangles[u].v = {p, m, r};
+      triangles.push_back({{m, q, r}, triangles[u].gap});
+      users.replace(q, r, u, n);
+      users.add(p, m, u), users.add(m, r, u);
+      users.add(m, r, n), users.add(m, q, n);
+    }
+    users.erase(a, b);
+  };
+
+  const auto addCentre = [&](uint32_t t) {
+    const std::array<uint32_t, 3> v = triangles[t].v;
+    const glm::dvec2 uv = (vs[v[0]].uv + vs[v[1]].uv + vs[v[2]].uv) / 3.0;
+    vs.push_back({uv, surface.point(uv), -1});
+    const uint32_t m = uint32_t(vs.size() - 1), n1 = uint32_t(triangles.size()), n2 = n1 + 1;
+    triangles[t] = {{v[0], v[1], m}, true};
+    triangles.push_back({{v[1], v[2], m}, true});
+    triangles.push_back({{v[2], v[0], m}, true});
+    users.replace(v[1], v[2], t, n1);
+    users.replace(v[2], v[0], t, n2);
+    users.add(v[0], m, t), users.add(v[0], m, n2);
+    users.add(v[1], m, t), users.add(v[1], m, n1);
+    users.add(v[2], m, n1), users.add(v[2], m, n2);
+  };
+
+  const bool geometric = options.measure == GapMeasure::Geometric;
+  const auto withinTolerance = [&](const std::array<uint32_t, 3>& v) {
+    if (interpolationDeviation(surface, vs, v, options.subdivisions) <= options.tolerance)
+      return true;
+    return geometric &&
+           interpolationDistance(surface, vs, v, options.subdivisions) <= options.tolerance;
+  };
+
+  size_t changes = 0;
+  for (int round = 0; round < options.maxRounds; ++round) {
+    bool any = false;
+    const size_t count = triangles.size();  // the pieces made this round wait for the next
+    for (uint32_t t = 0; t < count; ++t) {
+      if (!triangles[t].gap || withinTolerance(triangles[t].v)) continue;
+      const std::array<uint32_t, 3> v = triangles[t].v;
+      int longest = -1, split = -1;
+      double longestLength = -1, splitScore = -1;
+      for (int k = 0; k < 3; ++k) {
+        const uint32_t a = v[k], b = v[(k + 1) % 3];
+        const double length = glm::length((vs[a].uv - vs[b].uv) * metric);
+        if (length > longestLength) longest = k, longestLength = length;
+        if (isTrim(a, b)) continue;
+        // The side whose midpoint is farthest from its chord (the surface bends along it): on a
+        // cylinder the rulings are straight and the arcs are not, so the longest side in (u, v)
+        // is often the wrong one. The length breaks ties (a flat surface, error inside).
+        const glm::dvec2 mid = 0.5 * (vs[a].uv + vs[b].uv);
+        const glm::dvec3 chord = 0.5 * (surface.point(vs[a].uv) + surface.point(vs[b].uv));
+        const double sag = geometric ? surface.distance(chord, mid)
+                                     : glm::length(surface.point(mid) - chord);
+        const double score = sag + 1e-9 * length;
+        if (score > splitScore) split = k, splitScore = score;
+      }
+      if (ratioOf(v) < kFlipSliverRatio && !isTrim(v[longest], v[(longest + 1) % 3]) &&
+          flipSliver(t, longest)) {
+        ++changes, any = true;
+        continue;
+      }
+      if (split < 0)
+        addCentre(t);
+      else
+        splitSide(v[split], v[(split + 1) % 3]);
+      ++changes, any = true;
+    }
+    if (!any) break;
+  }
+  return changes;
+}
+
+}  // namespace tessera::trim_detail
