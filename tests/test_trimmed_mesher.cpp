@@ -451,6 +451,40 @@ TEST_CASE("trimmed mesher: a cylinder of four rational pieces with a seam, and t
   CHECK(volume == Approx(kPi).epsilon(0.01));
 }
 
+TEST_CASE("trimmed mesher: trim points off the surface (an edge gap) are told, not refined",
+          "[trim]") {
+  // A CAD file whose edges' 3D curves and pcurves disagree (CadEdgeWarning) gives trim points
+  // off the face's surface. Lift every shared point of a flat square with a hole by g = 5δ: the
+  // refinement cannot reduce that, so it must not split for it (it once split to its round cap),
+  // and the stats must report it: deviation ≤ δ + maxTrimPointOffset, the offset g.
+  const double delta = 1e-3, gap = 5 * delta;
+  const auto build = [&](double lift) {
+    TrimmedModel model;
+    SharedPoints shared(model);
+    const BezierPatch plane = planarPatch({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+    const auto at = [&](glm::dvec2 uv) { return patchPoint(plane, uv.x, uv.y); };
+    model.faces.push_back(faceOf(plane,
+                                 {sampledLoop(squareBoundary(), 32, at, shared),
+                                  sampledLoop(circle({0.5, 0.5}, 0.25), 64, at, shared)},
+                                 false, 0));
+    for (glm::dvec3& p : model.sharedPoints) p.z += lift;
+    return model;
+  };
+  const TrimmedModel exact = build(0), lifted = build(gap);
+  const TrimmedMesh a = meshAt(exact, delta), b = meshAt(lifted, delta);
+  const TrimmedFaceStats &sa = a.faces[0], &sb = b.faces[0];
+  WARN("lifted by " << gap << ": " << sb.triangles << " triangles (exact: " << sa.triangles
+                    << "), " << sb.refinementSplits << " splits, trim point offset "
+                    << sb.maxTrimPointOffset << ", max parametric " << sb.maxParametricDeviation
+                    << ", geometric " << sb.maxGeometricDeviation);
+  CHECK(sa.maxTrimPointOffset == 0);
+  CHECK(sb.maxTrimPointOffset == Approx(gap).epsilon(1e-9));
+  CHECK(sb.refinementSplits == sa.refinementSplits);
+  CHECK(sb.triangles == sa.triangles);
+  CHECK(sb.maxParametricDeviation <= delta + sb.maxTrimPointOffset);
+  CHECK(sb.maxGeometricDeviation <= delta + sb.maxTrimPointOffset);
+}
+
 TEST_CASE("trimmed mesher: a self-crossing loop is reported, not hidden", "[trim]") {
   // A bow tie: its two lobes wind +1 and −1, so no loop of the gap holds the −1 lobe.
   TrimmedModel model;
