@@ -35,6 +35,7 @@ class EdgeUsers {
       if (t == from) t = to;
   }
   void erase(uint32_t a, uint32_t b) { users_.erase(edgeKey(a, b)); }
+  const std::map<EdgeKey, std::vector<uint32_t>>& all() const { return users_; }
   std::vector<uint32_t> of(uint32_t a, uint32_t b) const {
     const auto it = users_.find(edgeKey(a, b));
     return it == users_.end() ? std::vector<uint32_t>{} : it->second;
@@ -184,7 +185,53 @@ size_t refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
            interpolationDistance(surface, vs, v, options.subdivisions) <= options.tolerance;
   };
 
-  size_t changes = 0;
+  // Flips towards less deviation (a data-dependent triangulation, Dyn, Levin & Rippa 1990):
+  // the gap's Delaunay triangulation in (u, v) joins points across a curved direction that a
+  // ruled one would not (a fillet's two sides); a gap edge between two gap triangles is flipped
+  // when the worse of the two new triangles deviates less than 0.9 of the worse old one (the
+  // margin keeps rounding from flipping back and forth). Passes until none flips, at most 8.
+  const auto deviation = [&](const std::array<uint32_t, 3>& v) {
+    return interpolationDeviation(surface, vs, v, options.subdivisions);
+  };
+  const auto flipByDeviation = [&]() {
+    size_t flips = 0;
+    for (int pass = 0; pass < 8; ++pass) {
+      std::vector<EdgeKey> edges;
+      for (const auto& [edge, ts] : users.all())
+        if (ts.size() == 2 && triangles[ts[0]].gap && triangles[ts[1]].gap &&
+            !isTrim(edge.first, edge.second))
+          edges.push_back(edge);
+      size_t passFlips = 0;
+      for (const EdgeKey& edge : edges) {
+        const std::vector<uint32_t> ts = users.of(edge.first, edge.second);
+        if (ts.size() != 2) continue;
+        const uint32_t t = ts[0], s = ts[1];
+        const std::array<uint32_t, 3> v = rotated(triangles[t].v,
+                                                  sideOf(triangles[t].v, edge.first, edge.second));
+        const uint32_t a = v[0], b = v[1], c = v[2];
+        const int k = sideOf(triangles[s].v, a, b);
+        const uint32_t d = triangles[s].v[(k + 2) % 3];
+        if (d == c) continue;
+        const std::array<uint32_t, 3> t2 = {c, a, d}, s2 = {d, b, c};
+        if (!(ratioOf(t2) >= 1e-5 && ratioOf(s2) >= 1e-5)) continue;  // ccw and not flat
+        const double before = std::max(deviation(v), deviation(triangles[s].v));
+        if (before <= options.tolerance) continue;  // nothing to gain for the refinement
+        if (!(std::max(deviation(t2), deviation(s2)) < 0.9 * before)) continue;
+        triangles[t] = {t2, true};
+        triangles[s] = {s2, true};
+        users.erase(a, b);
+        users.replace(a, d, s, t);
+        users.replace(b, c, t, s);
+        users.add(c, d, t), users.add(c, d, s);
+        ++passFlips;
+      }
+      flips += passFlips;
+      if (passFlips == 0) break;
+    }
+    return flips;
+  };
+
+  size_t changes = flipByDeviation();
   for (int round = 0; round < options.maxRounds; ++round) {
     bool any = false;
     const size_t count = triangles.size();  // the pieces made this round wait for the next
@@ -220,6 +267,7 @@ size_t refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
       ++changes, any = true;
     }
     if (!any) break;
+    changes += flipByDeviation();
   }
   return changes;
 }
