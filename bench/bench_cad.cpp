@@ -10,7 +10,9 @@
 // triangle ((i, j, k)/3 barycentric, corners included) to the face's own surface
 // (GeomAPI_ProjectPointOnSurf within the face's uv bounds grown by 10⁻⁶ of their range: a
 // boundary point's foot just outside by rounding was missed, or worse, replaced by the far
-// side of a cylinder, 2R away), the largest over the corpus, as a
+// side of a cylinder, 2R away; a point still without a foot there, a vertex rounded to fp32
+// off a thin face, is projected onto the whole surface and kept if its foot lies within the
+// box grown by 1%), the largest over the corpus, as a
 // multiple of δ. A point the projection cannot place is counted, not guessed.
 // Usage: bench_cad [relative tolerances = 0.001,0.0001] [--dir folder] [--json file] [--cpu]
 //        [--model name-part] [--detail]
@@ -93,12 +95,14 @@ Deviation measureDistance(const FaceTriangles& mesh, const TopTools_IndexedMapOf
   // once per run of triangles on one face.
   GeomAPI_ProjectPointOnSurf projector;
   TopoDS_Face current;  // instances of one face differ by location: IsEqual compares both
+  double box[4] = {0, 0, 0, 0};  // the current face's uv bounds: u0, u1, v0, v1
   for (size_t t = 0; t < mesh.face.size(); ++t) {
     const TopoDS_Face& face = mesh.face[t];
     if (!face.IsEqual(current)) {
       current = face;
       double u0, u1, v0, v1;
       BRepTools::UVBounds(face, u0, u1, v0, v1);
+      box[0] = u0, box[1] = u1, box[2] = v0, box[3] = v1;
       // Grown by a share of the range: a point on the face's boundary (both meshers put their
       // boundary vertices there) has its foot on the edge of the box, and rounding can put it
       // just outside; Extrema then finds no foot, or only a farther one (a cylinder's far side).
@@ -115,13 +119,27 @@ Deviation measureDistance(const FaceTriangles& mesh, const TopTools_IndexedMapOf
         projector.Perform(p);
         ++d.samples;
         if (gDetail && map) ++details.back().samples;
-        if (projector.NbPoints() == 0) {
+        double distance = projector.NbPoints() > 0 ? projector.LowerDistance() : -1;
+        if (distance < 0) {
+          // No foot inside the box: a vertex's fp32 rounding (1e-7 of the model's size) can
+          // still put it outside a thin face's box. Project onto the whole surface and keep
+          // the foot when it lies within the box grown by 1% of its range.
+          GeomAPI_ProjectPointOnSurf free(p, BRep_Tool::Surface(face));
+          if (free.NbPoints() > 0) {
+            double u, v;
+            free.LowerDistanceParameters(u, v);
+            if (u >= box[0] - 0.01 * (box[1] - box[0]) && u <= box[1] + 0.01 * (box[1] - box[0]) &&
+                v >= box[2] - 0.01 * (box[3] - box[2]) && v <= box[3] + 0.01 * (box[3] - box[2]))
+              distance = free.LowerDistance();
+          }
+        }
+        if (distance < 0) {
           ++d.unprojected;
           if (gDetail && map) ++details.back().unprojected;
           continue;
         }
-        d.max = std::max(d.max, projector.LowerDistance());
-        if (gDetail && map) details.back().max = std::max(details.back().max, projector.LowerDistance());
+        d.max = std::max(d.max, distance);
+        if (gDetail && map) details.back().max = std::max(details.back().max, distance);
       }
   }
   if (gDetail && map) printDetail(who, details, delta);
