@@ -75,6 +75,16 @@ CadResult runCadJob(const CadJob& job, ChosenBackend&) {
 
 #endif
 
+namespace {
+
+double largest(const CadResult& r, double TrimmedFaceStats::*field) {
+  double value = 0;
+  for (const TrimmedFaceStats& f : r.mesh.faces) value = std::max(value, f.*field);
+  return value;
+}
+
+}  // namespace
+
 nlohmann::json cadStatsToJson(const CadResult& r) {
   nlohmann::json faces = nlohmann::json::array();
   double parametric = 0, geometric = 0;
@@ -85,7 +95,10 @@ nlohmann::json cadStatsToJson(const CadResult& r) {
                      {"triangles", f.triangles},
                      {"maxDeviation",
                       {{"parametric", f.maxParametricDeviation},
-                       {"geometric", f.maxGeometricDeviation}}}});
+                       {"geometric", f.maxGeometricDeviation}}},
+                     // the trim points' distance from the face's surface (an edge gap): the
+                     // promise is deviation ≤ δ + this (docs/trimmed_faces.md)
+                     {"trimPointOffset", f.maxTrimPointOffset}});
   }
   return {{"tolerance", {{"delta", r.delta}, {"diagonal", r.diagonal}}},
           {"faces", r.faces},
@@ -98,17 +111,12 @@ nlohmann::json cadStatsToJson(const CadResult& r) {
           {"triangles", r.mesh.mesh.triangleCount()},
           {"vertices", r.mesh.mesh.vertexCount()},
           {"maxDeviation", {{"parametric", parametric}, {"geometric", geometric}}},
+          {"maxTrimPointOffset", largest(r, &TrimmedFaceStats::maxTrimPointOffset)},
           {"timeMs", {{"read", r.readMs}, {"import", r.importMs}, {"mesh", r.meshMs}}},
           {"perFace", faces}};
 }
 
 namespace {
-
-double largest(const CadResult& r, double TrimmedFaceStats::*field) {
-  double value = 0;
-  for (const TrimmedFaceStats& f : r.mesh.faces) value = std::max(value, f.*field);
-  return value;
-}
 
 void printCadSummary(FILE* to, const std::string& input, const CadResult& r,
                      const std::string& toleranceText, const ChosenBackend& chosen) {
@@ -118,10 +126,12 @@ void printCadSummary(FILE* to, const std::string& input, const CadResult& r,
                chosen.deviceName().c_str());
   std::fprintf(to,
                "triangles %zu, vertices %zu; measured deviation %.3g geometric, %.3g parametric; "
-               "edge chords within %.3g (measured)\n",
+               "edge chords within %.3g (measured); trim points off their faces by up to %.3g "
+               "(the promise: deviation <= tolerance + that)\n",
                r.mesh.mesh.triangleCount(), r.mesh.mesh.vertexCount(),
                largest(r, &TrimmedFaceStats::maxGeometricDeviation),
-               largest(r, &TrimmedFaceStats::maxParametricDeviation), r.maxChordDeviation);
+               largest(r, &TrimmedFaceStats::maxParametricDeviation), r.maxChordDeviation,
+               largest(r, &TrimmedFaceStats::maxTrimPointOffset));
   for (const std::string& f : r.failures) std::fprintf(to, "skipped: %s\n", f.c_str());
   for (const std::string& w : r.warnings) std::fprintf(to, "warning: %s\n", w.c_str());
   std::fprintf(to, "time: read %.1f ms, faces and edges %.1f ms, mesh %.1f ms\n", r.readMs,
