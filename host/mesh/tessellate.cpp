@@ -79,19 +79,30 @@ using VertexEvaluation =
 Tessellation meshFromQueries(const std::vector<BezierPatch>& patches, QuadtreeResult tree,
                              const VertexEvaluation& evaluate) {
   const Stopwatch total;
-  Tessellation result;
-  result.tree = std::move(tree);
   Stopwatch step;
-  ParamMesh param = triangulateLeaves(result.tree.leaves, patches);
-  result.stats.triangulateMs = step.elapsedMs();
+  ParamMesh param = triangulateLeaves(tree.leaves, patches);
+  const double triangulateMs = step.elapsedMs();
 
   step.restart();
   std::vector<gpu::EvalQuery> queries(param.vertices.size());
   for (size_t i = 0; i < queries.size(); ++i)
     queries[i] = {param.vertices[i].patchIndex, param.vertices[i].u, param.vertices[i].v, 0};
-  std::vector<gpu::EvalSample> samples = evaluate(queries);
-  result.stats.evaluateMs = step.elapsedMs();
+  const std::vector<gpu::EvalSample> samples = evaluate(queries);
+  const double evaluateMs = step.elapsedMs();
 
+  Tessellation result = assembleTessellation(patches.size(), std::move(tree), param, samples);
+  result.stats.triangulateMs = triangulateMs;
+  result.stats.evaluateMs = evaluateMs;
+  result.stats.totalMs = total.elapsedMs();
+  return result;
+}
+
+}  // namespace
+
+Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, const ParamMesh& param,
+                                  const std::vector<gpu::EvalSample>& samples) {
+  Tessellation result;
+  result.tree = std::move(tree);
   TriangleMesh& mesh = result.mesh;
   mesh.positions.resize(samples.size());
   mesh.normals.resize(samples.size());
@@ -142,17 +153,14 @@ Tessellation meshFromQueries(const std::vector<BezierPatch>& patches, QuadtreeRe
   }
 
   TessellationStats& s = result.stats;
-  s.patches = patches.size();
+  s.patches = patchCount;
   s.leaves = result.tree.leaves.size();
   s.depth = result.tree.depth;
   s.levels = result.tree.levels;
   s.triangles = mesh.triangleCount();
   s.vertices = mesh.vertexCount();
-  s.totalMs = total.elapsedMs();
   return result;
 }
-
-}  // namespace
 
 Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeOptions& options,
                         Backend& backend) {

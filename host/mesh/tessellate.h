@@ -13,6 +13,8 @@
 
 namespace tessera {
 
+struct ParamMesh;
+
 // A classifier and an evaluator on the same device.
 struct Backend {
   std::string name;
@@ -53,5 +55,12 @@ Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeO
 // `evaluator` (timings in stats.triangulateMs and stats.evaluateMs).
 Tessellation meshFromTree(const std::vector<BezierPatch>& patches, const PatchSet& gpuPatches,
                           QuadtreeResult tree, PatchEvaluator& evaluator);
+
+// meshFromTree's last step, for callers that triangulate and evaluate themselves (the trimmed
+// mesher evaluates many trees' vertices in one backend call): `samples` are the evaluations of
+// param.vertices in order; welds equal positions and drops degenerate and back-to-back
+// triangles as tessellate() does. Timings are left at 0.
+Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, const ParamMesh& param,
+                                  const std::vector<gpu::EvalSample>& samples);
 
 }  // namespace tessera
