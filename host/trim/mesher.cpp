@@ -4,13 +4,17 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <set>
 #include <stdexcept>
 #include <unordered_map>
 
+#include "common/parallel_for.h"
+#include "common/stopwatch.h"
 #include "quadtree/quadtree.h"
 #include "trim/detail/gap_refine.h"
 #include "trim/face_surface.h"
+#include "trim/face_tessellation.h"
 #include "trim/gap_triangulate.h"
 #include "trim/trim_cut.h"
 
@@ -93,103 +97,188 @@ void validateTrimmedModel(const TrimmedModel& model) {
   }
 }
 
+namespace {
+
+// One face cut, refined and measured, in its own vertex numbering; emitted later in face order.
+struct FaceMesh {
+  std::vector<FaceVertex> vertices;
+  std::vector<FaceTriangle> triangles;  // emission order and orientation (reversed faces flipped)
+  std::vector<bool> collapsed;          // per triangle: two corners on one vertex or shared id
+  TrimmedFaceStats stats;
+};
+
+FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
+                  const TrimmedMeshOptions& options) {
+  const TrimmedFace& face = model.faces[f];
+  TrimmedFaceStats stats;
+  stats.faceIndex = face.faceIndex;
+  const FaceSurface surface(face);
+
+  // The face's size in (u, v) sets the two length scales: vertices this close are one
+  // (rounding of the same point), and a trim segment this close to a triangle makes it
+  // Crossing (a conservative call: dropping a triangle only re-triangulates its place).
+  glm::dvec2 lo(face.pieces[0].u0, face.pieces[0].v0), hi = lo;
+  for (const BezierPatchPiece& p : face.pieces)
+    lo = glm::min(lo, {p.u0, p.v0}), hi = glm::max(hi, {p.u1, p.v1});
+  for (const TrimLoop& loop : face.loops)
+    for (glm::dvec2 uv : loop.uv) lo = glm::min(lo, uv), hi = glm::max(hi, uv);
+  const double size = std::max(hi.x - lo.x, hi.y - lo.y);
+  FaceBuilder builder;
+  const double margin = 1e-9 * size;
+  // One quad-tree vertex seen from two pieces has two fp32 local uvs (cornerUv): one
+  // vertex within 10⁻⁶ of the face; a collapsed edge's corners, a whole side apart, stay
+  // apart. Trim points are given in double: 10⁻⁹.
+  const double meshWeld = 1e-6 * size, trimWeld = 1e-9 * size;
+
+  stats.quadtreeTriangles = tess.mesh.triangleCount();
+
+  std::map<int64_t, std::vector<uint32_t>> meshKeyed, trimKeyed;
+  const TrimSegmentIndex index(face.loops);
+  std::vector<FaceTriangle> triangles;
+  for (size_t t = 0; t < tess.mesh.triangleCount(); ++t) {
+    std::array<uint32_t, 3> v;
+    std::array<glm::dvec2, 3> uv;
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t id = tess.mesh.indices[3 * t + k];
+      uv[k] = surface.faceUv(tess.trianglePatch[t], glm::dvec2(tess.cornerUv[3 * t + k]));
+      v[k] = builder.vertex(meshKeyed, id, uv[k], glm::dvec3(tess.mesh.positions[id]), -1,
+                            meshWeld);
+    }
+    const double area = cross(uv[1] - uv[0], uv[2] - uv[0]);
+    if (area == 0) continue;
+    if (area < 0) std::swap(v[1], v[2]), std::swap(uv[1], uv[2]);
+    if (!face.loops.empty() && classifyTrimTriangle(uv, index, margin) != TrimClass::Inside)
+      continue;
+    triangles.push_back({v, false});
+  }
+  stats.keptTriangles = triangles.size();
+
+  // The gap: bounded by the trim segments (material on their left) and by the kept
+  // triangles' open edges, reversed.
+  std::vector<std::pair<uint32_t, uint32_t>> gapEdges;
+  std::set<EdgeKey> trimEdges;
+  for (const TrimLoop& loop : face.loops) {
+    std::vector<uint32_t> ids;
+    for (size_t k = 0; k < loop.uv.size(); ++k) {
+      const uint32_t id = loop.pointIds[k];
+      ids.push_back(
+          builder.vertex(trimKeyed, id, loop.uv[k], model.sharedPoints[id], id, trimWeld));
+    }
+    for (size_t k = 0; k < ids.size(); ++k) {
+      const uint32_t a = ids[k], b = ids[(k + 1) % ids.size()];
+      if (a == b) continue;  // a repeated point
+      gapEdges.push_back({a, b});
+      trimEdges.insert(edgeKey(a, b));
+    }
+  }
+  if (!face.loops.empty()) {
+    std::set<EdgeKey> directed;
+    for (const FaceTriangle& t : triangles)
+      for (int k = 0; k < 3; ++k) directed.insert({t.v[k], t.v[(k + 1) % 3]});
+    for (const auto& [a, b] : directed)
+      if (!directed.count({b, a})) gapEdges.push_back({b, a});
+    // Triangulated in the surface's proportions (meanSpeeds), not in raw (u, v): u scaled by
+    // the speeds' ratio rounded to a power of two, so the scaling is exact and every
+    // orientation sign the gap's predicates see is the unscaled one.
+    const glm::dvec2 speeds = surface.meanSpeeds(lo, hi);
+    const glm::dvec2 metric(std::exp2(std::round(std::log2(speeds.x / speeds.y))), 1.0);
+    std::vector<glm::dvec2> points;
+    for (const FaceVertex& v : builder.vertices) points.push_back(v.uv * metric);
+    const GapTriangulation gap = triangulateGap(points, gapEdges);
+    stats.gapFailures = gap.failures;
+    for (const auto& t : gap.triangles) triangles.push_back({t, true});
+    stats.refinementSplits = trim_detail::refineGap(
+        surface, builder.vertices, triangles, trimEdges,
+        {options.tolerance, options.deviationSubdivisions, options.maxRefineRounds, metric,
+         options.gapMeasure});
+  }
+
+  // Orientation, collapsed triangles (two corners on one shared point: they become one mesh
+  // vertex) and the measured deviation of what will be emitted.
+  FaceMesh out;
+  const std::vector<FaceVertex>& vs = builder.vertices;
+  const auto oneVertex = [&](uint32_t a, uint32_t b) {
+    return a == b || (vs[a].sharedId >= 0 && vs[a].sharedId == vs[b].sharedId);
+  };
+  out.collapsed.reserve(triangles.size());
+  for (FaceTriangle& t : triangles) {
+    const std::array<uint32_t, 3> measured = t.v;
+    if (face.reversed) std::swap(t.v[1], t.v[2]);
+    const std::array<uint32_t, 3>& v = t.v;
+    const bool collapsed = oneVertex(v[0], v[1]) || oneVertex(v[1], v[2]) || oneVertex(v[0], v[2]);
+    out.collapsed.push_back(collapsed);
+    if (collapsed) {
+      ++stats.collapsedTriangles;
+      continue;
+    }
+    ++stats.triangles;
+    // The file's own offset of the trim points from the surface: part of the promise
+    // (deviation ≤ δ + maxTrimPointOffset), measured whatever measureKeptTriangles says.
+    stats.maxTrimPointOffset =
+        std::max(stats.maxTrimPointOffset, trim_detail::cornerOffset(surface, vs, measured));
+    if (!t.gap && !options.measureKeptTriangles) continue;
+    ++stats.measuredTriangles;
+    const double parametric =
+        trim_detail::parametricDeviation(surface, vs, measured, options.deviationSubdivisions);
+    stats.maxParametricDeviation = std::max(stats.maxParametricDeviation, parametric);
+    if (t.gap)
+      stats.maxGapParametricDeviation = std::max(stats.maxGapParametricDeviation, parametric);
+    if (options.measureGeometric)
+      stats.maxGeometricDeviation =
+          std::max(stats.maxGeometricDeviation,
+                   geometricDeviation(surface, vs, measured, options.deviationSubdivisions));
+  }
+  stats.keptTriangles = 0;
+  for (const FaceTriangle& t : triangles) (t.gap ? stats.gapTriangles : stats.keptTriangles)++;
+  out.vertices = std::move(builder.vertices);
+  out.triangles = std::move(triangles);
+  out.stats = stats;
+  return out;
+}
+
+}  // namespace
+
 TrimmedMesh meshTrimmedModel(const TrimmedModel& model, const TrimmedMeshOptions& options,
-                             Backend& backend) {
+                             Backend& backend, TrimClassifier* trim) {
   if (!(options.tolerance > 0) || !std::isfinite(options.tolerance))
     throw std::invalid_argument("meshTrimmedModel: the tolerance must be finite and > 0");
   validateTrimmedModel(model);
+  const Stopwatch total;
   TrimmedMesh out;
+  TrimmedMeshTimings& timings = out.timings;
+
+  // Step 1 for all faces at once: a few large backend calls instead of one per face.
+  std::unique_ptr<TrimClassifier> mirrorTrim;
+  if (options.trimQuadtree && !trim) trim = (mirrorTrim = makeMirrorTrimClassifier()).get();
+  FaceTessellations tessellations = tessellateFaces(
+      model, options.tolerance, backend, options.trimQuadtree ? trim : nullptr, options.threads);
+  timings.treeMs = tessellations.treeMs;
+  timings.trimMs = tessellations.trimMs;
+  timings.triangulateMs = tessellations.triangulateMs;
+  timings.evaluateMs = tessellations.evaluateMs;
+  timings.assembleMs = tessellations.assembleMs;
+  timings.trees = tessellations.trees;
+  timings.leaves = tessellations.leaves;
+  timings.trimmedAwayLeaves = tessellations.trimmedAwayLeaves;
+
+  // Steps 2–4 and the stats, faces in parallel (each face's work is its own).
+  Stopwatch step;
+  std::vector<FaceMesh> faces(model.faces.size());
+  parallelFor(model.faces.size(), options.threads, [&](size_t begin, size_t end) {
+    for (size_t f = begin; f < end; ++f) {
+      faces[f] = meshFace(model, f, tessellations.faces[f], options);
+      tessellations.faces[f] = Tessellation();  // its memory back early
+    }
+  });
+  timings.cutMs = step.elapsedMs();
+
+  // Step 5, in face order so the vertex numbering does not depend on the threads: trim points
+  // as their shared vertex, the rest as their face's own vertices.
+  step.restart();
   std::vector<int64_t> sharedVertex(model.sharedPoints.size(), -1);
   for (size_t f = 0; f < model.faces.size(); ++f) {
-    const TrimmedFace& face = model.faces[f];
-    TrimmedFaceStats stats;
-    stats.faceIndex = face.faceIndex;
-    const FaceSurface surface(face);
-
-    // The face's size in (u, v) sets the two length scales: vertices this close are one
-    // (rounding of the same point), and a trim segment this close to a triangle makes it
-    // Crossing (a conservative call: dropping a triangle only re-triangulates its place).
-    glm::dvec2 lo(face.pieces[0].u0, face.pieces[0].v0), hi = lo;
-    for (const BezierPatchPiece& p : face.pieces)
-      lo = glm::min(lo, {p.u0, p.v0}), hi = glm::max(hi, {p.u1, p.v1});
-    for (const TrimLoop& loop : face.loops)
-      for (glm::dvec2 uv : loop.uv) lo = glm::min(lo, uv), hi = glm::max(hi, uv);
-    const double size = std::max(hi.x - lo.x, hi.y - lo.y);
-    FaceBuilder builder;
-    const double margin = 1e-9 * size;
-    // One quad-tree vertex seen from two pieces has two fp32 local uvs (cornerUv): one
-    // vertex within 10⁻⁶ of the face; a collapsed edge's corners, a whole side apart, stay
-    // apart. Trim points are given in double: 10⁻⁹.
-    const double meshWeld = 1e-6 * size, trimWeld = 1e-9 * size;
-
-    std::vector<BezierPatch> patches;
-    for (const BezierPatchPiece& p : face.pieces) patches.push_back(p.patch);
-    const Tessellation tess = tessellate(patches, toleranceOptions(options.tolerance), backend);
-    stats.quadtreeTriangles = tess.mesh.triangleCount();
-
-    std::map<int64_t, std::vector<uint32_t>> meshKeyed, trimKeyed;
-    const TrimSegmentIndex index(face.loops);
-    std::vector<FaceTriangle> triangles;
-    for (size_t t = 0; t < tess.mesh.triangleCount(); ++t) {
-      std::array<uint32_t, 3> v;
-      std::array<glm::dvec2, 3> uv;
-      for (int k = 0; k < 3; ++k) {
-        const uint32_t id = tess.mesh.indices[3 * t + k];
-        uv[k] = surface.faceUv(tess.trianglePatch[t], glm::dvec2(tess.cornerUv[3 * t + k]));
-        v[k] = builder.vertex(meshKeyed, id, uv[k], glm::dvec3(tess.mesh.positions[id]), -1,
-                              meshWeld);
-      }
-      const double area = cross(uv[1] - uv[0], uv[2] - uv[0]);
-      if (area == 0) continue;
-      if (area < 0) std::swap(v[1], v[2]), std::swap(uv[1], uv[2]);
-      if (!face.loops.empty() && classifyTrimTriangle(uv, index, margin) != TrimClass::Inside)
-        continue;
-      triangles.push_back({v, false});
-    }
-    stats.keptTriangles = triangles.size();
-
-    // The gap: bounded by the trim segments (material on their left) and by the kept
-    // triangles' open edges, reversed.
-    std::vector<std::pair<uint32_t, uint32_t>> gapEdges;
-    std::set<EdgeKey> trimEdges;
-    for (const TrimLoop& loop : face.loops) {
-      std::vector<uint32_t> ids;
-      for (size_t k = 0; k < loop.uv.size(); ++k) {
-        const uint32_t id = loop.pointIds[k];
-        ids.push_back(
-            builder.vertex(trimKeyed, id, loop.uv[k], model.sharedPoints[id], id, trimWeld));
-      }
-      for (size_t k = 0; k < ids.size(); ++k) {
-        const uint32_t a = ids[k], b = ids[(k + 1) % ids.size()];
-        if (a == b) continue;  // a repeated point
-        gapEdges.push_back({a, b});
-        trimEdges.insert(edgeKey(a, b));
-      }
-    }
-    if (!face.loops.empty()) {
-      std::set<EdgeKey> directed;
-      for (const FaceTriangle& t : triangles)
-        for (int k = 0; k < 3; ++k) directed.insert({t.v[k], t.v[(k + 1) % 3]});
-      for (const auto& [a, b] : directed)
-        if (!directed.count({b, a})) gapEdges.push_back({b, a});
-      // Triangulated in the surface's proportions (meanSpeeds), not in raw (u, v): u scaled by
-      // the speeds' ratio rounded to a power of two, so the scaling is exact and every
-      // orientation sign the gap's predicates see is the unscaled one.
-      const glm::dvec2 speeds = surface.meanSpeeds(lo, hi);
-      const glm::dvec2 metric(std::exp2(std::round(std::log2(speeds.x / speeds.y))), 1.0);
-      std::vector<glm::dvec2> points;
-      for (const FaceVertex& v : builder.vertices) points.push_back(v.uv * metric);
-      const GapTriangulation gap = triangulateGap(points, gapEdges);
-      stats.gapFailures = gap.failures;
-      for (const auto& t : gap.triangles) triangles.push_back({t, true});
-      stats.refinementSplits = trim_detail::refineGap(
-          surface, builder.vertices, triangles, trimEdges,
-          {options.tolerance, options.deviationSubdivisions, options.maxRefineRounds, metric,
-           options.gapMeasure});
-    }
-
-    // Emit: trim points as their shared vertex, the rest as this face's own vertices.
-    std::vector<FaceVertex>& vs = builder.vertices;
+    const FaceMesh& face = faces[f];
+    const std::vector<FaceVertex>& vs = face.vertices;
     std::vector<int64_t> global(vs.size(), -1);
     auto globalOf = [&](uint32_t v) -> uint32_t {
       if (global[v] >= 0) return uint32_t(global[v]);
@@ -203,35 +292,19 @@ TrimmedMesh meshTrimmedModel(const TrimmedModel& model, const TrimmedMeshOptions
       global[v] = *slot;
       return uint32_t(*slot);
     };
-    for (const FaceTriangle& t : triangles) {
-      std::array<uint32_t, 3> v = t.v;
-      if (face.reversed) std::swap(v[1], v[2]);
+    for (size_t t = 0; t < face.triangles.size(); ++t) {
+      const std::array<uint32_t, 3>& v = face.triangles[t].v;
       const uint32_t g0 = globalOf(v[0]), g1 = globalOf(v[1]), g2 = globalOf(v[2]);
-      if (g0 == g1 || g1 == g2 || g0 == g2) {
-        ++stats.collapsedTriangles;
-        continue;
-      }
+      if (face.collapsed[t]) continue;
       out.mesh.indices.insert(out.mesh.indices.end(), {g0, g1, g2});
       out.triangleFace.push_back(uint32_t(f));
       for (uint32_t k : v) out.cornerUv.push_back(vs[k].uv);
-      ++stats.triangles;
-      const double parametric =
-          trim_detail::parametricDeviation(surface, vs, t.v, options.deviationSubdivisions);
-      stats.maxTrimPointOffset =
-          std::max(stats.maxTrimPointOffset, trim_detail::cornerOffset(surface, vs, t.v));
-      stats.maxParametricDeviation = std::max(stats.maxParametricDeviation, parametric);
-      if (t.gap)
-        stats.maxGapParametricDeviation = std::max(stats.maxGapParametricDeviation, parametric);
-      if (options.measureGeometric)
-        stats.maxGeometricDeviation =
-            std::max(stats.maxGeometricDeviation,
-                     geometricDeviation(surface, vs, t.v, options.deviationSubdivisions));
     }
-    stats.keptTriangles = 0;
-    for (const FaceTriangle& t : triangles) (t.gap ? stats.gapTriangles : stats.keptTriangles)++;
-    out.faces.push_back(stats);
+    out.faces.push_back(face.stats);
   }
   out.mesh.validate();
+  timings.emitMs = step.elapsedMs();
+  timings.totalMs = total.elapsedMs();
   return out;
 }
 

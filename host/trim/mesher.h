@@ -14,6 +14,7 @@
 
 #include "mesh/mesh.h"
 #include "mesh/tessellate.h"
+#include "trim/trim_classifier.h"
 #include "trim/trimmed_face.h"
 
 namespace tessera {
@@ -29,8 +30,16 @@ struct TrimmedMeshOptions {
   double tolerance = 0;            // δ, model units, > 0
   int deviationSubdivisions = 8;   // samples (i, j, k)/n of each triangle: refinement and stats
   bool measureGeometric = true;    // also the distance to the surface (slower)
+  // The stats measure every emitted triangle; off, only the gap triangles (the kept quad-tree
+  // triangles are proven within δ by rule T, so measuring them only confirms the proof; it is
+  // most of the stats' cost). The gap refinement measures gap triangles either way.
+  bool measureKeptTriangles = true;
+  // Build the faces' quad-trees with the trim pass (trim_frontier.h): nodes outside a face's
+  // loops stop splitting and are not triangulated. Off: the untrimmed trees.
+  bool trimQuadtree = true;
   int maxRefineRounds = 24;        // splitting rounds for gap triangles over δ
   GapMeasure gapMeasure = GapMeasure::Geometric;
+  unsigned threads = 0;            // faces cut in parallel (0: all cores); output independent
 };
 
 struct TrimmedFaceStats {
@@ -54,6 +63,22 @@ struct TrimmedFaceStats {
   // otherwise. Refinement measures triangles with their corners on the surface, so it cannot
   // reduce this: the promise is deviation ≤ δ + maxTrimPointOffset (docs/trimmed_faces.md).
   double maxTrimPointOffset = 0;
+  // Emitted triangles the maxima above were taken over: all of them, or only the gap ones
+  // when TrimmedMeshOptions::measureKeptTriangles is off.
+  size_t measuredTriangles = 0;
+};
+
+// Where the time went (wall milliseconds; per-face stages run faces in parallel).
+struct TrimmedMeshTimings {
+  double treeMs = 0;         // quad-trees of all faces (face_tessellation.h), trim pass included
+  double trimMs = 0;         // of which the trim classification of nodes
+  double triangulateMs = 0;  // leaves → triangles, per face
+  double evaluateMs = 0;     // the backend's vertex evaluation, one call per tree
+  double assembleMs = 0;     // per-face meshes (welding)
+  double cutMs = 0;          // classify, gap, refine and measure, per face
+  double emitMs = 0;         // shared vertices and the one mesh, in face order
+  double totalMs = 0;
+  size_t trees = 0, leaves = 0, trimmedAwayLeaves = 0;
 };
 
 struct TrimmedMesh {
@@ -62,6 +87,7 @@ struct TrimmedMesh {
   std::vector<uint32_t> triangleFace;  // per triangle: index into TrimmedModel::faces
   std::vector<glm::dvec2> cornerUv;    // 3 per triangle: the corners' uv on that face
   std::vector<TrimmedFaceStats> faces;
+  TrimmedMeshTimings timings;
 };
 
 // Throws std::invalid_argument naming the face (its label) and loop for a model it cannot
@@ -69,7 +95,11 @@ struct TrimmedMesh {
 // pointIds not one per uv, an id past sharedPoints, a non-finite uv.
 void validateTrimmedModel(const TrimmedModel& model);
 
+// All faces' quad-trees are built together on `backend` (face_tessellation.h), then each face
+// is cut on the CPU, faces in parallel, and emitted in face order. `trim` classifies the
+// quad-tree nodes against the loops when options.trimQuadtree is on; null: the fp32 mirror.
+// Pass makeVulkanTrimClassifier with a Vulkan backend to keep the tree on the device.
 TrimmedMesh meshTrimmedModel(const TrimmedModel& model, const TrimmedMeshOptions& options,
-                             Backend& backend);
+                             Backend& backend, TrimClassifier* trim = nullptr);
 
 }  // namespace tessera

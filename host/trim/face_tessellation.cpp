@@ -1,0 +1,142 @@
+#include "trim/face_tessellation.h"
+
+#include <algorithm>
+#include <string>
+
+#include "common/parallel_for.h"
+#include "common/stopwatch.h"
+#include "geometry/general_patch.h"
+#include "mesh/triangulate.h"
+#include "trim/trim_frontier.h"
+
+namespace tessera {
+namespace {
+
+// The faces of one tree, their pieces one after another in face order.
+struct FaceGroup {
+  std::vector<size_t> faces;                          // indices into model.faces
+  std::vector<std::vector<BezierPatch>> facePatches;  // per face of the group
+  std::vector<uint32_t> firstPatch;                   // per face, its first patch in the tree
+  std::vector<BezierPatch> patches;                   // all, in tree order
+};
+
+bool isBicubicFace(const TrimmedFace& face) {
+  return std::all_of(face.pieces.begin(), face.pieces.end(),
+                     [](const BezierPatchPiece& p) { return isBicubicPolynomial(p.patch); });
+}
+
+// The group's loops and piece rectangles, face k of the group being trim face k.
+TrimSet groupTrimSet(const TrimmedModel& model, const FaceGroup& group) {
+  std::vector<std::vector<std::vector<glm::dvec2>>> loops(group.faces.size());
+  std::vector<TrimPieceRect> pieces;
+  for (size_t k = 0; k < group.faces.size(); ++k) {
+    const TrimmedFace& face = model.faces[group.faces[k]];
+    for (const TrimLoop& loop : face.loops) loops[k].push_back(loop.uv);
+    for (const BezierPatchPiece& p : face.pieces)
+      pieces.push_back({uint32_t(k), {p.u0, p.v0, p.u1, p.v1}});
+  }
+  return packTrimSet(loops, pieces);
+}
+
+void tessellateGroup(const TrimmedModel& model, const FaceGroup& group,
+                     const QuadtreeOptions& options, Backend& backend, TrimClassifier* trim,
+                     unsigned threads, FaceTessellations& out) {
+  Stopwatch step;
+  const PatchSet patchSet = toPatchSet(group.patches);
+  backend.evaluator->prepare(patchSet);  // overlaps the tree on backends that can
+  QuadtreeResult tree;
+  if (trim) {
+    const TrimSet set = groupTrimSet(model, group);
+    TrimmingClassifier trimming(*backend.classifier, set, *trim);
+    tree = buildQuadtree(patchSet, options, trimming);
+    out.trimMs += trimming.trimMs();
+  } else {
+    tree = buildQuadtree(patchSet, options, *backend.classifier);
+  }
+  ++out.trees;
+  out.leaves += tree.leaves.size();
+
+  // Each face's leaves, in tree order, renumbered to the face's own pieces.
+  const size_t faceCount = group.faces.size();
+  std::vector<QuadtreeResult> faceTrees(faceCount);
+  for (const QuadLeaf& leaf : tree.leaves) {
+    if (trim && leaf.cause == gpu::kCauseTrimmedAway) {
+      ++out.trimmedAwayLeaves;
+      continue;
+    }
+    const size_t k = size_t(std::upper_bound(group.firstPatch.begin(), group.firstPatch.end(),
+                                             leaf.patchIndex) -
+                            group.firstPatch.begin()) -
+                     1;
+    QuadLeaf local = leaf;
+    local.patchIndex -= group.firstPatch[k];
+    faceTrees[k].depth = std::max(faceTrees[k].depth, leaf.level);
+    faceTrees[k].leaves.push_back(local);
+  }
+  out.treeMs += step.elapsedMs();
+
+  step.restart();
+  std::vector<ParamMesh> params(faceCount);
+  parallelFor(faceCount, threads, [&](size_t begin, size_t end) {
+    for (size_t k = begin; k < end; ++k)
+      if (!faceTrees[k].leaves.empty())
+        params[k] = triangulateLeaves(faceTrees[k].leaves, group.facePatches[k]);
+  });
+  out.triangulateMs += step.elapsedMs();
+
+  // Every face's vertices in one backend call: the round trip is paid once per tree.
+  step.restart();
+  std::vector<size_t> firstQuery(faceCount + 1, 0);
+  for (size_t k = 0; k < faceCount; ++k) firstQuery[k + 1] = firstQuery[k] + params[k].vertices.size();
+  std::vector<gpu::EvalQuery> queries(firstQuery.back());
+  for (size_t k = 0; k < faceCount; ++k)
+    for (size_t i = 0; i < params[k].vertices.size(); ++i) {
+      const ParamVertex& v = params[k].vertices[i];
+      queries[firstQuery[k] + i] = {v.patchIndex + group.firstPatch[k], v.u, v.v, 0};
+    }
+  std::vector<gpu::EvalSample> samples;
+  if (!queries.empty()) samples = backend.evaluator->evaluate(patchSet, queries);
+  out.evaluateMs += step.elapsedMs();
+
+  step.restart();
+  parallelFor(faceCount, threads, [&](size_t begin, size_t end) {
+    for (size_t k = begin; k < end; ++k) {
+      const std::vector<gpu::EvalSample> faceSamples(samples.begin() + long(firstQuery[k]),
+                                                     samples.begin() + long(firstQuery[k + 1]));
+      out.faces[group.faces[k]] = assembleTessellation(
+          group.facePatches[k].size(), std::move(faceTrees[k]), params[k], faceSamples);
+    }
+  });
+  out.assembleMs += step.elapsedMs();
+}
+
+}  // namespace
+
+FaceTessellations tessellateFaces(const TrimmedModel& model, double tolerance, Backend& backend,
+                                  TrimClassifier* trim, unsigned threads) {
+  FaceTessellations out;
+  out.faces.resize(model.faces.size());
+  FaceGroup groups[2];  // bicubic polynomial faces, the others
+  for (size_t f = 0; f < model.faces.size(); ++f) {
+    const TrimmedFace& face = model.faces[f];
+    FaceGroup& group = groups[isBicubicFace(face) ? 0 : 1];
+    std::vector<BezierPatch> patches;
+    for (size_t k = 0; k < face.pieces.size(); ++k) {
+      validateTessellationPatch(face.pieces[k].patch,
+                                (face.label.empty() ? "face " + std::to_string(f) : face.label) +
+                                    ", piece " + std::to_string(k));
+      patches.push_back(face.pieces[k].patch);
+    }
+    group.faces.push_back(f);
+    group.firstPatch.push_back(uint32_t(group.patches.size()));
+    group.patches.insert(group.patches.end(), patches.begin(), patches.end());
+    group.facePatches.push_back(std::move(patches));
+  }
+  const QuadtreeOptions options = toleranceOptions(tolerance);
+  for (const FaceGroup& group : groups)
+    if (!group.faces.empty())
+      tessellateGroup(model, group, options, backend, trim, threads, out);
+  return out;
+}
+
+}  // namespace tessera
