@@ -5,10 +5,16 @@
 
 #include "geometry/bezier.h"
 #include "geometry/closest_point.h"
+#include "geometry/rational.h"
 
 namespace tessera {
 
 FaceSurface::FaceSurface(const TrimmedFace& face) : face_(&face) {
+  // patchPoint converts a rational patch to its homogeneous form on every call; the mesher
+  // evaluates each face tens of thousands of times, so convert once (same arithmetic after).
+  rational_.resize(face.pieces.size());
+  for (size_t k = 0; k < face.pieces.size(); ++k)
+    if (!face.pieces[k].patch.weights.empty()) rational_[k] = toRationalPatch(face.pieces[k].patch);
   for (const BezierPatchPiece& p : face.pieces) {
     us_.push_back(p.u0), us_.push_back(p.u1);
     vs_.push_back(p.v0), vs_.push_back(p.v1);
@@ -65,6 +71,7 @@ glm::dvec2 FaceSurface::faceUv(size_t piece, glm::dvec2 local) const {
 glm::dvec3 FaceSurface::point(glm::dvec2 uv) const {
   const size_t piece = pieceAt(uv);
   const glm::dvec2 local = localUv(piece, uv);
+  if (rational_[piece]) return rationalPatchPoint(*rational_[piece], local.x, local.y);
   return patchPoint(face_->pieces[piece].patch, local.x, local.y);
 }
 

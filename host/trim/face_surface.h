@@ -4,8 +4,10 @@
 // surface's domain by the CAD model's tolerance).
 #pragma once
 #include <glm/glm.hpp>
+#include <optional>
 #include <vector>
 
+#include "geometry/rational.h"
 #include "trim/trimmed_face.h"
 
 namespace tessera {
@@ -31,6 +33,7 @@ class FaceSurface {
   const TrimmedFace* face_;
   std::vector<double> us_, vs_;       // the pieces' sorted distinct sides
   std::vector<int> cellPiece_;        // (us_.size()−1)·(vs_.size()−1) cells → piece or −1
+  std::vector<std::optional<RationalBezierPatch>> rational_;  // per rational piece, its form
 };
 
 }  // namespace tessera
