@@ -15,9 +15,10 @@
 // box grown by 1%), the largest over the corpus, as a
 // multiple of δ. A point the projection cannot place is counted, not guessed.
 // Usage: bench_cad [relative tolerances = 0.001,0.0001] [--dir folder] [--json file] [--cpu]
-//        [--model name-part] [--detail]
+//        [--model name-part] [--detail] [--tessera-only]
 // --cpu leaves Vulkan out; --model keeps the models whose file name contains the text;
-// --detail prints each model's worst faces (distance, unprojected samples) for both meshers.
+// --detail prints each model's worst faces (distance, unprojected samples) for both meshers;
+// --tessera-only runs Tessera alone, unmeasured (for profiling its stages).
 #include <BRepBndLib.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepTools.hxx>
@@ -238,6 +239,8 @@ struct Stages {
     mesh.treeMs += t.treeMs, mesh.trimMs += t.trimMs, mesh.triangulateMs += t.triangulateMs;
     mesh.evaluateMs += t.evaluateMs, mesh.assembleMs += t.assembleMs, mesh.cutMs += t.cutMs;
     mesh.emitMs += t.emitMs, mesh.totalMs += t.totalMs;
+    mesh.classifyCpuMs += t.classifyCpuMs, mesh.gapCpuMs += t.gapCpuMs;
+    mesh.refineCpuMs += t.refineCpuMs, mesh.measureCpuMs += t.measureCpuMs;
     mesh.trees += t.trees, mesh.leaves += t.leaves, mesh.trimmedAwayLeaves += t.trimmedAwayLeaves;
   }
   nlohmann::json json() const {
@@ -245,6 +248,8 @@ struct Stages {
             {"trimMs", mesh.trimMs},          {"triangulateMs", mesh.triangulateMs},
             {"evaluateMs", mesh.evaluateMs},  {"assembleMs", mesh.assembleMs},
             {"cutMs", mesh.cutMs},            {"emitMs", mesh.emitMs},
+            {"classifyCpuMs", mesh.classifyCpuMs}, {"gapCpuMs", mesh.gapCpuMs},
+            {"refineCpuMs", mesh.refineCpuMs}, {"measureCpuMs", mesh.measureCpuMs},
             {"meshMs", mesh.totalMs},         {"trees", mesh.trees},
             {"leaves", mesh.leaves},          {"trimmedAwayLeaves", mesh.trimmedAwayLeaves}};
   }
@@ -256,6 +261,8 @@ struct TesseraBackend {
   TrimClassifier* trim;  // the trim pass of the quad-tree on the same device
 };
 
+bool tesseraOnly = false;
+
 void runTolerance(bench::Report& report, const Models& models, double relative,
                   std::vector<TesseraBackend>& backends) {
   Totals occt[2];
@@ -266,7 +273,7 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
     const CadFile& file = models.files[f];
     const std::string name = fs::path(file.path).filename().string();
     const double delta = relative * diagonalOf(file.shape);
-    for (int parallel = 0; parallel < 2; ++parallel) {
+    for (int parallel = 0; parallel < (tesseraOnly ? 0 : 2); ++parallel) {
       size_t count = 0;
       std::vector<double> seconds;
       for (int run = 0; run <= bench::kMinRuns; ++run) {  // run 0 warms up
@@ -309,12 +316,15 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
         failedFaces += import.failures.size();
       }
       tessera[b].add(name, time, mesh.mesh.triangleCount(),
-                     measureDistance(tesseraTriangles(mesh, import), &import.faces, "Tessera", delta),
+                     tesseraOnly ? Deviation{}
+                                 : measureDistance(tesseraTriangles(mesh, import), &import.faces,
+                                                   "Tessera", delta),
                      delta);
     }
-    std::fprintf(stderr, "%s at %g of its diagonal: OCCT %zu triangles, Tessera %zu\n",
-                 name.c_str(), relative, occt[0].perModel.back()["triangles"].get<size_t>(),
-                 tessera[0].perModel.back()["triangles"].get<size_t>());
+    if (!tesseraOnly)
+      std::fprintf(stderr, "%s at %g of its diagonal: OCCT %zu triangles, Tessera %zu\n",
+                   name.c_str(), relative, occt[0].perModel.back()["triangles"].get<size_t>(),
+                   tessera[0].perModel.back()["triangles"].get<size_t>());
   }
 
   char title[320];
@@ -348,18 +358,22 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
                  totals.minSeconds, occt[1].minSeconds / totals.minSeconds, m.worstRatio,
                  m.worstModel.c_str(), m.unprojected, m.samples);
   };
-  addCase("OCCT BRepMesh, serial", occt[0], nullptr);
-  addCase("OCCT BRepMesh, parallel (all cores)", occt[1], &occt[0]);  // the same mesh
+  if (!tesseraOnly) {
+    addCase("OCCT BRepMesh, serial", occt[0], nullptr);
+    addCase("OCCT BRepMesh, parallel (all cores)", occt[1], &occt[0]);  // the same mesh
+  }
   for (size_t b = 0; b < backends.size(); ++b) {
     addCase("Tessera trimmed faces, " + backends[b].name, tessera[b], nullptr);
     table.cases.back().extra["stages"] = stages[b].json();
     const TrimmedMeshTimings& t = stages[b].mesh;
     std::fprintf(stderr,
                  "  %s stages (ms, fastest run of each model, summed): convert %.1f, tree %.1f "
-                 "(trim %.1f), triangulate %.1f, evaluate %.1f, assemble %.1f, cut %.1f, emit "
-                 "%.1f, mesh total %.1f; %zu trees, %zu leaves, %zu trimmed away\n",
+                 "(trim %.1f), triangulate %.1f, evaluate %.1f, assemble %.1f, cut %.1f (thread "
+                 "time: classify %.1f, gap %.1f, refine %.1f, measure %.1f), emit %.1f, mesh "
+                 "total %.1f; %zu trees, %zu leaves, %zu trimmed away\n",
                  backends[b].name.c_str(), stages[b].convertMs, t.treeMs, t.trimMs,
-                 t.triangulateMs, t.evaluateMs, t.assembleMs, t.cutMs, t.emitMs, t.totalMs,
+                 t.triangulateMs, t.evaluateMs, t.assembleMs, t.cutMs, t.classifyCpuMs,
+                 t.gapCpuMs, t.refineCpuMs, t.measureCpuMs, t.emitMs, t.totalMs,
                  t.trees, t.leaves, t.trimmedAwayLeaves);
   }
   report.print(table);
@@ -392,6 +406,8 @@ int main(int argc, char** argv) {
       gDetail = true;
     else if (arg == "--json" && i + 1 < argc)
       ++i;  // bench::Report's
+    else if (arg == "--tessera-only")
+      tesseraOnly = true;
     else
       relatives = parseList(arg);
   }

@@ -1,17 +1,59 @@
 #include "trim/face_surface.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
 #include <limits>
 
 #include "geometry/bezier.h"
 #include "geometry/closest_point.h"
+#include "geometry/general_patch.h"
 #include "geometry/rational.h"
 
 namespace tessera {
+namespace {
+
+// B_i,d(t) for i = 0..degree by the recurrence of bernsteinTriangle, in place (each value is
+// the same expression of the same operands, so the same double).
+std::array<double, kMaxDegree + 1> bernsteinRow(int degree, double t) {
+  std::array<double, kMaxDegree + 1> b{};
+  const double s = 1.0 - t;
+  b[0] = 1.0;
+  for (int d = 1; d <= degree; ++d) {
+    b[d] = t * b[d - 1];
+    for (int i = d - 1; i >= 1; --i) b[i] = s * b[i] + t * b[i - 1];
+    b[0] = s * b[0];
+  }
+  return b;
+}
+
+// Σ_i B_i,n(u) Σ_j B_j,m(v) net[i·(m+1) + j], summed in tensorPartial's order (a = b = 0:
+// its factor is 1·1), without its copies of the whole net: the deviation measure's hot path.
+template <class Point>
+Point tensorPoint(const Point* net, int n, int m, double u, double v) {
+  const std::array<double, kMaxDegree + 1> bu = bernsteinRow(n, u), bv = bernsteinRow(m, v);
+  Point sum(0.0);
+  for (int i = 0; i <= n; ++i) {
+    Point row(0.0);
+    for (int j = 0; j <= m; ++j) row += bv[j] * net[i * (m + 1) + j];
+    sum += bu[i] * row;
+  }
+  return sum;
+}
+
+}  // namespace
 
 FaceSurface::FaceSurface(const TrimmedFace& face) : face_(&face) {
   // patchPoint converts a rational patch to its homogeneous form on every call; the mesher
   // evaluates each face tens of thousands of times, so convert once (same arithmetic after).
+  checked_ = true;
+  for (const BezierPatchPiece& p : face.pieces)
+    try {
+      validateTessellationPatch(p.patch, "piece");
+    } catch (const std::invalid_argument&) {
+      checked_ = false;
+    }
   rational_.resize(face.pieces.size());
   for (size_t k = 0; k < face.pieces.size(); ++k)
     if (!face.pieces[k].patch.weights.empty()) rational_[k] = toRationalPatch(face.pieces[k].patch);
@@ -71,8 +113,18 @@ glm::dvec2 FaceSurface::faceUv(size_t piece, glm::dvec2 local) const {
 glm::dvec3 FaceSurface::point(glm::dvec2 uv) const {
   const size_t piece = pieceAt(uv);
   const glm::dvec2 local = localUv(piece, uv);
-  if (rational_[piece]) return rationalPatchPoint(*rational_[piece], local.x, local.y);
-  return patchPoint(face_->pieces[piece].patch, local.x, local.y);
+  // The pieces passed validateTessellationPatch (degrees ≤ kMaxDegree, finite, weights ≥ 0)
+  // before the mesher measures them; a face built otherwise takes patchPoint's checked path.
+  if (!checked_) return patchPoint(face_->pieces[piece].patch, local.x, local.y);
+  const BezierPatch& patch = face_->pieces[piece].patch;
+  if (rational_[piece]) {
+    const RationalBezierPatch& r = *rational_[piece];
+    const glm::dvec4 h = tensorPoint(r.cpw.data(), r.degreeU, r.degreeV, local.x, local.y);
+    if (h.w == 0.0 || !std::isfinite(h.w))  // patchPoint's error, with its message
+      return rationalPatchPoint(r, local.x, local.y);
+    return glm::dvec3(h) / h.w;
+  }
+  return tensorPoint(patch.cp.data(), patch.degreeU, patch.degreeV, local.x, local.y);
 }
 
 double FaceSurface::distance(const glm::dvec3& target, glm::dvec2 guess) const {

@@ -34,6 +34,7 @@ class FaceSurface {
   std::vector<double> us_, vs_;       // the pieces' sorted distinct sides
   std::vector<int> cellPiece_;        // (us_.size()−1)·(vs_.size()−1) cells → piece or −1
   std::vector<std::optional<RationalBezierPatch>> rational_;  // per rational piece, its form
+  bool checked_ = false;  // every piece passes validateTessellationPatch: the fast point()
 };
 
 }  // namespace tessera

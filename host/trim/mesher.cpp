@@ -105,6 +105,7 @@ struct FaceMesh {
   std::vector<FaceTriangle> triangles;  // emission order and orientation (reversed faces flipped)
   std::vector<bool> collapsed;          // per triangle: two corners on one vertex or shared id
   TrimmedFaceStats stats;
+  double classifyMs = 0, gapMs = 0, refineMs = 0, measureMs = 0;  // this face's thread time
 };
 
 FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
@@ -131,6 +132,8 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
   const double meshWeld = 1e-6 * size, trimWeld = 1e-9 * size;
 
   stats.quadtreeTriangles = tess.mesh.triangleCount();
+  FaceMesh out;
+  Stopwatch step;
 
   std::map<int64_t, std::vector<uint32_t>> meshKeyed, trimKeyed;
   const TrimSegmentIndex index(face.loops);
@@ -152,6 +155,8 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
     triangles.push_back({v, false});
   }
   stats.keptTriangles = triangles.size();
+  out.classifyMs = step.elapsedMs();
+  step.restart();
 
   // The gap: bounded by the trim segments (material on their left) and by the kept
   // triangles' open edges, reversed.
@@ -187,15 +192,18 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
     const GapTriangulation gap = triangulateGap(points, gapEdges);
     stats.gapFailures = gap.failures;
     for (const auto& t : gap.triangles) triangles.push_back({t, true});
+    out.gapMs = step.elapsedMs();
+    step.restart();
     stats.refinementSplits = trim_detail::refineGap(
         surface, builder.vertices, triangles, trimEdges,
         {options.tolerance, options.deviationSubdivisions, options.maxRefineRounds, metric,
          options.gapMeasure});
+    out.refineMs = step.elapsedMs();
   }
+  step.restart();
 
   // Orientation, collapsed triangles (two corners on one shared point: they become one mesh
   // vertex) and the measured deviation of what will be emitted.
-  FaceMesh out;
   const std::vector<FaceVertex>& vs = builder.vertices;
   const auto oneVertex = [&](uint32_t a, uint32_t b) {
     return a == b || (vs[a].sharedId >= 0 && vs[a].sharedId == vs[b].sharedId);
@@ -233,6 +241,7 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
   out.vertices = std::move(builder.vertices);
   out.triangles = std::move(triangles);
   out.stats = stats;
+  out.measureMs = step.elapsedMs();
   return out;
 }
 
@@ -271,6 +280,12 @@ TrimmedMesh meshTrimmedModel(const TrimmedModel& model, const TrimmedMeshOptions
     }
   });
   timings.cutMs = step.elapsedMs();
+  for (const FaceMesh& face : faces) {
+    timings.classifyCpuMs += face.classifyMs;
+    timings.gapCpuMs += face.gapMs;
+    timings.refineCpuMs += face.refineMs;
+    timings.measureCpuMs += face.measureMs;
+  }
 
   // Step 5, in face order so the vertex numbering does not depend on the threads: trim points
   // as their shared vertex, the rest as their face's own vertices.

@@ -76,6 +76,8 @@ struct TrimmedMeshTimings {
   double evaluateMs = 0;     // the backend's vertex evaluation, one call per tree
   double assembleMs = 0;     // per-face meshes (welding)
   double cutMs = 0;          // classify, gap, refine and measure, per face
+  // cutMs's parts, thread time summed over the faces (so they may add up to more than cutMs)
+  double classifyCpuMs = 0, gapCpuMs = 0, refineCpuMs = 0, measureCpuMs = 0;
   double emitMs = 0;         // shared vertices and the one mesh, in face order
   double totalMs = 0;
   size_t trees = 0, leaves = 0, trimmedAwayLeaves = 0;
