@@ -58,7 +58,10 @@ CadResult runCadJob(const CadJob& job, ChosenBackend& chosen) {
   TrimmedMeshOptions options;
   options.tolerance = result.delta;
   clock.restart();
-  result.mesh = meshTrimmedModel(import.model, options, chosen.backend);
+  // The quad-trees' trim pass on the same device as the trees (null: the CPU mirror).
+  const std::unique_ptr<TrimClassifier> trim =
+      chosen.context ? makeVulkanTrimClassifier(*chosen.context) : nullptr;
+  result.mesh = meshTrimmedModel(import.model, options, chosen.backend, trim.get());
   result.meshMs = clock.elapsedMs();
   // The faces' indices in the model (TrimmedFace::faceIndex), not their place in the list of
   // faces that converted: what the glb's primitives and the stats name.
