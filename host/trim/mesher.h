@@ -1,9 +1,10 @@
 // The trimmed mesher (issue 17): a TrimmedModel → one indexed mesh, watertight across faces.
-// Per face: rule T's quad-tree tessellation of its pieces at δ (tessellate()); its triangles
-// classified against the trimming loops (trim_cut.h): inside kept, outside dropped, crossing
-// dropped; the gap between the kept triangles and the loops triangulated with the loops' own
-// points and no other point on them (gap_triangulate.h); gap triangles measured and split
-// until within δ. Every trim point becomes the one vertex of its shared point id, at
+// Rule T's quad-trees of all faces' pieces at δ, built together on the backend with the trim
+// pass (face_tessellation.h); then per face, faces in parallel: its triangles classified
+// against the trimming loops (trim_cut.h): inside kept, outside dropped, crossing dropped; the
+// gap between the kept triangles and the loops triangulated with the loops' own points and no
+// other point on them (gap_triangulate.h); gap triangles measured and split until within δ.
+// Every trim point becomes the one vertex of its shared point id, at
 // TrimmedModel::sharedPoints[id], so two faces that share an edge share its vertices and its
 // segments, and a closed solid gives a closed mesh. Design and bounds: docs/trimmed_faces.md.
 #pragma once
