@@ -105,7 +105,7 @@ ImportFigures checkImport(const CadFile& file) {
     const TopoDS_Face source = TopoDS::Face(in.faces(static_cast<int>(face.faceIndex) + 1));
     CHECK(face.reversed == (source.Orientation() == TopAbs_REVERSED));
     // Pieces against OCCT's surface at a grid of the face's own (u, v).
-    const FaceSurface surface = convertFaceSurface(TopoDS::Face(source.Oriented(TopAbs_FORWARD)));
+    const CadSurface surface = convertFaceSurface(TopoDS::Face(source.Oriented(TopAbs_FORWARD)));
     double u0, u1, v0, v1;
     surface.nurbs->Bounds(u0, u1, v0, v1);
     for (int i = 0; i <= 4; ++i)

@@ -69,7 +69,7 @@ double poleDiagonal(const Handle(Geom_BSplineSurface)& s) {
 }
 
 // The distinct knot whose iso-line is longest: f (or g) is solved on it, away from poles.
-double longestIsoKnot(const FaceSurface& f, bool knotAlongU) {
+double longestIsoKnot(const CadSurface& f, bool knotAlongU) {
   const Handle(Geom_BSplineSurface)& s = f.nurbs;
   double u0, u1, v0, v1;
   s->Bounds(u0, u1, v0, v1);
@@ -105,7 +105,7 @@ void shiftKnots(const Handle(Geom_BSplineSurface)& s, bool alongU, double shift)
 
 }  // namespace
 
-glm::dvec2 FaceSurface::mapUv(const gp_Pnt2d& uv) const {
+glm::dvec2 CadSurface::mapUv(const gp_Pnt2d& uv) const {
   if (!reparametrised) return {uv.X(), uv.Y()};
   // Gauss–Newton on |N(u', vRef) − S(u, vRef)|² (and likewise for v): vRef is a knot, which
   // both parametrisations share, so the iso-lines are the same curve.
@@ -132,8 +132,8 @@ glm::dvec2 FaceSurface::mapUv(const gp_Pnt2d& uv) const {
   return {solve(uv.X(), true), solve(uv.Y(), false)};
 }
 
-FaceSurface convertFaceSurface(const TopoDS_Face& face) {
-  FaceSurface result;
+CadSurface convertFaceSurface(const TopoDS_Face& face) {
+  CadSurface result;
   result.original = BRep_Tool::Surface(face);
   if (result.original.IsNull()) throw CadFaceError("the face has no surface");
   Handle(Geom_Surface) basis = result.original;

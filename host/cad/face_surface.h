@@ -28,7 +28,10 @@ class CadFaceError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-struct FaceSurface {
+// Not trim/face_surface.h's FaceSurface (the mesher's evaluator of a TrimmedFace): one name for
+// two classes in one namespace broke the one-definition rule (ASan saw one's destructor run on
+// the other).
+struct CadSurface {
   Handle(Geom_Surface) original;      // the face's surface, located (BRep_Tool::Surface)
   Handle(Geom_BSplineSurface) nurbs;  // non-periodic, over the face's uv bounds
   bool reparametrised = false;        // true when (u', v') ≠ (u, v) (a converted analytic surface)
@@ -41,7 +44,7 @@ struct FaceSurface {
 
 // Throws CadFaceError (a degree above 7, a surface GeomConvert cannot convert exactly, a
 // reparametrisation that does not check out) or lets Standard_Failure through.
-FaceSurface convertFaceSurface(const TopoDS_Face& face);
+CadSurface convertFaceSurface(const TopoDS_Face& face);
 
 // The point of the pieces at (u', v'): the piece whose rectangle holds it (the nearest at the
 // edges of the domain).

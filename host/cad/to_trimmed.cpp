@@ -33,7 +33,7 @@ double signedArea(const std::vector<glm::dvec2>& uv) {
 // One wire → one loop: edges in wire order, each edge's samples in the direction the wire uses
 // it, mapped through the edge's pcurve on this face (for a seam, the orientation picks which of
 // its two pcurves). Consecutive edges share their vertex point once.
-TrimLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face, const FaceSurface& surface,
+TrimLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face, const CadSurface& surface,
                   uint32_t faceIndex, const std::string& label, const std::string& path, CadImport& in) {
   TrimLoop loop;
   int explored = 0;
@@ -91,7 +91,7 @@ TrimmedFace convertFace(const TopoDS_Face& sourceFace, uint32_t faceIndex, const
   const TopoDS_Face face = TopoDS::Face(sourceFace.Oriented(TopAbs_FORWARD));
   TrimmedFace out;
   out.reversed = sourceFace.Orientation() == TopAbs_REVERSED;
-  FaceSurface surface = convertFaceSurface(face);
+  CadSurface surface = convertFaceSurface(face);
   for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next())
     out.loops.push_back(wireLoop(TopoDS::Wire(w.Current()), face, surface, faceIndex, label, path, in));
   if (out.loops.empty()) throw CadFaceError("the face has no wire");

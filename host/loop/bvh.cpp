@@ -117,8 +117,8 @@ uint32_t TriangleBvh::build(uint32_t first, uint32_t count, std::vector<glm::dve
   return index;
 }
 
-ClosestPoint TriangleBvh::closest(const glm::dvec3& p) const {
-  ClosestPoint best;
+MeshClosestPoint TriangleBvh::closest(const glm::dvec3& p) const {
+  MeshClosestPoint best;
   uint32_t stack[128];
   int top = 0;
   stack[top++] = 0;

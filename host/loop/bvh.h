@@ -25,7 +25,9 @@ struct Box {
   }
 };
 
-struct ClosestPoint {
+// The nearest point of a triangle mesh (not geometry/closest_point.h's ClosestPoint on a
+// patch: one name for two structs in one namespace breaks the one-definition rule).
+struct MeshClosestPoint {
   glm::dvec3 point{0.0};
   uint32_t triangle = 0;
   double distance2 = 1e300;
@@ -42,7 +44,7 @@ class TriangleBvh {
  public:
   TriangleBvh(std::vector<glm::dvec3> positions, std::vector<uint32_t> triangles);
 
-  ClosestPoint closest(const glm::dvec3& p) const;
+  MeshClosestPoint closest(const glm::dvec3& p) const;
   // Calls visit(mine, theirs) for every pair of intersecting triangles (trianglesIntersect).
   void forEachIntersecting(const TriangleBvh& other,
                            const std::function<void(uint32_t, uint32_t)>& visit) const;

@@ -27,7 +27,7 @@ double energyAndSteps(const LoopTopology& t, const std::vector<glm::dvec3>& posi
   if (steps) steps->assign(t.vertexCount, glm::dvec3(0.0));
   for (uint32_t v = 0; v < t.vertexCount; ++v) {
     if (!isMovable(movable, v)) continue;
-    const ClosestPoint q = targets[targetIndex(movable, v) - 1]->closest(limit[v]);
+    const MeshClosestPoint q = targets[targetIndex(movable, v) - 1]->closest(limit[v]);
     energy += q.distance2;
     worst = std::max(worst, std::sqrt(q.distance2));
     if (steps) (*steps)[v] = limit[v] - q.point;
