@@ -38,7 +38,6 @@ echo "sanitize: build $((SECONDS - start)) s"
 export ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp:print_suppressions=0
-occt_suppressions=$PWD/tests/lsan_occt.supp  # the CAD pass below
 # The statistical sweeps (never under-divides, rule T's random patches, fp32 against double)
 # run a share of their samples here (tests/sweep_share.h): the Release run has the full
 # statistics; the sanitizers look for memory and UB errors (docs/hardening.md).
@@ -49,15 +48,7 @@ start=$SECONDS
 # division methods the never-under-divides sweeps above also run, over 20 views: 80 s of CPU
 # under ASan for no path of its own, so it runs in the Release suite only.
 ctest --output-on-failure -j "$(nproc)" -L cpu -LE fuzz \
-  -E "Division table: |divisions prints the comparison table|^cpu:cad"
-# The CAD tests (host/cad/: Open CASCADE, built by GCC without ASan) in a pass of their own:
-# where a face fails to convert, releasing OCCT's geometry is reported as an
-# alloc-dealloc-mismatch (OCCT's allocator's calloc against operator delete) and the located
-# surface copies' knot arrays as leaked (tests/lsan_occt.supp). Only on that path, only inside
-# OCCT's frames; not understood yet (docs/hardening.md). The rest of ASan stays on.
-ASAN_OPTIONS=$ASAN_OPTIONS:alloc_dealloc_mismatch=0 \
-LSAN_OPTIONS=suppressions=$occt_suppressions:print_suppressions=0 \
-  ctest --output-on-failure -j "$(nproc)" -L cpu -LE fuzz -R "^cpu:cad"
+  -E "Division table: |divisions prints the comparison table"
 echo "sanitize: CPU tests $((SECONDS - start)) s"
 if [[ $gpu == 1 ]]; then
   # The Vulkan loader dlcloses the driver and the validation layer before LeakSanitizer's
