@@ -58,17 +58,37 @@ int sideOf(const std::array<uint32_t, 3>& v, uint32_t a, uint32_t b) {
 
 }  // namespace
 
-double parametricDeviation(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
-                           const std::array<uint32_t, 3>& t, int n) {
+namespace {
+
+// The largest `measure(point on the triangle, its uv)` over the samples (i, j, k)/n.
+template <typename Measure>
+double largestOverSamples(const std::vector<FaceVertex>& vs, const std::array<uint32_t, 3>& t,
+                          int n, Measure measure) {
   double worst = 0;
   for (int i = 0; i <= n; ++i)
     for (int j = 0; i + j <= n; ++j) {
       const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
       const glm::dvec2 uv = a * vs[t[0]].uv + b * vs[t[1]].uv + c * vs[t[2]].uv;
       const glm::dvec3 p = a * vs[t[0]].position + b * vs[t[1]].position + c * vs[t[2]].position;
-      worst = std::max(worst, glm::length(p - surface.point(uv)));
+      worst = std::max(worst, measure(p, uv));
     }
   return worst;
+}
+
+}  // namespace
+
+double parametricDeviation(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
+                           const std::array<uint32_t, 3>& t, int n) {
+  return largestOverSamples(vs, t, n, [&](const glm::dvec3& p, glm::dvec2 uv) {
+    return glm::length(p - surface.point(uv));
+  });
+}
+
+double geometricDeviation(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
+                          const std::array<uint32_t, 3>& t, int n) {
+  return largestOverSamples(vs, t, n, [&](const glm::dvec3& p, glm::dvec2 uv) {
+    return surface.distance(p, uv);
+  });
 }
 
 double interpolationDeviation(const FaceSurface& surface, const std::vector<FaceVertex>& vs,

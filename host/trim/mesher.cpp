@@ -50,18 +50,6 @@ class FaceBuilder {
   }
 };
 
-double geometricDeviation(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
-                          const std::array<uint32_t, 3>& t, int n) {
-  double worst = 0;
-  for (int i = 0; i <= n; ++i)
-    for (int j = 0; i + j <= n; ++j) {
-      const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
-      const glm::dvec2 uv = a * vs[t[0]].uv + b * vs[t[1]].uv + c * vs[t[2]].uv;
-      const glm::dvec3 p = a * vs[t[0]].position + b * vs[t[1]].position + c * vs[t[2]].position;
-      worst = std::max(worst, surface.distance(p, uv));
-    }
-  return worst;
-}
 
 }  // namespace
 
@@ -234,7 +222,8 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
     if (options.measureGeometric)
       stats.maxGeometricDeviation =
           std::max(stats.maxGeometricDeviation,
-                   geometricDeviation(surface, vs, measured, options.deviationSubdivisions));
+                   trim_detail::geometricDeviation(surface, vs, measured,
+                                                   options.deviationSubdivisions));
   }
   stats.keptTriangles = 0;
   for (const FaceTriangle& t : triangles) (t.gap ? stats.gapTriangles : stats.keptTriangles)++;

@@ -33,6 +33,10 @@ inline EdgeKey edgeKey(uint32_t a, uint32_t b) { return a < b ? EdgeKey(a, b) : 
 // the surface at the same (u, v) mix, the corners' own offsets from the surface included.
 double parametricDeviation(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
                            const std::array<uint32_t, 3>& t, int n);
+// The same samples measured by their distance to the surface (FaceSurface::distance from the
+// same-uv guess, an upper bound).
+double geometricDeviation(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
+                          const std::array<uint32_t, 3>& t, int n);
 
 // The same with every corner moved onto the surface (Pᵢ → S(uvᵢ)): the interpolation error,
 // the part that splitting the triangle reduces. parametric ≤ interpolation + the largest
