@@ -96,3 +96,8 @@ tessera_usage_error("CAD --precision double" "--precision: double: not for CAD m
                     tessellate nofile.step --precision double)
 tessera_usage_error("CAD --metadata" "--metadata: not for CAD models"
                     tessellate nofile.step --metadata)
+# loop/limit --batch-bytes: a byte size as --memory-budget takes.
+foreach(bad 0 12Q -5)
+  tessera_usage_error("loop --batch-bytes ${bad}" "--batch-bytes"
+                      loop ${USAGE_DATA}/loop/ball.obj --batch-bytes ${bad})
+endforeach()

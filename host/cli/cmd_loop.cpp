@@ -5,10 +5,12 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 
 #include "cli/cli_support.h"
 #include "cli/commands.h"
 #include "cli/outputs.h"
+#include "common/memory_budget.h"
 #include "io/errors.h"
 #include "io/gltf_writer.h"
 #include "io/obj_reader.h"
@@ -70,6 +72,7 @@ struct LoopArgs {
   std::string picture;      // join: inputs, placement and result as one PNG
   MeshOutputArgs mesh;      // --precision
   std::string boundary = "corner";  // loop, limit: OpenSubdiv's EDGE_AND_CORNER, or "edge"
+  uint64_t batchBytes = 0;          // loop, limit on Vulkan: 0 is the device's own bound
 };
 
 // Refines on the chosen backend through the stencil tables; with `limit`, the last level's
@@ -105,7 +108,8 @@ int runRefine(const LoopArgs& a) {
     try {
       evaluator =
           chosen.context
-              ? makeVulkanStencilEvaluator(*chosen.context, toFloatStencils(stencils.table), 3)
+              ? makeVulkanStencilEvaluator(*chosen.context, toFloatStencils(stencils.table), 3,
+                                           {a.batchBytes})
               : makeReferenceStencilEvaluator(stencils.table, 3);
       evaluator->apply(floatRows);  // rows past the control vertices change only on success
     } catch (const vk::VulkanError& e) {
@@ -240,6 +244,18 @@ void addLoopCommands(CLI::App& app, int& exitCode) {
                     "VTX_BOUNDARY_EDGE_ONLY, OpenSubdiv's default)")
         ->check(CLI::IsMember({"edge", "corner"}))
         ->capture_default_str();
+    cmd->add_option_function<std::string>(
+           "--batch-bytes",
+           [](const std::string& text) {
+             try {
+               args.batchBytes = parseByteSize(text);
+             } catch (const std::invalid_argument& e) {
+               throw CLI::ValidationError("--batch-bytes", e.what());
+             }
+           },
+           "Vulkan: the largest array the stencils bind at once (e.g. 64K; default: the "
+           "device's storage buffer range); larger tables go in batches of rows")
+        ->type_name("SIZE");
     cmd->callback([&exitCode, limit] {
       args.limit = limit;
       exitCode = runReportingErrors([] { return runRefine(args); }, {args.output});

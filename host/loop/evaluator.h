@@ -30,11 +30,23 @@ std::unique_ptr<StencilEvaluator> makeReferenceStencilEvaluator(const StencilTab
                                                                 uint32_t width);
 std::unique_ptr<StencilEvaluator> makeMirrorStencilEvaluator(const FloatStencilTable& table,
                                                              uint32_t width);
-// Uploads the table to `context`'s device; the context must outlive the evaluator. Throws
-// std::length_error when the rows do not fit one storage buffer binding.
+struct VulkanStencilOptions {
+  // The most bytes one device array may take; 0: the device's own bound, the smaller of
+  // maxStorageBufferRange and maxMemoryAllocationSize (lavapipe: 128 MiB). A table whose four
+  // arrays (offsets, indices, weights, vertex data) all fit is uploaded once and applied in one
+  // submission; a larger one goes in slices of rows that each fit (loop/stencil_slices.h), one
+  // submission per slice, with the same result bit for bit. Smaller values force slicing (the
+  // CLI's --batch-bytes; tests).
+  uint64_t maxArrayBytes = 0;
+};
+
+// Builds on `context`'s device; the context must outlive the evaluator. The table is taken by
+// value: a sliced evaluator keeps it on the host, so pass a temporary (moved, not copied) for a
+// large one. Throws LimitError when one stencil alone does not fit the array bound.
 std::unique_ptr<StencilEvaluator> makeVulkanStencilEvaluator(vk::Context& context,
-                                                             const FloatStencilTable& table,
-                                                             uint32_t width);
+                                                             FloatStencilTable table,
+                                                             uint32_t width,
+                                                             const VulkanStencilOptions& options = {});
 
 // Throws std::invalid_argument unless rows.size() == rowCount × width.
 void checkStencilRows(size_t rowCount, uint32_t width, size_t values);

@@ -61,14 +61,21 @@ DeviceInfo describeDevice(const InstanceTable& vk, VkPhysicalDevice device, uint
   info.maxComputeWorkGroupCountX = props.limits.maxComputeWorkGroupCount[0];
   info.timestampPeriodNs = props.limits.timestampPeriod;
 
-  if (props.apiVersion >= VK_API_VERSION_1_2) {
+  if (props.apiVersion >= VK_API_VERSION_1_1) {
+    VkPhysicalDeviceMaintenance3Properties maintenance3{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
     VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
     VkPhysicalDeviceProperties2 props2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
-    props2.pNext = &driver;
+    props2.pNext = &maintenance3;
+    const bool driverProperties = props.apiVersion >= VK_API_VERSION_1_2;
+    if (driverProperties) maintenance3.pNext = &driver;
     vk.vkGetPhysicalDeviceProperties2(device, &props2);
-    info.driverId = driver.driverID;
-    info.driverName = driver.driverName;
-    info.driverInfo = driver.driverInfo;
+    info.maxMemoryAllocationSize = maintenance3.maxMemoryAllocationSize;
+    if (driverProperties) {
+      info.driverId = driver.driverID;
+      info.driverName = driver.driverName;
+      info.driverInfo = driver.driverInfo;
+    }
   }
 
   if (props.apiVersion < VK_API_VERSION_1_1) {
