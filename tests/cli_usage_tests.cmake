@@ -101,3 +101,16 @@ foreach(bad 0 12Q -5)
   tessera_usage_error("loop --batch-bytes ${bad}" "--batch-bytes"
                       loop ${USAGE_DATA}/loop/ball.obj --batch-bytes ${bad})
 endforeach()
+# join --paste-vertices: the list's form before any input is read, its numbers against the
+# first mesh (92 vertices) after; one paste mode at a time.
+tessera_usage_error("join --paste-vertices 3,x" "--paste-vertices: 'x' is not a vertex number"
+                    join nofile.obj nofile2.obj --paste-vertices 3,x)
+tessera_usage_error("join --paste-vertices 0" "--paste-vertices: vertex '0': OBJ vertex numbers start at 1"
+                    join nofile.obj nofile2.obj --paste-vertices 0)
+tessera_usage_error("join --paste-vertices 93" "--paste-vertices: vertex '93' is past the mesh's 92 vertices"
+                    join ${USAGE_DATA}/loop/ball.obj ${USAGE_DATA}/loop/torus.obj --paste-vertices 93)
+tessera_usage_error("join --paste-vertices 1,2" "--paste-vertices: .*hold no whole triangle"
+                    join ${USAGE_DATA}/loop/ball.obj ${USAGE_DATA}/loop/torus.obj --paste-vertices 1,2)
+tessera_usage_error("join --paste-plane with --paste-vertices" "--paste-plane excludes --paste-vertices"
+                    join ${USAGE_DATA}/loop/ball.obj ${USAGE_DATA}/loop/torus.obj
+                    --paste-plane 1 0 0 1 --paste-vertices 1-5)

@@ -126,3 +126,112 @@ TEST_CASE("Join with 0 refinement levels on either side; levels out of range ref
                         Catch::Contains("levels must be 0.." + std::to_string(kMaxLoopJoinLevels)));
   }
 }
+
+namespace {
+
+// Vertices at least `rings` edges away from `start`: a chosen region whose rim is a zigzag of
+// edges, not a plane cut.
+std::vector<uint32_t> verticesAwayFrom(const LoopShape& s, uint32_t start, uint32_t rings) {
+  const LoopTopology t = buildLoopTopology(s.topology);
+  std::vector<uint32_t> distance(t.vertexCount, kLoopNone), queue{start};
+  distance[start] = 0;
+  for (size_t i = 0; i < queue.size(); ++i)
+    for (uint32_t j = 0; j < t.valence(queue[i]); ++j) {
+      const uint32_t w = t.ring(queue[i])[j];
+      if (distance[w] == kLoopNone) distance[w] = distance[queue[i]] + 1, queue.push_back(w);
+    }
+  std::vector<uint32_t> chosen;
+  for (uint32_t v = 0; v < t.vertexCount; ++v)
+    if (distance[v] >= rings) chosen.push_back(v);
+  return chosen;
+}
+
+bool samePosition(const glm::dvec3& a, const glm::dvec3& b) {
+  return std::memcmp(&a, &b, sizeof(glm::dvec3)) == 0;
+}
+
+}  // namespace
+
+TEST_CASE("Paste by chosen vertices: the part is where the vertices are, joined into a torus",
+          "[loop][join]") {
+  const LoopShape torus = loopTorus(24, 12, 0.0, 1);
+  const LoopShape ball = placed(loopIcosphere(3), {1.5, 0.0, 0.0}, 0.4);
+  // Vertex 7 sits in the torus's tube, off the x axis; the ball less its 3-ring reaches into
+  // the tube with its rim inside it (data/loop/ball.obj is the same mesh: the CLI test uses
+  // this selection).
+  REQUIRE(glm::length(ball.positions[7] - glm::dvec3(1.158, 0.131, 0.161)) < 1e-3);
+  const std::vector<uint32_t> chosen = verticesAwayFrom(ball, 7, 3);
+  REQUIRE(chosen.size() == 74);
+  std::vector<uint8_t> isChosen(ball.positions.size(), 0);
+  for (uint32_t v : chosen) isChosen[v] = 1;
+
+  const LoopShape part = cutByVertices(ball, chosen);
+  const LoopTopology partTopology = buildLoopTopology(part.topology);
+  REQUIRE_FALSE(partTopology.closed());
+  // Every vertex of the part is a chosen vertex, bit for bit; every triangle of the ball with
+  // three chosen corners is in the part.
+  size_t wholeTriangles = 0;
+  for (size_t f = 0; f < ball.topology.triangles.size() / 3; ++f)
+    wholeTriangles += isChosen[ball.topology.triangles[3 * f]] &&
+                      isChosen[ball.topology.triangles[3 * f + 1]] &&
+                      isChosen[ball.topology.triangles[3 * f + 2]];
+  REQUIRE(part.topology.triangles.size() / 3 == wholeTriangles);
+  for (const glm::dvec3& p : part.positions) {
+    bool found = false;
+    for (uint32_t v : chosen) found = found || samePosition(p, ball.positions[v]);
+    REQUIRE(found);
+  }
+
+  const LoopJoinResult r = joinLoopMeshes(part, torus);
+  requireGoodJoin(r, part, torus, 0);  // closed, genus 1, oriented; unfitted vertices kept
+  REQUIRE(r.report.maxDeviation < 0.02);
+  // No vertex of the ball that was not chosen reaches the result.
+  for (uint32_t v = 0; v < ball.positions.size(); ++v)
+    if (!isChosen[v])
+      for (const glm::dvec3& p : r.mesh.positions) REQUIRE_FALSE(samePosition(p, ball.positions[v]));
+  // Most of the part is away from the seam, and there it is the chosen vertices unchanged
+  // (requireGoodJoin compared each bit for bit).
+  size_t keptFromPart = 0;
+  for (uint32_t v = 0; v < r.mesh.positions.size(); ++v)
+    keptFromPart += r.side[v] == 0 && !r.fitted[v];
+  REQUIRE(keptFromPart > part.positions.size() / 3);
+}
+
+TEST_CASE("Paste by chosen vertices: the vertices on one side of a plane give the plane's part",
+          "[loop][join]") {
+  // The plane mode is the special case of a chosen set: the same triangles and positions.
+  const LoopShape ball = placed(loopIcosphere(3), {1.5, 0.0, 0.0}, 0.4);
+  std::vector<uint32_t> chosen;
+  for (uint32_t v = 0; v < ball.positions.size(); ++v)
+    if (ball.positions[v].x >= 1.15) chosen.push_back(v);
+  const LoopShape byVertices = cutByVertices(ball, chosen);
+  const LoopShape byPlane = cutByPlane(ball, {1, 0, 0}, 1.15);
+  REQUIRE(byVertices.topology.triangles == byPlane.topology.triangles);
+  REQUIRE(byVertices.positions.size() == byPlane.positions.size());
+  for (size_t v = 0; v < byPlane.positions.size(); ++v)
+    REQUIRE(samePosition(byVertices.positions[v], byPlane.positions[v]));
+}
+
+TEST_CASE("Paste by chosen vertices: out of range, no whole triangle, two pieces refused",
+          "[loop][join]") {
+  const LoopShape ball = placed(loopIcosphere(3), {1.5, 0.0, 0.0}, 0.4);
+  const uint32_t n = uint32_t(ball.positions.size());
+  REQUIRE_THROWS_WITH(cutByVertices(ball, {0, n}), Catch::Contains("vertex 92 of") &&
+                                                       Catch::Contains("past its 92 vertices"));
+  const uint32_t a = ball.topology.triangles[0], b = ball.topology.triangles[1];
+  REQUIRE_THROWS_WITH(cutByVertices(ball, {a, b}),
+                      Catch::Contains("2 chosen vertices") && Catch::Contains("no whole triangle"));
+  // The 1-rings of two vertices far apart: two separate regions.
+  std::vector<uint32_t> twoRegions;
+  const LoopTopology t = buildLoopTopology(ball.topology);
+  uint32_t far = 0;
+  for (uint32_t v = 0; v < n; ++v)
+    if (glm::length(ball.positions[v] - ball.positions[0]) > glm::length(ball.positions[far] - ball.positions[0]))
+      far = v;
+  for (uint32_t centre : {0u, far}) {
+    twoRegions.push_back(centre);
+    for (uint32_t j = 0; j < t.valence(centre); ++j) twoRegions.push_back(t.ring(centre)[j]);
+  }
+  REQUIRE_THROWS_WITH(cutByVertices(ball, twoRegions),
+                      Catch::Contains("are not one piece") && Catch::Contains("one connected region"));
+}

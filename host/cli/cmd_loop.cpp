@@ -16,6 +16,7 @@
 #include "io/obj_reader.h"
 #include "io/obj_writer.h"
 #include "io/ply_writer.h"
+#include "io/vertex_selection.h"
 #include "loop/evaluator.h"
 #include "loop/join.h"
 #include "loop/limit.h"
@@ -69,6 +70,7 @@ struct LoopArgs {
   int iterations = 100;
   std::optional<int> levelsA, levelsB;  // join; unset: chosen by area (LoopJoinOptions)
   std::vector<double> cut;  // paste: nx ny nz d
+  std::string pasteList, pasteFile;  // paste: chosen vertices, 1-based (io/vertex_selection.h)
   std::string picture;      // join: inputs, placement and result as one PNG
   MeshOutputArgs mesh;      // --precision
   std::string boundary = "corner";  // loop, limit: OpenSubdiv's EDGE_AND_CORNER, or "edge"
@@ -187,12 +189,33 @@ int runFit(const LoopArgs& a) {
 int runJoin(const LoopArgs& a) {
   checkMeshFormat(a.output);
   const MeshWriteOptions writeOptions = meshWriteOptions(a.mesh, a.output);
-  checkOutputs({{"first", a.input}, {"second", a.target}}, {{"-o", a.output}, {"--picture", a.picture}});
+  checkOutputs({{"first", a.input}, {"second", a.target}, {"--paste-vertex-file", a.pasteFile}},
+               {{"-o", a.output}, {"--picture", a.picture}});
   LoopShape first = readControlMesh(a.input);
   const LoopShape second = readControlMesh(a.target);
   if (!a.cut.empty()) {
     if (a.cut.size() != 4) throw CLI::ValidationError("--paste-plane", "needs nx ny nz d");
     first = cutByPlane(first, {a.cut[0], a.cut[1], a.cut[2]}, a.cut[3]);
+  }
+  if (!a.pasteList.empty() || !a.pasteFile.empty()) {
+    const uint32_t count = first.topology.vertexCount;
+    std::vector<uint32_t> chosen;
+    if (!a.pasteFile.empty()) chosen = readVertexSelection(a.pasteFile, count);  // exit 2
+    if (!a.pasteList.empty()) {
+      std::vector<uint32_t> listed;
+      try {
+        listed = parseVertexList(a.pasteList, count);
+      } catch (const std::invalid_argument& e) {  // a number past this mesh: still the option
+        throw CLI::ValidationError("--paste-vertices", e.what());
+      }
+      chosen.insert(chosen.end(), listed.begin(), listed.end());
+    }
+    try {
+      first = cutByVertices(first, chosen);
+    } catch (const std::invalid_argument& e) {  // the selection holds no one region to paste
+      if (a.pasteFile.empty()) throw CLI::ValidationError("--paste-vertices", e.what());
+      throw InputError(InputErrorKind::Topology, a.pasteFile, 0, e.what());
+    }
   }
   LoopJoinOptions options;
   options.levelsA = a.levelsA.value_or(-1);
@@ -288,7 +311,28 @@ void addLoopCommands(CLI::App& app, int& exitCode) {
   join->add_option("--levels-second", args.levelsB,
                    "local refinement levels of the second, " + levelRange + " (default: by area)")
       ->check(CLI::Range(0, kMaxLoopJoinLevels));
-  join->add_option("--paste-plane", args.cut, "paste: keep the first mesh's part where n·x ≥ d (nx ny nz d)")->expected(4);
+  CLI::Option* plane =
+      join->add_option("--paste-plane", args.cut, "paste: keep the first mesh's part where n·x ≥ d (nx ny nz d)")
+          ->expected(4);
+  CLI::Option* listed =
+      join->add_option("--paste-vertices", args.pasteList,
+                       "paste: keep the first mesh's triangles whose corners are all among these "
+                       "1-based OBJ vertex numbers (e.g. 12,15,40-52)")
+          ->check(CLI::Validator(
+              [](std::string& text) {
+                try {
+                  checkVertexList(text);
+                  return std::string();
+                } catch (const std::invalid_argument& e) {
+                  return std::string(e.what());
+                }
+              },
+              "LIST"));
+  CLI::Option* listFile =
+      join->add_option("--paste-vertex-file", args.pasteFile,
+                       "as --paste-vertices, from a file (numbers and ranges, blanks, commas or "
+                       "lines between them, # comments)");
+  plane->excludes(listed)->excludes(listFile);
   join->add_option("--picture", args.picture, "also draw inputs, placement and result (.png, needs Vulkan)");
   join->add_option("--device", args.device, "Vulkan device for --picture (name substring or index)");
   addMeshOutputOptions(join, args.mesh);

@@ -170,4 +170,39 @@ LoopShape cutByPlane(const LoopShape& mesh, const glm::dvec3& normal, double off
   return part;
 }
 
+LoopShape cutByVertices(const LoopShape& mesh, const std::vector<uint32_t>& chosen) {
+  const uint32_t n = mesh.topology.vertexCount;
+  std::vector<uint8_t> isChosen(n, 0);
+  for (uint32_t v : chosen) {
+    if (v >= n)
+      throw std::invalid_argument("paste: vertex " + std::to_string(v) + " of " + mesh.name +
+                                  " is past its " + std::to_string(n) + " vertices");
+    isChosen[v] = 1;
+  }
+  const auto& t = mesh.topology.triangles;
+  std::vector<uint8_t> remove(t.size() / 3, 0);
+  size_t kept = 0;
+  for (uint32_t f = 0; f < remove.size(); ++f) {
+    remove[f] = !(isChosen[t[3 * f]] && isChosen[t[3 * f + 1]] && isChosen[t[3 * f + 2]]);
+    kept += !remove[f];
+  }
+  if (kept == 0)
+    throw std::invalid_argument("paste: the " + std::to_string(chosen.size()) +
+                                " chosen vertices of " + mesh.name +
+                                " hold no whole triangle (a triangle is pasted when all three "
+                                "of its corners are chosen)");
+  std::vector<uint32_t> keptVertex;
+  LoopShape part = removeFaces(mesh, remove, keptVertex, mesh.name);
+  // removeFaces keeps the largest piece (and the larger fan where pieces touch at a vertex):
+  // anything it dropped was a second region the user chose.
+  if (part.topology.triangles.size() / 3 != kept)
+    throw std::invalid_argument(
+        "paste: the " + std::to_string(kept) + " triangles of the chosen vertices of " +
+        mesh.name + " are not one piece (the largest has " +
+        std::to_string(part.topology.triangles.size() / 3) +
+        "; pieces may also touch at a single vertex): choose one connected region");
+  part.name = mesh.name + " part";
+  return part;
+}
+
 }  // namespace tessera

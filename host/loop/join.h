@@ -5,7 +5,7 @@
 // of each side's triangles that cross or lie inside the other; a strip bridging the two boundary
 // loops (loop_bridge.h); Suzuki fitting of the changed vertices and their neighbours back to
 // their own original limit surfaces. Vertices away from the seam keep their positions bit for
-// bit. "Paste" cuts a part off one mesh first (cutByPlane) and joins the rest.
+// bit. "Paste" cuts a part off one mesh first (cutByPlane, cutByVertices) and joins it.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -59,5 +59,14 @@ LoopJoinResult joinLoopMeshes(const LoopShape& a, const LoopShape& b,
 // (faces with every corner on that side; the largest piece). For "paste": the cut part is
 // closed by joining it into another mesh, so its open rim must lie inside the other mesh.
 LoopShape cutByPlane(const LoopShape& mesh, const glm::dvec3& normal, double offset);
+
+// The part of a mesh made of its triangles whose three corners are all in `chosen` (0-based
+// vertex indices, repeats allowed), as an open mesh: the paper's paste (§4, figure 10: a duck's
+// wing cut out and joined to the bunny), the part chosen by the user instead of by a plane.
+// Its rim must lie inside the other mesh, as for cutByPlane. Throws std::invalid_argument
+// naming the mesh when an index is out of range, when no triangle has all three corners
+// chosen, or when the chosen triangles are not one piece (two regions, or regions touching at
+// a single vertex: a join takes one seam per side, so paste them one at a time).
+LoopShape cutByVertices(const LoopShape& mesh, const std::vector<uint32_t>& chosen);
 
 }  // namespace tessera
