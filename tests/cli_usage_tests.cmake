@@ -114,3 +114,12 @@ tessera_usage_error("join --paste-vertices 1,2" "--paste-vertices: .*hold no who
 tessera_usage_error("join --paste-plane with --paste-vertices" "--paste-plane excludes --paste-vertices"
                     join ${USAGE_DATA}/loop/ball.obj ${USAGE_DATA}/loop/torus.obj
                     --paste-plane 1 0 0 1 --paste-vertices 1-5)
+# fit --tolerance (a distance or a percentage; no pixels), --max-rounds 1..10, --max-triangles.
+tessera_usage_error("fit --tolerance 2px" "--tolerance: fit takes a distance or a percentage"
+                    fit nofile.obj nofile2.obj --tolerance 2px)
+tessera_usage_error("fit --tolerance 0" "the tolerance '0' is not a distance > 0"
+                    fit nofile.obj nofile2.obj --tolerance 0)
+tessera_usage_error("fit --max-rounds 0" "--max-rounds: Value 0 not in range 1 to 10"
+                    fit nofile.obj nofile2.obj --max-rounds 0)
+tessera_usage_error("fit --max-triangles 0" "--max-triangles: Value 0 not in range"
+                    fit nofile.obj nofile2.obj --max-triangles 0)

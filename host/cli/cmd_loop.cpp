@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -18,10 +19,12 @@
 #include "io/ply_writer.h"
 #include "io/vertex_selection.h"
 #include "loop/evaluator.h"
+#include "loop/fit_refine.h"
 #include "loop/join.h"
 #include "loop/limit.h"
 #include "render/join_picture.h"
 #include "io/png_writer.h"
+#include "quadtree/tolerance.h"
 #include "vk/context.h"
 #include "loop/stencils.h"
 
@@ -68,6 +71,9 @@ struct LoopArgs {
   bool limit = false;
   double lambda = 1.0, threshold = 0.0;
   int iterations = 100;
+  std::string tolerance = "0.1%";  // fit: ε, model units or a percentage of the target's diagonal
+  int maxRounds = 5;               // fit: rounds of fitting, each after a subdivision but the first
+  size_t maxTriangles = 100000;    // fit: no subdivision past this many control triangles
   std::optional<int> levelsA, levelsB;  // join; unset: chosen by area (LoopJoinOptions)
   std::vector<double> cut;  // paste: nx ny nz d
   std::string pasteList, pasteFile;  // paste: chosen vertices, 1-based (io/vertex_selection.h)
@@ -163,9 +169,23 @@ int runRefine(const LoopArgs& a) {
   return kExitOk;
 }
 
+// The axis-aligned bounding box diagonal of `positions`: what a relative --tolerance refers to.
+double diagonalOf(const std::vector<glm::dvec3>& positions) {
+  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  for (const glm::dvec3& p : positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  return positions.empty() ? 0.0 : glm::length(hi - lo);
+}
+
 int runFit(const LoopArgs& a) {
   checkMeshFormat(a.output);
   const MeshWriteOptions writeOptions = meshWriteOptions(a.mesh, a.output);
+  ToleranceSpec toleranceSpec;
+  checkCommandLine([&] {
+    toleranceSpec = parseTolerance(a.tolerance);
+    if (toleranceSpec.pixels)
+      throw std::invalid_argument("--tolerance: fit takes a distance or a percentage of the "
+                                  "target's diagonal, not pixels ('" + a.tolerance + "')");
+  });
   checkOutputs({{"cage", a.input}, {"target", a.target}}, {{"-o", a.output}});
   LoopShape cage = readControlMesh(a.input);
   const PolygonMesh target = readObj(a.target);
@@ -173,16 +193,46 @@ int runFit(const LoopArgs& a) {
   std::vector<uint32_t> triangles;
   for (const auto& f : target.faces) triangles.insert(triangles.end(), f.begin(), f.end());
   const TriangleBvh bvh(target.positions, triangles);
-  const LoopTopology topology = buildLoopTopology(cage.topology);
-  LoopFitOptions options;
-  options.lambda = a.lambda;
-  options.energyThreshold = a.threshold;
-  options.maxIterations = a.iterations;
-  const LoopFitReport report = fitLoopToSurface(topology, cage.positions, bvh, options);
+  const double diagonal = diagonalOf(target.positions);
+  const double tolerance = toleranceSpec.relative ? toleranceSpec.value * diagonal : toleranceSpec.value;
+  if (!(tolerance > 0))
+    throw InputError(InputErrorKind::Topology, a.target, 0,
+                     "all the target's points are the same, so a relative --tolerance is 0");
+  LoopRefiningFitOptions options;
+  options.fit.lambda = a.lambda;
+  options.fit.energyThreshold = a.threshold;
+  options.fit.maxIterations = a.iterations;
+  options.tolerance = tolerance;
+  options.maxRounds = a.maxRounds;
+  options.maxTriangles = a.maxTriangles;
+  const size_t trianglesIn = cage.topology.triangles.size() / 3;
+  const LoopRefiningFitReport report = fitLoopRefining(cage, bvh, options);
   writeMesh(a.output, loopMesh(cage.positions, cage.topology.triangles, {}), "", writeOptions);
-  std::printf("fit %s to %s: E %.6g -> %.6g in %d steps, max |p_inf - q| %.6g: wrote %s\n",
-              a.input.c_str(), a.target.c_str(), report.energy.front(), report.energy.back(),
-              report.iterations, report.maxDistance, a.output.c_str());
+  const std::string tol = describeTolerance(toleranceSpec, tolerance);
+  for (size_t i = 0; i < report.rounds.size(); ++i) {
+    const LoopFitRound& r = report.rounds[i];
+    std::printf("round %zu: %zu triangles, E %.6g -> %.6g in %d steps, max |p_inf - q| %.6g, "
+                "limit surface within %.6g of the target\n",
+                i + 1, r.triangles, r.fit.energy.front(), r.fit.energy.back(), r.fit.iterations,
+                r.fit.maxDistance, r.distance);
+  }
+  // Stopped by a bound with the surface still too far: written, but said (exit 0).
+  if (!report.reached) {
+    std::fflush(stdout);  // after the rounds it sums up
+    const bool byRounds = report.stoppedBy == "rounds";
+    std::fprintf(stderr,
+                 "tessera: warning: the fit stopped at the bound of %s with the limit surface "
+                 "%.6g from the target, above the tolerance %s (raise %s or the tolerance)\n",
+                 byRounds ? (std::to_string(a.maxRounds) + " rounds").c_str()
+                          : (std::to_string(a.maxTriangles) + " control triangles").c_str(),
+                 report.distance, tol.c_str(), byRounds ? "--max-rounds" : "--max-triangles");
+  }
+  std::printf("fit %s to %s: %zu %s, %zu -> %zu triangles, limit surface within %.6g of the "
+              "target (tolerance %s%s): wrote %s\n",
+              a.input.c_str(), a.target.c_str(), report.rounds.size(),
+              report.rounds.size() == 1 ? "round" : "rounds", trianglesIn,
+              cage.topology.triangles.size() / 3, report.distance, tol.c_str(),
+              report.reached ? "" : ", not reached", a.output.c_str());
   return kExitOk;
 }
 
@@ -297,7 +347,18 @@ void addLoopCommands(CLI::App& app, int& exitCode) {
           ""));
   fit->add_option("--threshold", args.threshold, "stop when E = Σ|p∞ − q|² is below this (≥ 0)")
       ->check(CLI::NonNegativeNumber);
-  fit->add_option("--iterations", args.iterations, "at most this many steps")->check(CLI::Range(1, 100000));
+  fit->add_option("--iterations", args.iterations, "at most this many steps per round")->check(CLI::Range(1, 100000));
+  fit->add_option("--tolerance", args.tolerance,
+                  "refine and fit again until the limit surface is within this of the target: "
+                  "a distance or a percentage of the target's diagonal")
+      ->capture_default_str();
+  fit->add_option("--max-rounds", args.maxRounds, "fitting rounds at most (1: fit once, no subdivision)")
+      ->check(CLI::Range(1, 10))
+      ->capture_default_str();
+  fit->add_option("--max-triangles", args.maxTriangles,
+                  "no subdivision past this many control triangles")
+      ->check(CLI::Range(size_t(1), size_t(100000000)))
+      ->capture_default_str();
   addMeshOutputOptions(fit, args.mesh);
   fit->callback([&exitCode] { exitCode = runReportingErrors([] { return runFit(args); }, {args.output}); });
   CLI::App* join = app.add_subcommand("join", "Join two closed Loop control meshes by local refinement");
