@@ -8,6 +8,7 @@
 
 #include "io/errors.h"
 #include "io/vertex_selection.h"
+#include "input_error_checks.h"
 
 using namespace tessera;
 
@@ -16,20 +17,6 @@ namespace {
 std::vector<uint32_t> parse(const std::string& text, uint32_t count = 10) {
   std::istringstream in(text);
   return parseVertexSelection(in, "sel.txt", count);
-}
-
-void requireRefused(const std::string& text, InputErrorKind kind, int line,
-                    const std::string& reason) {
-  INFO(text);
-  try {
-    parse(text);
-    FAIL("accepted");
-  } catch (const InputError& e) {
-    REQUIRE(e.kind() == kind);
-    REQUIRE(e.file() == "sel.txt");
-    REQUIRE(e.line() == line);
-    REQUIRE_THAT(e.reason(), Catch::Contains(reason));
-  }
 }
 
 }  // namespace
@@ -43,16 +30,26 @@ TEST_CASE("Vertex selection files: numbers, ranges, commas, comments; 0-based, s
 }
 
 TEST_CASE("Vertex selection files: bad tokens name the file, line and reason", "[io][loop]") {
-  requireRefused("1 2\n3 x\n", InputErrorKind::Syntax, 2, "'x' is not a vertex number");
-  requireRefused("1.5", InputErrorKind::Syntax, 1, "'1.5' is not a vertex number");
-  requireRefused("1\n0\n", InputErrorKind::Range, 2, "vertex '0': OBJ vertex numbers start at 1");
-  requireRefused("-3", InputErrorKind::Range, 1, "OBJ vertex numbers start at 1");
-  requireRefused("4\n\n2-11", InputErrorKind::Range, 3, "vertex '11' is past the mesh's 10 vertices");
-  requireRefused("99999999999999999999", InputErrorKind::Range, 1, "is past the mesh's 10 vertices");
-  requireRefused("7-3", InputErrorKind::Range, 1, "the range '7-3' runs backwards");
-  requireRefused("3-", InputErrorKind::Syntax, 1, "'3-' is not a vertex number");
-  requireRefused("# nothing\n", InputErrorKind::Count, 0, "names no vertex");
-  REQUIRE_THROWS_AS(readVertexSelection("/nonexistent/sel.txt", 10), InputError);
+  const auto read = [](const std::string& text, const std::string& name) {
+    std::istringstream in(text);
+    parseVertexSelection(in, name, 10);
+  };
+  test::checkBadTexts(
+      {{"letter.txt", "1 2\n3 x\n", InputErrorKind::Syntax, 2, "'x' is not a vertex number"},
+       {"fraction.txt", "1.5", InputErrorKind::Syntax, 1, "'1.5' is not a vertex number"},
+       {"zero.txt", "1\n0\n", InputErrorKind::Range, 2, "vertex '0': OBJ vertex numbers start at 1"},
+       {"negative.txt", "-3", InputErrorKind::Range, 1, "OBJ vertex numbers start at 1"},
+       {"past.txt", "4\n\n2-11", InputErrorKind::Range, 3, "vertex '11' is past the mesh's 10 vertices"},
+       {"huge.txt", "99999999999999999999", InputErrorKind::Range, 1, "is past the mesh's 10 vertices"},
+       {"backwards.txt", "7-3", InputErrorKind::Range, 1, "the range '7-3' runs backwards"},
+       {"open_range.txt", "3-", InputErrorKind::Syntax, 1, "'3-' is not a vertex number"}},
+      read);
+  // No line to name: "<file>: <reason>".
+  const InputError empty = test::inputErrorOf([&] { read("# nothing\n", "empty.txt"); }, "empty");
+  REQUIRE(empty.kind() == InputErrorKind::Count);
+  REQUIRE(std::string(empty.what()) == "empty.txt: names no vertex (expected 1-based vertex numbers)");
+  REQUIRE(test::inputErrorOf([] { readVertexSelection("/nonexistent/sel.txt", 10); }, "missing")
+              .kind() == InputErrorKind::Io);
 }
 
 TEST_CASE("Vertex lists on the command line: the same rules, as std::invalid_argument",
