@@ -24,6 +24,9 @@ TEST_CASE("a Vulkan context comes up with validation layers on", "[gpu][vk]") {
   REQUIRE(context.device() != VK_NULL_HANDLE);
   REQUIRE(context.info().usable);
   REQUIRE(context.info().maxStorageBufferRange >= (1u << 27));  // 128 MiB on lavapipe
+  // Vulkan 1.1's maintenance3 limit, which bounds one allocation (2 GiB on lavapipe); the
+  // Loop stencil evaluator splits its arrays by it (host/loop/evaluator.h).
+  REQUIRE(context.info().maxMemoryAllocationSize >= (1u << 27));
   test::requireValidationClean();
 }
 
