@@ -146,5 +146,17 @@ TEST_CASE("Loop stencils on Vulkan: a table past the array bound goes in slices,
     REQUIRE(r.worstVsMirror <= 1e-6 * r.largest);
     REQUIRE(r.worstVsDouble <= 2e-6 * r.largest);
   }
+  // Level 0: no stencils, but control rows past the bound: nothing to run, rows kept.
+  LoopStencilOptions none;
+  none.levels = 0;
+  const LoopShape ball = loopIcosphere(2);
+  const FloatStencilTable empty =
+      toFloatStencils(buildLoopStencils(buildLoopTopology(ball.topology), none).table);
+  REQUIRE(empty.stencilCount() == 0);
+  const auto evaluator = makeVulkanStencilEvaluator(context, empty, 3, {64});
+  REQUIRE(evaluator->name().find(" in 0 batches") != std::string::npos);
+  std::vector<float> rows(empty.rowCount() * 3, 0.5f);
+  evaluator->apply(rows);
+  REQUIRE(rows == std::vector<float>(empty.rowCount() * 3, 0.5f));
   test::requireValidationClean();
 }

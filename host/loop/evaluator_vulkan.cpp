@@ -69,6 +69,7 @@ class VulkanStencilEvaluator final : public StencilEvaluator {
       values_ = makeBuffer(context, valueBytes, vk::BufferUse::Readback);
       return;
     }
+    sliced_ = true;
     slices_ = planStencilSlices(table, width, limit);
     uint64_t stencils = 0, entries = 0, rows = 0;
     for (const StencilSlice& s : slices_) {
@@ -85,15 +86,15 @@ class VulkanStencilEvaluator final : public StencilEvaluator {
 
   std::string name() const override {
     const std::string device = "vulkan:" + context_.info().name;
-    return slices_.empty() ? device : device + " in " + std::to_string(slices_.size()) + " batches";
+    return sliced_ ? device + " in " + std::to_string(slices_.size()) + " batches" : device;
   }
 
   void apply(std::vector<float>& rows) override {
     checkStencilRows(tableRows_, width_, rows.size());
-    if (slices_.empty())
-      applyWhole(rows);
-    else
+    if (sliced_)
       applySliced(rows);
+    else
+      applyWhole(rows);
   }
 
   double lastDeviceSeconds() const override { return lastDeviceSeconds_; }
@@ -158,7 +159,8 @@ class VulkanStencilEvaluator final : public StencilEvaluator {
   uint32_t sourceRows_;
   uint32_t width_;
   std::vector<uint32_t> batchEnds_;     // whole: the table's batches
-  std::vector<StencilSlice> slices_;    // sliced: the plan (empty when whole)
+  bool sliced_ = false;                 // a table past the array bound: in slices
+  std::vector<StencilSlice> slices_;    // sliced: the plan (none for a table of no stencils)
   FloatStencilTable table_;             // sliced: the host copy the slices are gathered from
   vk::Buffer offsets_, indices_, weights_, values_;
   double lastDeviceSeconds_ = 0.0;
