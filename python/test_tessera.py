@@ -47,10 +47,11 @@ weights[:, 1, 1] = 2.0
 coarse = t.tessellate_to_tolerance(points, 0.05, weights=weights)
 fine = t.tessellate_to_tolerance(points, 0.005, weights=weights)
 assert 0 < coarse.indices.shape[0] < fine.indices.shape[0]
-# The uniform grids by name; a relative tolerance is of the diagonal of the control points'
-# bounding box (the teapot's box, from the points themselves).
+# The uniform grids by name: sized by the whole patch's rational bound, they spend more than the
+# tree at the same tolerance (31,125 against 4,447 triangles). A relative tolerance is of the
+# diagonal of the control points' bounding box (the teapot's box, from the points themselves).
 uniform = t.tessellate_to_tolerance(points, 0.05, weights=weights, method="uniform")
-assert 0 < uniform.indices.shape[0] <= fine.indices.shape[0]
+assert 0 < coarse.indices.shape[0] < uniform.indices.shape[0]
 diagonal = float(np.linalg.norm(points.reshape(-1, 3).max(0) - points.reshape(-1, 3).min(0)))
 assert abs(tessera.relative_tolerance(points, 0.001) - 0.001 * diagonal) <= 1e-12 * diagonal
 

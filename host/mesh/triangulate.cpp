@@ -6,6 +6,7 @@
 #include <map>
 #include <unordered_map>
 
+#include "mesh/ring_triangulation.h"
 #include "mesh/shared_edges.h"
 #include "mesh/side_fold.h"
 
@@ -312,6 +313,37 @@ class Triangulator {
     return changed;
   }
 
+  // Rule T's leaves: its bound holds for any triangle with corners in the leaf's rectangle
+  // (docs/quadtree.md, "Rule T: tolerance"), so their rings need no centre vertex. Rules A–D
+  // (and rule T's MaxDepth / MinSize leaves, which share their causes) keep the fan.
+  static bool provenAnyTriangulation(uint32_t cause) {
+    return cause == gpu::kCauseWithinTolerance || cause == gpu::kCauseCulled ||
+           cause == gpu::kCauseEyePlane;
+  }
+
+  // The ring as n − 2 triangles without a new vertex (ring_triangulation.h). Only where every
+  // vertex is met once, or twice in a row (a collapsed side's two corners, whose triangle
+  // collapses and is dropped as in the fan): otherwise the fan, whose triangles each hold one
+  // ring edge, is kept.
+  bool triangulateRing(uint32_t patch, const gpu::vec4& r) {
+    const size_t n = ring_.size();
+    ringUv_.resize(n);
+    ringIndex_.resize(n);
+    for (size_t k = 0; k < n; ++k) {
+      ringUv_[k] = ring_[k].uv;
+      ringIndex_[k] = ring_[k].index;
+    }
+    std::sort(ringIndex_.begin(), ringIndex_.end());
+    const size_t distinct =
+        size_t(std::unique(ringIndex_.begin(), ringIndex_.end()) - ringIndex_.begin());
+    size_t repeats = 0;
+    for (size_t k = 0; k < n; ++k) repeats += ring_[k].index == ring_[(k + 1) % n].index;
+    if (distinct + repeats != n) return false;
+    if (!triangulateRectangleRing(ringUv_, {r.x, r.y}, {r.z, r.w}, ringTriangles_)) return false;
+    for (const auto& t : ringTriangles_) emit(patch, ring_[t[0]], ring_[t[1]], ring_[t[2]]);
+    return true;
+  }
+
   void triangulateLeaf(const QuadLeaf& leaf) {
     const uint32_t p = leaf.patchIndex;
     const gpu::vec4& r = leaf.rect;
@@ -335,6 +367,7 @@ class Triangulator {
       emit(p, ring_[0], ring_[2], ring_[3]);
       return;
     }
+    if (!folded && provenAnyTriangulation(leaf.cause) && triangulateRing(p, r)) return;
     float us = leaf.split.x, vs = leaf.split.y;
     if (!(us > r.x && us < r.z && vs > r.y && vs < r.w)) {
       us = 0.5f * (r.x + r.z);
@@ -356,6 +389,9 @@ class Triangulator {
   std::unordered_map<VertexKey, uint32_t, VertexKeyHash> index_;
   ParamMesh mesh_;
   std::vector<RingVertex> ring_;
+  std::vector<glm::vec2> ringUv_;
+  std::vector<uint32_t> ringIndex_;
+  std::vector<std::array<uint32_t, 3>> ringTriangles_;
   std::vector<float> scratch_;
 };
 

@@ -1,7 +1,9 @@
 // Quad-tree leaves → a watertight triangle mesh (docs/watertight.md).
 // - Inside a patch: every leaf corner is a vertex, and a leaf whose edges carry corners of
 //   finer neighbours is fanned from its split point (an interior point, so the fan is valid),
-//   a leaf with only its 4 corners becomes 2 triangles. Both sides of every edge between
+//   a leaf with only its 4 corners becomes 2 triangles. A rule-T leaf's ring of n vertices
+//   becomes n − 2 triangles without a new vertex (ring_triangulation.h): its bound holds for
+//   any triangulation of the leaf. Both sides of every edge between
 //   leaves use the same vertices: no cracks, no T-junctions.
 // - Across patches: a boundary shared by two patches (same control points, either direction;
 //   shared_edges.h) carries the union of both sides' vertices, identified by the canonical

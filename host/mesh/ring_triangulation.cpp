@@ -1,0 +1,92 @@
+#include "mesh/ring_triangulation.h"
+
+#include <limits>
+
+namespace tessera {
+namespace {
+
+// Which sides of the rectangle a point lies on: bit 0 v = lo.y, 1 u = hi.x, 2 v = hi.y,
+// 3 u = lo.x (a corner has two); 0 when it is off the boundary. Exact comparisons: the
+// triangulator places every ring point with one coordinate copied from the leaf's rectangle.
+uint32_t sidesOf(glm::vec2 p, glm::vec2 lo, glm::vec2 hi) {
+  if (!(p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y)) return 0;
+  return (p.y == lo.y ? 1u : 0u) | (p.x == hi.x ? 2u : 0u) | (p.y == hi.y ? 4u : 0u) |
+         (p.x == lo.x ? 8u : 0u);
+}
+
+// Position along the boundary, counter-clockwise from corner lo: 0..1 bottom, 1..2 right,
+// 2..3 top, 3..4 left, in unit-square coordinates.
+double boundaryPosition(glm::dvec2 s, uint32_t sides) {
+  if ((sides & 1u) && s.x < 1.0) return s.x;
+  if ((sides & 2u) && s.y < 1.0) return 1.0 + s.y;
+  if ((sides & 4u) && s.x > 0.0) return 3.0 - s.x;
+  return s.y > 0.0 ? 4.0 - s.y : 0.0;
+}
+
+}  // namespace
+
+bool triangulateRectangleRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, glm::vec2 hi,
+                              std::vector<std::array<uint32_t, 3>>& triangles) {
+  triangles.clear();
+  const size_t n = ring.size();
+  if (n < 3 || !(lo.x < hi.x && lo.y < hi.y)) return false;
+  const glm::dvec2 origin(lo), size = glm::dvec2(hi) - glm::dvec2(lo);
+  std::vector<uint32_t> sides(n);
+  std::vector<glm::dvec2> local(n);
+  uint32_t descents = 0;  // a counter-clockwise ring of distinct points wraps around once
+  for (size_t i = 0; i < n; ++i) {
+    sides[i] = sidesOf(ring[i], lo, hi);
+    if (sides[i] == 0) return false;
+    local[i] = (glm::dvec2(ring[i]) - origin) / size;
+  }
+  for (size_t i = 0; i < n; ++i) {
+    const size_t j = (i + 1) % n;
+    if (boundaryPosition(local[j], sides[j]) <= boundaryPosition(local[i], sides[i])) ++descents;
+  }
+  if (descents != 1) return false;
+
+  std::vector<uint32_t> prev(n), next(n);
+  std::vector<bool> alive(n, true);
+  uint32_t onSide[4] = {0, 0, 0, 0};  // points left on each side
+  for (size_t i = 0; i < n; ++i) {
+    prev[i] = uint32_t((i + n - 1) % n);
+    next[i] = uint32_t((i + 1) % n);
+    for (int s = 0; s < 4; ++s) onSide[s] += (sides[i] >> s) & 1u;
+  }
+  for (int s = 0; s < 4; ++s)
+    if (onSide[s] == n) return false;  // the whole ring on one side: nothing to cover
+  triangles.reserve(n - 2);
+  for (size_t left = n; left > 3; --left) {
+    size_t best = n;
+    double shortest = std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < n; ++i) {
+      if (!alive[i]) continue;
+      const uint32_t a = prev[i], c = next[i];
+      if (sides[a] & sides[i] & sides[c]) continue;  // collinear: zero area
+      bool leftoverFlat = false;                     // the other left − 1 points all on one side
+      for (int s = 0; s < 4; ++s)
+        leftoverFlat = leftoverFlat || onSide[s] - ((sides[i] >> s) & 1u) == left - 1;
+      if (leftoverFlat) continue;
+      const glm::dvec2 d = local[c] - local[a];
+      const double length2 = glm::dot(d, d);
+      if (length2 < shortest) shortest = length2, best = i;
+    }
+    // A convex ring not on one line always has an ear: a corner off the line of the others,
+    // or, when all others are on one line, that line's end next to it.
+    if (best == n) return triangles.clear(), false;
+    const uint32_t a = prev[best], c = next[best];
+    triangles.push_back({a, uint32_t(best), c});
+    alive[best] = false;
+    next[a] = c;
+    prev[c] = a;
+    for (int s = 0; s < 4; ++s) onSide[s] -= (sides[best] >> s) & 1u;
+  }
+  for (uint32_t i = 0; i < n; ++i)
+    if (alive[i]) {
+      triangles.push_back({prev[i], i, next[i]});
+      break;
+    }
+  return true;
+}
+
+}  // namespace tessera

@@ -1,0 +1,30 @@
+// A rule-T leaf's ring without a centre vertex (issue 15). The ring is the leaf's four corners
+// and the vertices its finer neighbours (and shared patch sides) put on its sides, counter-
+// clockwise. Rule T's bound holds for every triangle whose corners lie in the leaf's rectangle
+// (docs/quadtree.md, "Rule T: tolerance"), so the ring of n vertices needs only n − 2
+// triangles, where the fan around a centre vertex spends n.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace tessera {
+
+// Triangulates the polygon `ring` (points on the boundary of the rectangle lo..hi, counter-
+// clockwise, each with a coordinate exactly lo or hi) into ring.size() − 2 counter-clockwise
+// triangles (indices into ring) that cover the polygon exactly (the rectangle, when the ring
+// holds its four corners as a leaf's does), with no vertex added and no triangle of zero
+// area: none has its three corners on one side of the rectangle (points on a side are
+// collinear). Ear clipping on the convex ring: an ear is a corner with its two ring
+// neighbours, refused when the three lie on one side or when the ring left over would lie on
+// one side; among the others the one whose new edge is shortest in the leaf's own unit-square
+// coordinates goes first (ties: first in ring order), which keeps triangles compact.
+// Returns false, with `triangles` empty, when a point is off the boundary, the points are not
+// distinct and counter-clockwise, or they are fewer than 3 or all on one side (the caller then
+// keeps its fan).
+bool triangulateRectangleRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, glm::vec2 hi,
+                              std::vector<std::array<uint32_t, 3>>& triangles);
+
+}  // namespace tessera
