@@ -83,7 +83,7 @@ struct QuadLeaf {
                    // the quadrant (0: u-low v-low, 1: u-high v-low, 2: u-low v-high, 3: both high)
   float linearity;  // rule T: A/(A + B), the u share of the bound (tolerance_bound.h)
   float flatness;   // rule T: the node's proven deviation bound (model units)
-  gpu::vec2 split;  // (us, vs) the classification chose (rule T: the centre, the fan apex)
+  gpu::vec2 split;  // (us, vs) the classification chose (rule T: the centre, a fallback fan apex)
 };
 
 

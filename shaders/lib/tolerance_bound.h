@@ -272,8 +272,8 @@ uint toleranceGridCounts(vec4 bounds, float tolerance, uint cap) {
 }
 
 // The decision of rule T from the node's (M_ss, M_st, M_tt, rounding guard). With
-// A = M_ss + M_st and B = M_tt + M_st, every triangle the leaf can emit (its two triangles, or
-// a fan from its centre) is within (A + B)/8 of the surface (docs/quadtree.md). Not within
+// A = M_ss + M_st and B = M_tt + M_st, every triangle with its corners in the leaf (its two
+// triangles, its ring's triangles, a fan) is within (A + B)/8 of the surface (docs/quadtree.md). Not within
 // δ: k_u × k_v equal children where counts within the cap reach δ (toleranceGridCounts);
 // else split at the midpoint along u where A ≥ B/2, v where B ≥ A/2 (both when neither
 // holds: a NaN bound).
