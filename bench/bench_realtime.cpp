@@ -4,8 +4,9 @@
 // pattern on Vulkan) with the
 // buffers kept between frames. Frames/s, triangles per frame, the split of a frame's time, and
 // the screen-space error of sampled frames against the double surface (must be ≤ the
-// tolerance). The tessellation-shader peer (case 6) runs the same path in the same run, and so
-// does the second mode: rule T's adaptive tree in pixels (mesh/screen_tolerance.h) on Vulkan,
+// tolerance). The tessellation-shader peer (case 6) runs the same path in the same run (its
+// screen error measured on the same sampled frames from its captured triangles), and so does
+// the second mode: rule T's adaptive tree in pixels (mesh/screen_tolerance.h) on Vulkan,
 // from scratch on every `treeStride`-th frame of the path (it is far slower per frame).
 // Tessera runs as an engine embeds it (docs/realtime.md, "Recording a frame into an engine"):
 // the bench's context plays the engine (its instance, device, queue, command buffers and
@@ -172,7 +173,8 @@ int main(int argc, char** argv) {
   // The peer on the same path (case 6), for the ratio in one run.
   std::vector<double> peerSeconds;
   double peerTriangles = 0, peerTotal = 0;
-  bool peerCounts = false;
+  bool peerCounts = false, peerMeasured = false;
+  ScreenErrorReport peerError;
   if (context.enabledFeatures().tessellationShader) {
     TessShaderPeer peer(context, toGpuPatches(patches),
                         {1920, 1080, float(tolerance), 64.0f});
@@ -185,6 +187,19 @@ int main(int argc, char** argv) {
     }
     peerTotal = peerStopwatch.elapsedSeconds();
     peerCounts = peer.countsTriangles();
+    // Its screen error on the same sampled frames, outside the timing: the triangles recorded
+    // by a capture pipeline (a geometry stage) measured by the same code as Tessera's.
+    if (peer.capturesTriangles())
+      for (int f : sampled) {
+        const ScreenErrorReport e =
+            measureScreenError(peer.captureFrame(path.peerMatrix(f)), patches, path.camera(f), 2);
+        peerError.maxAffinePixels = std::max(peerError.maxAffinePixels, e.maxAffinePixels);
+        peerError.maxPerspectivePixels =
+            std::max(peerError.maxPerspectivePixels, e.maxPerspectivePixels);
+        peerError.triangles += e.triangles;
+        peerError.samples += e.samples;
+        peerMeasured = true;
+      }
   }
 
   // The second mode: rule T in pixels, the adaptive tree (a dispatch per level) on Vulkan, the
@@ -266,7 +281,12 @@ int main(int argc, char** argv) {
     bench::Case peer{"Vulkan tessellation shaders, max factor 64 (case 6)", double(frames),
                      timingOf(peerSeconds)};
     peer.throughput = frames / peerTotal;
-    peer.extra = {{"trianglesPerFrame", peerCounts ? peerTriangles / n : -1.0}};
+    peer.extra = {{"trianglesPerFrame", peerCounts ? peerTriangles / n : -1.0},
+                  {"sampledFrames", sampled},
+                  {"maxScreenErrorPixelsAffine", peerMeasured ? peerError.maxAffinePixels : -1.0},
+                  {"maxScreenErrorPixelsPerspective",
+                   peerMeasured ? peerError.maxPerspectivePixels : -1.0},
+                  {"measuredTriangles", peerError.triangles}};
     table.cases.push_back(peer);
   }
   bench::Case tree{
@@ -299,9 +319,18 @@ int main(int argc, char** argv) {
   std::printf("screen-space error over %zu sampled frames (%zu triangles): max %.3f px affine "
               "(what the counts bound), %.3f px perspective-correct; tolerance %.2g px\n",
               sampled.size(), measuredTriangles, maxAffine, maxPerspective, tolerance);
-  if (!peerSeconds.empty())
+  if (!peerSeconds.empty()) {
     std::printf("tessellation shaders on the same path: %.1f frames/s, %.0f triangles per frame\n",
                 frames / peerTotal, peerCounts ? peerTriangles / n : -1.0);
+    if (peerMeasured)
+      std::printf("their screen-space error over the same %zu frames (%zu triangles): max %.3f px "
+                  "affine, %.3f px perspective-correct\n",
+                  sampled.size(), peerError.triangles, peerError.maxAffinePixels,
+                  peerError.maxPerspectivePixels);
+    else
+      std::printf("their screen-space error: not measured (no geometry-stage stores on %s)\n",
+                  context.info().name.c_str());
+  }
   std::printf(
       "rule T tree in pixels (every %dth frame, %zu frames): %.2f frames/s, %.0f triangles "
       "per frame (%.2fx the grids'); per frame %.1f ms tree (%.1f ms GPU dispatches, %.1f ms "

@@ -266,6 +266,16 @@ struct TessPeerPush {
   vec4 params;             // viewport width, height (pixels), tolerance (pixels), max factor
 };
 
+// One triangle of the peer as its capture pipeline records it (tess_peer_capture.geom.glsl):
+// the corners' world positions (w unused), their (u, v) on patch `patchIndex`. 80 bytes.
+struct TessPeerTriangle {
+  vec4 corners[3];
+  vec4 uv01;  // (u0, v0, u1, v1)
+  vec2 uv2;
+  uint patchIndex;
+  uint pad;
+};
+
 
 // ---- Nodes against trim loops (shaders/trim_classify.comp.glsl, shaders/lib/trim_classify.h,
 // host/trim/trim_classifier.h; docs/trimmed_faces.md, "Classifying nodes against trim loops") ----

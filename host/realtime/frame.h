@@ -127,5 +127,11 @@ ScreenErrorReport measureScreenError(const RealtimeFrame& frame,
 ScreenErrorReport measureScreenError(const Tessellation& tessellation,
                                      const std::vector<BezierPatch>& patches,
                                      const Camera& camera, int subdivisions = 2);
+// The same for the tessellation-shader peer's triangles as its capture pipeline records them
+// (TessShaderPeer::captureFrame, host/realtime/tess_shader_peer.h): world corners from its
+// fp32 evaluation stage, (u, v) from its tessellator.
+ScreenErrorReport measureScreenError(const std::vector<gpu::TessPeerTriangle>& peerTriangles,
+                                     const std::vector<BezierPatch>& patches,
+                                     const Camera& camera, int subdivisions = 2);
 
 }  // namespace tessera

@@ -1,5 +1,6 @@
-// Screen-space error of a real-time frame (measureScreenError, realtime_frame.h): triangle
-// samples against the double-precision surface, both projected to pixels.
+// Screen-space error of a real-time frame, a rule-T mesh or the peer's captured triangles
+// (measureScreenError, frame.h): triangle samples against the double-precision surface, both
+// projected to pixels.
 #include <algorithm>
 #include <array>
 
@@ -91,6 +92,23 @@ ScreenErrorReport measureScreenError(const Tessellation& t, const std::vector<Be
       c[size_t(k)] = Corner{world, glm::dvec2(t.cornerUv[3 * tri + k]), project(camera, world)};
     }
     measureTriangle(c, patches[t.trianglePatch[tri]], camera, n, report);
+  }
+  return report;
+}
+
+ScreenErrorReport measureScreenError(const std::vector<gpu::TessPeerTriangle>& peerTriangles,
+                                     const std::vector<BezierPatch>& patches,
+                                     const Camera& camera, int subdivisions) {
+  ScreenErrorReport report;
+  const int n = std::max(1, subdivisions);
+  for (const gpu::TessPeerTriangle& t : peerTriangles) {
+    const glm::dvec2 uv[3] = {{t.uv01.x, t.uv01.y}, {t.uv01.z, t.uv01.w}, {t.uv2.x, t.uv2.y}};
+    std::array<Corner, 3> c;
+    for (int k = 0; k < 3; ++k) {
+      const glm::dvec3 world(glm::vec3(t.corners[k]));
+      c[size_t(k)] = Corner{world, uv[k], project(camera, world)};
+    }
+    measureTriangle(c, patches.at(t.patchIndex), camera, n, report);
   }
   return report;
 }

@@ -38,6 +38,14 @@ class TessShaderPeer {
   uint64_t drawFrame(const glm::mat4& viewProjection);
   bool countsTriangles() const;
 
+  // Draws one frame as drawFrame does, through a pipeline with a geometry stage that records
+  // every triangle the tessellator made (before clipping): world corners, their (u, v) and
+  // the patch. For measuring the peer's screen error; needs the geometryShader and
+  // vertexPipelineStoresAndAtomics features (capturesTriangles()), else throws
+  // VulkanUnavailable. Not for timing: the extra stage and writes cost.
+  std::vector<gpu::TessPeerTriangle> captureFrame(const glm::mat4& viewProjection);
+  bool capturesTriangles() const;
+
   struct Objects;  // the Vulkan objects, defined in the .cpp
 
  private:

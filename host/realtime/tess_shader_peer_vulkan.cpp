@@ -5,6 +5,8 @@
 
 #include "realtime/tess_shader_peer.h"
 
+#include "tess_peer_capture_geom.h"
+#include "tess_peer_capture_tese.h"
 #include "tess_peer_frag.h"
 #include "tess_peer_tesc.h"
 #include "tess_peer_tese.h"
@@ -14,6 +16,8 @@
 #include "vk/graphics.h"
 #include "vk/loader.h"
 
+#include <algorithm>
+
 namespace tessera {
 
 struct TessShaderPeer::Objects {
@@ -22,9 +26,11 @@ struct TessShaderPeer::Objects {
     const vk::DeviceTable& vk = context.vk();
     VkDevice device = context.device();
     if (query) vk.vkDestroyQueryPool(device, query, nullptr);
-    if (pipeline) vk.vkDestroyPipeline(device, pipeline, nullptr);
-    if (layout) vk.vkDestroyPipelineLayout(device, layout, nullptr);
-    if (setLayout) vk.vkDestroyDescriptorSetLayout(device, setLayout, nullptr);
+    for (Pipeline* p : {&draw, &capture}) {
+      if (p->pipeline) vk.vkDestroyPipeline(device, p->pipeline, nullptr);
+      if (p->layout) vk.vkDestroyPipelineLayout(device, p->layout, nullptr);
+      if (p->setLayout) vk.vkDestroyDescriptorSetLayout(device, p->setLayout, nullptr);
+    }
     if (framebuffer) vk.vkDestroyFramebuffer(device, framebuffer, nullptr);
     if (renderPass) vk.vkDestroyRenderPass(device, renderPass, nullptr);
   }
@@ -35,9 +41,14 @@ struct TessShaderPeer::Objects {
   vk::Image colour, depth;
   VkRenderPass renderPass = VK_NULL_HANDLE;
   VkFramebuffer framebuffer = VK_NULL_HANDLE;
-  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-  VkPipelineLayout layout = VK_NULL_HANDLE;
-  VkPipeline pipeline = VK_NULL_HANDLE;
+  struct Pipeline {
+    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+  };
+  Pipeline draw;     // the timed one: vertex, tessellation, fragment
+  Pipeline capture;  // made on the first captureFrame: + the recording geometry stage
+  vk::Buffer captured, capturedCount;  // TessPeerTriangle records; their count (atomic)
   VkQueryPool query = VK_NULL_HANDLE;
 };
 
@@ -47,8 +58,14 @@ constexpr VkFormat kColourFormat = VK_FORMAT_R8G8B8A8_UNORM;
 constexpr VkFormat kDepthFormat = VK_FORMAT_D16_UNORM;
 constexpr VkShaderStageFlags kTessStages =
     VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT | VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT;
+// The capture draws at most this many patches a draw: lavapipe's gl_PrimitiveID (the patch
+// within the draw) wraps at 256, so each draw's first patch is pushed to the geometry stage.
+constexpr uint32_t kCapturePatchesPerDraw = 256;
+constexpr uint32_t kCapturePatchBaseOffset = sizeof(gpu::TessPeerPush);
 
-void createPipelineFor(TessShaderPeer::Objects& d);
+void createPipeline(TessShaderPeer::Objects& d, bool capture);
+void recordDraw(TessShaderPeer::Objects& d, VkCommandBuffer cmd, bool capture,
+                const glm::mat4& viewProjection);
 
 }  // namespace
 
@@ -83,7 +100,7 @@ TessShaderPeer::TessShaderPeer(vk::Context& context, const std::vector<gpu::Bicu
   fb.height = options.height;
   fb.layers = 1;
   VK_CHECK(context.vk().vkCreateFramebuffer(context.device(), &fb, nullptr, &d_->framebuffer));
-  createPipelineFor(*d_);
+  createPipeline(*d_, false);
   if (context.enabledFeatures().pipelineStatisticsQuery) {
     VkQueryPoolCreateInfo q{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     q.queryType = VK_QUERY_TYPE_PIPELINE_STATISTICS;
@@ -97,80 +114,161 @@ TessShaderPeer::~TessShaderPeer() = default;
 
 bool TessShaderPeer::countsTriangles() const { return d_->query != VK_NULL_HANDLE; }
 
+bool TessShaderPeer::capturesTriangles() const {
+  return d_->context.enabledFeatures().geometryShader &&
+         d_->context.enabledFeatures().vertexPipelineStoresAndAtomics;
+}
+
 namespace {
-void createPipelineFor(TessShaderPeer::Objects& d) {
+// The draw pipeline reads the control points (binding 0, vertex stage); the capture pipeline
+// also writes the triangles (1) and their count (2) from its geometry stage.
+void createPipeline(TessShaderPeer::Objects& d, bool capture) {
   const vk::DeviceTable& vk = d.context.vk();
   VkDevice device = d.context.device();
-  VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
-                                       VK_SHADER_STAGE_VERTEX_BIT, nullptr};
+  TessShaderPeer::Objects::Pipeline& p = capture ? d.capture : d.draw;
+  const VkDescriptorSetLayoutBinding bindings[3] = {
+      {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
+      {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_GEOMETRY_BIT, nullptr},
+      {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_GEOMETRY_BIT, nullptr}};
   VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   setInfo.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
-  setInfo.bindingCount = 1;
-  setInfo.pBindings = &binding;
-  VK_CHECK(vk.vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &d.setLayout));
-  VkPushConstantRange range{kTessStages, 0, sizeof(gpu::TessPeerPush)};
+  setInfo.bindingCount = capture ? 3 : 1;
+  setInfo.pBindings = bindings;
+  VK_CHECK(vk.vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &p.setLayout));
+  // The capture's geometry stage reads the draw's first patch after TessPeerPush.
+  const VkPushConstantRange ranges[2] = {
+      {kTessStages, 0, sizeof(gpu::TessPeerPush)},
+      {VK_SHADER_STAGE_GEOMETRY_BIT, kCapturePatchBaseOffset, sizeof(uint32_t)}};
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   layoutInfo.setLayoutCount = 1;
-  layoutInfo.pSetLayouts = &d.setLayout;
-  layoutInfo.pushConstantRangeCount = 1;
-  layoutInfo.pPushConstantRanges = &range;
-  VK_CHECK(vk.vkCreatePipelineLayout(device, &layoutInfo, nullptr, &d.layout));
+  layoutInfo.pSetLayouts = &p.setLayout;
+  layoutInfo.pushConstantRangeCount = capture ? 2 : 1;
+  layoutInfo.pPushConstantRanges = ranges;
+  VK_CHECK(vk.vkCreatePipelineLayout(device, &layoutInfo, nullptr, &p.layout));
 
   vk::GraphicsPipelineDesc desc;
   desc.stages = {
       {VK_SHADER_STAGE_VERTEX_BIT, kSpirv_tess_peer_vert, sizeof(kSpirv_tess_peer_vert)},
       {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, kSpirv_tess_peer_tesc, sizeof(kSpirv_tess_peer_tesc)},
-      {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, kSpirv_tess_peer_tese, sizeof(kSpirv_tess_peer_tese)},
       {VK_SHADER_STAGE_FRAGMENT_BIT, kSpirv_tess_peer_frag, sizeof(kSpirv_tess_peer_frag)}};
+  if (capture) {
+    desc.stages.push_back({VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT,
+                           kSpirv_tess_peer_capture_tese, sizeof(kSpirv_tess_peer_capture_tese)});
+    desc.stages.push_back({VK_SHADER_STAGE_GEOMETRY_BIT, kSpirv_tess_peer_capture_geom,
+                           sizeof(kSpirv_tess_peer_capture_geom)});
+  } else {
+    desc.stages.push_back({VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, kSpirv_tess_peer_tese,
+                           sizeof(kSpirv_tess_peer_tese)});
+  }
   desc.topology = VK_PRIMITIVE_TOPOLOGY_PATCH_LIST;
   desc.patchControlPoints = 16;
   desc.extent = {d.options.width, d.options.height};
   desc.depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL;
-  desc.layout = d.layout;
+  desc.layout = p.layout;
   desc.renderPass = d.renderPass;
-  d.pipeline = vk::createGraphicsPipeline(d.context, desc);
+  p.pipeline = vk::createGraphicsPipeline(d.context, desc);
 }
-}  // namespace
 
-uint64_t TessShaderPeer::drawFrame(const glm::mat4& viewProjection) {
-  Objects& d = *d_;
+VkWriteDescriptorSet storageWrite(uint32_t binding, const VkDescriptorBufferInfo* buffer) {
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstBinding = binding;
+  write.descriptorCount = 1;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  write.pBufferInfo = buffer;
+  return write;
+}
+
+// One frame's render pass, the primitives query around it.
+void recordDraw(TessShaderPeer::Objects& d, VkCommandBuffer cmd, bool capture,
+                const glm::mat4& viewProjection) {
   const vk::DeviceTable& vk = d.context.vk();
+  const TessShaderPeer::Objects::Pipeline& p = capture ? d.capture : d.draw;
   gpu::TessPeerPush push{};
   for (int c = 0; c < 4; ++c) push.viewProjection[c] = viewProjection[c];
   push.params = glm::vec4(float(d.options.width), float(d.options.height),
                           d.options.tolerancePixels, d.options.maxFactor);
-  d.context.submitAndWait([&](VkCommandBuffer cmd) {
-    if (d.query) vk.vkCmdResetQueryPool(cmd, d.query, 0, 1);
-    VkClearValue clears[2]{};
-    clears[0].color = {{0.96f, 0.96f, 0.97f, 1.0f}};
-    clears[1].depthStencil = {1.0f, 0};
-    VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-    begin.renderPass = d.renderPass;
-    begin.framebuffer = d.framebuffer;
-    begin.renderArea = {{0, 0}, {d.options.width, d.options.height}};
-    begin.clearValueCount = 2;
-    begin.pClearValues = clears;
-    if (d.query) vk.vkCmdBeginQuery(cmd, d.query, 0, 0);
-    vk.vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-    vk.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, d.pipeline);
-    VkDescriptorBufferInfo buffer{d.patches.handle(), 0, VK_WHOLE_SIZE};
-    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstBinding = 0;
-    write.descriptorCount = 1;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    write.pBufferInfo = &buffer;
-    vk.vkCmdPushDescriptorSetKHR(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, d.layout, 0, 1, &write);
-    vk.vkCmdPushConstants(cmd, d.layout, kTessStages, 0, sizeof push, &push);
-    if (d.patchCount) vk.vkCmdDraw(cmd, 16 * d.patchCount, 1, 0, 0);
-    vk.vkCmdEndRenderPass(cmd);
-    if (d.query) vk.vkCmdEndQuery(cmd, d.query, 0);
-  });
+  if (d.query) vk.vkCmdResetQueryPool(cmd, d.query, 0, 1);
+  VkClearValue clears[2]{};
+  clears[0].color = {{0.96f, 0.96f, 0.97f, 1.0f}};
+  clears[1].depthStencil = {1.0f, 0};
+  VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+  begin.renderPass = d.renderPass;
+  begin.framebuffer = d.framebuffer;
+  begin.renderArea = {{0, 0}, {d.options.width, d.options.height}};
+  begin.clearValueCount = 2;
+  begin.pClearValues = clears;
+  if (d.query) vk.vkCmdBeginQuery(cmd, d.query, 0, 0);
+  vk.vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+  vk.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.pipeline);
+  const VkDescriptorBufferInfo buffers[3] = {{d.patches.handle(), 0, VK_WHOLE_SIZE},
+                                             {d.captured.handle(), 0, VK_WHOLE_SIZE},
+                                             {d.capturedCount.handle(), 0, VK_WHOLE_SIZE}};
+  const VkWriteDescriptorSet writes[3] = {storageWrite(0, &buffers[0]),
+                                          storageWrite(1, &buffers[1]),
+                                          storageWrite(2, &buffers[2])};
+  vk.vkCmdPushDescriptorSetKHR(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.layout, 0,
+                               capture ? 3 : 1, writes);
+  vk.vkCmdPushConstants(cmd, p.layout, kTessStages, 0, sizeof push, &push);
+  if (!capture && d.patchCount) vk.vkCmdDraw(cmd, 16 * d.patchCount, 1, 0, 0);
+  for (uint32_t first = 0; capture && first < d.patchCount; first += kCapturePatchesPerDraw) {
+    vk.vkCmdPushConstants(cmd, p.layout, VK_SHADER_STAGE_GEOMETRY_BIT, kCapturePatchBaseOffset,
+                          sizeof first, &first);
+    vk.vkCmdDraw(cmd, 16 * std::min(kCapturePatchesPerDraw, d.patchCount - first), 1, 16 * first,
+                 0);
+  }
+  vk.vkCmdEndRenderPass(cmd);
+  if (d.query) vk.vkCmdEndQuery(cmd, d.query, 0);
+}
+
+}  // namespace
+
+uint64_t TessShaderPeer::drawFrame(const glm::mat4& viewProjection) {
+  Objects& d = *d_;
+  d.context.submitAndWait([&](VkCommandBuffer cmd) { recordDraw(d, cmd, false, viewProjection); });
   uint64_t primitives = 0;
   if (d.query)
-    VK_CHECK(vk.vkGetQueryPoolResults(d.context.device(), d.query, 0, 1, sizeof primitives,
-                                      &primitives, sizeof primitives,
-                                      VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    VK_CHECK(d.context.vk().vkGetQueryPoolResults(
+        d.context.device(), d.query, 0, 1, sizeof primitives, &primitives, sizeof primitives,
+        VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
   return primitives;
+}
+
+std::vector<gpu::TessPeerTriangle> TessShaderPeer::captureFrame(const glm::mat4& viewProjection) {
+  Objects& d = *d_;
+  if (!capturesTriangles())
+    throw vk::VulkanUnavailable("device '" + d.context.info().name +
+                                "': capturing the peer's triangles needs the geometryShader and "
+                                "vertexPipelineStoresAndAtomics features");
+  if (!d.capture.pipeline) {
+    d.capturedCount = vk::Buffer(d.context, sizeof(uint32_t), vk::BufferUse::Upload);
+    createPipeline(d, true);
+  }
+  // Twice at most: a frame with more triangles than the buffer holds is drawn again into one
+  // that holds them all (the count is exact either way).
+  for (;;) {
+    vk::ensureCapacity(d.context, d.captured, 1024 * sizeof(gpu::TessPeerTriangle),
+                       vk::BufferUse::Readback);
+    const uint32_t zero = 0;
+    d.capturedCount.upload(&zero, sizeof zero);
+    d.context.submitAndWait([&](VkCommandBuffer cmd) {
+      recordDraw(d, cmd, true, viewProjection);
+      VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+      barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+      barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+      d.context.vk().vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_GEOMETRY_SHADER_BIT,
+                                          VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &barrier, 0, nullptr,
+                                          0, nullptr);
+    });
+    uint32_t count = 0;
+    d.capturedCount.download(&count, sizeof count);
+    const VkDeviceSize bytes = VkDeviceSize(count) * sizeof(gpu::TessPeerTriangle);
+    if (bytes <= d.captured.size()) {
+      std::vector<gpu::TessPeerTriangle> triangles;
+      d.captured.download(triangles, count);
+      return triangles;
+    }
+    vk::ensureCapacity(d.context, d.captured, bytes, vk::BufferUse::Readback);
+  }
 }
 
 }  // namespace tessera

@@ -215,6 +215,10 @@ void Context::createDevice(const std::vector<const char*>& extraDeviceExtensions
   instanceTable_->vkGetPhysicalDeviceFeatures(physical_, &available);
   enabledFeatures_.tessellationShader = available.tessellationShader;
   enabledFeatures_.pipelineStatisticsQuery = available.pipelineStatisticsQuery;
+  // The peer's capture pipeline (TessShaderPeer::captureFrame: its screen error in the bench)
+  // records triangles from a geometry shader into a storage buffer.
+  enabledFeatures_.geometryShader = available.geometryShader;
+  enabledFeatures_.vertexPipelineStoresAndAtomics = available.vertexPipelineStoresAndAtomics;
   info.pEnabledFeatures = &enabledFeatures_;
   VK_CHECK(instanceTable_->vkCreateDevice(physical_, &info, nullptr, &device_));
   deviceTable_ = std::make_unique<DeviceTable>(loadDeviceTable(instance_, device_));

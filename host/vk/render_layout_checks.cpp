@@ -13,5 +13,10 @@ static_assert(offsetof(MeshDrawPush, eye) == 64 && offsetof(MeshDrawPush, light)
                   offsetof(MeshDrawPush, wireframe) == 100 &&
                   offsetof(MeshDrawPush, wireWidth) == 104,
               "MeshDrawPush member offsets");
+// The peer's captured triangle (std430: vec4s at 16-byte steps, then a vec2 and two uints).
+static_assert(sizeof(TessPeerTriangle) == 80 && offsetof(TessPeerTriangle, uv01) == 48 &&
+                  offsetof(TessPeerTriangle, uv2) == 64 &&
+                  offsetof(TessPeerTriangle, patchIndex) == 72,
+              "TessPeerTriangle layout");
 
 }  // namespace tessera::gpu
