@@ -1,13 +1,14 @@
 // Case 5, real-time view-dependent tessellation: 100 perturbed teapots at 1920×1080 along the
 // 300-frame camera path of case 6, tolerance 1 px; every frame re-tessellates from scratch
-// (host/realtime/frame.h: cull, division counts of patches and edges on Vulkan, the stitched
-// pattern on Vulkan) with the
-// buffers kept between frames. Frames/s, triangles per frame, the split of a frame's time, and
-// the screen-space error of sampled frames against the double surface (must be ≤ the
-// tolerance). The tessellation-shader peer (case 6) runs the same path in the same run (its
-// screen error measured on the same sampled frames from its captured triangles), and so does
-// the second mode: rule T's adaptive tree in pixels (mesh/screen_tolerance.h) on Vulkan,
-// from scratch on every `treeStride`-th frame of the path (it is far slower per frame).
+// (host/realtime/frame.h: transform, cull and division counts of patches and edges on the
+// host, the stitched pattern on Vulkan) with the buffers kept between frames, once with the
+// estimated counts (the default) and once with the proven ones (host/division/projected.h).
+// Frames/s, triangles per frame, the split of a frame's time, and the screen-space error of
+// sampled frames against the double surface (must be ≤ the tolerance). The
+// tessellation-shader peer (case 6) runs the same path in the same run (its screen error
+// measured on the same sampled frames from its captured triangles), and so does the second
+// mode: rule T's adaptive tree in pixels (mesh/screen_tolerance.h) on Vulkan, from scratch on
+// every `treeStride`-th frame of the path (it is far slower per frame).
 // Tessera runs as an engine embeds it (docs/realtime.md, "Recording a frame into an engine"):
 // the bench's context plays the engine (its instance, device, queue, command buffers and
 // buffers); Tessera's context borrows that device, and each frame is prepared, then recorded
@@ -85,6 +86,117 @@ bench::Timing timingOf(std::vector<double> seconds) {
   return {seconds.front(), seconds[seconds.size() / 2], int(seconds.size())};
 }
 
+// One of Tessera's modes (its counts) over the path, and the screen error of the sampled frames.
+struct TesseraRun {
+  std::vector<double> seconds;
+  double total = 0, triangles = 0, counted = 0, vertices = 0, prepare = 0, count = 0, layout = 0;
+  double pattern = 0, culled = 0, fallback = 0, capped = 0, dispatches = 0, edges = 0;
+  double patches = 0;  // visible, counted
+  ScreenErrorReport error;
+};
+
+TesseraRun runTessera(vk::Context& engine, vk::Context& borrowed,
+                      const std::vector<BezierPatch>& patches, const RealtimeOptions& options,
+                      const Path& path, int frames, const std::vector<int>& sampled) {
+  RealtimeTessellator tessellator(borrowed, patches, options);
+  RealtimeRecorder recorder(tessellator, 1);
+  EngineBuffers buffers{engine, {}, {}, {}};
+  // One frame as an engine runs it: prepare (host transform, cull, counts and layout: nothing
+  // waits on the GPU), record into the engine's command buffer, the engine submits and waits
+  // (with `readBack`, a barrier to the host too). The pattern's seconds: recording, submit and
+  // wait.
+  double patternSeconds = 0;
+  auto drawFrame = [&](const Camera& camera, bool readBack) -> const RealtimeFrame& {
+    const RealtimeFrame& frame = recorder.prepare(camera);
+    const Stopwatch patternStopwatch;
+    const RealtimeTargets targets = buffers.targets(frame);
+    engine.submitAndWait([&](VkCommandBuffer cmd) {
+      recorder.record(cmd, targets);
+      if (readBack) vk::computeToHostBarrier(engine, cmd);
+    });
+    patternSeconds = patternStopwatch.elapsedSeconds();
+    return frame;
+  };
+  drawFrame(path.camera(0), false);  // warm-up: pipeline compile, buffers grown
+  TesseraRun run;
+  const Stopwatch stopwatch;
+  for (int f = 0; f < frames; ++f) {
+    const Stopwatch frameStopwatch;
+    const RealtimeFrame& frame = drawFrame(path.camera(f), false);
+    run.seconds.push_back(frameStopwatch.elapsedSeconds());
+    run.triangles += double(frame.triangles);
+    run.vertices += double(frame.vertexCount);
+    run.edges += double(frame.edges);
+    run.patches += double(frame.records.size());
+    run.counted += double(frame.countedTriangles);
+    run.prepare += frame.prepareSeconds;
+    run.count += frame.countSeconds;
+    run.layout += frame.layoutSeconds;
+    run.pattern += patternSeconds;
+    run.culled += double(frame.culled);
+    run.fallback += double(frame.fallback);
+    run.capped += double(frame.capped);
+    run.dispatches += double(frame.dispatches);
+  }
+  run.total = stopwatch.elapsedSeconds();
+  // The screen-space error of the sampled frames, outside the timing (the double surface is
+  // slow), measured on the engine's buffers as drawn.
+  for (int f : sampled) {
+    const Camera camera = path.camera(f);
+    RealtimeFrame drawn = drawFrame(camera, true);
+    drawn.vertices = buffers.vertices.as<gpu::GridVertex>();
+    drawn.indices = buffers.indices.as<uint32_t>();
+    const ScreenErrorReport e = measureScreenError(drawn, patches, camera, 2);
+    run.error.maxAffinePixels = std::max(run.error.maxAffinePixels, e.maxAffinePixels);
+    run.error.maxPerspectivePixels = std::max(run.error.maxPerspectivePixels, e.maxPerspectivePixels);
+    run.error.triangles += e.triangles;
+  }
+  return run;
+}
+
+nlohmann::json extrasOf(const TesseraRun& run, double n) {
+  return {{"trianglesPerFrame", run.triangles / n},
+          {"verticesPerFrame", run.vertices / n},
+          {"countedTrianglesPerFrame", run.counted / n},
+          {"trianglesOverCounted", run.triangles / std::max(run.counted, 1.0)},
+          {"edgesCountedPerFrame", run.edges / n},
+          {"trianglesPerSecond", run.triangles / run.total},
+          {"secondsPerFrame",
+           {{"hostTransformCull", run.prepare / n},
+            {"hostCounts", run.count / n},
+            {"hostLayout", run.layout / n},
+            {"gpuStitchedPattern", run.pattern / n}}},
+          {"culledPerFrame", run.culled / n},
+          {"nearPlaneFallbacksPerFrame", run.fallback / n},
+          {"cappedPerFrame", run.capped / n},
+          {"patternDispatchesPerFrame", run.dispatches / n},
+          {"maxScreenErrorPixelsAffine", run.error.maxAffinePixels},
+          {"maxScreenErrorPixelsPerspective", run.error.maxPerspectivePixels},
+          {"measuredTriangles", run.error.triangles}};
+}
+
+void printRun(const char* name, const TesseraRun& run, int frames, double tolerance,
+              size_t sampledFrames) {
+  const double n = std::max(frames, 1);
+  std::printf("\n%s: %.1f frames/s (min / median frame %.2f / %.2f ms), %.0f triangles and %.0f "
+              "vertices per frame; per frame %.2f ms host transform/cull, %.2f ms host counts "
+              "(%.0f patches' and %.0f edges'), %.2f ms layout, %.2f ms GPU pattern (record, "
+              "submit, wait); %.0f patches culled, %.1f near-plane fallbacks, %.1f capped per "
+              "frame\n",
+              name, frames / run.total, 1e3 * timingOf(run.seconds).minSeconds,
+              1e3 * timingOf(run.seconds).medianSeconds, run.triangles / n, run.vertices / n,
+              1e3 * run.prepare / n, 1e3 * run.count / n, run.patches / n,
+              run.edges / n, 1e3 * run.layout / n, 1e3 * run.pattern / n, run.culled / n,
+              run.fallback / n, run.capped / n);
+  std::printf("the counts ask for %.0f triangles per frame (2·N_u·N_v); the stitched pattern "
+              "(inner grids + strips to the edge counts, no T-junctions) spends %.3fx that\n",
+              run.counted / n, run.triangles / std::max(run.counted, 1.0));
+  std::printf("screen-space error over %zu sampled frames (%zu triangles): max %.3f px affine "
+              "(what the counts target), %.3f px perspective-correct; tolerance %.2g px\n",
+              sampledFrames, run.error.triangles, run.error.maxAffinePixels,
+              run.error.maxPerspectivePixels, tolerance);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -111,64 +223,15 @@ int main(int argc, char** argv) {
   vk::Context borrowed(vk::ExternalDevice{context.instance(), context.physicalDevice(),
                                           context.device(), context.queueFamily(),
                                           context.queue()});
-  RealtimeTessellator tessellator(borrowed, patches, {tolerance, 64, ratioPieces});
-  RealtimeRecorder recorder(tessellator, 1);
-  EngineBuffers buffers{context, {}, {}, {}};
-  // One frame as an engine runs it: prepare (host + GPU counts), record into the engine's
-  // command buffer, the engine submits and waits (with `readBack`, a barrier to the host too).
-  // The pattern's seconds: recording, submit and wait.
-  double patternSeconds = 0;
-  auto drawFrame = [&](const Camera& camera, bool readBack) -> const RealtimeFrame& {
-    const RealtimeFrame& frame = recorder.prepare(camera);
-    const Stopwatch patternStopwatch;
-    const RealtimeTargets targets = buffers.targets(frame);
-    context.submitAndWait([&](VkCommandBuffer cmd) {
-      recorder.record(cmd, targets);
-      if (readBack) vk::computeToHostBarrier(context, cmd);
-    });
-    patternSeconds = patternStopwatch.elapsedSeconds();
-    return frame;
-  };
-  drawFrame(path.camera(0), false);  // warm-up: pipeline compile, buffers grown
-  std::vector<double> seconds;
-  double triangles = 0, counted = 0, vertices = 0, prepare = 0, count = 0, layout = 0, pattern = 0;
-  double culled = 0, fallback = 0, capped = 0, dispatches = 0, edges = 0;
-  const Stopwatch stopwatch;
-  for (int f = 0; f < frames; ++f) {
-    const Stopwatch frameStopwatch;
-    const RealtimeFrame& frame = drawFrame(path.camera(f), false);
-    seconds.push_back(frameStopwatch.elapsedSeconds());
-    triangles += double(frame.triangles);
-    vertices += double(frame.vertexCount);
-    edges += double(frame.edges);
-    counted += double(frame.countedTriangles);
-    prepare += frame.prepareSeconds;
-    count += frame.countSeconds;
-    layout += frame.layoutSeconds;
-    pattern += patternSeconds;
-    culled += double(frame.culled);
-    fallback += double(frame.fallback);
-    capped += double(frame.capped);
-    dispatches += double(frame.dispatches);
-  }
-  const double total = stopwatch.elapsedSeconds();
-
-  // The screen-space error of a few frames, outside the timing (the double surface is slow).
-  double maxAffine = 0, maxPerspective = 0;
-  size_t measuredTriangles = 0;
   std::vector<int> sampled;
   for (int k = 0; k < 5; ++k) sampled.push_back(frames * k / 5);
-  for (int f : sampled) {
-    const Camera camera = path.camera(f);
-    // Measured on the engine's buffers, as drawn.
-    RealtimeFrame drawn = drawFrame(camera, true);
-    drawn.vertices = buffers.vertices.as<gpu::GridVertex>();
-    drawn.indices = buffers.indices.as<uint32_t>();
-    const ScreenErrorReport e = measureScreenError(drawn, tessellator.patches(), camera, 2);
-    maxAffine = std::max(maxAffine, e.maxAffinePixels);
-    maxPerspective = std::max(maxPerspective, e.maxPerspectivePixels);
-    measuredTriangles += e.triangles;
-  }
+  // Tessera with its default counts (the estimate), then with the proven bound
+  // (host/division/projected.h, docs/realtime.md "Counts").
+  RealtimeOptions estimated{tolerance, 64, ratioPieces}, proven = estimated;
+  proven.counts = RealtimeCounts::Proven;
+  const TesseraRun ours = runTessera(context, borrowed, patches, estimated, path, frames, sampled);
+  const TesseraRun oursProven =
+      runTessera(context, borrowed, patches, proven, path, frames, sampled);
 
   // The peer on the same path (case 6), for the ratio in one run.
   std::vector<double> peerSeconds;
@@ -250,33 +313,21 @@ int main(int argc, char** argv) {
   bench::Table& table = report.table("real-time", "frames", title);
   table.rateUnit = "frames/s";
   const double n = std::max(frames, 1);
-  bench::Case ours{"Tessera: cull + counts + stitched pattern recorded into the engine's "
-                   "commands on Vulkan (" + context.info().name + ")",
-                   double(frames), timingOf(seconds)};
-  ours.throughput = frames / total;
-  ours.extra = {{"teapots", teapots},
-                {"patches", patches.size()},
-                {"tolerancePixels", tolerance},
-                {"trianglesPerFrame", triangles / n},
-                {"verticesPerFrame", vertices / n},
-                {"countedTrianglesPerFrame", counted / n},
-                {"trianglesOverCounted", triangles / std::max(counted, 1.0)},
-                {"edgesCountedPerFrame", edges / n},
-                {"trianglesPerSecond", triangles / total},
-                {"secondsPerFrame",
-                 {{"hostTransformCullPack", prepare / n},
-                  {"gpuCounts", count / n},
-                  {"hostFallbackAndLayout", layout / n},
-                  {"gpuStitchedPattern", pattern / n}}},
-                {"culledPerFrame", culled / n},
-                {"eyePlaneFallbacksPerFrame", fallback / n},
-                {"cappedPerFrame", capped / n},
-                {"patternDispatchesPerFrame", dispatches / n},
-                {"sampledFrames", sampled},
-                {"maxScreenErrorPixelsAffine", maxAffine},
-                {"maxScreenErrorPixelsPerspective", maxPerspective},
-                {"measuredTriangles", measuredTriangles}};
-  table.cases.push_back(ours);
+  bench::Case oursCase{"Tessera: host cull + estimated counts, stitched pattern recorded into "
+                       "the engine's commands on Vulkan (" + context.info().name + ")",
+                       double(frames), timingOf(ours.seconds)};
+  oursCase.throughput = frames / ours.total;
+  oursCase.extra = extrasOf(ours, n);
+  oursCase.extra["teapots"] = teapots;
+  oursCase.extra["patches"] = patches.size();
+  oursCase.extra["tolerancePixels"] = tolerance;
+  oursCase.extra["sampledFrames"] = sampled;
+  table.cases.push_back(oursCase);
+  bench::Case provenCase{"Tessera with proven counts (the projected-grid bound)", double(frames),
+                         timingOf(oursProven.seconds)};
+  provenCase.throughput = frames / oursProven.total;
+  provenCase.extra = extrasOf(oursProven, n);
+  table.cases.push_back(provenCase);
   if (!peerSeconds.empty()) {
     bench::Case peer{"Vulkan tessellation shaders, max factor 64 (case 6)", double(frames),
                      timingOf(peerSeconds)};
@@ -306,22 +357,13 @@ int main(int argc, char** argv) {
                 {"measuredTriangles", treeMeasured}};
   table.cases.push_back(tree);
   report.print(table);
-  std::printf("\nTessera: %.1f frames/s, %.0f triangles and %.0f vertices per frame; per frame "
-              "%.2f ms host transform/cull/pack, %.2f ms GPU counts (%.0f edges with the patches), "
-              "%.2f ms host fallback/layout, %.2f ms GPU pattern (%.1f dispatches); %.0f patches "
-              "culled, %.1f eye-plane fallbacks, %.1f capped per frame\n",
-              frames / total, triangles / n, vertices / n, 1e3 * prepare / n, 1e3 * count / n,
-              edges / n, 1e3 * layout / n, 1e3 * pattern / n, dispatches / n, culled / n, fallback / n,
-              capped / n);
-  std::printf("the counts ask for %.0f triangles per frame (2·N_u·N_v); the "
-              "stitched pattern (inner grids + strips to the edge counts, no T-junctions) spends %.3fx that\n",
-              counted / n, triangles / std::max(counted, 1.0));
-  std::printf("screen-space error over %zu sampled frames (%zu triangles): max %.3f px affine "
-              "(what the counts bound), %.3f px perspective-correct; tolerance %.2g px\n",
-              sampled.size(), measuredTriangles, maxAffine, maxPerspective, tolerance);
+  printRun("Tessera (estimated counts)", ours, frames, tolerance, sampled.size());
+  printRun("Tessera with proven counts", oursProven, frames, tolerance, sampled.size());
   if (!peerSeconds.empty()) {
-    std::printf("tessellation shaders on the same path: %.1f frames/s, %.0f triangles per frame\n",
-                frames / peerTotal, peerCounts ? peerTriangles / n : -1.0);
+    std::printf("\ntessellation shaders on the same path: %.1f frames/s (min / median frame %.2f / "
+                "%.2f ms), %.0f triangles per frame\n",
+                frames / peerTotal, 1e3 * timingOf(peerSeconds).minSeconds,
+                1e3 * timingOf(peerSeconds).medianSeconds, peerCounts ? peerTriangles / n : -1.0);
     if (peerMeasured)
       std::printf("their screen-space error over the same %zu frames (%zu triangles): max %.3f px "
                   "affine, %.3f px perspective-correct\n",
@@ -338,10 +380,13 @@ int main(int argc, char** argv) {
       "%.1f ms vertices, %.0f leaves culled; screen-space error on 2 frames (%zu triangles): "
       "max %.3f px affine (proven ≤ %.2g px)\n",
       treeStride, treeSeconds.size(), treeFrames / treeTotal, treeTriangles / treeFrames,
-      (treeTriangles / treeFrames) / std::max(triangles / n, 1.0), treeTreeMs / treeFrames,
+      (treeTriangles / treeFrames) / std::max(ours.triangles / n, 1.0), treeTreeMs / treeFrames,
       treeGpuMs / treeFrames, treeClassifyMs / treeFrames, treeFrontierMs / treeFrames,
       treeTriangulateMs / treeFrames, treeEvaluateMs / treeFrames, treeCulled / treeFrames,
       treeMeasured, treeMaxAffine, tolerance);
   report.finish();
-  return maxAffine <= tolerance && treeMaxAffine <= tolerance ? 0 : 1;
+  return ours.error.maxAffinePixels <= tolerance &&
+                 oursProven.error.maxAffinePixels <= tolerance && treeMaxAffine <= tolerance
+             ? 0
+             : 1;
 }

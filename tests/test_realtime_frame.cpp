@@ -1,8 +1,9 @@
 // Real-time view-dependent tessellation (host/realtime/frame.h): on a few frames of two
-// teapots the stitched meshes meet 1 px on screen (measured against the double surface), their
-// vertices and indices are the pattern's fp32 mirror bit for bit, a finer tolerance spends more triangles, a
-// camera inside the scene routes eye-plane patches to the host count, and looking away culls
-// everything.
+// teapots the stitched meshes meet 1 px on screen (measured against the double surface) with
+// the estimated counts and with the proven ones (fewer triangles with the estimate), their
+// vertices and indices are the pattern's fp32 mirror bit for bit, a finer tolerance spends more
+// triangles, a camera inside the scene routes eye-plane patches to the clipped host count, and
+// looking away culls everything.
 #include <catch2/catch.hpp>
 
 #include <cstring>
@@ -50,14 +51,29 @@ size_t entriesDifferingFromMirror(const RealtimeTessellator& tessellator,
 TEST_CASE("Real-time frames meet 1 px on screen and match the mirror", "[gpu][realtime]") {
   vk::Context& context = test::gpuContext();
   const std::vector<BezierPatch> scene = twoTeapots();
-  RealtimeTessellator tessellator(context, scene, {1.0, 64});
+  RealtimeOptions estimated{1.0, 64}, proven = estimated;
+  proven.counts = RealtimeCounts::Proven;
+  RealtimeTessellator tessellator(context, scene, estimated), provenTessellator(context, scene, proven);
   const std::vector<std::pair<const char*, Camera>> cameras = {
       {"overview", view({4, -14, 6}, {4, 0, 1.5})},
       {"close", view({1.5, -4, 2.5}, {0, 0, 1.5})},
       {"inside the second teapot", view({8, 0, 1.5}, {0, 0, 1.5})},
   };
+  size_t estimatedTriangles = 0, provenTriangles = 0;
   for (const auto& [name, camera] : cameras) {
+    // The proven counts (host/division/projected.h) on the same view: within 1 px too.
+    const RealtimeFrame& provenFrame = provenTessellator.tessellate(camera);
+    const ScreenErrorReport provenError = measureScreenError(provenFrame, scene, camera, 2);
+    provenTriangles += provenFrame.triangles;
+    WARN(name << " with proven counts: " << provenFrame.triangles << " triangles, max error "
+              << provenError.maxAffinePixels << " px (affine), "
+              << provenError.maxPerspectivePixels << " px (perspective)");
+    CHECK(provenError.maxAffinePixels <= 1.0);
+    CHECK(provenError.maxPerspectivePixels <= 1.0);
+    CHECK(entriesDifferingFromMirror(provenTessellator, provenFrame) == 0);
+
     const RealtimeFrame& frame = tessellator.tessellate(camera);
+    estimatedTriangles += frame.triangles;
     const ScreenErrorReport error = measureScreenError(frame, scene, camera, 2);
     INFO(name << ": " << frame.records.size() << " patches, " << frame.triangles << " triangles, "
               << frame.culled << " culled, " << frame.fallback << " eye-plane fallbacks, "
@@ -75,6 +91,8 @@ TEST_CASE("Real-time frames meet 1 px on screen and match the mirror", "[gpu][re
     CHECK(entriesDifferingFromMirror(tessellator, frame) == 0);
     if (std::string(name) == "inside the second teapot") CHECK(frame.fallback > 0);
   }
+  // The estimate (the default) needs far fewer triangles than the bound for the same views.
+  CHECK(estimatedTriangles < 0.8 * provenTriangles);
   test::requireValidationClean();
 }
 

@@ -31,18 +31,24 @@ Camera lookAtCamera(const glm::dvec3& eye, const glm::dvec3& target, const glm::
   return camera;
 }
 
-RationalBezierPatch screenSpacePatch(const RationalBezierPatch& world, const Camera& camera,
-                                     double snap) {
-  RationalBezierPatch screen = world;
+void screenSpacePoints(const glm::dvec4* world, size_t count, const Camera& camera,
+                       glm::dvec4* screen, double snap) {
   double maxW = 0.0;
-  for (glm::dvec4& h : screen.cpw) {
-    h = camera.viewProjection * h;
-    maxW = std::max(maxW, std::abs(h.w));
+  for (size_t k = 0; k < count; ++k) {
+    screen[k] = camera.viewProjection * world[k];
+    maxW = std::max(maxW, std::abs(screen[k].w));
   }
-  for (glm::dvec4& h : screen.cpw) {
+  for (size_t k = 0; k < count; ++k) {
+    glm::dvec4& h = screen[k];
     const double w = std::abs(h.w) <= snap * maxW ? 0.0 : h.w;
     h = glm::dvec4(0.5 * (h.x + w) * camera.width, 0.5 * (h.y + w) * camera.height, 0.0, w);
   }
+}
+
+RationalBezierPatch screenSpacePatch(const RationalBezierPatch& world, const Camera& camera,
+                                     double snap) {
+  RationalBezierPatch screen = world;
+  screenSpacePoints(world.cpw.data(), world.cpw.size(), camera, screen.cpw.data(), snap);
   return screen;
 }
 

@@ -36,6 +36,10 @@ Camera lookAtCamera(const glm::dvec3& eye, const glm::dvec3& target, const glm::
 // |w| ≤ snap · max|w| become exactly 0 (a control point on the eye plane up to rounding).
 RationalBezierPatch screenSpacePatch(const RationalBezierPatch& world, const Camera& camera,
                                      double snap = 1e-12);
+// The same for `count` homogeneous points into `screen` (no allocation: the real-time path
+// transforms every patch every frame).
+void screenSpacePoints(const glm::dvec4* world, size_t count, const Camera& camera,
+                       glm::dvec4* screen, double snap = 1e-12);
 
 // Counts for one patch seen by `camera`, TOL = options.tolerance pixels. Culled (counts 0)
 // when every control point has w_clip ≤ nearW. When the method finds the image unbounded (the

@@ -1,13 +1,15 @@
 // Real-time view-dependent tessellation (case 5 of bench/): every frame re-tessellates a scene
 // of bicubic patches from scratch for one camera, with buffers kept between frames.
-//   1. host: control points to screen-space homogeneous coordinates (screenSpacePatch),
+//   1. host: control points to screen-space homogeneous coordinates (screenSpacePoints),
 //      patches whose control points all lie outside one side of the view frustum are culled
 //      (the convex hull, hence the patch, is outside);
-//   2. GPU: division counts in pixels (split method, host/division/counter.h) for every visible
-//      patch (N_u, N_v) and, in the same batch, for every edge of a visible patch (its segment
-//      count, from the edge's own control points, as a curve: host/realtime/patch_edges.h); a
-//      patch or edge the eye plane cuts (status Unbounded) is counted on the host by
-//      viewDivisions;
+//   2. host: division counts in pixels for every visible patch (N_u, N_v) and every edge of a
+//      visible patch (its segment count, from the edge's own control points alone:
+//      host/realtime/patch_edges.h), from the screen-space control points in one pass each
+//      (host/division/projected.h: an estimate by default, or a proven bound); a patch or
+//      edge whose net reaches the near plane is counted by viewDivisions (split, else
+//      subdivided, clipped to the view). Steps 1-2 run on the host's threads; nothing waits
+//      on the GPU before the pattern;
 //   3. GPU: the stitched pattern (shaders/stitch_pattern.comp.glsl, docs/realtime.md): per
 //      patch an inner grid from (N_u, N_v) and a transition strip along each side to that
 //      side's edge count. Both patches of a shared edge use its one count and evaluate its
@@ -28,21 +30,31 @@ namespace tessera {
 namespace vk {
 class Context;
 }
-class DivisionCounter;
 class StitchPatternRunner;  // detail/stitch_pattern_runner_vulkan.h: the pattern pipeline, buffers
 class RealtimeRecorder;     // frame_record_vulkan.h: the frame recorded into an engine's commands
+
+// How the counts are computed from a patch's screen-space net (host/division/projected.h,
+// docs/realtime.md "Counts"): Estimated, the directional estimate of the grid's deviation (not
+// a bound; its margin is measured: about half the triangles of Proven); Proven, the
+// projected-grid bound (every inner-grid triangle within the tolerance, proven).
+enum class RealtimeCounts { Estimated, Proven };
 
 struct RealtimeOptions {
   double tolerancePixels = 1.0;
   int maxPerDirection = 64;  // counts above are clamped (reported as capped)
-  // q of the split method (DivisionOptions::ratioPieces): the pieces on which the zero- and
-  // negative-weight factors are bounded; a patch in front of the eye has neither.
+  // q of the split method (DivisionOptions::ratioPieces) for the patches and edges whose net
+  // reaches the eye plane (viewDivisions): the pieces on which the zero- and negative-weight
+  // factors are bounded.
   int ratioPieces = 4;
   // Edges are counted to this fraction of the tolerance. An edge's count bounds the chord
   // error along the edge itself, but its strip's triangles reach one inner row into the
   // patch, where the surface may curve more than on the edge (docs/realtime.md); the margin
   // keeps them within the tolerance (measured, not proven: tests/test_realtime_watertight.cpp).
   double edgeToleranceFraction = 0.25;
+  RealtimeCounts counts = RealtimeCounts::Estimated;
+  // Host threads for the transform, cull and counts (common/parallel_for.h; 0: all hardware
+  // threads). The frame does not depend on it.
+  unsigned hostThreads = 0;
 };
 
 // A frame's mesh: for each visible patch its record (counts, edge counts, first vertex and
@@ -53,16 +65,16 @@ struct RealtimeFrame {
   const gpu::GridVertex* vertices = nullptr;
   const uint32_t* indices = nullptr;
   size_t culled = 0;    // patches dropped by the frustum test or found invisible
-  size_t fallback = 0;  // patches and edges the eye plane cuts, counted on the host
+  size_t fallback = 0;  // patches and edges whose net reaches the eye plane (viewDivisions)
   size_t capped = 0;    // patches and edges whose counts hit maxPerDirection
   size_t edges = 0;     // edges counted (collapsed ones are 1 and not counted)
   size_t triangles = 0;
   size_t countedTriangles = 0;  // Σ 2·N_u·N_v: what the patches' counts ask for
   size_t vertexCount = 0;
   size_t dispatches = 0;  // pattern submits (one per frame with a visible patch)
-  // Seconds: host transform, cull and packing (patches and edges); GPU counts (upload,
-  // dispatch, readback); host fallback counts and the pattern's layout; GPU pattern (upload,
-  // dispatch, fence).
+  // Seconds: host transform and cull (patches and edges); host counts (the projected-grid
+  // bound, and viewDivisions for nets that reach the eye plane); the pattern's layout; the
+  // pattern (tessellate(): upload, dispatch, fence; RealtimeRecorder::record(): recording).
   double prepareSeconds = 0, countSeconds = 0, layoutSeconds = 0, patternSeconds = 0;
 };
 
@@ -96,9 +108,9 @@ class RealtimeTessellator {
   std::vector<gpu::BicubicPatch> gpuPatches_;
   PatchEdges edges_;
   std::vector<RationalBezierPatch> edgePatches_;  // edgeCountingPatch of each edge
+  std::vector<glm::dvec4> screen_;                // per patch its 16 points in screen space
   RealtimeOptions options_;
   vk::Context& context_;
-  std::unique_ptr<DivisionCounter> counter_;
   std::unique_ptr<StitchPatternRunner> runner_;
   std::vector<uint32_t> items_;      // the last frame's work items
   std::vector<uint32_t> sideItems_;  // scratch: the side items, appended after the rows

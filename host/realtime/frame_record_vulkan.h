@@ -4,13 +4,13 @@
 // readback. The context is usually made from the engine's device (vk::ExternalDevice).
 //
 // Per frame:
-//   const RealtimeFrame& frame = recorder.prepare(camera);      // host + GPU counts (waits)
+//   const RealtimeFrame& frame = recorder.prepare(camera);      // host only, submits nothing
 //   ...grow the engine's buffers to RealtimeRecorder::vertexBytes(frame) / indexBytes(frame)...
 //   recorder.record(cmd, targets);                              // records, submits nothing
 //   ...engine: vkCmdDrawIndexedIndirect(cmd, targets.drawCommand...), submit with its fence...
-// prepare() still runs steps 1-2 of frame.h on the host and the division counts on the
-// context's queue with a fence of its own (the counts size the pattern's layout): that is the
-// frame's one remaining host round trip. Everything record() adds runs in the engine's submit.
+// prepare() runs steps 1-2 of frame.h and the pattern's layout on the host, with nothing to
+// wait for on the GPU (the counts never leave the host). Everything record() adds runs in the
+// engine's submit.
 #pragma once
 #include "vk/backend_only.h"
 #include <vulkan/vulkan.h>
@@ -50,8 +50,8 @@ class RealtimeRecorder {
   RealtimeRecorder(const RealtimeRecorder&) = delete;
   RealtimeRecorder& operator=(const RealtimeRecorder&) = delete;
 
-  // Culls, counts (submits and waits on the context's queue) and lays the frame out; the
-  // frame has its counts and sizes but no vertices (vertices and indices stay null).
+  // Culls, counts and lays the frame out on the host (submits nothing); the frame has its
+  // counts and sizes but no vertices (vertices and indices stay null).
   const RealtimeFrame& prepare(const Camera& camera);
 
   // Records the prepared frame into `cmd` (recording, a primary or secondary command buffer

@@ -1,15 +1,17 @@
-// One frame of real-time view-dependent tessellation: cull, GPU counts for patches and edges,
-// the stitched pattern on the GPU (frame.h).
+// One frame of real-time view-dependent tessellation: cull and count patches and edges on the
+// host, the stitched pattern on the GPU (frame.h).
 #include <cstdint>  // before the generated SPIR-V array, which uses uint32_t
 
 #include "realtime/frame.h"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 #include <string>
 
+#include "common/parallel_for.h"
 #include "common/stopwatch.h"
-#include "division/counter.h"
+#include "division/projected.h"
 #include "eval/evaluator.h"
 #include "geometry/rational.h"
 #include "realtime/detail/stitch_mirror.h"
@@ -22,9 +24,10 @@ namespace {
 // combination of its control points there (the projection is linear before the divide), so
 // if every control point is outside one half-space of the visible region 0 ≤ X ≤ W·width,
 // 0 ≤ Y ≤ W·height, W > nearW, so is the patch.
-bool outsideFrustum(const RationalBezierPatch& screen, const Camera& camera) {
+bool outsideFrustum(const glm::dvec4* screen, size_t count, const Camera& camera) {
   bool left = true, right = true, top = true, bottom = true, behind = true;
-  for (const glm::dvec4& h : screen.cpw) {
+  for (size_t k = 0; k < count; ++k) {
+    const glm::dvec4& h = screen[k];
     left = left && h.x < 0.0;
     right = right && h.x > h.w * camera.width;
     top = top && h.y < 0.0;
@@ -34,23 +37,44 @@ bool outsideFrustum(const RationalBezierPatch& screen, const Camera& camera) {
   return left || right || top || bottom || behind;
 }
 
-// Counts of one patch or edge from the GPU result, or from the host when the eye plane cuts
-// it. Returns false when the host finds it invisible.
-bool countsOf(const gpu::DivisionResult& gpuCounts, const RationalBezierPatch& world,
-              const Camera& camera, const DivisionOptions& counting, int& nu, int& nv,
-              bool& capped, size_t& fallback) {
-  nu = int(gpuCounts.nu);
-  nv = int(gpuCounts.nv);
-  capped = gpuCounts.status == gpu::kDivisionCapped;
-  if (gpuCounts.status != gpu::kDivisionUnbounded) return true;
-  ++fallback;
+// Counts of one patch or edge from its screen-space net (`screen`: a patch's 4×4 points, or an
+// edge's 4 as a curve, degreeV 0) by `method` (division/projected.h), or where the net reaches
+// the near plane by the host's viewDivisions of the world net (`world`), clipped to the view.
+// `visible` is false when that finds it invisible.
+struct Counted {
+  int nu = 1, nv = 1;
+  bool visible = true, capped = false, fallback = false;
+};
+
+Counted countsOf(const glm::dvec4* screen, int degreeV, const RationalBezierPatch& world,
+                 const Camera& camera, RealtimeCounts method, const DivisionOptions& counting,
+                 const std::array<int, 4>* sideSegments) {
+  // A net that reaches the near plane: its image is unbounded or huge (the part next to the
+  // eye, mostly off screen), so it is counted by the bound clipped to the view.
+  const int points = 4 * (degreeV + 1);
+  const bool nearEye = std::any_of(screen, screen + points,
+                                   [&](const glm::dvec4& h) { return h.w <= camera.nearW; });
+  const Divisions d =
+      nearEye ? Divisions{0, 0, 0.0, 0.0, {}, DivisionStatus::Unbounded}
+      : method == RealtimeCounts::Estimated
+          ? estimatedProjectedDivisions(screen, 3, degreeV, counting.tolerance,
+                                        counting.maxPerDirection, sideSegments)
+          : divisionsFromBounds(projectedGridBounds(screen, 3, degreeV), counting.tolerance,
+                                counting.maxPerDirection);
+  Counted c;
+  if (d.status != DivisionStatus::Unbounded) {
+    c.nu = d.nu;
+    c.nv = d.nv;
+    c.capped = d.status != DivisionStatus::Ok;
+    return c;
+  }
+  c.fallback = true;
   const ViewDivisions view = viewDivisions(world, camera, counting);
-  if (view.divisions.status == DivisionStatus::Culled || !view.divisions.bounds.visible)
-    return false;
-  nu = view.divisions.nu;
-  nv = view.divisions.nv;
-  capped = view.divisions.status != DivisionStatus::Ok;
-  return true;
+  c.visible = view.divisions.status != DivisionStatus::Culled && view.divisions.bounds.visible;
+  c.nu = view.divisions.nu;
+  c.nv = view.divisions.nv;
+  c.capped = c.visible && view.divisions.status != DivisionStatus::Ok;
+  return c;
 }
 
 }  // namespace
@@ -76,7 +100,6 @@ RealtimeTessellator::RealtimeTessellator(vk::Context& context, std::vector<Bezie
   for (const BezierPatch& patch : patches_) homogeneous_.push_back(toRationalPatch(patch));
   edges_ = findPatchEdges(patches_);
   for (const auto& edge : edges_.points) edgePatches_.push_back(edgeCountingPatch(edge));
-  counter_ = makeVulkanDivisionCounter(context);
   runner_ = std::make_unique<StitchPatternRunner>(context, gpuPatches_, edges_.gpuPoints);
 }
 
@@ -98,48 +121,32 @@ const RealtimeFrame& RealtimeTessellator::tessellate(const Camera& camera) {
 const RealtimeFrame& RealtimeTessellator::prepareFrame(const Camera& camera) {
   frame_ = RealtimeFrame{};
   Stopwatch stopwatch;
-  // The batch: visible patches first, then every edge of a visible patch, once.
-  std::vector<RationalBezierPatch> batchPatches;
-  std::vector<uint32_t> visibleIndex;
-  for (size_t p = 0; p < patches_.size(); ++p) {
-    RationalBezierPatch screen = screenSpacePatch(homogeneous_[p], camera);
-    if (outsideFrustum(screen, camera)) {
-      ++frame_.culled;
-      continue;
+  const unsigned threads = options_.hostThreads;
+  // Every patch to screen space and the frustum test, in parallel; then the visible ones, and
+  // every edge of a visible patch, once.
+  screen_.resize(16 * patches_.size());
+  std::vector<uint8_t> outside(patches_.size());
+  parallelFor(patches_.size(), threads, [&](size_t begin, size_t end) {
+    for (size_t p = begin; p < end; ++p) {
+      screenSpacePoints(homogeneous_[p].cpw.data(), 16, camera, &screen_[16 * p]);
+      outside[p] = outsideFrustum(&screen_[16 * p], 16, camera);
     }
-    batchPatches.push_back(std::move(screen));
-    visibleIndex.push_back(uint32_t(p));
-  }
+  });
+  std::vector<uint32_t> visibleIndex;
+  for (size_t p = 0; p < patches_.size(); ++p)
+    if (outside[p])
+      ++frame_.culled;
+    else
+      visibleIndex.push_back(uint32_t(p));
   const size_t visible = visibleIndex.size();
-  std::vector<int64_t> edgeSlot(edgePatches_.size(), -1);  // batch entry of a counted edge
+  std::vector<bool> edgeSeen(edgePatches_.size(), false);
   std::vector<uint32_t> countedEdges;
-  std::vector<RationalBezierCurve> edgeCurves;
   for (uint32_t p : visibleIndex)
     for (uint32_t edge : edges_.sideEdge[p])
-      if (edgeSlot[edge] == -1 && !edges_.collapsed[edge]) {
-        edgeSlot[edge] = -2;  // seen
-        // The counting patch's first row, in screen space; wholly behind the near plane (its
-        // weights may even all be 0): 1, the rasterizer clips it.
-        const RationalBezierPatch screen = screenSpacePatch(edgePatches_[edge], camera);
-        RationalBezierCurve curve;
-        bool behind = true;
-        for (int i = 0; i <= 3; ++i) {
-          glm::dvec4 h = screen.at(i, 0);
-          behind = behind && h.w <= camera.nearW;
-          // Pixels scaled by 1/fraction: the batch's tolerance then counts the edge to
-          // fraction · tolerance (second derivatives scale with the coordinates).
-          h.x /= options_.edgeToleranceFraction;
-          h.y /= options_.edgeToleranceFraction;
-          curve.cpw.push_back(h);
-        }
-        if (behind) continue;
-        edgeSlot[edge] = int64_t(visible + edgeCurves.size());
-        edgeCurves.push_back(std::move(curve));
+      if (!edgeSeen[edge] && !edges_.collapsed[edge]) {
+        edgeSeen[edge] = true;
         countedEdges.push_back(edge);
       }
-  frame_.edges = countedEdges.size();
-  DivisionBatch batch = packDivisionBatch(batchPatches);
-  appendDivisionCurves(batch, edgeCurves);
   frame_.prepareSeconds = stopwatch.elapsedSeconds();
 
   stopwatch.restart();
@@ -147,36 +154,67 @@ const RealtimeFrame& RealtimeTessellator::prepareFrame(const Camera& camera) {
   counting.tolerance = options_.tolerancePixels;
   counting.maxPerDirection = options_.maxPerDirection;
   counting.ratioPieces = options_.ratioPieces;
-  const std::vector<gpu::DivisionResult> counts = counter_->count(batch, counting);
-  frame_.countSeconds = stopwatch.elapsedSeconds();
-
-  stopwatch.restart();
-  // Edge counts: N_u of the edge's counting patch; 1 for a collapsed edge or one the host finds
-  // invisible (behind the near plane: the rasterizer clips it).
+  // Edge counts, from each edge's four points as a curve, to edgeToleranceFraction of the
+  // tolerance; 1 for a collapsed edge, one wholly behind the near plane (its weights may even all
+  // be 0; the rasterizer clips it) or one the host finds invisible.
   std::vector<uint32_t> edgeSegments(edgePatches_.size(), 1u);
   DivisionOptions edgeCounting = counting;
   edgeCounting.tolerance *= options_.edgeToleranceFraction;
-  for (uint32_t edge : countedEdges) {
-    int nu = 1, nv = 1;
-    bool capped = false;
-    if (countsOf(counts[size_t(edgeSlot[edge])], edgePatches_[edge], camera, edgeCounting, nu, nv,
-                 capped, frame_.fallback))
-      edgeSegments[edge] = uint32_t(std::max(nu, 1));
-    frame_.capped += capped ? 1 : 0;
+  std::vector<Counted> edgeCounts(countedEdges.size());
+  std::vector<uint8_t> edgeBehind(countedEdges.size());
+  parallelFor(countedEdges.size(), threads, [&](size_t begin, size_t end) {
+    for (size_t k = begin; k < end; ++k) {
+      const uint32_t edge = countedEdges[k];
+      glm::dvec4 world[4], screen[4];
+      for (size_t i = 0; i < 4; ++i) world[i] = glm::dvec4(edges_.points[edge][i], 1.0);
+      screenSpacePoints(world, 4, camera, screen);
+      edgeBehind[k] = std::all_of(screen, screen + 4,
+                                  [&](const glm::dvec4& h) { return h.w <= camera.nearW; });
+      if (!edgeBehind[k])
+        edgeCounts[k] = countsOf(screen, 0, edgePatches_[edge], camera, options_.counts,
+                                 edgeCounting, nullptr);
+    }
+  });
+  for (size_t k = 0; k < countedEdges.size(); ++k) {
+    if (edgeBehind[k]) continue;
+    ++frame_.edges;
+    frame_.fallback += edgeCounts[k].fallback ? 1 : 0;
+    frame_.capped += edgeCounts[k].capped ? 1 : 0;
+    if (edgeCounts[k].visible) edgeSegments[countedEdges[k]] = uint32_t(std::max(edgeCounts[k].nu, 1));
   }
+  // Patch counts, knowing the edge counts their strips join (a pole's 2N copies never ask for
+  // fewer than N).
+  std::vector<Counted> patchCounts(visible);
+  parallelFor(visible, threads, [&](size_t begin, size_t end) {
+    for (size_t k = begin; k < end; ++k) {
+      const uint32_t p = visibleIndex[k];
+      std::array<int, 4> sideSegments{};
+      for (size_t side = 0; side < 4; ++side) {
+        const uint32_t edge = edges_.sideEdge[p][side];
+        sideSegments[side] =
+            edges_.collapsed[edge] ? counting.maxPerDirection : int(edgeSegments[edge]);
+      }
+      patchCounts[k] = countsOf(&screen_[16 * p], 3, homogeneous_[p], camera, options_.counts,
+                                counting, &sideSegments);
+    }
+  });
+  for (const Counted& c : patchCounts) {
+    frame_.fallback += c.fallback ? 1 : 0;
+    frame_.capped += c.capped ? 1 : 0;
+  }
+  frame_.countSeconds = stopwatch.elapsedSeconds();
+
+  stopwatch.restart();
   items_.clear();
   sideItems_.clear();
   size_t vertexCount = 0, triangleCount = 0;
   for (size_t k = 0; k < visible; ++k) {
     const uint32_t p = visibleIndex[k];
-    int nu = 1, nv = 1;
-    bool capped = false;
-    if (!countsOf(counts[k], homogeneous_[p], camera, counting, nu, nv, capped,
-                  frame_.fallback)) {
+    if (!patchCounts[k].visible) {
       ++frame_.culled;
       continue;
     }
-    frame_.capped += capped ? 1 : 0;
+    const int nu = patchCounts[k].nu, nv = patchCounts[k].nv;
     frame_.countedTriangles += 2 * size_t(nu) * size_t(nv);
     gpu::StitchPatch record{};
     record.patchIndex = p;

@@ -25,10 +25,10 @@ struct PatchEdges {
 // Throws std::invalid_argument for a patch that is not bicubic.
 PatchEdges findPatchEdges(const std::vector<BezierPatch>& patches);
 
-// The edge as a rational patch of bidegree (3, 1) whose two rows are the edge: screenSpacePatch
-// of it gives the edge in screen space (its first row, counted on the GPU as a curve:
-// appendDivisionCurves), and viewDivisions of it counts an edge the eye plane cuts. Either
-// count bounds the edge's chord error on screen (Filip's bound, S_uv = S_vv = 0 on a curve).
+// The edge as a rational patch of bidegree (3, 1) whose two rows are the edge: viewDivisions of
+// it counts an edge whose screen-space net reaches the eye plane (the others are counted from
+// their four points as a curve, host/division/projected.h). Its count bounds the edge's chord
+// error on screen (Filip's bound, S_uv = S_vv = 0 on a curve).
 RationalBezierPatch edgeCountingPatch(const std::array<glm::dvec3, 4>& edge);
 
 }  // namespace tessera
