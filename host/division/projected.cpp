@@ -123,7 +123,6 @@ int toCount(double real, int maxPerDirection, Divisions& r) {
 // (P'' − w''·S)/w (docs/realtime.md, "Counts"). Exact at the corners, where these coefficients
 // are the values; in the affine limit (all weights equal) the Bernstein coefficients of S''
 // itself, whose convex hull holds S'' everywhere.
-// deviation needs.
 struct Triple {
   glm::dvec2 uu, uv, vv;
 
