@@ -26,12 +26,15 @@ TEST_CASE("stats: the tolerance member is null for rules A-D and filled for rule
   REQUIRE(report["tolerance"].is_null());
   REQUIRE(optionsToJson(options)["tolerance"].is_null());
 
-  // Give each leaf a distinct "bound" so the per-patch and total maxima are known.
+  // Give each leaf a distinct "bound" so the per-patch and total maxima are known. Bounds are
+  // in the units of the tree's local frame: × boundScale (the frame's scale) in model units.
+  REQUIRE(t.tree.boundScale == t.frame.scale);
   std::vector<double> expected(patches.size(), 0.0);
   for (size_t k = 0; k < t.tree.leaves.size(); ++k) {
     QuadLeaf& leaf = t.tree.leaves[k];
     leaf.flatness = 1e-4f * float((k * 7919) % 1000 + 1);
-    expected[leaf.patchIndex] = std::max(expected[leaf.patchIndex], double(leaf.flatness));
+    expected[leaf.patchIndex] =
+        std::max(expected[leaf.patchIndex], double(leaf.flatness) * t.tree.boundScale);
   }
   const double largest = *std::max_element(expected.begin(), expected.end());
   REQUIRE(largestLeafBound(t.tree) == largest);

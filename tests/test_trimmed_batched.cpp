@@ -7,11 +7,13 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 
 #include "gpu_test_context.h"
 #include "mesh/tessellate.h"
 #include "mesh_checks.h"
 #include "trim/face_surface.h"
+#include "trim/face_tessellation.h"
 #include "trim/mesher.h"
 #include "trimmed_models.h"
 #ifdef TESSERA_HAVE_CAD
@@ -63,11 +65,13 @@ TrimmedModel bumpyCubeAndDisc(bool withDisc) {
 }
 
 TrimmedMesh meshWith(const TrimmedModel& model, double delta, bool trim, unsigned threads,
-                     Backend& backend, TrimClassifier* trimClassifier = nullptr) {
+                     Backend& backend, TrimClassifier* trimClassifier = nullptr,
+                     std::optional<ModelFrame> frame = std::nullopt) {
   TrimmedMeshOptions options;
   options.tolerance = delta;
   options.trimQuadtree = trim;
   options.threads = threads;
+  options.frame = frame;
   return meshTrimmedModel(model, options, backend, trimClassifier);
 }
 
@@ -126,7 +130,9 @@ TEST_CASE("trimmed batch: each face meshes as it does alone, whatever the thread
       TrimmedModel alone;
       alone.sharedPoints = model.sharedPoints;
       alone.faces = {model.faces[f]};
-      const TrimmedMesh one = meshWith(alone, delta, trim, 1, cpu);
+      // In the model's frame (model_frame.h): a face alone has a frame of its own.
+      const TrimmedMesh one =
+          meshWith(alone, delta, trim, 1, cpu, nullptr, trimmedModelFrame(model));
       const std::vector<glm::vec3> batched = faceCorners(all, f), single = faceCorners(one, 0);
       differing += batched != single;
       CHECK(all.faces[f].triangles == one.faces[0].triangles);

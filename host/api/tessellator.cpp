@@ -22,16 +22,19 @@ Tessellation countedGrids(const std::vector<BezierPatch>& patches, double tolera
                           int maxPerDirection, size_t maxNodes, Backend& backend) {
   for (size_t i = 0; i < patches.size(); ++i)
     validateTessellationPatch(patches[i], "patch " + std::to_string(i));
+  // Counted and meshed in the local frame, as tessellate() works (model_frame.h).
+  const ModelFrame frame = modelFrame(patches);
+  const std::vector<BezierPatch> local = toLocalFrame(patches, frame);
   DivisionOptions counting;
-  counting.tolerance = tolerance;
+  counting.tolerance = tolerance / frame.scale;
   counting.maxPerDirection = maxPerDirection;
   QuadtreeOptions grid;
   grid.rule = SplitRule::UniformGrid;
-  const PatchSet set = toPatchSet(patches);
+  const PatchSet set = toPatchSet(local);
   QuadtreeResult tree;
   size_t cells = 0;
-  for (size_t p = 0; p < patches.size(); ++p) {
-    const Divisions d = patchDivisions(toRationalPatch(patches[p]), counting);
+  for (size_t p = 0; p < local.size(); ++p) {
+    const Divisions d = patchDivisions(toRationalPatch(local[p]), counting);
     cells += size_t(d.nu) * size_t(d.nv);
     if (cells > maxNodes)
       throw LimitError("tolerance " + std::to_string(tolerance) + ": the grids reach " +
@@ -47,7 +50,7 @@ Tessellation countedGrids(const std::vector<BezierPatch>& patches, double tolera
     }
     tree.depth = std::max(tree.depth, one.depth);
   }
-  return meshFromTree(patches, set, std::move(tree), *backend.evaluator);
+  return meshFromTree(local, set, std::move(tree), *backend.evaluator, frame);
 }
 
 // Runs `work`, turning the library's std::invalid_argument (a patch or option it cannot take)

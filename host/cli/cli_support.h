@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "io/errors.h"
 #include "io/mesh_write_options.h"
 #include "mesh/screen_tolerance.h"
 #include "mesh/tessellate.h"
@@ -56,6 +57,18 @@ struct ChosenBackend {
 // "vulkan": Vulkan or VulkanUnavailable; "cpu": the CPU; "auto": Vulkan if a usable device
 // exists, else the CPU with a notice on stderr. Anything else is a usage error.
 ChosenBackend chooseBackend(const std::string& name, const std::string& device);
+
+// Runs `work` (a tessellation); a patch it cannot take (std::invalid_argument naming the patch:
+// validateTessellationPatch, or an fp32 evaluation that is not finite) becomes an InputError
+// naming `input` too, so the message says which file (exit 2 either way).
+template <class Work>
+auto namingInput(const std::string& input, Work&& work) -> decltype(work()) {
+  try {
+    return work();
+  } catch (const std::invalid_argument& e) {
+    throw InputError(InputErrorKind::Range, input, 0, e.what());
+  }
+}
 
 // Tessellates on the chosen backend. With --backend auto, a Vulkan failure during the run
 // (device lost, out of device memory) switches `chosen` to the CPU backend, says so on stderr,

@@ -194,8 +194,9 @@ int run(const TessellateArgs& a) {
 
   ChosenBackend chosen = chooseBackend(a.backend, a.device);
 
-  Tessellation t =
-      tessellateWithFallback(chosen, a.backend, patches, options, view ? &*view : nullptr);
+  Tessellation t = namingInput(inputName, [&] {
+    return tessellateWithFallback(chosen, a.backend, patches, options, view ? &*view : nullptr);
+  });
   const std::unique_ptr<vk::Context>& context = chosen.context;
   const Backend& backend = chosen.backend;
   if (writeOptions.precision == MeshPrecision::Double && !a.output.empty())

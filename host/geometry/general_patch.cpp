@@ -21,11 +21,13 @@ void validateTessellationPatch(const BezierPatch& p, const std::string& what) {
          ": adaptive tessellation takes degrees 1..7 in u and v");
   const size_t count = size_t(p.degreeU + 1) * size_t(p.degreeV + 1);
   if (p.cp.size() != count) fail("has " + std::to_string(p.cp.size()) + " control points, not " + std::to_string(count));
-  // fp32 on the GPU: a coordinate beyond ~1e15 loses all precision, NaN/Inf poison a tree.
+  // The GPU sees the model in a local frame (model_frame.h), so any magnitude is exact
+  // enough there; the mesh's fp32 positions must hold it (kMaxPatchCoordinate). NaN/Inf
+  // poison a tree.
   for (const glm::dvec3& c : p.cp)
     for (int k = 0; k < 3; ++k)
-      if (!std::isfinite(c[k]) || std::fabs(c[k]) > 1e15)
-        fail("has a control point that is not finite or exceeds 1e15");
+      if (!std::isfinite(c[k]) || std::fabs(c[k]) > kMaxPatchCoordinate)
+        fail("has a control point that is not finite or exceeds 1e38 (the mesh is fp32)");
   if (!isRational(p)) return;
   if (p.weights.size() != count) fail("has " + std::to_string(p.weights.size()) + " weights, not " + std::to_string(count));
   for (double w : p.weights)

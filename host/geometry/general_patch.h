@@ -22,9 +22,14 @@ struct GeneralPatchSet {
 bool isRational(const BezierPatch& patch);             // has weights
 bool isBicubicPolynomial(const BezierPatch& patch);    // the BicubicPatch fast path takes it
 
+// The largest |coordinate| tessellation takes: the surface lies in its control points' hull
+// (weights ≥ 0), so the mesh's fp32 positions (at most 3.4·10³⁸) hold every vertex.
+constexpr double kMaxPatchCoordinate = 1e38;
+
 // Throws std::invalid_argument starting with `what` (e.g. "patch 3") for a degree outside
-// 1..7, a control net or weight list of the wrong size, a control point or weight that is not
-// finite or exceeds 1e15, a negative weight or a corner weight that is not positive.
+// 1..7, a control net or weight list of the wrong size, a control point that is not finite or
+// exceeds kMaxPatchCoordinate, a weight that is not finite or exceeds 1e15, a negative weight
+// or a corner weight that is not positive.
 void validateTessellationPatch(const BezierPatch& patch, const std::string& what);
 
 GeneralPatchSet toGeneralPatchSet(const std::vector<BezierPatch>& patches);

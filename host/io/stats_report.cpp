@@ -181,7 +181,7 @@ nlohmann::json statsToJson(const Tessellation& t, const PatchDeviation* deviatio
 double largestLeafBound(const QuadtreeResult& tree) {
   double largest = 0;
   for (const QuadLeaf& leaf : tree.leaves) largest = std::max(largest, double(leaf.flatness));
-  return largest;
+  return largest * tree.boundScale;
 }
 
 void addToleranceReport(nlohmann::json& report, const Tessellation& t, const ToleranceSpec& spec,
@@ -193,7 +193,8 @@ void addToleranceReport(nlohmann::json& report, const Tessellation& t, const Tol
                                 " tessellated");
   std::vector<double> perPatch(patches.size(), 0.0);
   for (const QuadLeaf& leaf : t.tree.leaves)
-    perPatch.at(leaf.patchIndex) = std::max(perPatch.at(leaf.patchIndex), double(leaf.flatness));
+    perPatch.at(leaf.patchIndex) =
+        std::max(perPatch.at(leaf.patchIndex), double(leaf.flatness) * t.tree.boundScale);
   for (size_t p = 0; p < patches.size(); ++p) patches[p]["largestLeafBound"] = perPatch[p];
   // In pixels (screen space) the bound is over the leaves in view: culled ones are unseen,
   // eye-plane ones unproven (mesh/screen_tolerance.h); they are counted instead.

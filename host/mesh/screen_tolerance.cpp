@@ -171,13 +171,16 @@ Tessellation tessellateScreenTolerance(const std::vector<BezierPatch>& patches,
     validateTessellationPatch(patches[i], "patch " + std::to_string(i));
   const Stopwatch treeStep;
   const PatchSet screen = screenSpacePatchSet(patches, view.camera);
-  const PatchSet world = toPatchSet(patches);
+  // The tree is in pixels; the mesh is evaluated and welded in the model's local frame.
+  const ModelFrame frame = modelFrame(patches);
+  const std::vector<BezierPatch> local = toLocalFrame(patches, frame);
+  const PatchSet world = toPatchSet(local);
   backend.evaluator->prepare(world);
   const std::unique_ptr<NodeClassifier> classifier =
       makeScreenSpaceClassifier(*backend.classifier, patches, view.camera, view.eyePlaneDepth);
   QuadtreeResult tree = buildQuadtree(screen, options, *classifier);
   const double treeMs = treeStep.elapsedMs();
-  Tessellation result = meshFromTree(patches, world, std::move(tree), *backend.evaluator);
+  Tessellation result = meshFromTree(local, world, std::move(tree), *backend.evaluator, frame);
   result.stats.treeMs = treeMs;
   result.stats.totalMs = total.elapsedMs();
   return result;
@@ -195,7 +198,8 @@ ScreenLeafCounts screenLeafCounts(const QuadtreeResult& tree) {
       continue;
     }
     ++(leaf.cause == gpu::kCauseWithinTolerance ? counts.proven : counts.other);
-    const double bound = std::isnan(leaf.flatness) ? INFINITY : double(leaf.flatness);
+    const double bound =
+        std::isnan(leaf.flatness) ? INFINITY : double(leaf.flatness) * tree.boundScale;
     counts.largestBound = std::max(counts.largestBound, bound);
   }
   return counts;

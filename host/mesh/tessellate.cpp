@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 #include <functional>
 #include <unordered_map>
 
@@ -64,6 +67,26 @@ std::vector<bool> backToBackPairs(const std::vector<uint32_t>& indices) {
   return cancelled;
 }
 
+// A sample that is not a number or infinite would poison the welding and the writers; fp32
+// overflows where a rational patch's weights differ by more than its range can take (a corner
+// weight of 10⁻²⁰ against 1: derivatives of order k grow as 10²⁰ᵏ).
+void requireFiniteSamples(const ParamMesh& param, const std::vector<gpu::EvalSample>& samples) {
+  const auto finite = [](const gpu::vec4& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+  };
+  for (size_t i = 0; i < samples.size(); ++i) {
+    if (finite(samples[i].position) && finite(samples[i].normalKappa)) continue;
+    const ParamVertex& v = param.vertices[i];
+    char where[64];
+    std::snprintf(where, sizeof where, "(u, v) = (%.9g, %.9g)", double(v.u), double(v.v));
+    throw std::invalid_argument(
+        "patch " + std::to_string(v.patchIndex) + ": the fp32 evaluation at " + where +
+        " gives a " + (finite(samples[i].position) ? "normal" : "position") +
+        " that is not finite (a rational patch whose weights differ by more than fp32 can "
+        "hold?)");
+  }
+}
+
 }  // namespace
 
 Backend makeMirrorBackend() {
@@ -77,7 +100,7 @@ using VertexEvaluation =
     std::function<std::vector<gpu::EvalSample>(const std::vector<gpu::EvalQuery>&)>;
 
 Tessellation meshFromQueries(const std::vector<BezierPatch>& patches, QuadtreeResult tree,
-                             const VertexEvaluation& evaluate) {
+                             const VertexEvaluation& evaluate, const ModelFrame& frame) {
   const Stopwatch total;
   Stopwatch step;
   ParamMesh param = triangulateLeaves(tree.leaves, patches);
@@ -91,6 +114,7 @@ Tessellation meshFromQueries(const std::vector<BezierPatch>& patches, QuadtreeRe
   const double evaluateMs = step.elapsedMs();
 
   Tessellation result = assembleTessellation(patches.size(), std::move(tree), param, samples);
+  toModelCoordinates(result, frame);
   result.stats.triangulateMs = triangulateMs;
   result.stats.evaluateMs = evaluateMs;
   result.stats.totalMs = total.elapsedMs();
@@ -101,6 +125,7 @@ Tessellation meshFromQueries(const std::vector<BezierPatch>& patches, QuadtreeRe
 
 Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, const ParamMesh& param,
                                   const std::vector<gpu::EvalSample>& samples) {
+  requireFiniteSamples(param, samples);
   Tessellation result;
   result.tree = std::move(tree);
   TriangleMesh& mesh = result.mesh;
@@ -167,26 +192,38 @@ Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeO
   const Stopwatch total;
   for (size_t i = 0; i < patches.size(); ++i)
     validateTessellationPatch(patches[i], "patch " + std::to_string(i));
+  // Everything below sees the model in its local frame: coordinates in [−1, 1], δ in its units.
+  const ModelFrame frame = modelFrame(patches);
+  const std::vector<BezierPatch> local = toLocalFrame(patches, frame);
+  QuadtreeOptions localOptions = options;
+  if (options.rule == SplitRule::Tolerance)
+    localOptions.tolerance = options.tolerance / frame.scale;
   // Bicubic polynomial patches take the BicubicPatch shaders; anything else sends the whole
   // set through the general ones (a bicubic patch is a general patch too): toPatchSet.
   const Stopwatch treeStep;
-  const PatchSet gpuPatches = toPatchSet(patches);
+  const PatchSet gpuPatches = toPatchSet(local);
   // The evaluator's setup (a pipeline build) overlaps the quad-tree.
   backend.evaluator->prepare(gpuPatches);
-  QuadtreeResult tree = buildQuadtree(gpuPatches, options, *backend.classifier);
+  QuadtreeResult tree = buildQuadtree(gpuPatches, localOptions, *backend.classifier);
+  tree.boundScale = frame.scale;
   const double treeMs = treeStep.elapsedMs();
-  Tessellation result = meshFromTree(patches, gpuPatches, std::move(tree), *backend.evaluator);
+  Tessellation result = meshFromTree(local, gpuPatches, std::move(tree), *backend.evaluator, frame);
   result.stats.treeMs = treeMs;
   result.stats.totalMs = total.elapsedMs();
   return result;
 }
 
 Tessellation meshFromTree(const std::vector<BezierPatch>& patches, const PatchSet& gpuPatches,
-                          QuadtreeResult tree, PatchEvaluator& evaluator) {
-  return meshFromQueries(patches, std::move(tree), [&](const std::vector<gpu::EvalQuery>& q) {
-    return evaluator.evaluate(gpuPatches, q);
-  });
+                          QuadtreeResult tree, PatchEvaluator& evaluator, const ModelFrame& frame) {
+  return meshFromQueries(
+      patches, std::move(tree),
+      [&](const std::vector<gpu::EvalQuery>& q) { return evaluator.evaluate(gpuPatches, q); },
+      frame);
 }
 
+void toModelCoordinates(Tessellation& t, const ModelFrame& frame) {
+  t.frame = frame;
+  for (glm::vec3& p : t.mesh.positions) p = glm::vec3(frame.toModel(glm::dvec3(p)));
+}
 
 }  // namespace tessera

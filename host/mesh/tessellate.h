@@ -7,8 +7,9 @@
 
 #include "eval/evaluator.h"
 #include "eval/patch_set.h"
-#include "mesh/mesh.h"
+#include "geometry/model_frame.h"
 #include "geometry/patch.h"
+#include "mesh/mesh.h"
 #include "quadtree/quadtree.h"
 
 namespace tessera {
@@ -42,25 +43,39 @@ struct Tessellation {
   std::vector<glm::vec2> cornerUv;
   QuadtreeResult tree;
   TessellationStats stats;
+  // The local frame the tree, the evaluation and the welding worked in (model_frame.h);
+  // mesh.positions are in model coordinates, each mapped back in double and rounded once.
+  ModelFrame frame;
 };
 
 // Takes patches of degree 1..7 each way, polynomial or rational (weights ≥ 0, corner weights
 // > 0): all bicubic polynomial → the BicubicPatch shaders, else the general ones for all.
-// Throws std::invalid_argument naming the patch for one it cannot take
-// (validateTessellationPatch), TessellationLimitError when the node budget is exceeded.
+// Works in the patches' local frame (modelFrame; rule T's δ becomes δ/scale there), so the
+// tree does not depend on where the model sits or on its units. Throws std::invalid_argument
+// naming the patch for one it cannot take (validateTessellationPatch) or one whose fp32
+// evaluation is not finite, TessellationLimitError when the node budget is exceeded.
 Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeOptions& options,
                         Backend& backend);
 
 // The second half of tessellate(): a finished tree → watertight mesh, vertices evaluated by
-// `evaluator` (timings in stats.triangulateMs and stats.evaluateMs).
+// `evaluator` (timings in stats.triangulateMs and stats.evaluateMs). `patches` and
+// `gpuPatches` are in `frame` (toLocalFrame); the mesh comes back in model coordinates
+// (toModelCoordinates).
 Tessellation meshFromTree(const std::vector<BezierPatch>& patches, const PatchSet& gpuPatches,
-                          QuadtreeResult tree, PatchEvaluator& evaluator);
+                          QuadtreeResult tree, PatchEvaluator& evaluator,
+                          const ModelFrame& frame = {});
 
 // meshFromTree's last step, for callers that triangulate and evaluate themselves (the trimmed
 // mesher evaluates many trees' vertices in one backend call): `samples` are the evaluations of
 // param.vertices in order; welds equal positions and drops degenerate and back-to-back
-// triangles as tessellate() does. Timings are left at 0.
+// triangles as tessellate() does, all in the frame the samples are in. Timings are left at 0.
+// Throws std::invalid_argument naming the patch and (u, v) of a sample that is not finite.
 Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, const ParamMesh& param,
                                   const std::vector<gpu::EvalSample>& samples);
+
+// Hands a tessellation made in `frame` out in model coordinates: each position mapped back in
+// double (frame.toModel) and rounded to fp32 once; normals and (u, v) are unchanged (the frame
+// is a translation and a positive uniform scale). Sets t.frame.
+void toModelCoordinates(Tessellation& t, const ModelFrame& frame);
 
 }  // namespace tessera

@@ -82,7 +82,8 @@ struct QuadLeaf {
                    // ⌈log₂k_u⌉ + ⌈log₂k_v⌉ bits (node_split.h). Rules B–D: 2 bits a level,
                    // the quadrant (0: u-low v-low, 1: u-high v-low, 2: u-low v-high, 3: both high)
   float linearity;  // rule T: A/(A + B), the u share of the bound (tolerance_bound.h)
-  float flatness;   // rule T: the node's proven deviation bound (model units)
+  float flatness;   // rule T: the node's proven deviation bound, in the units of the patches
+                    // the tree was built on (× QuadtreeResult::boundScale: model units)
   gpu::vec2 split;  // (us, vs) the classification chose (rule T: the centre, a fallback fan apex)
 };
 
@@ -94,6 +95,10 @@ struct QuadtreeResult {
   size_t batches = 0;            // classifier calls (one per level when nothing was split up)
   size_t patchGroups = 0;        // trees built over patch subsets the classifier could hold
   size_t peakFrontierNodes = 0;  // most nodes held at once (see frontierBudgetBytes)
+  // Model units per unit of rule T's leaf bounds: tessellate() builds the tree on the patches
+  // in a local frame (geometry/model_frame.h) and leaves the bounds in its units, which fp32
+  // holds at any model scale; 1 for a tree built on model coordinates (or pixels).
+  double boundScale = 1.0;
 };
 
 // What one node of the tree costs by the end of a tessellation, for the memory budget
@@ -102,7 +107,7 @@ struct QuadtreeResult {
 // mesh's position, normal, uv and patch id (36); per triangle: indices, patch and three corner
 // uvs, in the triangulation and again in the Tessellation (2 × 40). A leaf makes at most about
 // 1.7 vertices and 3.3 triangles (measured on the teapot, rules A–D and T: 6,305 vertices and
-// 12,370 triangles for 4,712 leaves at B; 105,540 and 209,678 for 65,234 at D 0.02), so 2 and 4.
+// 12,370 triangles for 4,712 leaves at B; 106,458 and 211,515 for 65,267 at D 0.02), so 2 and 4.
 constexpr size_t kTessellationBytesPerNode =
     sizeof(QuadLeaf) + 2 * (12 + 16 + 64 + 36) + 4 * 2 * (3 * 4 + 4 + 3 * 8);
 

@@ -5,8 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <limits>
 #include <stdexcept>
+
+#include "geometry/model_frame.h"
 
 namespace tessera {
 namespace {
@@ -56,16 +57,10 @@ ToleranceSpec parseTolerance(const std::string& text) {
 }
 
 double controlPointDiagonal(const std::vector<BezierPatch>& patches) {
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  glm::dvec3 lo(inf), hi(-inf);
-  for (const BezierPatch& patch : patches)
-    for (size_t k = 0; k < patch.cp.size(); ++k) {
-      // A weight-0 control point has no affine position of its own (a direction).
-      if (!patch.weights.empty() && !(patch.weights[k] > 0)) continue;
-      lo = glm::min(lo, patch.cp[k]);
-      hi = glm::max(hi, patch.cp[k]);
-    }
-  const double diagonal = hi.x >= lo.x ? glm::length(hi - lo) : 0.0;
+  const ControlPointBox box = controlPointBox(patches);
+  // hypot, not the length's squares: the model at 10⁻³⁰⁰ has a diagonal too.
+  const glm::dvec3 extent = box.hi - box.lo;
+  const double diagonal = box.empty ? 0.0 : std::hypot(extent.x, extent.y, extent.z);
   if (!(diagonal > 0) || !std::isfinite(diagonal))
     throw std::invalid_argument(
         "a relative tolerance needs a model of nonzero size (the control points' bounding box "

@@ -17,7 +17,7 @@ struct FaceGroup {
   std::vector<size_t> faces;                          // indices into model.faces
   std::vector<std::vector<BezierPatch>> facePatches;  // per face of the group
   std::vector<uint32_t> firstPatch;                   // per face, its first patch in the tree
-  std::vector<BezierPatch> patches;                   // all, in tree order
+  std::vector<BezierPatch> patches;                   // all, in tree order, in the local frame
 };
 
 bool isBicubicFace(const TrimmedFace& face) {
@@ -38,7 +38,7 @@ TrimSet groupTrimSet(const TrimmedModel& model, const FaceGroup& group) {
   return packTrimSet(loops, pieces);
 }
 
-void tessellateGroup(const TrimmedModel& model, const FaceGroup& group,
+void tessellateGroup(const TrimmedModel& model, const FaceGroup& group, const ModelFrame& frame,
                      const QuadtreeOptions& options, Backend& backend, TrimClassifier* trim,
                      unsigned threads, FaceTessellations& out) {
   Stopwatch step;
@@ -71,6 +71,7 @@ void tessellateGroup(const TrimmedModel& model, const FaceGroup& group,
     QuadLeaf local = leaf;
     local.patchIndex -= group.firstPatch[k];
     faceTrees[k].depth = std::max(faceTrees[k].depth, leaf.level);
+    faceTrees[k].boundScale = frame.scale;
     faceTrees[k].leaves.push_back(local);
   }
   out.treeMs += step.elapsedMs();
@@ -103,8 +104,10 @@ void tessellateGroup(const TrimmedModel& model, const FaceGroup& group,
     for (size_t k = begin; k < end; ++k) {
       const std::vector<gpu::EvalSample> faceSamples(samples.begin() + long(firstQuery[k]),
                                                      samples.begin() + long(firstQuery[k + 1]));
-      out.faces[group.faces[k]] = assembleTessellation(
-          group.facePatches[k].size(), std::move(faceTrees[k]), params[k], faceSamples);
+      Tessellation& face = out.faces[group.faces[k]];
+      face = assembleTessellation(group.facePatches[k].size(), std::move(faceTrees[k]), params[k],
+                                  faceSamples);
+      toModelCoordinates(face, frame);
     }
   });
   out.assembleMs += step.elapsedMs();
@@ -112,8 +115,9 @@ void tessellateGroup(const TrimmedModel& model, const FaceGroup& group,
 
 }  // namespace
 
-FaceTessellations tessellateFaces(const TrimmedModel& model, double tolerance, Backend& backend,
-                                  TrimClassifier* trim, unsigned threads) {
+FaceTessellations tessellateFaces(const TrimmedModel& model, double tolerance,
+                                  const ModelFrame& frame, Backend& backend, TrimClassifier* trim,
+                                  unsigned threads) {
   FaceTessellations out;
   out.faces.resize(model.faces.size());
   FaceGroup groups[2];  // bicubic polynomial faces, the others
@@ -127,16 +131,24 @@ FaceTessellations tessellateFaces(const TrimmedModel& model, double tolerance, B
                                     ", piece " + std::to_string(k));
       patches.push_back(face.pieces[k].patch);
     }
+    patches = toLocalFrame(std::move(patches), frame);
     group.faces.push_back(f);
     group.firstPatch.push_back(uint32_t(group.patches.size()));
     group.patches.insert(group.patches.end(), patches.begin(), patches.end());
     group.facePatches.push_back(std::move(patches));
   }
-  const QuadtreeOptions options = toleranceOptions(tolerance);
+  const QuadtreeOptions options = toleranceOptions(tolerance / frame.scale);
   for (const FaceGroup& group : groups)
     if (!group.faces.empty())
-      tessellateGroup(model, group, options, backend, trim, threads, out);
+      tessellateGroup(model, group, frame, options, backend, trim, threads, out);
   return out;
+}
+
+ModelFrame trimmedModelFrame(const TrimmedModel& model) {
+  std::vector<BezierPatch> pieces;
+  for (const TrimmedFace& face : model.faces)
+    for (const BezierPatchPiece& piece : face.pieces) pieces.push_back(piece.patch);
+  return modelFrame(pieces);
 }
 
 }  // namespace tessera

@@ -6,8 +6,8 @@
 // patch sides with equal control points and of equal positions stays inside a face, so two
 // faces never weld: they meet only through their shared trim points), and all vertices are
 // evaluated in one call per tree. Without the trim pass each face's Tessellation is bit for
-// bit what tessellate() gives for that face's pieces alone (rule T decides a node from its own
-// patch only, and the mirror evaluates each point on its own).
+// bit what tessellate() gives for that face's pieces alone in the same frame (rule T decides a
+// node from its own patch only, and the mirror evaluates each point on its own).
 //
 // With `trim` set, the tree is built by buildTrimmedQuadtree: nodes outside a face's loops
 // stop splitting, and those leaves are left out of the triangulation (none of their triangles
@@ -34,8 +34,16 @@ struct FaceTessellations {
   double assembleMs = 0;          // welding and per-face meshes, faces in parallel
 };
 
-// `trim` may be null (no trim pass). `threads` as parallelFor takes it (0: all cores).
-FaceTessellations tessellateFaces(const TrimmedModel& model, double tolerance, Backend& backend,
-                                  TrimClassifier* trim, unsigned threads);
+// `trim` may be null (no trim pass). `threads` as parallelFor takes it (0: all cores). The
+// trees work in `frame` (δ/scale there) and the faces' meshes come back in model coordinates
+// (tessellate.h, toModelCoordinates); a face's mesh is what tessellate() gives its pieces
+// alone in that frame.
+FaceTessellations tessellateFaces(const TrimmedModel& model, double tolerance,
+                                  const ModelFrame& frame, Backend& backend, TrimClassifier* trim,
+                                  unsigned threads);
+
+// The frame of every face's pieces together (modelFrame): one per model, so that a model's
+// faces are meshed alike wherever the model sits.
+ModelFrame trimmedModelFrame(const TrimmedModel& model);
 
 }  // namespace tessera

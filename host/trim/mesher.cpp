@@ -249,7 +249,8 @@ TrimmedMesh meshTrimmedModel(const TrimmedModel& model, const TrimmedMeshOptions
   std::unique_ptr<TrimClassifier> mirrorTrim;
   if (options.trimQuadtree && !trim) trim = (mirrorTrim = makeMirrorTrimClassifier()).get();
   FaceTessellations tessellations = tessellateFaces(
-      model, options.tolerance, backend, options.trimQuadtree ? trim : nullptr, options.threads);
+      model, options.tolerance, options.frame ? *options.frame : trimmedModelFrame(model), backend,
+      options.trimQuadtree ? trim : nullptr, options.threads);
   timings.treeMs = tessellations.treeMs;
   timings.trimMs = tessellations.trimMs;
   timings.triangulateMs = tessellations.triangulateMs;

@@ -9,6 +9,7 @@
 // segments, and a closed solid gives a closed mesh. Design and bounds: docs/trimmed_faces.md.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <glm/glm.hpp>
 #include <string>
 #include <vector>
@@ -41,6 +42,9 @@ struct TrimmedMeshOptions {
   int maxRefineRounds = 24;        // splitting rounds for gap triangles over δ
   GapMeasure gapMeasure = GapMeasure::Geometric;
   unsigned threads = 0;            // faces cut in parallel (0: all cores); output independent
+  // The local frame of the quad-trees (geometry/model_frame.h); unset: the model's own
+  // (trimmedModelFrame). A face meshed alone in its model's frame meshes as in the model.
+  std::optional<ModelFrame> frame;
 };
 
 struct TrimmedFaceStats {
