@@ -112,3 +112,62 @@ TEST_CASE("warnings: no triangles, zero normals, a large measured deviation", "[
   REQUIRE(w.size() == 1);
   CHECK(w[0].code == "large-deviation");
 }
+
+TEST_CASE("warnings: fp32RoundingBound at 1, 10^6, among the subnormals and beyond",
+          "[warnings][scale]") {
+  CHECK(fp32RoundingBound(0.0) == 0.0);
+  CHECK(fp32RoundingBound(1.0) == 0x1p-24);  // spacing 2⁻²³ in [1, 2)
+  CHECK(fp32RoundingBound(1.5) == 0x1p-24);
+  CHECK(fp32RoundingBound(-3.525) == 0x1p-23);     // [2, 4)
+  CHECK(fp32RoundingBound(1e6) == 0x1p-5);         // [2¹⁹, 2²⁰): spacing 2⁻⁴
+  CHECK(fp32RoundingBound(0x1p-126) == 0x1p-150);  // FLT_MIN: the subnormals' spacing
+  CHECK(fp32RoundingBound(1e-40) == 0x1p-150);     // a subnormal
+  CHECK(fp32RoundingBound(1e-300) == 1e-300);      // rounds to 0: the whole of it
+  CHECK(std::isinf(fp32RoundingBound(1e39)));      // beyond FLT_MAX
+  // The bound holds: every rounding of these stays within it.
+  for (double x : {1.0 / 3.0, 3.525, 1e6 + 1.4, 1e-40 / 3.0, 12345.678})
+    CHECK(std::abs(double(float(x)) - x) <= fp32RoundingBound(x));
+}
+
+TEST_CASE("warnings: fp32 output that cannot hold the accuracy asked for", "[warnings][scale]") {
+  const std::vector<BezierPatch> teapot = readBpt(TESSERA_SOURCE_DIR "/data/teapot.bpt");
+  const auto moved = [&](double offset) {
+    std::vector<BezierPatch> patches = teapot;
+    for (BezierPatch& p : patches)
+      for (glm::dvec3& c : p.cp) c += glm::dvec3(offset);
+    return patches;
+  };
+  Backend cpu = makeMirrorBackend();
+  // `tolerance` > 0 stands for rule T's δ in the check only (the mesh is made at 0.1%: δ =
+  // 10⁻⁶ would take ~10⁸ triangles).
+  const auto warningsAt = [&](const std::vector<BezierPatch>& patches, SplitRule rule,
+                              double tolerance, bool doubleOutput) {
+    const QuadtreeOptions o = ruleOptions(rule, patches);
+    Tessellation t = tessellate(patches, o, cpu);
+    if (doubleOutput) t.mesh.positionsDouble.assign(t.mesh.positions.size(), glm::dvec3(0.0));
+    const double delta = tolerance > 0 ? tolerance : o.tolerance;
+    return findResultWarnings(t, patches, nullptr, rule == SplitRule::Tolerance ? delta : 0.0);
+  };
+  // Rules A–D: against 10⁻⁴ of the size (the diagonal 8.276, so 8.28·10⁻⁴); rule T at its
+  // default δ (0.1% of it) against 10% of δ, the same. At 10³ a vertex rounds by up to
+  // √3·2⁻¹⁵ = 5.3·10⁻⁵, at 10⁴ by √3·2⁻¹¹ = 8.46·10⁻⁴, at 10⁶ by 0.054.
+  for (SplitRule rule : {SplitRule::Midpoint, SplitRule::Tolerance}) {
+    INFO("rule " << splitRuleLetter(rule));
+    CHECK(codes(warningsAt(teapot, rule, 0, false)).empty());
+    CHECK(codes(warningsAt(moved(1e3), rule, 0, false)).empty());
+    const std::vector<ResultWarning> far = warningsAt(moved(1e6), rule, 0, false);
+    REQUIRE(codes(far) == "fp32-output ");
+    CHECK(far[0].message.find("--precision double") != std::string::npos);
+    CHECK(codes(warningsAt(moved(1e4), rule, 0, false)) == "fp32-output ");
+    // Written in double (--precision double fills positionsDouble): nothing to warn about.
+    CHECK(codes(warningsAt(moved(1e6), rule, 0, true)).empty());
+  }
+  // Rule T: against 10% of δ. At the origin a vertex rounds by up to √3·2⁻²³ = 2.1·10⁻⁷.
+  // (The tree was made at 0.1%, so the smaller δ also finds the patches unproven.)
+  CHECK(codes(warningsAt(teapot, SplitRule::Tolerance, 1e-5, false)) == "unproven-patch ");
+  const std::vector<ResultWarning> fine = warningsAt(teapot, SplitRule::Tolerance, 1e-6, false);
+  REQUIRE(codes(fine) == "unproven-patch fp32-output ");
+  CHECK(fine[1].message.find("10% of the tolerance 1e-06") != std::string::npos);
+  CHECK(fine[0].message.find("patches 0, 1, 2, 3, 4 and 27 more are not proven within the "
+                             "tolerance 1e-06: rule T reached") == 0);
+}

@@ -227,7 +227,8 @@ int run(const TessellateArgs& a) {
   if (geometric)
     for (const DeviationReport& r : geometric->perPatch) geometricPerPatch.push_back(r.maxDeviation);
   const std::vector<ResultWarning> warnings =
-      findResultWarnings(t, patches, geometric ? &geometricPerPatch : nullptr);
+      findResultWarnings(t, patches, geometric ? &geometricPerPatch : nullptr,
+                         ruleT && !view ? options.tolerance : 0.0);
   if (!a.quiet)
     for (const ResultWarning& w : warnings)
       std::fprintf(stderr, "tessera: warning: %s\n", w.message.c_str());

@@ -34,6 +34,10 @@ DeviationReport measureDeviation(const Tessellation& tessellation,
   // split over all cores and merged afterwards in triangle order (the result does not depend
   // on the thread count).
   std::vector<double> triangleMax(triangles, 0.0), triangleSum(triangles, 0.0);
+  const bool inDouble = mesh.positionsDouble.size() == mesh.positions.size();
+  const auto position = [&](uint32_t v) {
+    return inDouble ? mesh.positionsDouble[v] : glm::dvec3(mesh.positions[v]);
+  };
   auto measureRange = [&](size_t first, size_t last) {
     for (size_t t = first; t < last; ++t) {
       const BezierPatch& patch = patches[tessellation.trianglePatch[t]];
@@ -43,9 +47,8 @@ DeviationReport measureDeviation(const Tessellation& tessellation,
         for (int j = 0; i + j <= n; ++j) {
           const double wa = double(i) / n, wb = double(j) / n, wc = 1.0 - wa - wb;
           const glm::dvec2 at = wa * glm::dvec2(uv[0]) + wb * glm::dvec2(uv[1]) + wc * glm::dvec2(uv[2]);
-          const glm::dvec3 p = wa * glm::dvec3(mesh.positions[corner[0]]) +
-                               wb * glm::dvec3(mesh.positions[corner[1]]) +
-                               wc * glm::dvec3(mesh.positions[corner[2]]);
+          const glm::dvec3 p =
+              wa * position(corner[0]) + wb * position(corner[1]) + wc * position(corner[2]);
           double d;
           if (metric == DeviationMetric::Parametric) {
             const glm::dvec3 truth = patch.degreeU == 3 && patch.degreeV == 3

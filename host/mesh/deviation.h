@@ -37,6 +37,8 @@ struct Tessellation;
 // corners included, against the triangle's own patch at its corners' (u, v) there.
 // (It takes the Tessellation, not only its mesh: a vertex welded across patches keeps one
 // patch's (u, v), so the mesh alone cannot say where a triangle lies on its own patch.)
+// The corners are mesh.positionsDouble where the mesh has them (what --precision double
+// writes), else the fp32 positions: the deviation of the mesh as written.
 DeviationReport measureDeviation(const Tessellation& tessellation,
                                  const std::vector<BezierPatch>& patches, int subdivisions = 4,
                                  DeviationMetric metric = DeviationMetric::Parametric);

@@ -1,11 +1,13 @@
 #include "mesh/result_warnings.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 
 #include "geometry/bezier.h"
 #include "geometry/general_patch.h"
+#include "geometry/model_frame.h"
 
 namespace tessera {
 namespace {
@@ -28,9 +30,51 @@ std::string percent(double fraction) {
   return text;
 }
 
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+
+// "fp32-output" (result_warnings.h), or nothing.
+std::vector<ResultWarning> fp32OutputWarning(const Tessellation& t,
+                                             const std::vector<BezierPatch>& patches,
+                                             double tolerance) {
+  const ControlPointBox box = controlPointBox(patches);
+  if (!t.mesh.positionsDouble.empty() || box.empty) return {};
+  const glm::dvec3 far = glm::max(glm::abs(box.lo), glm::abs(box.hi));
+  const double largest = std::max({far.x, far.y, far.z});
+  const glm::dvec3 extent = box.hi - box.lo;
+  const double size = std::hypot(extent.x, extent.y, extent.z);
+  const double vertexMove = std::sqrt(3.0) * fp32RoundingBound(largest);
+  const bool ruleT = tolerance > 0;
+  const double allowed = ruleT ? kFp32OfTolerance * tolerance : kFp32OfSize * size;
+  if (!(vertexMove > allowed)) return {};
+  return {{"fp32-output",
+           "the fp32 mesh cannot hold the accuracy asked for: its coordinates reach " +
+               number(largest) + ", where fp32 rounds a vertex by up to " + number(vertexMove) +
+               ", more than " +
+               (ruleT ? percent(kFp32OfTolerance) + " of the tolerance " + number(tolerance)
+                      : percent(kFp32OfSize) + " of the model's size " + number(size)) +
+               " (write it with --precision double: OBJ, PLY)"}};
+}
+
 }  // namespace
 
-double cornerPlaneDistanceRatio(const BezierPatch& patch) {
+double fp32RoundingBound(double m) {
+  m = std::fabs(m);
+  if (m == 0.0) return 0.0;
+  if (m > double(FLT_MAX)) return INFINITY;
+  int exponent = 0;
+  std::frexp(m, &exponent);  // m = f·2^exponent, f in [0.5, 1): fp32's spacing there is
+                             // 2^(exponent − 24), down to the subnormals' 2⁻¹⁴⁹
+  return std::min(std::ldexp(1.0, std::max(exponent, -125) - 25), m);
+}
+
+double cornerPlaneDistanceRatio(const BezierPatch& model) {
+  // A ratio of lengths: measured in the patch's own frame, where the squares below neither
+  // under- nor overflow whatever the model's units.
+  const BezierPatch patch = toLocalFrame({model}, modelFrame({model})).front();
   const glm::dvec3 c00 = patchPoint(patch, 0, 0), c10 = patchPoint(patch, 1, 0),
                    c01 = patchPoint(patch, 0, 1), c11 = patchPoint(patch, 1, 1);
   const glm::dvec3 normal = glm::cross(c11 - c00, c01 - c10);
@@ -49,7 +93,8 @@ double cornerPlaneDistanceRatio(const BezierPatch& patch) {
 
 std::vector<ResultWarning> findResultWarnings(const Tessellation& t,
                                               const std::vector<BezierPatch>& patches,
-                                              const std::vector<double>* geometricPerPatchMax) {
+                                              const std::vector<double>* geometricPerPatchMax,
+                                              double tolerance) {
   std::vector<ResultWarning> warnings;
   const TriangleMesh& mesh = t.mesh;
   if (mesh.triangleCount() == 0) {
@@ -105,6 +150,29 @@ std::vector<ResultWarning> findResultWarnings(const Tessellation& t,
                                                  " from the surface by up to " + percent(worst) +
                                                  " of the patch's size (measured)"});
   }
+  if (tolerance > 0) {
+    std::vector<double> bound(patches.size(), 0.0);
+    for (const QuadLeaf& leaf : t.tree.leaves)
+      if (leaf.patchIndex < patches.size())
+        bound[leaf.patchIndex] = std::max(
+            bound[leaf.patchIndex],
+            std::isnan(leaf.flatness) ? INFINITY : double(leaf.flatness) * t.tree.boundScale);
+    std::vector<size_t> unproven;
+    double worst = 0;
+    for (size_t p = 0; p < patches.size(); ++p)
+      if (bound[p] > tolerance) {
+        unproven.push_back(p);
+        worst = std::max(worst, bound[p]);
+      }
+    if (!unproven.empty())
+      warnings.push_back(
+          {"unproven-patch", listPatches(unproven) + (unproven.size() == 1 ? " is" : " are") +
+                                 " not proven within the tolerance " + number(tolerance) +
+                                 ": rule T reached the depth or size limit with a bound of up to " +
+                                 number(worst) + " (there the mesh may be farther off)"});
+  }
+  for (ResultWarning& w : fp32OutputWarning(t, patches, tolerance))
+    warnings.push_back(std::move(w));
   return warnings;
 }
 
