@@ -67,7 +67,9 @@ TESSERA_CONST(uint, kSplitRuleTolerance, 4u);   // (T) the node's proven deviati
 TESSERA_CONST(uint, kCauseSplit, 0u);     // not a leaf: split at NodeDecision.split
 TESSERA_CONST(uint, kCauseFlat, 1u);      // every linearity and flatness test passed
 TESSERA_CONST(uint, kCauseMaxDepth, 2u);  // reached the maximum depth
-TESSERA_CONST(uint, kCauseMinSize, 3u);   // smaller than the minimum parameter size
+// Smaller than the minimum parameter size, or (rules B-D) too thin for fp32 to hold children:
+// narrower than kResolvedWidthUlps of its coordinates (lib/quadtree_classify.h).
+TESSERA_CONST(uint, kCauseMinSize, 3u);
 TESSERA_CONST(uint, kCauseUniform, 4u);   // a cell of rule (A)'s uniform grid
 // Rule T's midpoint splits go only where the bound needs them: along u alone, along v alone,
 // or both (kCauseSplit); its grid splits are kCauseSplitGrid.
@@ -95,6 +97,17 @@ TESSERA_CONST(int, kToleranceRatioPieces, 4);
 // level: on the teapot at 0.1, a margin of 0.1 took C and D to the maximum depth (37k and
 // 124k leaves against B's 4.7k); 0.25 ends every node by flatness (7.7k and 8.4k).
 TESSERA_CONST(float, kSplitMargin, 0.25f);
+// Rules B-D split a node only when its width on the model (the highest of the four triangles
+// from its split point to consecutive corners) is at least this many fp32 units in the last
+// place of its largest coordinate. A child is at least a quarter of its parent each way
+// (kSplitMargin) and a leaf's fan triangles are at least a quarter of the leaf high, so a
+// leaf's triangles stay about 64 / 16 = 4 ulps high: more than rounding each corner (half an
+// ulp a coordinate) can flatten. Scale-free, unlike a parameter size. Narrower nodes come only
+// where the surface itself is degenerate (the teaspoon's handle tip, P_u and P_v nearly
+// parallel): its tests fail however deep the tree goes, and deeper leaves only give triangles
+// of zero area in fp32 (docs/watertight.md). No teapot or teacup tree meets it (256 would
+// stop rule C's sliver nodes on the teapot's spout at 0.02).
+TESSERA_CONST(float, kResolvedWidthUlps, 64.0f);
 // Newton iterations of rule D per seed (fixed count: GPU and mirror run the same steps).
 TESSERA_CONST(int, kNewtonIterations, 8);
 

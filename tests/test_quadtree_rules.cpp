@@ -136,6 +136,48 @@ TEST_CASE("rules C and D split at a sharp bump; D within 1e-3 of the true maximu
   REQUIRE(d.split.z >= c.split.z);  // D's κ at its point is at least C's
 }
 
+TEST_CASE("rules B to D split no node thinner than fp32 resolves on the model", "[quadtree]") {
+  // A cone with its apex at u = 0 (a collapsed side) at (1, 1, 1), a quarter turn in v: a node
+  // [0, δ]×[0, 1] there fails flatness at any δ (its corners' normals are a quarter turn
+  // apart), and is about δ/2 wide. Narrower than kResolvedWidthUlps units in the last place of
+  // its coordinates (about 7.6e-6 at 1) it is a MinSize leaf; wider, it splits. Scaled by 2^-20
+  // or 2^20 the answer is the same: the limit is relative to the coordinates, not a length.
+  // (At the origin fp32 resolves far finer, and the same node splits. The parameter limit
+  // minSize is off, so only the width decides.)
+  const auto cone = [](double scale, double apex = 1.0) {
+    const glm::dvec2 quarter[4] = {{1, 0}, {1, 0.55}, {0.55, 1}, {0, 1}};
+    BezierPatch p;
+    p.cp.resize(16);
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        p.at(i, j) = scale * (glm::dvec3(apex) + glm::dvec3(i / 3.0 * quarter[j], 0.5 * i));
+    return p;
+  };
+  const auto classify = [](NodeClassifier& classifier, const BezierPatch& patch, SplitRule rule,
+                           float delta) {
+    std::vector<gpu::BicubicPatch> patches = {toGpuPatch(patch)};
+    std::vector<gpu::QuadNode> node = {{gpu::vec4(0, 0, delta, 1), 0, 1, 0, 0}};
+    QuadtreeOptions options;
+    options.rule = rule;
+    options.minSize = 0;
+    std::vector<gpu::NodeDecision> decisions;
+    LevelStats stats;
+    classifier.beginTree(patches);
+    classifier.classify(patches, node, options, decisions, stats);
+    return decisions.at(0).cause;
+  };
+  auto mirror = makeMirrorClassifier();
+  auto reference = makeReferenceClassifier();
+  for (double scale : {1.0, 0x1p-20, 0x1p20})
+    for (SplitRule rule : {SplitRule::Midpoint, SplitRule::SampledMax, SplitRule::TrueMax})
+      for (NodeClassifier* classifier : {mirror.get(), reference.get()}) {
+        INFO(classifier->name() << " rule " << splitRuleLetter(rule) << " scale " << scale);
+        REQUIRE(classify(*classifier, cone(scale), rule, 0x1p-20f) == gpu::kCauseMinSize);
+        REQUIRE(classify(*classifier, cone(scale), rule, 0x1p-10f) == gpu::kCauseSplit);
+        REQUIRE(classify(*classifier, cone(scale, 0.0), rule, 0x1p-20f) == gpu::kCauseSplit);
+      }
+}
+
 TEST_CASE("the GPU's rule D finds the bump's maximum too", "[gpu][quadtree]") {
   vk::Context& context = test::gpuContext();
   BezierPatch bump = bumpPatch();

@@ -27,7 +27,7 @@ using glm::dvec3;
 constexpr double kEps = 1e-12;  // ε of docs/conventions.md in double
 
 struct Frame {
-  dvec3 tu, tv, n;
+  dvec3 p, tu, tv, n;
   double kappa;
 };
 
@@ -70,6 +70,7 @@ dvec3 unitOrZero(const dvec3& v, double tol) {
 Frame frameAt(const PatchContext& p, double u, double v) {
   SurfaceDerivatives d = p.derivs(u, v);
   Frame f;
+  f.p = d.p;
   f.tu = unitOrZero(d.pu, kEps * p.scale);
   f.tv = unitOrZero(d.pv, kEps * p.scale);
   f.n = unitNormal(d, u, v, p.scale, kEps);
@@ -84,6 +85,23 @@ double kappaAt(const PatchContext& p, double u, double v) {
 double angleTest(const dvec3& a, const dvec3& b) {
   if (glm::dot(a, a) == 0.0 || glm::dot(b, b) == 0.0) return 0.0;
   return 1.0 - glm::dot(a, b);
+}
+
+// The node's width on the model against fp32's unit in the last place of its largest
+// coordinate, as resolvesChildren in lib/quadtree_classify.h (the same bound, in double).
+bool resolvesChildren(const Frame& s, const Frame& c0, const Frame& c1, const Frame& c2,
+                      const Frame& c3) {
+  const auto height = [](const dvec3& a, const dvec3& b, const dvec3& c) {
+    const double longest = std::sqrt(std::max({glm::dot(b - a, b - a), glm::dot(c - a, c - a),
+                                               glm::dot(c - b, c - b)}));
+    return longest > 0 ? glm::length(glm::cross(b - a, c - a)) / longest : 0.0;
+  };
+  const double width = std::max({height(s.p, c0.p, c1.p), height(s.p, c1.p, c2.p),
+                                 height(s.p, c2.p, c3.p), height(s.p, c3.p, c0.p)});
+  double largest = 0;
+  for (const Frame* f : {&s, &c0, &c1, &c2, &c3})
+    for (int k = 0; k < 3; ++k) largest = std::max(largest, std::fabs(f->p[k]));
+  return largest > 0 && width >= double(gpu::kResolvedWidthUlps) * largest * 0x1p-23;
 }
 
 struct Rect {
@@ -330,7 +348,7 @@ gpu::NodeDecision classifyNode(const PatchContext& p, const gpu::QuadNode& node,
     d.cause = gpu::kCauseFlat;
   else if (node.level >= o.maxDepth)
     d.cause = gpu::kCauseMaxDepth;
-  else if (std::min(r.u1 - r.u0, r.v1 - r.v0) < o.minSize)
+  else if (std::min(r.u1 - r.u0, r.v1 - r.v0) < o.minSize || !resolvesChildren(sp, c0, c1, c2, c3))
     d.cause = gpu::kCauseMinSize;
   else
     d.cause = gpu::kCauseSplit;

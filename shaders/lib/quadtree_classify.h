@@ -22,6 +22,7 @@
 // Position, unit tangents along u and v (zero where the derivative vanishes, as along a
 // collapsed edge) and unit normal (zero where none exists) at one point.
 struct FrameSample {
+  vec3 p;
   vec3 tu;
   vec3 tv;
   vec3 n;
@@ -39,6 +40,7 @@ FrameSample frameAt(IN(CLASSIFY_PATCH) bp, float u, float v, float scale, float 
   PRECISE float tolArea = eps * scale * scale;
   PRECISE float tolLength = eps * scale;
   FrameSample f;
+  f.p = d.p;
   f.tu = unitOrZero(d.pu, tolLength);
   f.tv = unitOrZero(d.pv, tolLength);
   f.n = bicubicNormal(d, u, v, tolArea);
@@ -59,6 +61,40 @@ float angleTest(vec3 a, vec3 b) {
   if (dot(a, a) == 0.0f || dot(b, b) == 0.0f) return 0.0f;
   PRECISE float t = 1.0f - dot(a, b);
   return t;
+}
+
+// Height of the triangle (a, b, c) over its longest side: 2·area / longest side (0 when all
+// three are one point).
+float triangleHeight(vec3 a, vec3 b, vec3 c) {
+  PRECISE vec3 ab = b - a;
+  PRECISE vec3 ac = c - a;
+  PRECISE vec3 bc = c - b;
+  PRECISE vec3 n = cross(ab, ac);
+  PRECISE float twiceArea = sqrt(dot(n, n));
+  PRECISE float longest = sqrt(max(dot(ab, ab), max(dot(ac, ac), dot(bc, bc))));
+  if (!(longest > 0.0f)) return 0.0f;
+  PRECISE float h = twiceArea / longest;
+  return h;
+}
+
+// Whether fp32 resolves a node's children on the model (kResolvedWidthUlps): its width, the
+// highest of the triangles from the split point s to consecutive corners, against the unit in
+// the last place of its largest coordinate m (2^-23·m, within a factor 2). Scale-free: both
+// sides scale with the model, and the width is taken in units of m, so that its squares
+// neither underflow for a tiny model nor overflow for a huge one.
+bool resolvesChildren(vec3 s, vec3 c0, vec3 c1, vec3 c2, vec3 c3) {
+  PRECISE vec3 m3 = max(max(abs(s), abs(c0)), max(max(abs(c1), abs(c2)), abs(c3)));
+  PRECISE float m = max(m3.x, max(m3.y, m3.z));
+  if (!(m > 0.0f)) return false;
+  PRECISE float inv = 1.0f / m;
+  PRECISE vec3 a = s * inv;
+  PRECISE vec3 b0 = c0 * inv;
+  PRECISE vec3 b1 = c1 * inv;
+  PRECISE vec3 b2 = c2 * inv;
+  PRECISE vec3 b3 = c3 * inv;
+  PRECISE float width = max(max(triangleHeight(a, b0, b1), triangleHeight(a, b1, b2)),
+                            max(triangleHeight(a, b2, b3), triangleHeight(a, b3, b0)));
+  return width >= kResolvedWidthUlps * 1.1920929e-7f;
 }
 
 // Node-local coordinates (s, t) ∈ [0,1]² to patch parameters.
@@ -276,7 +312,8 @@ NodeDecision classifyNode(IN(CLASSIFY_PATCH) bp, IN(QuadNode) node, uint rule, i
     d.cause = kCauseFlat;
   } else if (node.level >= params.maxDepth) {
     d.cause = kCauseMaxDepth;
-  } else if (min(r.z - r.x, r.w - r.y) < params.minSize) {
+  } else if (min(r.z - r.x, r.w - r.y) < params.minSize ||
+             !resolvesChildren(sp.p, c0.p, c1.p, c2.p, c3.p)) {
     d.cause = kCauseMinSize;
   } else {
     d.cause = kCauseSplit;
