@@ -51,11 +51,15 @@ inline EdgeCensus censusOf(const TriangleMesh& mesh, double minArea) {
   return c;
 }
 
-// T-junctions: a vertex within `eps` of the inside of an edge that only one triangle uses
-// (strictly between its ends, 1e-6 of its length and more than `eps` away from them: a vertex
-// within eps of an end is at that end at this resolution). There the neighbour's side is
-// split and this one is not, so the surface has a crack however small. Vertices are binned in a
-// uniform grid of cells the mean open edge's length; `largestGap` gets the longest such edge.
+// T-junctions: a vertex on the mesh's boundary (an end of some edge only one triangle uses)
+// within `eps` of the inside of another such edge (strictly between its ends, 1e-6 of its
+// length and more than `eps` away from them: a vertex within eps of an end is at that end at
+// this resolution). There the neighbour's side is split and this one is not, so the surface has
+// a crack however small; the split side's vertex is on the crack, so it ends open edges itself.
+// A vertex all of whose edges have two triangles is inside the surface, whatever its distance
+// to an open edge (where a sheet is thinner than eps: the teaspoon's handle tip). Vertices are
+// binned in a uniform grid of cells the mean open edge's length; `largestGap` gets the longest
+// such edge.
 inline size_t tJunctionCount(const TriangleMesh& mesh, const EdgeCensus& c, double eps,
                              double* largestGap = nullptr) {
   std::vector<std::pair<uint32_t, uint32_t>> open;
@@ -73,9 +77,11 @@ inline size_t tJunctionCount(const TriangleMesh& mesh, const EdgeCensus& c, doub
   const auto key = [](const glm::dvec3& k) {
     return (int64_t(k.x) * 73856093) ^ (int64_t(k.y) * 19349663) ^ (int64_t(k.z) * 83492791);
   };
+  std::vector<bool> onBoundary(mesh.positions.size(), false);
+  for (const auto& [a, b] : open) onBoundary[a] = onBoundary[b] = true;
   std::unordered_map<int64_t, std::vector<uint32_t>> bins;
   for (uint32_t v = 0; v < mesh.positions.size(); ++v)
-    bins[key(cellOf(glm::dvec3(mesh.positions[v])))].push_back(v);
+    if (onBoundary[v]) bins[key(cellOf(glm::dvec3(mesh.positions[v])))].push_back(v);
   size_t found = 0;
   for (const auto& [a, b] : open) {
     const glm::dvec3 pa(mesh.positions[a]), pb(mesh.positions[b]), d = pb - pa;

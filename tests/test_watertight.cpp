@@ -211,6 +211,20 @@ TEST_CASE("the T-junction check finds a vertex inside an open edge", "[watertigh
   REQUIRE(test::tJunctionCount(mesh, test::censusOf(mesh, 0.0), 1e-6) == 0);
 }
 
+TEST_CASE("a vertex inside the surface near an open edge is no T-junction", "[watertight]") {
+  // A fan around vertex 4 (every edge of it used twice) whose open edge 0–1 passes 1e-7 from it:
+  // a sheet thinner than eps, as at the teaspoon's handle tip, not a crack.
+  TriangleMesh mesh;
+  mesh.positions = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}, {1, 1e-7f, 0}};
+  mesh.indices = {4, 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0};
+  REQUIRE(test::tJunctionCount(mesh, test::censusOf(mesh, 0.0), 1e-6) == 0);
+  // The same point as the split side's vertex, on its boundary (the quad above keeps 0–1
+  // whole; two triangles below meet at vertex 4): a crack 1e-7 wide.
+  mesh.positions.push_back({1, -1, 0});
+  mesh.indices = {0, 1, 2, 0, 2, 3, 0, 5, 4, 4, 5, 1};
+  REQUIRE(test::tJunctionCount(mesh, test::censusOf(mesh, 0.0), 1e-6) == 1);
+}
+
 TEST_CASE("the Vulkan path gives the same watertight teapot", "[gpu][watertight]") {
   auto teapot = readBpt(TESSERA_SOURCE_DIR "/data/teapot.bpt");
   Backend gpu = makeVulkanBackend(test::gpuContext());
