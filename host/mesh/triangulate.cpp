@@ -6,6 +6,8 @@
 #include <map>
 #include <unordered_map>
 
+#include "geometry/bezier.h"
+#include "mesh/near_points.h"
 #include "mesh/ring_triangulation.h"
 #include "mesh/shared_edges.h"
 #include "mesh/side_fold.h"
@@ -37,6 +39,12 @@ struct VertexKeyHash {
 
 // Sorted coordinates of leaf corners on the lines u = const or v = const inside a patch.
 using LineIndex = std::unordered_map<uint64_t, std::vector<float>>;
+float fromBits(uint32_t b) {
+  float x;
+  std::memcpy(&x, &b, sizeof x);
+  return x;
+}
+
 uint64_t lineKey(uint32_t patch, float coordinate) { return (uint64_t(patch) << 32) | bits(coordinate); }
 
 void sortUnique(std::vector<float>& values) {
@@ -59,6 +67,7 @@ class Triangulator {
       : leaves_(leaves), patches_(patches), topology_(findSharedEdges(patches)) {
     mesh_.sharedEdgeGroups = topology_.groupCount;
     sharedPoints_.resize(topology_.groupCount);
+    groupSide_.assign(topology_.groupCount, {0, -1});
     // Sized up front: rehashing these maps was a third of the triangulation time.
     alongU_.reserve(leaves_.size() * 2);
     alongV_.reserve(leaves_.size() * 2);
@@ -68,26 +77,10 @@ class Triangulator {
     mesh_.trianglePatch.reserve(leaves_.size() * 8 / 3);
     mesh_.cornerUv.reserve(leaves_.size() * 8);
     findFolds();
-    for (const QuadLeaf& leaf : leaves_) {
-      const gpu::vec4& r = leaf.rect;
-      for (float v : {r.y, r.w})
-        for (float u : {r.x, r.z}) {
-          alongU_[lineKey(leaf.patchIndex, v)].push_back(u);
-          alongV_[lineKey(leaf.patchIndex, u)].push_back(v);
-          int side;
-          float t;
-          if (onSide(u, v, side, t)) {
-            const SideInfo& s = topology_.sides[leaf.patchIndex][side];
-            if (s.group >= 0) sharedPoints_[s.group].push_back(canonical(s, t));
-            const int32_t f = foldOf_[leaf.patchIndex][side];
-            if (f >= 0) folds_[f].corners.push_back(t);
-          }
-        }
-    }
-    for (LineIndex* lines : {&alongU_, &alongV_})
-      for (auto& [key, values] : *lines) sortUnique(values);
-    for (auto& values : sharedPoints_) snapTogether(values);
+    LinePoints points = collectLinePoints();
     for (uint32_t f = 0; f < folds_.size(); ++f) placeFoldPoints(f);
+    mergeNearPoints(points);
+    listRepresentatives(points);
   }
 
   ParamMesh run() {
@@ -98,27 +91,196 @@ class Triangulator {
  private:
   static float canonical(const SideInfo& s, float t) { return s.reversed ? 1.0f - t : t; }
 
-  // The two patches on a shared edge choose their points independently; points closer than
-  // this (in the curve's parameter) are one point. Mirror-image patches (the teapot's spout
-  // halves) put split points 1e-7 apart, which would otherwise give slivers that evaluate to
-  // zero area.
-  static constexpr float kSnap = 1e-6f;
+  // Every leaf corner with the leaf edges that end there, per line (near_points.h): lines
+  // u = const and v = const of each patch, and shared sides in their canonical parameter.
+  struct LinePoints {
+    std::unordered_map<uint64_t, std::vector<LinePoint>> alongU, alongV;
+    std::vector<std::vector<LinePoint>> shared;  // per group
+  };
 
-  // Sorted, with runs closer than kSnap replaced by their first value.
-  static void snapTogether(std::vector<float>& values) {
-    std::sort(values.begin(), values.end());
-    std::vector<float> kept;
-    for (float v : values)
-      if (kept.empty() || v - kept.back() > kSnap) kept.push_back(v);
-    values.swap(kept);
+  LinePoints collectLinePoints() {
+    LinePoints lines;
+    lines.alongU.reserve(leaves_.size() * 2);
+    lines.alongV.reserve(leaves_.size() * 2);
+    lines.shared.resize(topology_.groupCount);
+    for (const QuadLeaf& leaf : leaves_) {
+      const gpu::vec4& r = leaf.rect;
+      const uint32_t p = leaf.patchIndex;
+      for (float v : {r.y, r.w})
+        for (float u : {r.x, r.z}) {
+          lines.alongU[lineKey(p, v)].push_back({u, r.z - r.x});
+          lines.alongV[lineKey(p, u)].push_back({v, r.w - r.y});
+          for (int side : sidesAt(u, v)) {
+            const bool alongU = side == kSideV0 || side == kSideV1;
+            const float t = alongU ? u : v;
+            const SideInfo& s = topology_.sides[p][side];
+            if (s.group >= 0) {
+              lines.shared[s.group].push_back({canonical(s, t), alongU ? r.z - r.x : r.w - r.y});
+              groupSide_[s.group] = {p, side};
+            }
+            const int32_t f = foldOf_[p][side];
+            if (f >= 0) folds_[f].corners.push_back(t);
+          }
+        }
+    }
+    return lines;
   }
 
-  // The representative of canonical parameter c on group g (c itself if none is near).
-  float snap(int32_t group, float c) const {
-    const std::vector<float>& values = sharedPoints_[group];
-    auto it = std::lower_bound(values.begin(), values.end(), c - kSnap);
-    if (it != values.end() && *it <= c + kSnap) return *it;
+  // Near-coincident points from the two sides of each line become one vertex (merged_).
+  // Sorts every line's points.
+  void mergeNearPoints(LinePoints& lines) {
+    for (auto* line : {&lines.alongU, &lines.alongV}) {
+      const bool alongU = line == &lines.alongU;
+      for (auto& [key, points] : *line) {
+        const uint32_t patch = uint32_t(key >> 32);
+        const float fixed = fromBits(uint32_t(key));
+        const auto uvOf = [&](float t) { return alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t); };
+        const auto distinct = [&](float a, float b) {
+          return distinctOnModel(patch, uvOf(a), uvOf(b));
+        };
+        const std::vector<std::pair<float, float>> pairs = nearPairs(points, distinct);
+        if (lineIsSide(patch, alongU, fixed)) continue;  // merged with the side's own points
+        for (const auto& [a, b] : pairs)
+          merge(lineKeyOf(patch, alongU, fixed, a), lineKeyOf(patch, alongU, fixed, b));
+      }
+    }
+    for (uint32_t g = 0; g < lines.shared.size(); ++g) {
+      const auto [patch, side] = groupSide_[g];
+      const SideInfo& s = topology_.sides[patch][side];
+      const bool alongU = side == kSideV0 || side == kSideV1;
+      const float fixed = side == kSideV0 || side == kSideU0 ? 0.0f : 1.0f;
+      // (1 − c need not give back the leaf's own t bit for bit; a distance does not mind.)
+      const auto uvOf = [&](float c) {
+        const float t = canonical(s, c);
+        return alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
+      };
+      const auto distinct = [&, patch = patch](float a, float b) {
+        return distinctOnModel(patch, uvOf(a), uvOf(b));
+      };
+      for (const auto& [a, b] : nearPairs(lines.shared[g], distinct))
+        merge(groupKey(g, a), groupKey(g, b));
+    }
+    for (auto& [key, representative] : merged_) representative = find(key);
+  }
+
+  // The line indices list the points that stay, as the vertices they are: a point merged into
+  // another is that one's vertex, and a ring over both would meet it twice.
+  void listRepresentatives(const LinePoints& lines) {
+    for (auto* line : {&lines.alongU, &lines.alongV}) {
+      const bool alongU = line == &lines.alongU;
+      LineIndex& index = alongU ? alongU_ : alongV_;
+      for (const auto& [key, points] : *line) {
+        const float fixed = fromBits(uint32_t(key));
+        std::vector<float>& values = index[key];
+        for (const LinePoint& point : points)
+          if (isRepresentative(lineKeyOf(uint32_t(key >> 32), alongU, fixed, point.t)))
+            values.push_back(point.t);
+      }
+    }
+    for (uint32_t g = 0; g < lines.shared.size(); ++g)
+      for (const LinePoint& point : lines.shared[g])
+        if (isRepresentative(groupKey(g, point.t))) sharedPoints_[g].push_back(point.t);
+  }
+
+  // The sides (u, v) lies on: none, one, or two at a corner of the parameter square.
+  static std::vector<int> sidesAt(float u, float v) {
+    std::vector<int> sides;
+    if (v == 0.0f) sides.push_back(kSideV0);
+    if (v == 1.0f) sides.push_back(kSideV1);
+    if (u == 0.0f) sides.push_back(kSideU0);
+    if (u == 1.0f) sides.push_back(kSideU1);
+    return sides;
+  }
+
+  // Whether the line v = fixed (alongU) or u = fixed of `patch` is one of its sides that is
+  // shared, collapsed or folded: their points are merged (or placed) by the side's own rules.
+  bool lineIsSide(uint32_t patch, bool alongU, float fixed) const {
+    if (fixed != 0.0f && fixed != 1.0f) return false;
+    const int side = alongU ? (fixed == 0.0f ? kSideV0 : kSideV1) : (fixed == 0.0f ? kSideU0 : kSideU1);
+    const SideInfo& s = topology_.sides[patch][side];
+    return s.group >= 0 || s.collapsed || foldOf_[patch][side] >= 0;
+  }
+
+  // The vertex key of canonical parameter c on shared group g: its ends are patch corners.
+  // (Only there is c turned back into a patch parameter: 1 − c is exact at 0 and 1 alone.)
+  VertexKey groupKey(uint32_t g, float c) {
+    if (c != 0.0f && c != 1.0f) return {kEdgeParam, g, bits(c)};
+    const auto [patch, side] = groupSide_[g];
+    const SideInfo& s = topology_.sides[patch][side];
+    const float t = s.reversed ? 1.0f - c : c;
+    const bool alongU = side == kSideV0 || side == kSideV1;
+    const float fixed = side == kSideV0 || side == kSideU0 ? 0.0f : 1.0f;
+    return alongU ? baseKey(patch, t, fixed) : baseKey(patch, fixed, t);
+  }
+
+  // Whether fp32 positions tell two points of a patch apart (near_points.h): farther apart
+  // on the model, in double, than kDistinctUlps units in the last place of their coordinates.
+  bool distinctOnModel(uint32_t patch, glm::vec2 a, glm::vec2 b) const {
+    const glm::dvec3 pa = patchPoint(patches_[patch], a.x, a.y);
+    const glm::dvec3 pb = patchPoint(patches_[patch], b.x, b.y);
+    const glm::dvec3 m = glm::max(glm::abs(pa), glm::abs(pb));
+    return glm::length(pa - pb) > kDistinctUlps * 0x1p-23 * std::max({m.x, m.y, m.z});
+  }
+
+  VertexKey lineKeyOf(uint32_t patch, bool alongU, float fixed, float t) {
+    return alongU ? baseKey(patch, t, fixed) : baseKey(patch, fixed, t);
+  }
+
+  bool isRepresentative(const VertexKey& key) const {
+    return merged_.empty() || find(key) == key;
+  }
+
+  // Where on its line the vertex of the point at t is: the point it is merged into, when that
+  // point is on the same line (a leaf edge's end, for listing the points inside the edge).
+  float onLine(uint32_t patch, bool alongU, float fixed, float t) {
+    if (merged_.empty()) return t;
+    const VertexKey r = find(lineKeyOf(patch, alongU, fixed, t));
+    if (r.kind != kPatchParam || r.a != patch) return t;
+    const float u = fromBits(uint32_t(r.b >> 32)), v = fromBits(uint32_t(r.b));
+    if (alongU) return v == fixed ? u : t;
+    return u == fixed ? v : t;
+  }
+
+  // The same on a shared side, in its canonical parameter.
+  float onGroup(uint32_t g, float c) {
+    if (merged_.empty()) return c;
+    const VertexKey r = find(groupKey(g, c));
+    if (r.kind == kEdgeParam && r.a == g) return fromBits(uint32_t(r.b));
+    for (float end : {0.0f, 1.0f})
+      if (r == groupKey(g, end)) return end;
     return c;
+  }
+
+  // Merging keeps, of two keys, the one ranked first: a patch corner, then a point of a shared
+  // side, then a point inside a patch; then the smaller parameter (on a shared side, the
+  // canonical one: the first of a run, as both sides see it).
+  static bool ranksBefore(const VertexKey& x, const VertexKey& y) {
+    static constexpr int rank[] = {3, 2, 0, 1};  // by KeyKind
+    if (rank[x.kind] != rank[y.kind]) return rank[x.kind] < rank[y.kind];
+    return x.a != y.a ? x.a < y.a : x.b < y.b;
+  }
+
+  VertexKey find(VertexKey key) const {
+    for (auto it = merged_.find(key); it != merged_.end() && !(it->second == key);
+         it = merged_.find(key))
+      key = it->second;
+    return key;
+  }
+
+  // The key a vertex is merged into (itself if none); notes that the leaf met a merged one.
+  VertexKey resolve(const VertexKey& key) {
+    if (merged_.empty()) return key;
+    const VertexKey r = find(key);
+    if (!(r == key)) touchesMerge_ = true;
+    return r;
+  }
+
+  void merge(const VertexKey& x, const VertexKey& y) {
+    if (x.kind == kFoldPosition || y.kind == kFoldPosition) return;  // placed by the fold
+    VertexKey rx = find(x), ry = find(y);
+    if (rx == ry) return;
+    if (ranksBefore(ry, rx)) std::swap(rx, ry);
+    merged_[ry] = rx;
   }
 
   // Which side of the parameter square (u, v) lies on, and the parameter t along it.
@@ -192,31 +354,37 @@ class Triangulator {
     return it->second;
   }
 
-  // The vertex at (u, v) of `patch`, welded with every other patch's vertex at that point.
-  uint32_t vertexAt(uint32_t patch, float u, float v) {
+  // The key of the vertex at (u, v) of `patch` before merging near points: patch corners and
+  // collapsed sides by position, shared sides by canonical parameter, folded sides by their
+  // fold's point, anything else by (patch, u, v).
+  VertexKey baseKey(uint32_t patch, float u, float v) {
     const BezierPatch& bp = patches_[patch];
     bool uEnd = u == 0.0f || u == 1.0f, vEnd = v == 0.0f || v == 1.0f;
     if (uEnd && vEnd) {
       const glm::dvec3& corner = bp.at(u == 0.0f ? 0 : bp.degreeU, v == 0.0f ? 0 : bp.degreeV);
-      return addVertex({kPosition, positionId(corner), 0}, patch, u, v);
+      return {kPosition, positionId(corner), 0};
     }
     int side;
     float t;
     if (onSide(u, v, side, t)) {
       const SideInfo& s = topology_.sides[patch][side];
-      if (s.collapsed)
-        return addVertex({kPosition, positionId(sideControlPoints(bp, side)[0]), 0}, patch, u, v);
-      if (s.group >= 0)
-        return addVertex({kEdgeParam, uint32_t(s.group), bits(snap(s.group, canonical(s, t)))},
-                         patch, u, v);
+      if (s.collapsed) return {kPosition, positionId(sideControlPoints(bp, side)[0]), 0};
+      if (s.group >= 0) return {kEdgeParam, uint32_t(s.group), bits(canonical(s, t))};
       if (const int32_t f = foldOf_[patch][side]; f >= 0) {
-        touchesFold_ = true;
         auto it = folds_[f].points.find(t);
-        if (it != folds_[f].points.end()) return addVertex(it->second, patch, u, v);
+        if (it != folds_[f].points.end()) return it->second;
       }
     }
-    uint64_t uv = (uint64_t(bits(u)) << 32) | bits(v);
-    return addVertex({kPatchParam, patch, uv}, patch, u, v);
+    return {kPatchParam, patch, (uint64_t(bits(u)) << 32) | bits(v)};
+  }
+
+  // The vertex at (u, v) of `patch`, welded with every other patch's vertex at that point and
+  // with the near points merged into it.
+  uint32_t vertexAt(uint32_t patch, float u, float v) {
+    int side;
+    float t;
+    if (onSide(u, v, side, t) && foldOf_[patch][side] >= 0) touchesFold_ = true;
+    return addVertex(resolve(baseKey(patch, u, v)), patch, u, v);
   }
 
   struct RingVertex {
@@ -246,13 +414,15 @@ class Triangulator {
       if (s.collapsed) return;  // every point of it is the same vertex
       if (s.group >= 0) {
         // Compare in the shared curve's own parameter, the same on both sides.
-        float c0 = snap(s.group, canonical(s, t0)), c1 = snap(s.group, canonical(s, t1));
+        const float c0 = onGroup(s.group, canonical(s, t0));
+        const float c1 = onGroup(s.group, canonical(s, t1));
         between(&sharedPoints_[s.group], std::min(c0, c1), std::max(c0, c1), scratch_);
         if (c0 > c1) std::reverse(scratch_.begin(), scratch_.end());
         for (float c : scratch_) {
           float t = s.reversed ? 1.0f - c : c;
           glm::vec2 uv = alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
-          ring.push_back({addVertex({kEdgeParam, uint32_t(s.group), bits(c)}, patch, uv.x, uv.y), uv});
+          const VertexKey key{kEdgeParam, uint32_t(s.group), bits(c)};
+          ring.push_back({addVertex(resolve(key), patch, uv.x, uv.y), uv});
         }
         return;
       }
@@ -272,6 +442,8 @@ class Triangulator {
     }
     const LineIndex& lines = alongU ? alongU_ : alongV_;
     auto it = lines.find(lineKey(patch, fixed));
+    t0 = onLine(patch, alongU, fixed, t0);
+    t1 = onLine(patch, alongU, fixed, t1);
     between(it == lines.end() ? nullptr : &it->second, std::min(t0, t1), std::max(t0, t1), scratch_);
     if (t0 > t1) std::reverse(scratch_.begin(), scratch_.end());
     for (float t : scratch_) place(t);
@@ -313,6 +485,14 @@ class Triangulator {
     return changed;
   }
 
+  // Consecutive ring entries at one vertex (near points merged into it, near_points.h) are
+  // one entry: the fan over them would only add triangles with two corners at one vertex.
+  static void dropRepeats(std::vector<RingVertex>& ring) {
+    const auto same = [](const RingVertex& a, const RingVertex& b) { return a.index == b.index; };
+    ring.erase(std::unique(ring.begin(), ring.end(), same), ring.end());
+    while (ring.size() > 1 && ring.back().index == ring.front().index) ring.pop_back();
+  }
+
   // Rule T's leaves: its bound holds for any triangle with corners in the leaf's rectangle
   // (docs/quadtree.md, "Rule T: tolerance"), so their rings need no centre vertex. Rules A–D
   // (and rule T's MaxDepth / MinSize leaves, which share their causes) keep the fan.
@@ -348,7 +528,7 @@ class Triangulator {
     const uint32_t p = leaf.patchIndex;
     const gpu::vec4& r = leaf.rect;
     ring_.clear();
-    touchesFold_ = false;
+    touchesFold_ = touchesMerge_ = false;
     // Counter-clockwise: bottom (v0, u rising), right (u1, v rising), top (v1, u falling),
     // left (u0, v falling); each edge contributes its start corner and interior vertices.
     push(ring_, p, r.x, r.y);
@@ -361,6 +541,7 @@ class Triangulator {
     edgeInterior(p, false, r.x, r.w, r.y, ring_);
 
     const bool folded = touchesFold_ && dropFoldedBack(ring_);
+    if (touchesMerge_) dropRepeats(ring_);
     if (ring_.size() < 3) return;
     if (ring_.size() == 4 && !folded) {
       emit(p, ring_[0], ring_[1], ring_[2]);
@@ -382,9 +563,13 @@ class Triangulator {
   PatchTopology topology_;
   LineIndex alongU_, alongV_;
   std::vector<std::vector<float>> sharedPoints_;  // per group, canonical parameters
+  std::vector<std::pair<uint32_t, int>> groupSide_;  // per group, one (patch, side) on it
+  // Near-coincident points (near_points.h): key → the key of the vertex it is merged into.
+  std::unordered_map<VertexKey, VertexKey, VertexKeyHash> merged_;
   std::vector<std::array<int32_t, 4>> foldOf_;    // per patch side, index in folds_ or -1
   std::vector<FoldedSide> folds_;
   bool touchesFold_ = false;  // the leaf being triangulated has a vertex on a folded side
+  bool touchesMerge_ = false;  // ... or a vertex merged into a near one
   std::map<std::array<uint64_t, 3>, uint32_t> positions_;
   std::unordered_map<VertexKey, uint32_t, VertexKeyHash> index_;
   ParamMesh mesh_;
