@@ -12,6 +12,7 @@
 
 #include "common/stopwatch.h"
 #include "mesh/triangulate.h"
+#include "mesh/zero_area.h"
 
 namespace tessera {
 namespace {
@@ -87,6 +88,28 @@ void requireFiniteSamples(const ParamMesh& param, const std::vector<gpu::EvalSam
   }
 }
 
+// Removes the triangles marked in `drop` from the mesh and its per-triangle records, counting
+// them as degenerate.
+void dropTriangles(const std::vector<bool>& drop, Tessellation& result) {
+  if (std::find(drop.begin(), drop.end(), true) == drop.end()) return;
+  std::vector<uint32_t>& indices = result.mesh.indices;
+  size_t kept = 0;
+  for (size_t t = 0; t < drop.size(); ++t) {
+    if (drop[t]) {
+      ++result.stats.degenerateTrianglesDropped;
+      continue;
+    }
+    for (size_t c = 0; c < 3; ++c) {
+      indices[3 * kept + c] = indices[3 * t + c];
+      result.cornerUv[3 * kept + c] = result.cornerUv[3 * t + c];
+    }
+    result.trianglePatch[kept++] = result.trianglePatch[t];
+  }
+  indices.resize(3 * kept);
+  result.cornerUv.resize(3 * kept);
+  result.trianglePatch.resize(kept);
+}
+
 }  // namespace
 
 Backend makeMirrorBackend() {
@@ -141,8 +164,9 @@ Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, const 
   }
   // Welding in the triangulation already dropped triangles with two corners at one vertex.
   // Distinct vertices can still evaluate to the very same point (a fold, or points a hair
-  // apart): weld those too, so every zero-area triangle goes and its neighbours keep sharing
-  // their edges.
+  // apart): weld those too, so a triangle with two corners there goes and its neighbours keep
+  // sharing their edges; then back-to-back pairs cancel and caps (three corners on one line)
+  // are flipped away (zero_area.h).
   std::vector<uint32_t> remap = weldIdenticalPositions(mesh.positions);
   result.stats.degenerateTrianglesDropped = param.droppedTriangles;
   mesh.indices.reserve(param.indices.size());
@@ -158,24 +182,9 @@ Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, const 
     result.cornerUv.insert(result.cornerUv.end(), param.cornerUv.begin() + k,
                            param.cornerUv.begin() + k + 3);
   }
-  const std::vector<bool> cancelled = backToBackPairs(mesh.indices);
-  if (std::find(cancelled.begin(), cancelled.end(), true) != cancelled.end()) {
-    size_t kept = 0;
-    for (size_t t = 0; t < cancelled.size(); ++t) {
-      if (cancelled[t]) {
-        ++result.stats.degenerateTrianglesDropped;
-        continue;
-      }
-      for (int c = 0; c < 3; ++c) {
-        mesh.indices[3 * kept + c] = mesh.indices[3 * t + c];
-        result.cornerUv[3 * kept + c] = result.cornerUv[3 * t + c];
-      }
-      result.trianglePatch[kept++] = result.trianglePatch[t];
-    }
-    mesh.indices.resize(3 * kept);
-    result.cornerUv.resize(3 * kept);
-    result.trianglePatch.resize(kept);
-  }
+  dropTriangles(backToBackPairs(mesh.indices), result);
+  dropTriangles(removeCaps(mesh.positions, mesh.indices, result.trianglePatch, result.cornerUv),
+                result);
 
   TessellationStats& s = result.stats;
   s.patches = patchCount;

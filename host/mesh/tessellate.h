@@ -28,8 +28,8 @@ Backend makeVulkanBackend(vk::Context& context);
 
 struct TessellationStats {
   size_t patches = 0, leaves = 0, triangles = 0, vertices = 0;
-  size_t degenerateTrianglesDropped = 0;  // zero-area triangles at collapsed edges, and
-                                          // back-to-back pairs (docs/watertight.md)
+  size_t degenerateTrianglesDropped = 0;  // zero-area triangles at collapsed edges,
+                                          // back-to-back pairs and caps (docs/watertight.md)
   uint32_t depth = 0;
   double treeMs = 0, triangulateMs = 0, evaluateMs = 0, totalMs = 0;
   std::vector<LevelStats> levels;
