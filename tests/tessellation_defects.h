@@ -1,5 +1,5 @@
 // Watertightness defects of a tessellation, counted against the model's shared patch sides
-// (the rule T watertight tests: test_tolerance_watertight.cpp, test_screen_tolerance.cpp).
+// (test_tea_set_watertight.cpp, test_screen_tolerance.cpp).
 #pragma once
 #include <algorithm>
 
