@@ -37,8 +37,20 @@ struct VertexKeyHash {
   }
 };
 
-// Sorted coordinates of leaf corners on the lines u = const or v = const inside a patch.
-using LineIndex = std::unordered_map<uint64_t, std::vector<float>>;
+// Per line (u = const or v = const inside a patch), the leaf corners on it, sorted; once near
+// points are merged (near_points.h), only those that are vertices of their own.
+using LineIndex = std::unordered_map<uint64_t, std::vector<LinePoint>>;
+
+// The corners of a line merged into another point of it, sorted by t, with that point's t.
+using MovedCorners = std::vector<std::pair<float, float>>;
+
+// Where on its line the vertex of the corner at t lies.
+float movedTo(const MovedCorners& moved, float t) {
+  if (moved.empty()) return t;
+  auto it = std::lower_bound(moved.begin(), moved.end(), std::pair<float, float>(t, -INFINITY));
+  return it != moved.end() && it->first == t ? it->second : t;
+}
+
 float fromBits(uint32_t b) {
   float x;
   std::memcpy(&x, &b, sizeof x);
@@ -52,13 +64,15 @@ void sortUnique(std::vector<float>& values) {
   values.erase(std::unique(values.begin(), values.end()), values.end());
 }
 
-// Values strictly between lo and hi (lo < hi), ascending.
-void between(const std::vector<float>* values, float lo, float hi, std::vector<float>& out) {
+// Positions strictly between lo and hi (lo < hi), ascending.
+void between(const std::vector<LinePoint>* points, float lo, float hi, std::vector<float>& out) {
   out.clear();
-  if (!values) return;
-  auto first = std::upper_bound(values->begin(), values->end(), lo);
-  auto last = std::lower_bound(values->begin(), values->end(), hi);
-  if (first < last) out.assign(first, last);
+  if (!points) return;
+  auto first = std::upper_bound(points->begin(), points->end(), lo,
+                                [](float t, const LinePoint& p) { return t < p.t; });
+  auto last = std::lower_bound(points->begin(), points->end(), hi,
+                               [](const LinePoint& p, float t) { return p.t < t; });
+  for (; first < last; ++first) out.push_back(first->t);
 }
 
 class Triangulator {
@@ -66,7 +80,7 @@ class Triangulator {
   Triangulator(const std::vector<QuadLeaf>& leaves, const std::vector<BezierPatch>& patches)
       : leaves_(leaves), patches_(patches), topology_(findSharedEdges(patches)) {
     mesh_.sharedEdgeGroups = topology_.groupCount;
-    sharedPoints_.resize(topology_.groupCount);
+    sharedLines_.resize(topology_.groupCount);
     groupSide_.assign(topology_.groupCount, {0, -1});
     // Sized up front: rehashing these maps was a third of the triangulation time.
     alongU_.reserve(leaves_.size() * 2);
@@ -77,10 +91,10 @@ class Triangulator {
     mesh_.trianglePatch.reserve(leaves_.size() * 8 / 3);
     mesh_.cornerUv.reserve(leaves_.size() * 8);
     findFolds();
-    LinePoints points = collectLinePoints();
+    collectLinePoints();
     for (uint32_t f = 0; f < folds_.size(); ++f) placeFoldPoints(f);
-    mergeNearPoints(points);
-    listRepresentatives(points);
+    mergeNearPoints();
+    listRepresentatives();
   }
 
   ParamMesh run() {
@@ -93,29 +107,23 @@ class Triangulator {
 
   // Every leaf corner with the leaf edges that end there, per line (near_points.h): lines
   // u = const and v = const of each patch, and shared sides in their canonical parameter.
-  struct LinePoints {
-    std::unordered_map<uint64_t, std::vector<LinePoint>> alongU, alongV;
-    std::vector<std::vector<LinePoint>> shared;  // per group
-  };
-
-  LinePoints collectLinePoints() {
-    LinePoints lines;
-    lines.alongU.reserve(leaves_.size() * 2);
-    lines.alongV.reserve(leaves_.size() * 2);
-    lines.shared.resize(topology_.groupCount);
+  void collectLinePoints() {
     for (const QuadLeaf& leaf : leaves_) {
       const gpu::vec4& r = leaf.rect;
       const uint32_t p = leaf.patchIndex;
       for (float v : {r.y, r.w})
         for (float u : {r.x, r.z}) {
-          lines.alongU[lineKey(p, v)].push_back({u, r.z - r.x});
-          lines.alongV[lineKey(p, u)].push_back({v, r.w - r.y});
-          for (int side : sidesAt(u, v)) {
+          alongU_[lineKey(p, v)].push_back({u, r.z - r.x});
+          alongV_[lineKey(p, u)].push_back({v, r.w - r.y});
+          // The sides (u, v) is on: none, one, or two at a corner of the parameter square.
+          for (int side : {kSideV0, kSideV1, kSideU0, kSideU1}) {
             const bool alongU = side == kSideV0 || side == kSideV1;
-            const float t = alongU ? u : v;
+            const float t = alongU ? u : v, fixed = alongU ? v : u;
+            if (fixed != (side == kSideV0 || side == kSideU0 ? 0.0f : 1.0f)) continue;
             const SideInfo& s = topology_.sides[p][side];
             if (s.group >= 0) {
-              lines.shared[s.group].push_back({canonical(s, t), alongU ? r.z - r.x : r.w - r.y});
+              sharedLines_[s.group].push_back(
+                  {canonical(s, t), alongU ? r.z - r.x : r.w - r.y});
               groupSide_[s.group] = {p, side};
             }
             const int32_t f = foldOf_[p][side];
@@ -123,14 +131,13 @@ class Triangulator {
           }
         }
     }
-    return lines;
   }
 
   // Near-coincident points from the two sides of each line become one vertex (merged_).
   // Sorts every line's points.
-  void mergeNearPoints(LinePoints& lines) {
-    for (auto* line : {&lines.alongU, &lines.alongV}) {
-      const bool alongU = line == &lines.alongU;
+  void mergeNearPoints() {
+    for (auto* line : {&alongU_, &alongV_}) {
+      const bool alongU = line == &alongU_;
       for (auto& [key, points] : *line) {
         const uint32_t patch = uint32_t(key >> 32);
         const float fixed = fromBits(uint32_t(key));
@@ -144,7 +151,7 @@ class Triangulator {
           merge(lineKeyOf(patch, alongU, fixed, a), lineKeyOf(patch, alongU, fixed, b));
       }
     }
-    for (uint32_t g = 0; g < lines.shared.size(); ++g) {
+    for (uint32_t g = 0; g < sharedLines_.size(); ++g) {
       const auto [patch, side] = groupSide_[g];
       const SideInfo& s = topology_.sides[patch][side];
       const bool alongU = side == kSideV0 || side == kSideV1;
@@ -157,39 +164,62 @@ class Triangulator {
       const auto distinct = [&, patch = patch](float a, float b) {
         return distinctOnModel(patch, uvOf(a), uvOf(b));
       };
-      for (const auto& [a, b] : nearPairs(lines.shared[g], distinct))
+      for (const auto& [a, b] : nearPairs(sharedLines_[g], distinct))
         merge(groupKey(g, a), groupKey(g, b));
     }
     for (auto& [key, representative] : merged_) representative = find(key);
   }
 
-  // The line indices list the points that stay, as the vertices they are: a point merged into
-  // another is that one's vertex, and a ring over both would meet it twice.
-  void listRepresentatives(const LinePoints& lines) {
-    for (auto* line : {&lines.alongU, &lines.alongV}) {
-      const bool alongU = line == &lines.alongU;
-      LineIndex& index = alongU ? alongU_ : alongV_;
-      for (const auto& [key, points] : *line) {
+  // The line indices keep the points that stay, as the vertices they are: a point merged into
+  // another is that one's vertex, and a ring over both would meet it twice. A leaf edge that
+  // ends at a merged point ends where that point's vertex is on the line (MovedCorners).
+  void listRepresentatives() {
+    if (merged_.empty()) return;
+    for (auto* line : {&alongU_, &alongV_}) {
+      const bool alongU = line == &alongU_;
+      auto& movedOn = alongU ? movedAlongU_ : movedAlongV_;
+      for (auto& [key, points] : *line) {
+        const uint32_t patch = uint32_t(key >> 32);
         const float fixed = fromBits(uint32_t(key));
-        std::vector<float>& values = index[key];
-        for (const LinePoint& point : points)
-          if (isRepresentative(lineKeyOf(uint32_t(key >> 32), alongU, fixed, point.t)))
-            values.push_back(point.t);
+        size_t kept = 0;
+        for (const LinePoint& point : points) {
+          const VertexKey own = lineKeyOf(patch, alongU, fixed, point.t);
+          const VertexKey r = find(own);
+          if (r == own) {
+            points[kept++] = point;
+            continue;
+          }
+          // Where r is on this line, if it is (merged along another line, it is not).
+          float t = point.t;
+          if (r.kind == kPatchParam && r.a == patch) {
+            const float u = fromBits(uint32_t(r.b >> 32)), v = fromBits(uint32_t(r.b));
+            if (alongU && v == fixed) t = u;
+            if (!alongU && u == fixed) t = v;
+          }
+          movedOn[key].emplace_back(point.t, t);
+        }
+        points.resize(kept);
       }
     }
-    for (uint32_t g = 0; g < lines.shared.size(); ++g)
-      for (const LinePoint& point : lines.shared[g])
-        if (isRepresentative(groupKey(g, point.t))) sharedPoints_[g].push_back(point.t);
-  }
-
-  // The sides (u, v) lies on: none, one, or two at a corner of the parameter square.
-  static std::vector<int> sidesAt(float u, float v) {
-    std::vector<int> sides;
-    if (v == 0.0f) sides.push_back(kSideV0);
-    if (v == 1.0f) sides.push_back(kSideV1);
-    if (u == 0.0f) sides.push_back(kSideU0);
-    if (u == 1.0f) sides.push_back(kSideU1);
-    return sides;
+    sharedMoved_.resize(sharedLines_.size());
+    for (uint32_t g = 0; g < sharedLines_.size(); ++g) {
+      std::vector<LinePoint>& points = sharedLines_[g];
+      size_t kept = 0;
+      for (const LinePoint& point : points) {
+        const VertexKey own = groupKey(g, point.t);
+        const VertexKey r = find(own);
+        if (r == own) {
+          points[kept++] = point;
+          continue;
+        }
+        float c = point.t;
+        if (r.kind == kEdgeParam && r.a == g) c = fromBits(uint32_t(r.b));
+        for (float end : {0.0f, 1.0f})
+          if (r == groupKey(g, end)) c = end;
+        sharedMoved_[g].emplace_back(point.t, c);
+      }
+      points.resize(kept);
+    }
   }
 
   // Whether the line v = fixed (alongU) or u = fixed of `patch` is one of its sides that is
@@ -224,31 +254,6 @@ class Triangulator {
 
   VertexKey lineKeyOf(uint32_t patch, bool alongU, float fixed, float t) {
     return alongU ? baseKey(patch, t, fixed) : baseKey(patch, fixed, t);
-  }
-
-  bool isRepresentative(const VertexKey& key) const {
-    return merged_.empty() || find(key) == key;
-  }
-
-  // Where on its line the vertex of the point at t is: the point it is merged into, when that
-  // point is on the same line (a leaf edge's end, for listing the points inside the edge).
-  float onLine(uint32_t patch, bool alongU, float fixed, float t) {
-    if (merged_.empty()) return t;
-    const VertexKey r = find(lineKeyOf(patch, alongU, fixed, t));
-    if (r.kind != kPatchParam || r.a != patch) return t;
-    const float u = fromBits(uint32_t(r.b >> 32)), v = fromBits(uint32_t(r.b));
-    if (alongU) return v == fixed ? u : t;
-    return u == fixed ? v : t;
-  }
-
-  // The same on a shared side, in its canonical parameter.
-  float onGroup(uint32_t g, float c) {
-    if (merged_.empty()) return c;
-    const VertexKey r = find(groupKey(g, c));
-    if (r.kind == kEdgeParam && r.a == g) return fromBits(uint32_t(r.b));
-    for (float end : {0.0f, 1.0f})
-      if (r == groupKey(g, end)) return end;
-    return c;
   }
 
   // Merging keeps, of two keys, the one ranked first: a patch corner, then a point of a shared
@@ -403,26 +408,26 @@ class Triangulator {
     int side = -1;
     if (alongU && (fixed == 0.0f || fixed == 1.0f)) side = fixed == 0.0f ? kSideV0 : kSideV1;
     if (!alongU && (fixed == 0.0f || fixed == 1.0f)) side = fixed == 0.0f ? kSideU0 : kSideU1;
+    // A listed point is a vertex of its own: no merge to look up.
     auto place = [&](float t) {
-      if (alongU)
-        push(ring, patch, t, fixed);
-      else
-        push(ring, patch, fixed, t);
+      const glm::vec2 uv = alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
+      ring.push_back({addVertex(baseKey(patch, uv.x, uv.y), patch, uv.x, uv.y), uv});
     };
     if (side >= 0) {
       const SideInfo& s = topology_.sides[patch][side];
       if (s.collapsed) return;  // every point of it is the same vertex
       if (s.group >= 0) {
         // Compare in the shared curve's own parameter, the same on both sides.
-        const float c0 = onGroup(s.group, canonical(s, t0));
-        const float c1 = onGroup(s.group, canonical(s, t1));
-        between(&sharedPoints_[s.group], std::min(c0, c1), std::max(c0, c1), scratch_);
+        float c0 = canonical(s, t0), c1 = canonical(s, t1);
+        if (!sharedMoved_.empty())
+          c0 = movedTo(sharedMoved_[s.group], c0), c1 = movedTo(sharedMoved_[s.group], c1);
+        between(&sharedLines_[s.group], std::min(c0, c1), std::max(c0, c1), scratch_);
         if (c0 > c1) std::reverse(scratch_.begin(), scratch_.end());
         for (float c : scratch_) {
           float t = s.reversed ? 1.0f - c : c;
           glm::vec2 uv = alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
-          const VertexKey key{kEdgeParam, uint32_t(s.group), bits(c)};
-          ring.push_back({addVertex(resolve(key), patch, uv.x, uv.y), uv});
+          // A listed point is a vertex of its own: no merge to look up.
+          ring.push_back({addVertex({kEdgeParam, uint32_t(s.group), bits(c)}, patch, uv.x, uv.y), uv});
         }
         return;
       }
@@ -442,9 +447,12 @@ class Triangulator {
     }
     const LineIndex& lines = alongU ? alongU_ : alongV_;
     auto it = lines.find(lineKey(patch, fixed));
-    t0 = onLine(patch, alongU, fixed, t0);
-    t1 = onLine(patch, alongU, fixed, t1);
-    between(it == lines.end() ? nullptr : &it->second, std::min(t0, t1), std::max(t0, t1), scratch_);
+    const auto& movedOn = alongU ? movedAlongU_ : movedAlongV_;
+    if (!movedOn.empty())
+      if (auto moved = movedOn.find(lineKey(patch, fixed)); moved != movedOn.end())
+        t0 = movedTo(moved->second, t0), t1 = movedTo(moved->second, t1);
+    between(it == lines.end() ? nullptr : &it->second, std::min(t0, t1), std::max(t0, t1),
+            scratch_);
     if (t0 > t1) std::reverse(scratch_.begin(), scratch_.end());
     for (float t : scratch_) place(t);
   }
@@ -562,7 +570,9 @@ class Triangulator {
   const std::vector<BezierPatch>& patches_;
   PatchTopology topology_;
   LineIndex alongU_, alongV_;
-  std::vector<std::vector<float>> sharedPoints_;  // per group, canonical parameters
+  std::vector<std::vector<LinePoint>> sharedLines_;  // per group, in canonical parameters
+  std::unordered_map<uint64_t, MovedCorners> movedAlongU_, movedAlongV_;  // lines with merges
+  std::vector<MovedCorners> sharedMoved_;  // per group (empty when nothing merged)
   std::vector<std::pair<uint32_t, int>> groupSide_;  // per group, one (patch, side) on it
   // Near-coincident points (near_points.h): key → the key of the vertex it is merged into.
   std::unordered_map<VertexKey, VertexKey, VertexKeyHash> merged_;
