@@ -111,7 +111,7 @@ TEST_CASE("the teacup is watertight in every mode", "[watertight][tolerance]") {
 
 TEST_CASE("the teaspoon is watertight in every mode", "[watertight][tolerance]") {
   // Its handle tip (patches 12-15 at u ≈ 1, P_u and P_v nearly parallel) took rules B-D to
-  // leaves whose corners evaluate to one line in fp32 (up to 1,118 zero-area triangles at D
+  // leaves whose corners evaluate to one line in fp32 (up to 1,082 zero-area triangles at D
   // 0.02) before kResolvedWidthUlps.
   checkModel("teaspoon", 2);
 }

@@ -107,7 +107,7 @@ struct QuadtreeResult {
 // mesh's position, normal, uv and patch id (36); per triangle: indices, patch and three corner
 // uvs, in the triangulation and again in the Tessellation (2 × 40). A leaf makes at most about
 // 1.7 vertices and 3.3 triangles (measured on the teapot, rules A–D and T: 6,305 vertices and
-// 12,370 triangles for 4,712 leaves at B; 106,458 and 211,515 for 65,267 at D 0.02), so 2 and 4.
+// 12,370 triangles for 4,712 leaves at B; 105,001 and 208,601 for 65,267 at D 0.02), so 2 and 4.
 constexpr size_t kTessellationBytesPerNode =
     sizeof(QuadLeaf) + 2 * (12 + 16 + 64 + 36) + 4 * 2 * (3 * 4 + 4 + 3 * 8);
 
