@@ -19,6 +19,7 @@
 // --cpu leaves Vulkan out; --model keeps the models whose file name contains the text;
 // --detail prints each model's worst faces (distance, unprojected samples) for both meshers;
 // --tessera-only runs Tessera alone, unmeasured (for profiling its stages).
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepTools.hxx>
@@ -77,6 +78,57 @@ struct FaceDetail {
 bool gDetail = false;
 // The face's uv bounds are grown by this share of their range before projecting (see below).
 constexpr double kBoundsGrowth = 1e-6;
+
+// The face's surface kind (GeomAbs_SurfaceType, OtherSurface last) and its name.
+constexpr int kSurfaceKinds = 11;
+int surfaceKind(const TopoDS_Face& face) {
+  return std::min(int(BRepAdaptor_Surface(face, Standard_False).GetType()), kSurfaceKinds - 1);
+}
+const char* const kSurfaceKindNames[kSurfaceKinds] = {
+    "plane", "cylinder", "cone", "sphere", "torus", "Bézier", "B-spline", "revolution",
+    "extrusion", "offset", "other"};
+
+// --detail: triangles per surface kind (plane, cylinder, …), the faces' count beside them.
+void printKinds(const char* who, const FaceTriangles& mesh) {
+  size_t triangles[kSurfaceKinds] = {}, faces[kSurfaceKinds] = {};
+  TopoDS_Face current;
+  int kind = 0;
+  for (const TopoDS_Face& face : mesh.face) {
+    if (!face.IsEqual(current)) {
+      current = face;
+      kind = surfaceKind(face);
+      ++faces[kind];
+    }
+    ++triangles[kind];
+  }
+  std::fprintf(stderr, "  %s triangles by surface kind:", who);
+  for (int k = 0; k < kSurfaceKinds; ++k)
+    if (faces[k])
+      std::fprintf(stderr, " %s %zu (%zu faces)", kSurfaceKindNames[k], triangles[k], faces[k]);
+  std::fprintf(stderr, "\n");
+}
+
+// --detail: the faces where Tessera makes the most triangles beyond OCCT's (face indices of
+// TopExp::MapShapes on the same shape, so both meshes number faces alike).
+void printExcess(const FaceTriangles& occt, const FaceTriangles& tessera,
+                 const TopTools_IndexedMapOfShape& faces) {
+  std::vector<long> counts[2] = {std::vector<long>(size_t(faces.Extent()) + 1, 0),
+                                 std::vector<long>(size_t(faces.Extent()) + 1, 0)};
+  for (int m = 0; m < 2; ++m)
+    for (const TopoDS_Face& face : (m == 0 ? occt : tessera).face) ++counts[m][size_t(faces.FindIndex(face))];
+  std::vector<int> order;
+  for (int f = 1; f <= faces.Extent(); ++f) order.push_back(f);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return counts[1][size_t(a)] - counts[0][size_t(a)] > counts[1][size_t(b)] - counts[0][size_t(b)];
+  });
+  for (size_t k = 0; k < order.size() && k < 8; ++k) {
+    const int f = order[k];
+    const TopoDS_Face& face = TopoDS::Face(faces(f));
+    std::fprintf(stderr, "  face %d (%s): Tessera %ld, OCCT %ld triangles\n", f - 1,
+                 kSurfaceKindNames[surfaceKind(face)],
+                 counts[1][size_t(f)], counts[0][size_t(f)]);
+  }
+}
 
 void printDetail(const char* who, std::vector<FaceDetail> faces, double delta) {
   std::sort(faces.begin(), faces.end(), [](const FaceDetail& a, const FaceDetail& b) {
@@ -143,7 +195,10 @@ Deviation measureDistance(const FaceTriangles& mesh, const TopTools_IndexedMapOf
         if (gDetail && map) details.back().max = std::max(details.back().max, distance);
       }
   }
-  if (gDetail && map) printDetail(who, details, delta);
+  if (gDetail && map) {
+    printKinds(who, mesh);
+    printDetail(who, details, delta);
+  }
   return d;
 }
 
@@ -292,6 +347,7 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
       occt[parallel].add(name, {seconds.front(), seconds[seconds.size() / 2], int(seconds.size())},
                          count, parallel ? Deviation{} : d, delta);
     }
+    FaceTriangles lastTessera;  // the first backend's, for --detail
     for (size_t b = 0; b < backends.size(); ++b) {
       TrimmedMeshOptions options;
       options.tolerance = delta;
@@ -315,11 +371,17 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
         faces += import.model.faces.size() + import.failures.size();
         failedFaces += import.failures.size();
       }
+      if (b == 0) lastTessera = tesseraTriangles(mesh, import);
       tessera[b].add(name, time, mesh.mesh.triangleCount(),
                      tesseraOnly ? Deviation{}
-                                 : measureDistance(tesseraTriangles(mesh, import), &import.faces,
-                                                   "Tessera", delta),
+                                 : measureDistance(b == 0 ? lastTessera : tesseraTriangles(mesh, import),
+                                                   &import.faces, "Tessera", delta),
                      delta);
+    }
+    if (gDetail && !tesseraOnly) {
+      TopTools_IndexedMapOfShape faceMap;
+      TopExp::MapShapes(file.shape, TopAbs_FACE, faceMap);
+      printExcess(occtTriangles(file.shape), lastTessera, faceMap);
     }
     if (!tesseraOnly)
       std::fprintf(stderr, "%s at %g of its diagonal: OCCT %zu triangles, Tessera %zu\n",
