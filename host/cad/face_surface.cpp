@@ -4,6 +4,10 @@
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomConvert.hxx>
+#include <Geom_ConicalSurface.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <Geom_SphericalSurface.hxx>
+#include <Geom_ToroidalSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <algorithm>
@@ -202,6 +206,35 @@ CadSurface convertFaceSurface(const TopoDS_Face& face) {
   }
   result.pieces = rationalPieces(result.nurbs);
   return result;
+}
+
+RevolutionForm revolutionFormOf(const Handle(Geom_Surface)& surface) {
+  RevolutionForm form;
+  const auto axisOf = [&](const gp_Ax3& position) {
+    form.origin = toGlm(position.Location());
+    const gp_Dir& d = position.Direction();
+    form.axis = {d.X(), d.Y(), d.Z()};
+  };
+  if (auto cylinder = Handle(Geom_CylindricalSurface)::DownCast(surface)) {
+    axisOf(cylinder->Position());
+    form.profile = RevolutionForm::Profile::Line;
+  } else if (auto cone = Handle(Geom_ConicalSurface)::DownCast(surface)) {
+    axisOf(cone->Position());
+    form.profile = RevolutionForm::Profile::Line;
+  } else if (auto sphere = Handle(Geom_SphericalSurface)::DownCast(surface)) {
+    axisOf(sphere->Position());
+    form.profile = RevolutionForm::Profile::Circle;
+    form.circleCentre = 0.0;
+    form.circleRadius = sphere->Radius();
+  } else if (auto torus = Handle(Geom_ToroidalSurface)::DownCast(surface)) {
+    // A ring torus only: where the tube reaches the axis, ρ = R + r·cos v changes sign.
+    if (!(torus->MajorRadius() > torus->MinorRadius())) return form;
+    axisOf(torus->Position());
+    form.profile = RevolutionForm::Profile::Circle;
+    form.circleCentre = torus->MajorRadius();
+    form.circleRadius = torus->MinorRadius();
+  }
+  return form;
 }
 
 glm::dvec3 piecesPoint(const std::vector<BezierPatchPiece>& pieces, glm::dvec2 uv) {

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "bspline/to_bezier.h"
+#include "trim/trimmed_face.h"
 
 namespace tessera {
 
@@ -45,6 +46,12 @@ struct CadSurface {
 // Throws CadFaceError (a degree above 7, a surface GeomConvert cannot convert exactly, a
 // reparametrisation that does not check out) or lets Standard_Failure through.
 CadSurface convertFaceSurface(const TopoDS_Face& face);
+
+// The face's surface as a surface of revolution with a straight or circular profile, as the
+// trimmed mesher's geometric bound takes it (trim/trimmed_face.h): cylinders, cones, spheres
+// and ring tori (Open CASCADE's u turns about the axis, v runs along the profile); Profile::None
+// for every other surface.
+RevolutionForm revolutionFormOf(const Handle(Geom_Surface)& surface);
 
 // The point of the pieces at (u', v'): the piece whose rectangle holds it (the nearest at the
 // edges of the domain).

@@ -96,6 +96,7 @@ TrimmedFace convertFace(const TopoDS_Face& sourceFace, uint32_t faceIndex, const
     out.loops.push_back(wireLoop(TopoDS::Wire(w.Current()), face, surface, faceIndex, label, path, in));
   if (out.loops.empty()) throw CadFaceError("the face has no wire");
   out.pieces = std::move(surface.pieces);
+  out.revolution = revolutionFormOf(surface.original);
   size_t outer = 0;
   std::vector<double> areas;
   for (const auto& loop : out.loops) areas.push_back(signedArea(loop.uv));

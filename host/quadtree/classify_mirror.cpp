@@ -20,4 +20,9 @@ gpu::NodeDecision classifyNode(const gpu::BicubicPatch& patch, const gpu::QuadNo
   return glsl::classifyNode(patch, node, rule, samples, params);
 }
 
+gpu::NodeDecision toleranceDecisionOf(gpu::vec4 bounds, const gpu::QuadNode& node,
+                                      const gpu::ClassifyPush& params) {
+  return glsl::toleranceDecision(bounds, node, params);
+}
+
 }  // namespace tessera::mirror

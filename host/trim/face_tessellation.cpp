@@ -1,12 +1,14 @@
 #include "trim/face_tessellation.h"
 
 #include <algorithm>
+#include <memory>
 #include <string>
 
 #include "common/parallel_for.h"
 #include "common/stopwatch.h"
 #include "geometry/general_patch.h"
 #include "mesh/triangulate.h"
+#include "trim/revolution_bound.h"
 #include "trim/trim_frontier.h"
 
 namespace tessera {
@@ -44,14 +46,26 @@ void tessellateGroup(const TrimmedModel& model, const FaceGroup& group, const Mo
   Stopwatch step;
   const PatchSet patchSet = toPatchSet(group.patches);
   backend.evaluator->prepare(patchSet);  // overlaps the tree on backends that can
+  // Faces known as surfaces of revolution are decided by their distance bound
+  // (revolution_bound.h), the others by rule T's parametric one.
+  std::vector<std::unique_ptr<FaceSurface>> surfaces(group.faces.size());
+  std::vector<RevolutionBoundClassifier::Patch> revolutionPatches;
+  for (size_t k = 0; k < group.faces.size(); ++k) {
+    const TrimmedFace& face = model.faces[group.faces[k]];
+    const bool known = face.revolution.profile != RevolutionForm::Profile::None;
+    if (known) surfaces[k] = std::make_unique<FaceSurface>(face);
+    for (size_t piece = 0; piece < face.pieces.size(); ++piece)
+      revolutionPatches.push_back({known ? &face.revolution : nullptr, surfaces[k].get(), piece});
+  }
+  RevolutionBoundClassifier revolution(*backend.classifier, std::move(revolutionPatches));
   QuadtreeResult tree;
   if (trim) {
     const TrimSet set = groupTrimSet(model, group);
-    TrimmingClassifier trimming(*backend.classifier, set, *trim);
+    TrimmingClassifier trimming(revolution, set, *trim);
     tree = buildQuadtree(patchSet, options, trimming);
     out.trimMs += trimming.trimMs();
   } else {
-    tree = buildQuadtree(patchSet, options, *backend.classifier);
+    tree = buildQuadtree(patchSet, options, revolution);
   }
   ++out.trees;
   out.leaves += tree.leaves.size();
