@@ -107,6 +107,32 @@ void shiftKnots(const Handle(Geom_BSplineSurface)& s, bool alongU, double shift)
   if (alongU) s->SetUKnots(knots); else s->SetVKnots(knots);
 }
 
+// `shift` rounded to a whole number of periods.
+double wholePeriods(double shift, double period) { return period * std::round(shift / period); }
+
+// The periodic NURBS of a face that wraps a whole period (in u, v or both), cut into one period
+// that starts where the face does: at the NURBS parameter of the face's u0 (v0), found by mapUv's
+// solver on the periodic NURBS; that start is in general not a knot, since a circle's rational
+// parameter is its angle only at the knots.
+void wholePeriodCut(CadSurface& f, bool alongU, bool alongV, double u0, double v0) {
+  double n0, n1, m0, m1;
+  f.nurbs->Bounds(n0, n1, m0, m1);
+  if ((alongU && !f.nurbs->IsUPeriodic()) || (alongV && !f.nurbs->IsVPeriodic()))
+    throw CadFaceError("the NURBS form of a face that wraps a whole period is not periodic");
+  f.reparametrised = true;
+  f.uRef = longestIsoKnot(f, true);
+  f.vRef = longestIsoKnot(f, false);
+  // The face's start moved into the NURBS's period (it starts where OCCT's surface does).
+  const auto intoPeriod = [](double x, double lo, double hi) {
+    return lo + (x - lo) - (hi - lo) * std::floor((x - lo) / (hi - lo));
+  };
+  const glm::dvec2 start = f.mapUv(gp_Pnt2d(alongU ? intoPeriod(u0, n0, n1) : u0,
+                                            alongV ? intoPeriod(v0, m0, m1) : v0));
+  f.nurbs->Segment(alongU ? start.x : n0, alongU ? start.x + (n1 - n0) : n1,
+                   alongV ? start.y : m0, alongV ? start.y + (m1 - m0) : m1);
+  f.reparametrised = false;
+}
+
 }  // namespace
 
 glm::dvec2 CadSurface::mapUv(const gp_Pnt2d& uv) const {
@@ -161,17 +187,35 @@ CadSurface convertFaceSurface(const TopoDS_Face& face) {
     throw CadFaceError("zero-area face: its uv bounds are [" + cad_detail::numberText(u0) + ", " +
                        cad_detail::numberText(u1) + "] × [" + cad_detail::numberText(v0) + ", " + cad_detail::numberText(v1) + "]");
 
-  Handle(Geom_Surface) bounded = new Geom_RectangularTrimmedSurface(basis, u0, u1, v0, v1);
+  // A face that wraps a whole period is converted untrimmed in that direction, where the NURBS
+  // stays periodic with its knots at the surface's own parameters (0, 2π/3, 4π/3 for a circle),
+  // and then cut at the face's u0 (wholePeriodCut). Trimmed to the whole period instead,
+  // GeomConvert converts the full circle and cuts it at u0 in the circle's rational parameter,
+  // which is not the angle u0: the pieces then missed a sliver of the face at one end and
+  // covered one of the next turn at the other (0.031 rad on RLF_7030's face 0).
+  const double tiny = 1e-9;
+  const bool wholeU = basis->IsUPeriodic() && u1 - u0 >= basis->UPeriod() * (1 - tiny);
+  const bool wholeV = basis->IsVPeriodic() && v1 - v0 >= basis->VPeriod() * (1 - tiny);
+  Handle(Geom_Surface) bounded;
+  if (wholeU && wholeV)
+    bounded = basis;
+  else if (wholeU)
+    bounded = new Geom_RectangularTrimmedSurface(basis, v0, v1, Standard_False);
+  else if (wholeV)
+    bounded = new Geom_RectangularTrimmedSurface(basis, u0, u1, Standard_True);
+  else
+    bounded = new Geom_RectangularTrimmedSurface(basis, u0, u1, v0, v1);
   result.nurbs = GeomConvert::SurfaceToBSplineSurface(bounded);
   if (result.nurbs.IsNull()) throw CadFaceError("GeomConvert gave no NURBS form");
+  if (wholeU || wholeV) wholePeriodCut(result, wholeU, wholeV, u0, v0);
   if (result.nurbs->IsUPeriodic()) result.nurbs->SetUNotPeriodic();
   if (result.nurbs->IsVPeriodic()) result.nurbs->SetVNotPeriodic();
   // Geom_RectangularTrimmedSurface moves a periodic range into the surface's first period;
   // the pcurves stay where they were, so move the knots back by that whole number of periods.
   double n0, n1, m0, m1;
   result.nurbs->Bounds(n0, n1, m0, m1);
-  shiftKnots(result.nurbs, true, u0 - n0);
-  shiftKnots(result.nurbs, false, v0 - m0);
+  if (basis->IsUPeriodic()) shiftKnots(result.nurbs, true, wholePeriods(u0 - n0, basis->UPeriod()));
+  if (basis->IsVPeriodic()) shiftKnots(result.nurbs, false, wholePeriods(v0 - m0, basis->VPeriod()));
   if (result.nurbs->UDegree() > kMaxDegree || result.nurbs->VDegree() > kMaxDegree)
     throw CadFaceError("surface degree " + std::to_string(result.nurbs->UDegree()) + "×" +
                        std::to_string(result.nurbs->VDegree()) + " is above 7");
