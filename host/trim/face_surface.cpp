@@ -132,25 +132,30 @@ double FaceSurface::distance(const glm::dvec3& target, glm::dvec2 guess) const {
   return closestPointOnPatch(face_->pieces[piece].patch, target, localUv(piece, guess)).distance;
 }
 
-glm::dvec2 FaceSurface::meanSpeeds(glm::dvec2 lo, glm::dvec2 hi) const {
+FaceSurface::Scales FaceSurface::meanScales(glm::dvec2 lo, glm::dvec2 hi) const {
   constexpr int kGrid = 6;
-  const glm::dvec2 h = 1e-4 * (hi - lo);
-  glm::dvec2 sum(0.0);
+  const glm::dvec2 h = 1e-3 * (hi - lo);
+  const glm::dvec2 du(h.x, 0), dv(0, h.y);
+  Scales sum{glm::dvec2(0.0), glm::dvec2(0.0)};
   for (int i = 0; i < kGrid; ++i)
     for (int j = 0; j < kGrid; ++j) {
       const glm::dvec2 uv = lo + (hi - lo) * glm::dvec2((i + 0.5) / kGrid, (j + 0.5) / kGrid);
-      if (h.x > 0)
-        sum.x += glm::length(point(uv + glm::dvec2(h.x, 0)) - point(uv - glm::dvec2(h.x, 0))) /
-                 (2 * h.x);
-      if (h.y > 0)
-        sum.y += glm::length(point(uv + glm::dvec2(0, h.y)) - point(uv - glm::dvec2(0, h.y))) /
-                 (2 * h.y);
+      const glm::dvec3 p = point(uv), pu0 = point(uv - du), pu1 = point(uv + du),
+                       pv0 = point(uv - dv), pv1 = point(uv + dv);
+      if (h.x > 0) sum.speeds.x += glm::length(pu1 - pu0) / (2 * h.x);
+      if (h.y > 0) sum.speeds.y += glm::length(pv1 - pv0) / (2 * h.y);
+      const glm::dvec3 normal = glm::cross(pu1 - pu0, pv1 - pv0);
+      const double length = glm::length(normal);
+      if (!(length > 0)) continue;  // a pole, or a side of no width: no normal there
+      sum.bending.x += std::abs(glm::dot(normal, pu1 - 2.0 * p + pu0)) / (length * h.x * h.x);
+      sum.bending.y += std::abs(glm::dot(normal, pv1 - 2.0 * p + pv0)) / (length * h.y * h.y);
     }
-  glm::dvec2 speeds = sum / double(kGrid * kGrid);
+  Scales mean{sum.speeds / double(kGrid * kGrid), sum.bending / double(kGrid * kGrid)};
+  glm::dvec2& speeds = mean.speeds;
   const double floor = 1e-12 * std::max({speeds.x, speeds.y, 1e-300});
   if (!(speeds.x > floor)) speeds.x = std::max(floor, speeds.y);
   if (!(speeds.y > floor)) speeds.y = std::max(floor, speeds.x);
-  return speeds;
+  return mean;
 }
 
 }  // namespace tessera

@@ -23,11 +23,18 @@ class FaceSurface {
   // Distance from `target` to the surface, by the closest-point search on the piece of
   // `guess` started there (closest_point.h): an upper bound of the true distance.
   double distance(const glm::dvec3& target, glm::dvec2 guess) const;
-  // The mean lengths of ∂S/∂u and ∂S/∂v over a 6 × 6 grid of [lo, hi] (central differences):
-  // (u·su, v·sv) makes (u, v) distances about 3D distances, so the gap is triangulated in
-  // the surface's own proportions (a cylinder of radius 4 in (angle, height) is 4× wider).
-  // Never below 10⁻¹² of the larger, so a pole does not collapse a direction.
-  glm::dvec2 meanSpeeds(glm::dvec2 lo, glm::dvec2 hi) const;
+  // Means over a 6 × 6 grid of [lo, hi], by central differences (one set of five points per
+  // grid point).
+  struct Scales {
+    // |∂S/∂u| and |∂S/∂v|: (u·su, v·sv) makes (u, v) distances about 3D distances. Never
+    // below 10⁻¹² of the larger, so a pole does not collapse a direction.
+    glm::dvec2 speeds;
+    // |n·∂²S/∂u²| and |n·∂²S/∂v²| (n the unit normal): how fast the surface leaves its tangent
+    // plane along u and along v. A chord of parameter length d along u is off the surface by
+    // about ⅛·b_u·d² (a cylinder, flat along its rulings, has b_v = 0).
+    glm::dvec2 bending;
+  };
+  Scales meanScales(glm::dvec2 lo, glm::dvec2 hi) const;
 
  private:
   const TrimmedFace* face_;

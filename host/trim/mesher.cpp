@@ -51,6 +51,28 @@ class FaceBuilder {
 };
 
 
+// The (u, v) scale the gap is triangulated and refined in (docs/trimmed_faces.md, step 3): u
+// scaled by a ratio rounded to a power of two, so the scaling is exact and every orientation
+// sign the gap's predicates see is the unscaled one. The ratio makes a triangle's error about
+// the same along u and v: a chord of parameter length d along u is off the surface by about
+// ⅛·b_u·d² (FaceSurface::meanScales), so d_u = √(8δ/b_u) is the longest allowed, and scaling u
+// by 1/d_u and v by 1/d_v makes every allowed triangle about unit size. Where the surface is
+// flat along a direction (a cylinder's rulings: b_v = 0), its allowed length is the face's own
+// extent, not infinite: longer does not exist and the gap's triangles would turn into slivers.
+// On a face flat both ways at δ, the surface's 3D proportions (meanScales' speeds).
+glm::dvec2 gapMetric(const FaceSurface& surface, glm::dvec2 lo, glm::dvec2 hi, double tolerance) {
+  const FaceSurface::Scales scales = surface.meanScales(lo, hi);
+  const glm::dvec2 speeds = scales.speeds, bending = scales.bending;
+  const glm::dvec2 extent = hi - lo;
+  const auto allowed = [&](double b, double e) {
+    return b > 0 ? std::min(std::sqrt(8.0 * tolerance / b), e) : e;
+  };
+  const double du = allowed(bending.x, extent.x), dv = allowed(bending.y, extent.y);
+  const bool flat = du >= extent.x && dv >= extent.y;
+  const double ratio = flat ? speeds.x / speeds.y : dv / du;
+  return {std::exp2(std::round(std::log2(ratio))), 1.0};
+}
+
 }  // namespace
 
 void validateTrimmedModel(const TrimmedModel& model) {
@@ -170,11 +192,7 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
       for (int k = 0; k < 3; ++k) directed.insert({t.v[k], t.v[(k + 1) % 3]});
     for (const auto& [a, b] : directed)
       if (!directed.count({b, a})) gapEdges.push_back({b, a});
-    // Triangulated in the surface's proportions (meanSpeeds), not in raw (u, v): u scaled by
-    // the speeds' ratio rounded to a power of two, so the scaling is exact and every
-    // orientation sign the gap's predicates see is the unscaled one.
-    const glm::dvec2 speeds = surface.meanSpeeds(lo, hi);
-    const glm::dvec2 metric(std::exp2(std::round(std::log2(speeds.x / speeds.y))), 1.0);
+    const glm::dvec2 metric = gapMetric(surface, lo, hi, options.tolerance);
     std::vector<glm::dvec2> points;
     for (const FaceVertex& v : builder.vertices) points.push_back(v.uv * metric);
     const GapTriangulation gap = triangulateGap(points, gapEdges);

@@ -57,7 +57,7 @@ struct GapRefineOptions {
   double tolerance = 0;         // δ
   int subdivisions = 8;         // samples per triangle side
   int maxRounds = 24;
-  glm::dvec2 metric{1.0, 1.0};  // (u, v) scales for shapes and lengths (FaceSurface::meanSpeeds)
+  glm::dvec2 metric{1.0, 1.0};  // (u, v) scales for shapes and lengths (mesher.cpp, gapMetric)
   GapMeasure measure = GapMeasure::Geometric;  // a triangle within δ parametrically is
                                               // not searched geometrically
 };
