@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <unordered_map>
 
 namespace tessera::trim_detail {
 namespace {
@@ -55,6 +56,26 @@ int sideOf(const std::array<uint32_t, 3>& v, uint32_t a, uint32_t b) {
     if (edgeKey(v[k], v[(k + 1) % 3]) == edgeKey(a, b)) return k;
   return -1;
 }
+
+// A triangle's measures (negative: not taken yet), by its corners in any order.
+struct Measures {
+  double parametric = -1.0, geometric = -1.0;
+};
+class MeasureCache {
+ public:
+  Measures& of(std::array<uint32_t, 3> v) {
+    std::sort(v.begin(), v.end());
+    return byCorners_[v];
+  }
+
+ private:
+  struct Hash {
+    size_t operator()(const std::array<uint32_t, 3>& v) const {
+      return size_t((uint64_t(v[0]) * 0x9E3779B97F4A7C15ull) ^ (uint64_t(v[1]) << 32 | v[2]));
+    }
+  };
+  std::unordered_map<std::array<uint32_t, 3>, Measures, Hash> byCorners_;
+};
 
 }  // namespace
 
@@ -197,12 +218,22 @@ size_t refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
     users.add(v[2], m, n1), users.add(v[2], m, n2);
   };
 
+  // Vertices never move, so a triangle's measures depend on its corners alone: each is taken
+  // once per set of corners (a triangle left alone by a round, or rebuilt by a flip back, is
+  // not sampled again).
+  MeasureCache cache;
   const bool geometric = options.measure == GapMeasure::Geometric;
+  const auto deviation = [&](const std::array<uint32_t, 3>& v) {
+    Measures& m = cache.of(v);
+    if (m.parametric < 0) m.parametric = interpolationDeviation(surface, vs, v, options.subdivisions);
+    return m.parametric;
+  };
   const auto withinTolerance = [&](const std::array<uint32_t, 3>& v) {
-    if (interpolationDeviation(surface, vs, v, options.subdivisions) <= options.tolerance)
-      return true;
-    return geometric &&
-           interpolationDistance(surface, vs, v, options.subdivisions) <= options.tolerance;
+    if (deviation(v) <= options.tolerance) return true;
+    if (!geometric) return false;
+    Measures& m = cache.of(v);
+    if (m.geometric < 0) m.geometric = interpolationDistance(surface, vs, v, options.subdivisions);
+    return m.geometric <= options.tolerance;
   };
 
   // Flips towards less deviation (a data-dependent triangulation, Dyn, Levin & Rippa 1990):
@@ -210,9 +241,6 @@ size_t refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
   // ruled one would not (a fillet's two sides); a gap edge between two gap triangles is flipped
   // when the worse of the two new triangles deviates less than 0.9 of the worse old one (the
   // margin keeps rounding from flipping back and forth). Passes until none flips, at most 8.
-  const auto deviation = [&](const std::array<uint32_t, 3>& v) {
-    return interpolationDeviation(surface, vs, v, options.subdivisions);
-  };
   const auto flipByDeviation = [&]() {
     size_t flips = 0;
     for (int pass = 0; pass < 8; ++pass) {
