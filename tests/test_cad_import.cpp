@@ -102,11 +102,15 @@ ImportFigures checkImport(const CadFile& file) {
       edgeSegments.insert(unordered(samples.pointIds[k], samples.pointIds[k + 1]));
   std::map<IdPair, std::set<uint32_t>> facesOfSegment;
 
-  for (const TrimmedFace& face : in.model.faces) {
+  for (size_t f = 0; f < in.model.faces.size(); ++f) {
+    const TrimmedFace& face = in.model.faces[f];
     const TopoDS_Face source = TopoDS::Face(in.faces(static_cast<int>(face.faceIndex) + 1));
     CHECK(face.reversed == (source.Orientation() == TopAbs_REVERSED));
-    // Pieces against OCCT's surface at a grid of the face's own (u, v).
-    const CadSurface surface = convertFaceSurface(TopoDS::Face(source.Oriented(TopAbs_FORWARD)));
+    // Pieces against OCCT's surface at a grid of the face's own (u, v), through the import's
+    // own conversion (the same bounds give the same pieces and the same map).
+    const std::array<double, 4>& b = in.uvBounds[f];
+    const CadSurface surface = convertFaceSurface(
+        faceBasisSurface(TopoDS::Face(source.Oriented(TopAbs_FORWARD))), b[0], b[1], b[2], b[3]);
     double u0, u1, v0, v1;
     surface.nurbs->Bounds(u0, u1, v0, v1);
     for (int i = 0; i <= 4; ++i)

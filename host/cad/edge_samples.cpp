@@ -24,8 +24,13 @@ double pointSegmentDistance(glm::dvec3 p, glm::dvec3 a, glm::dvec3 b) {
   return glm::length(p - (a + t * ab));
 }
 
-// Largest distance from the curve on [a, b] to the chord, at kChecksPerSegment samples.
+// Largest distance from the curve on [a, b] to the chord: for a circle (parametrised by angle)
+// its sagitta R·(1 − cos((b − a)/2)), exactly; otherwise measured at kChecksPerSegment samples.
 double chordDeviation(const BRepAdaptor_Curve& curve, double a, double b) {
+  if (curve.GetType() == GeomAbs_Circle) {
+    const double s = std::sin(0.25 * (b - a));
+    return curve.Circle().Radius() * 2.0 * s * s;
+  }
   const glm::dvec3 pa = toGlm(curve.Value(a)), pb = toGlm(curve.Value(b));
   double worst = 0.0;
   for (int k = 1; k <= kChecksPerSegment; ++k) {
@@ -83,12 +88,15 @@ EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta,
   }
   const double tolerance = BRep_Tool::Tolerance(edge);
   samples.pointIds.push_back(id0);
+  samples.curvePoints.push_back(toGlm(curve.Value(first)));
   for (size_t k = 1; k + 1 < samples.params.size(); ++k) {
     samples.pointIds.push_back(static_cast<uint32_t>(points.positions.size()));
-    points.positions.push_back(toGlm(curve.Value(samples.params[k])));
+    samples.curvePoints.push_back(toGlm(curve.Value(samples.params[k])));
+    points.positions.push_back(samples.curvePoints.back());
     points.tolerances.push_back(tolerance);
   }
   samples.pointIds.push_back(id1);
+  samples.curvePoints.push_back(toGlm(curve.Value(last)));
   return samples;
 }
 

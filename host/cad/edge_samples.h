@@ -12,8 +12,12 @@ namespace tessera {
 struct EdgeSamples {
   std::vector<double> params;      // increasing, first and last the edge's range
   std::vector<uint32_t> pointIds;  // one per parameter; the ends are the vertices' points
+  // The edge's 3D curve at each parameter (its ends within the vertices' tolerance of their
+  // points); empty for a degenerated edge. A plane's pcurve, where the file stores none, is the
+  // projection of these (BRep_Tool::CurveOnPlane), which the import takes directly.
+  std::vector<glm::dvec3> curvePoints;
   bool degenerated = false;        // a pole: every id is the vertex's
-  double maxChordDeviation = 0.0;  // measured (see discretiseEdge)
+  double maxChordDeviation = 0.0;  // exact for circles, measured otherwise (discretiseEdge)
 };
 
 struct SharedPoints {
@@ -22,9 +26,10 @@ struct SharedPoints {
 };
 
 // The rule: a straight edge is one segment; any other starts as 4 segments (a closed edge
-// then bounds an area) and a segment [a, b] is halved while the curve, sampled at 15 interior
-// parameters, lies farther than delta from the chord. The deviation is measured, not proven:
-// a wiggle between samples of a segment can escape it (docs/cad.md). A degenerated edge (a
+// then bounds an area) and a segment [a, b] is halved while the curve lies farther than delta
+// from the chord: for a circle its sagitta, exactly; for any other curve sampled at 15 interior
+// parameters, measured, not proven: a wiggle between samples of a segment can escape it
+// (docs/cad.md). A degenerated edge (a
 // point in 3D, a segment in uv) gets 8 segments, all at its vertex's point.
 // The edge is taken FORWARD. The vertex with index k in `vertices` is shared point k − 1 (the
 // vertices come first in SharedPoints); the edge's interior samples are appended to `points`.

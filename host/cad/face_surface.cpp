@@ -43,20 +43,21 @@ std::vector<BezierPatchPiece> rationalPieces(const Handle(Geom_BSplineSurface)& 
   const bool rational = s->IsURational() || s->IsVRational();
   for (int i = 1; i <= s->NbUPoles(); ++i)
     for (int j = 1; j <= s->NbVPoles(); ++j) {
-      const double w = s->Weight(i, j);
+      const double w = rational ? s->Weight(i, j) : 1.0;
       weighted.cp.push_back(toGlm(s->Pole(i, j)) * w);
       weights.cp.push_back({w, 0.0, 0.0});
     }
   std::vector<BezierPatchPiece> pieces = bezierPatches(weighted);
+  if (!rational) return pieces;  // weights 1 stay 1: no second insertion, no division
   const std::vector<BezierPatchPiece> weightPieces = bezierPatches(weights);
   for (size_t k = 0; k < pieces.size(); ++k) {
     BezierPatch& patch = pieces[k].patch;
-    if (rational) patch.weights.resize(patch.cp.size());
+    patch.weights.resize(patch.cp.size());
     for (size_t c = 0; c < patch.cp.size(); ++c) {
       const double w = weightPieces[k].patch.cp[c].x;
       if (!(w > 0.0)) throw CadFaceError("a NURBS weight is not positive after knot insertion");
       patch.cp[c] /= w;
-      if (rational) patch.weights[c] = w;
+      patch.weights[c] = w;
     }
   }
   return pieces;
@@ -162,17 +163,24 @@ glm::dvec2 CadSurface::mapUv(const gp_Pnt2d& uv) const {
   return {solve(uv.X(), true), solve(uv.Y(), false)};
 }
 
-CadSurface convertFaceSurface(const TopoDS_Face& face) {
-  CadSurface result;
-  result.original = BRep_Tool::Surface(face);
-  if (result.original.IsNull()) throw CadFaceError("the face has no surface");
-  Handle(Geom_Surface) basis = result.original;
+Handle(Geom_Surface) faceBasisSurface(const TopoDS_Face& face) {
+  Handle(Geom_Surface) basis = BRep_Tool::Surface(face);
+  if (basis.IsNull()) throw CadFaceError("the face has no surface");
   while (auto trimmed = Handle(Geom_RectangularTrimmedSurface)::DownCast(basis))
     basis = trimmed->BasisSurface();
-  result.original = basis;
+  return basis;
+}
 
+CadSurface convertFaceSurface(const TopoDS_Face& face) {
   double u0, u1, v0, v1;
   BRepTools::UVBounds(face, u0, u1, v0, v1);
+  return convertFaceSurface(faceBasisSurface(face), u0, u1, v0, v1);
+}
+
+CadSurface convertFaceSurface(const Handle(Geom_Surface)& basis, double u0, double u1, double v0,
+                              double v1) {
+  CadSurface result;
+  result.original = basis;
   double a, b, c, d;
   basis->Bounds(a, b, c, d);
   if (!basis->IsUPeriodic()) u0 = std::max(u0, a), u1 = std::min(u1, b);

@@ -43,8 +43,19 @@ struct CadSurface {
   glm::dvec2 mapUv(const gp_Pnt2d& uv) const;
 };
 
-// Throws CadFaceError (a degree above 7, a surface GeomConvert cannot convert exactly, a
-// reparametrisation that does not check out) or lets Standard_Failure through.
+// The face's surface (located, BRep_Tool::Surface) without its Geom_RectangularTrimmedSurface
+// wrappers. Throws CadFaceError for a face without one.
+Handle(Geom_Surface) faceBasisSurface(const TopoDS_Face& face);
+
+// `basis` (faceBasisSurface) over the face's uv bounds [u0, u1] × [v0, v1]: the extent of its
+// loops (clamped to a non-periodic surface's own bounds, at most one period in a periodic
+// direction). Throws CadFaceError (a zero-area face, a degree above 7, a surface GeomConvert
+// cannot convert exactly, a reparametrisation that does not check out) or lets
+// Standard_Failure through.
+CadSurface convertFaceSurface(const Handle(Geom_Surface)& basis, double u0, double u1, double v0,
+                              double v1);
+// The same over BRepTools::UVBounds (the pcurves' boxes; the import takes its loop points'
+// extent instead, to_trimmed.cpp).
 CadSurface convertFaceSurface(const TopoDS_Face& face);
 
 // The face's surface as a surface of revolution with a straight or circular profile, as the

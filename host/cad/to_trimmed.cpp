@@ -3,15 +3,21 @@
 
 #include <BRepBndLib.hxx>
 #include <BRepTools_WireExplorer.hxx>
+#include <BRep_ListIteratorOfListOfCurveRepresentation.hxx>
+#include <BRep_TEdge.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
+#include <ElSLib.hxx>
 #include <Geom2d_Curve.hxx>
+#include <Geom_Plane.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Iterator.hxx>
 #include <TopoDS_Wire.hxx>
 #include <algorithm>
+#include <set>
 #include <cmath>
 
 #include "cad/face_surface.h"
@@ -30,40 +36,121 @@ double signedArea(const std::vector<glm::dvec2>& uv) {
   return 0.5 * twice;
 }
 
+// A loop before the surface is converted: the pcurves' (u, v), not yet mapped to the pieces'.
+struct RawLoop {
+  std::vector<gp_Pnt2d> uv;
+  std::vector<uint32_t> pointIds;
+};
+
+// The first and last shared point of `edge` in the direction the wire uses it.
+std::pair<uint32_t, uint32_t> endIds(const TopoDS_Edge& edge, const CadImport& in) {
+  const int index = in.edges.FindIndex(edge);
+  if (index == 0) throw CadFaceError("a wire edge is not in the shape's edge map");
+  const std::vector<uint32_t>& ids = in.edgeSamples[static_cast<size_t>(index - 1)].pointIds;
+  return edge.Orientation() == TopAbs_REVERSED ? std::pair(ids.back(), ids.front())
+                                               : std::pair(ids.front(), ids.back());
+}
+
+// The wire's edges in an order where each starts at the previous one's end: the wire's own
+// order (or its reverse) when it is one, as exchange files store it, and no closed or seam edge
+// makes the vertices ambiguous; otherwise
+// BRepTools_WireExplorer's, which needs every edge's pcurve on the face (on a plane without
+// stored pcurves, a projection of each edge: most of the import's time once).
+std::vector<TopoDS_Edge> orderedEdges(const TopoDS_Wire& wire, const TopoDS_Face& face,
+                                      const CadImport& in) {
+  std::vector<TopoDS_Edge> edges;
+  for (TopoDS_Iterator it(wire); it.More(); it.Next())
+    if (it.Value().ShapeType() == TopAbs_EDGE) edges.push_back(TopoDS::Edge(it.Value()));
+  // Chained by vertices is chained in uv, unless an edge has one vertex at both ends (a closed
+  // edge: a torus's seams all meet at its one vertex) or is used twice (a seam, once per side):
+  // then only the pcurves tell the order.
+  std::set<const TopoDS_TShape*> distinct;
+  bool vertexOrderHolds = true;
+  for (const TopoDS_Edge& edge : edges) {
+    const std::pair<uint32_t, uint32_t> ends = endIds(edge, in);
+    if ((ends.first == ends.second && edges.size() > 1) || !distinct.insert(edge.TShape().get()).second)
+      vertexOrderHolds = false;
+  }
+  const auto chained = [&] {
+    for (size_t k = 0; k < edges.size(); ++k)
+      if (endIds(edges[k], in).second != endIds(edges[(k + 1) % edges.size()], in).first)
+        return false;
+    return true;
+  };
+  if (vertexOrderHolds && chained()) return edges;
+  std::reverse(edges.begin(), edges.end());
+  if (vertexOrderHolds && chained()) return edges;
+  edges.clear();
+  for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next()) edges.push_back(it.Current());
+  int edgeCount = 0;
+  for (TopExp_Explorer e(wire, TopAbs_EDGE); e.More(); e.Next()) ++edgeCount;
+  if (int(edges.size()) != edgeCount)
+    throw CadFaceError("the wire explorer ordered " + std::to_string(edges.size()) +
+                       " of the wire's " + std::to_string(edgeCount) + " edges");
+  return edges;
+}
+
+// Whether the file stores `edge`'s pcurve on `face` (BRep_Tool::CurveOnSurface computes one for
+// a plane otherwise).
+bool storesPcurve(const TopoDS_Edge& edge, const TopoDS_Face& face) {
+  TopLoc_Location location;
+  const Handle(Geom_Surface)& surface = BRep_Tool::Surface(face, location);
+  const TopLoc_Location onSurface = location.Predivided(edge.Location());
+  const Handle(BRep_TEdge) tedge = Handle(BRep_TEdge)::DownCast(edge.TShape());
+  for (BRep_ListIteratorOfListOfCurveRepresentation it(tedge->Curves()); it.More(); it.Next())
+    if (it.Value()->IsCurveOnSurface(surface, onSurface)) return true;
+  return false;
+}
+
 // One wire → one loop: edges in wire order, each edge's samples in the direction the wire uses
 // it, mapped through the edge's pcurve on this face (for a seam, the orientation picks which of
-// its two pcurves). Consecutive edges share their vertex point once.
-TrimLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face, const CadSurface& surface,
-                  uint32_t faceIndex, const std::string& label, const std::string& path, CadImport& in) {
-  TrimLoop loop;
-  int explored = 0;
+// its two pcurves; on a plane without a stored pcurve, the plane's parameters of the edge's 3D
+// points, which is what OCCT's computed pcurve, their projection, gives). Consecutive edges
+// share their vertex point once. `basis` is the face's surface (faceBasisSurface).
+RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
+                 const Handle(Geom_Surface)& basis, uint32_t faceIndex, const std::string& label,
+                 const std::string& path, CadImport& in) {
+  RawLoop loop;
+  const Handle(Geom_Plane) plane = Handle(Geom_Plane)::DownCast(basis);
   uint32_t firstId = 0, lastId = 0;
-  for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next(), ++explored) {
-    const TopoDS_Edge& edge = it.Current();
+  const std::vector<TopoDS_Edge> edges = orderedEdges(wire, face, in);
+  for (size_t e = 0; e < edges.size(); ++e) {
+    const TopoDS_Edge& edge = edges[e];
     const int index = in.edges.FindIndex(edge);
-    if (index == 0) throw CadFaceError("a wire edge is not in the shape's edge map");
     const EdgeSamples& samples = in.edgeSamples[static_cast<size_t>(index - 1)];
-    double pf, pl;
-    Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, pf, pl);
-    if (pcurve.IsNull())
-      throw CadFaceError("edge " + std::to_string(index - 1) + " has no pcurve on the face");
+    double pf = 0, pl = 0;
+    Handle(Geom2d_Curve) pcurve;
+    const bool projected = !plane.IsNull() && !samples.degenerated && !storesPcurve(edge, face);
+    if (!projected) {
+      pcurve = BRep_Tool::CurveOnSurface(edge, face, pf, pl);
+      if (pcurve.IsNull())
+        throw CadFaceError("edge " + std::to_string(index - 1) + " has no pcurve on the face");
+    }
     const double f = samples.params.front(), l = samples.params.back();
     const bool reversed = edge.Orientation() == TopAbs_REVERSED;
     const size_t n = samples.params.size();
-    if (explored == 0) firstId = samples.pointIds[reversed ? n - 1 : 0];
+    if (e == 0) firstId = samples.pointIds[reversed ? n - 1 : 0];
     else if (samples.pointIds[reversed ? n - 1 : 0] != lastId)
       throw CadFaceError("the wire is not connected at edge " + std::to_string(index - 1));
     double gap = 0.0;
     for (size_t k = 0; k < n; ++k) {
       const size_t s = reversed ? n - 1 - k : k;
-      // Same range is the rule for pcurves (BRep_Tool::SameRange); map linearly if not.
-      const double t = l > f ? pf + (samples.params[s] - f) * (pl - pf) / (l - f) : pf;
-      const gp_Pnt2d uv = pcurve->Value(t);
-      const gp_Pnt onSurface = surface.original->Value(uv.X(), uv.Y());
+      gp_Pnt2d uv;
+      if (projected) {
+        const glm::dvec3& c = samples.curvePoints[s];
+        double u, v;
+        ElSLib::Parameters(plane->Pln(), gp_Pnt(c.x, c.y, c.z), u, v);
+        uv.SetCoord(u, v);
+      } else {
+        // Same range is the rule for pcurves (BRep_Tool::SameRange); map linearly if not.
+        const double t = l > f ? pf + (samples.params[s] - f) * (pl - pf) / (l - f) : pf;
+        uv = pcurve->Value(t);
+      }
+      const gp_Pnt onSurface = basis->Value(uv.X(), uv.Y());
       gap = std::max(gap, glm::length(glm::dvec3(onSurface.X(), onSurface.Y(), onSurface.Z()) -
                                       in.model.sharedPoints[samples.pointIds[s]]));
       if (k + 1 == n) break;  // the next edge's first point
-      loop.uv.push_back(surface.mapUv(uv));
+      loop.uv.push_back(uv);
       loop.pointIds.push_back(samples.pointIds[s]);
     }
     const double tolerance = BRep_Tool::Tolerance(edge);
@@ -74,27 +161,37 @@ TrimLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face, const CadSur
                                  " apart, beyond its tolerance " + cad_detail::numberText(tolerance)});
     lastId = samples.pointIds[reversed ? 0 : n - 1];
   }
-  int edgeCount = 0;
-  for (TopExp_Explorer e(wire, TopAbs_EDGE); e.More(); e.Next()) ++edgeCount;
-  if (explored != edgeCount)
-    throw CadFaceError("the wire explorer ordered " + std::to_string(explored) + " of the wire's " +
-                       std::to_string(edgeCount) + " edges");
-  if (explored == 0 || lastId != firstId) throw CadFaceError("a wire is not closed");
+  if (edges.empty() || lastId != firstId) throw CadFaceError("a wire is not closed");
   if (loop.uv.size() < 2) throw CadFaceError("a wire has fewer than two points");
   return loop;
 }
 
 TrimmedFace convertFace(const TopoDS_Face& sourceFace, uint32_t faceIndex, const std::string& label,
-                        const std::string& path, CadImport& in) {
+                        const std::string& path, CadImport& in, std::array<double, 4>& bounds) {
   // Loops in the surface's own orientation: outer counter-clockwise, holes clockwise; the
   // face's orientation goes to `reversed` (trimmed_face.h).
   const TopoDS_Face face = TopoDS::Face(sourceFace.Oriented(TopAbs_FORWARD));
   TrimmedFace out;
   out.reversed = sourceFace.Orientation() == TopAbs_REVERSED;
-  CadSurface surface = convertFaceSurface(face);
+  // The loops first, in the pcurves' (u, v): their extent bounds the surface's conversion
+  // (BRepTools::UVBounds would compute every planar pcurve again), then mapped to the pieces'.
+  const Handle(Geom_Surface) basis = faceBasisSurface(face);
+  std::vector<RawLoop> raw;
   for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next())
-    out.loops.push_back(wireLoop(TopoDS::Wire(w.Current()), face, surface, faceIndex, label, path, in));
-  if (out.loops.empty()) throw CadFaceError("the face has no wire");
+    raw.push_back(wireLoop(TopoDS::Wire(w.Current()), face, basis, faceIndex, label, path, in));
+  if (raw.empty()) throw CadFaceError("the face has no wire");
+  double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300;
+  for (const RawLoop& loop : raw)
+    for (const gp_Pnt2d& uv : loop.uv)
+      u0 = std::min(u0, uv.X()), u1 = std::max(u1, uv.X()), v0 = std::min(v0, uv.Y()), v1 = std::max(v1, uv.Y());
+  CadSurface surface = convertFaceSurface(basis, u0, u1, v0, v1);
+  bounds = {u0, u1, v0, v1};
+  for (const RawLoop& loop : raw) {
+    TrimLoop mapped;
+    mapped.pointIds = loop.pointIds;
+    for (const gp_Pnt2d& uv : loop.uv) mapped.uv.push_back(surface.mapUv(uv));
+    out.loops.push_back(std::move(mapped));
+  }
   out.pieces = std::move(surface.pieces);
   out.revolution = revolutionFormOf(surface.original);
   size_t outer = 0;
@@ -156,8 +253,9 @@ CadImport toTrimmedModel(const CadFile& file, double delta) {
     try {
       const size_t warningsBefore = in.warnings.size();
       TrimmedFace converted;
+      std::array<double, 4> bounds{};
       try {
-        converted = convertFace(face, index, label, file.path, in);
+        converted = convertFace(face, index, label, file.path, in, bounds);
       } catch (...) {
         in.warnings.resize(warningsBefore);  // a failed face's warnings go with its failure
         throw;
@@ -165,6 +263,7 @@ CadImport toTrimmedModel(const CadFile& file, double delta) {
       converted.faceIndex = index;
       converted.label = label;
       in.model.faces.push_back(std::move(converted));
+      in.uvBounds.push_back(bounds);
       continue;
     } catch (const CadFaceError& e) {
       reason = e.what();

@@ -4,6 +4,7 @@
 // face's wires become loops of those points, mapped to uv through the face's own pcurves.
 #pragma once
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,10 @@ struct CadImport {
   // The B-rep's maps (index k ↔ OCCT's index k + 1): faces in TrimmedFace::faceIndex order.
   TopTools_IndexedMapOfShape faces, edges, vertices;
   std::vector<EdgeSamples> edgeSamples;  // per edge of `edges`
+  // Per face of model.faces: the (u0, u1, v0, v1) its surface was converted over, the extent
+  // of its loops in the pcurves' (u, v) (convertFaceSurface(faceBasisSurface(face), ...)
+  // rebuilds the same pieces and the same mapUv).
+  std::vector<std::array<double, 4>> uvBounds;
   std::vector<double> pointTolerances;   // per shared point: its vertex's or edge's tolerance
   double delta = 0.0;
   double maxChordDeviation = 0.0;        // measured over every edge
