@@ -21,29 +21,45 @@ double shapeRatio(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
 // of that side: the flip removes it, a midpoint split would keep both halves as thin.
 constexpr double kFlipSliverRatio = 0.01;
 
-// The edge → triangles map kept in step with every split and flip.
+// The edge → triangles map kept in step with every split and flip, hashed by the edge's exact
+// 64-bit key (smaller vertex in the high word).
 class EdgeUsers {
  public:
   explicit EdgeUsers(const std::vector<FaceTriangle>& triangles) {
+    users_.reserve(3 * triangles.size());
     for (uint32_t t = 0; t < triangles.size(); ++t) add(triangles[t].v, t);
   }
   void add(const std::array<uint32_t, 3>& v, uint32_t t) {
-    for (int k = 0; k < 3; ++k) users_[edgeKey(v[k], v[(k + 1) % 3])].push_back(t);
+    for (int k = 0; k < 3; ++k) users_[key(v[k], v[(k + 1) % 3])].push_back(t);
   }
-  void add(uint32_t a, uint32_t b, uint32_t t) { users_[edgeKey(a, b)].push_back(t); }
+  void add(uint32_t a, uint32_t b, uint32_t t) { users_[key(a, b)].push_back(t); }
   void replace(uint32_t a, uint32_t b, uint32_t from, uint32_t to) {
-    for (uint32_t& t : users_[edgeKey(a, b)])
+    for (uint32_t& t : users_[key(a, b)])
       if (t == from) t = to;
   }
-  void erase(uint32_t a, uint32_t b) { users_.erase(edgeKey(a, b)); }
-  const std::map<EdgeKey, std::vector<uint32_t>>& all() const { return users_; }
+  void erase(uint32_t a, uint32_t b) { users_.erase(key(a, b)); }
+  // The edges with exactly two triangles, in increasing (smaller, larger) order: the order does
+  // not depend on the hashing.
+  std::vector<EdgeKey> sharedEdges() const {
+    std::vector<uint64_t> keys;
+    for (const auto& [k, ts] : users_)
+      if (ts.size() == 2) keys.push_back(k);
+    std::sort(keys.begin(), keys.end());
+    std::vector<EdgeKey> edges;
+    edges.reserve(keys.size());
+    for (uint64_t k : keys) edges.push_back({uint32_t(k >> 32), uint32_t(k)});
+    return edges;
+  }
   std::vector<uint32_t> of(uint32_t a, uint32_t b) const {
-    const auto it = users_.find(edgeKey(a, b));
+    const auto it = users_.find(key(a, b));
     return it == users_.end() ? std::vector<uint32_t>{} : it->second;
   }
 
  private:
-  std::map<EdgeKey, std::vector<uint32_t>> users_;
+  static uint64_t key(uint32_t a, uint32_t b) {
+    return uint64_t(std::min(a, b)) << 32 | uint64_t(std::max(a, b));
+  }
+  std::unordered_map<uint64_t, std::vector<uint32_t>> users_;
 };
 
 // The position of the triangle's side k (its corners k, k + 1) and the rotation that puts it first.
@@ -244,15 +260,11 @@ size_t refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
   const auto flipByDeviation = [&]() {
     size_t flips = 0;
     for (int pass = 0; pass < 8; ++pass) {
-      std::vector<EdgeKey> edges;
-      for (const auto& [edge, ts] : users.all())
-        if (ts.size() == 2 && triangles[ts[0]].gap && triangles[ts[1]].gap &&
-            !isTrim(edge.first, edge.second))
-          edges.push_back(edge);
       size_t passFlips = 0;
-      for (const EdgeKey& edge : edges) {
+      for (const EdgeKey& edge : users.sharedEdges()) {
+        if (isTrim(edge.first, edge.second)) continue;
         const std::vector<uint32_t> ts = users.of(edge.first, edge.second);
-        if (ts.size() != 2) continue;
+        if (ts.size() != 2 || !triangles[ts[0]].gap || !triangles[ts[1]].gap) continue;
         const uint32_t t = ts[0], s = ts[1];
         const std::array<uint32_t, 3> v = rotated(triangles[t].v,
                                                   sideOf(triangles[t].v, edge.first, edge.second));

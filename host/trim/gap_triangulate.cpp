@@ -5,6 +5,8 @@
 #include <map>
 #include <numeric>
 #include <set>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "trim/trim_cut.h"
 
@@ -252,16 +254,22 @@ GapTriangulation triangulateGap(const std::vector<glm::dvec2>& points,
 void flipTowardsDelaunay(const std::vector<glm::dvec2>& points,
                          const std::vector<std::pair<uint32_t, uint32_t>>& fixed,
                          std::vector<std::array<uint32_t, 3>>& triangles) {
-  using Edge = std::pair<uint32_t, uint32_t>;
-  const auto key = [](uint32_t a, uint32_t b) { return Edge(std::min(a, b), std::max(a, b)); };
-  std::set<Edge> constrained;
+  // An edge as one exact 64-bit key (smaller vertex in the high word): hashed lookups, and the
+  // keys' order is the (smaller, larger) pairs' order.
+  using Edge = uint64_t;
+  const auto key = [](uint32_t a, uint32_t b) {
+    return Edge(std::min(a, b)) << 32 | Edge(std::max(a, b));
+  };
+  std::unordered_set<Edge> constrained;
   for (const auto& e : fixed) constrained.insert(key(e.first, e.second));
-  std::map<Edge, std::vector<uint32_t>> users;  // edge → the triangles using it
+  std::unordered_map<Edge, std::vector<uint32_t>> users;  // edge → the triangles using it
+  users.reserve(3 * triangles.size());
   for (uint32_t t = 0; t < triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) users[key(triangles[t][k], triangles[t][(k + 1) % 3])].push_back(t);
   std::vector<Edge> queue;
   for (const auto& [edge, ts] : users)
     if (ts.size() == 2 && !constrained.count(edge)) queue.push_back(edge);
+  std::sort(queue.begin(), queue.end());  // a deterministic order, whatever the hashing
   const auto moveUser = [&](Edge edge, uint32_t from, uint32_t to) {
     for (uint32_t& t : users[edge])
       if (t == from) t = to;
@@ -272,7 +280,7 @@ void flipTowardsDelaunay(const std::vector<glm::dvec2>& points,
   while (!queue.empty() && budget-- > 0) {
     const Edge edge = queue.back();
     queue.pop_back();
-    auto found = users.find(edge);
+    const auto found = users.find(edge);
     if (found == users.end() || found->second.size() != 2 || constrained.count(edge)) continue;
     const uint32_t t0 = found->second[0], t1 = found->second[1];
     // t0 = (a, b, c) counter-clockwise with the edge a→b; t1 holds b→a and d.
