@@ -75,13 +75,19 @@ int sideOf(const std::array<uint32_t, 3>& v, uint32_t a, uint32_t b) {
 
 // A triangle's measures (negative: not taken yet), by its corners in any order.
 struct Measures {
-  double parametric = -1.0, geometric = -1.0;
+  SampledDeviations sampled{-1.0, -1.0};  // interpolation and parametric (with the corners' offsets)
+  double geometric = -1.0;
 };
 class MeasureCache {
  public:
   Measures& of(std::array<uint32_t, 3> v) {
     std::sort(v.begin(), v.end());
     return byCorners_[v];
+  }
+  const Measures* find(std::array<uint32_t, 3> v) const {
+    std::sort(v.begin(), v.end());
+    const auto it = byCorners_.find(v);
+    return it == byCorners_.end() ? nullptr : &it->second;
   }
 
  private:
@@ -114,11 +120,31 @@ double largestOverSamples(const std::vector<FaceVertex>& vs, const std::array<ui
 
 }  // namespace
 
+SampledDeviations sampledDeviations(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
+                                    const std::array<uint32_t, 3>& t, int n) {
+  const glm::dvec3 s0 = surface.point(vs[t[0]].uv), s1 = surface.point(vs[t[1]].uv),
+                   s2 = surface.point(vs[t[2]].uv);
+  const glm::dvec3 &p0 = vs[t[0]].position, &p1 = vs[t[1]].position, &p2 = vs[t[2]].position;
+  SampledDeviations worst;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j) {
+      const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
+      const glm::dvec3 p = a * p0 + b * p1 + c * p2;
+      if (i == n || j == n || i + j == 0) {  // a corner: its own offset, no interpolation error
+        worst.parametric = std::max(worst.parametric, glm::length(p - (i == n ? s0 : j == n ? s1 : s2)));
+        continue;
+      }
+      const glm::dvec2 uv = a * vs[t[0]].uv + b * vs[t[1]].uv + c * vs[t[2]].uv;
+      const glm::dvec3 onSurface = surface.point(uv);
+      worst.parametric = std::max(worst.parametric, glm::length(p - onSurface));
+      worst.interpolation = std::max(worst.interpolation, glm::length(a * s0 + b * s1 + c * s2 - onSurface));
+    }
+  return worst;
+}
+
 double parametricDeviation(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
                            const std::array<uint32_t, 3>& t, int n) {
-  return largestOverSamples(vs, t, n, [&](const glm::dvec3& p, glm::dvec2 uv) {
-    return glm::length(p - surface.point(uv));
-  });
+  return sampledDeviations(surface, vs, t, n).parametric;
 }
 
 double geometricDeviation(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
@@ -130,17 +156,7 @@ double geometricDeviation(const FaceSurface& surface, const std::vector<FaceVert
 
 double interpolationDeviation(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
                               const std::array<uint32_t, 3>& t, int n) {
-  const glm::dvec3 s0 = surface.point(vs[t[0]].uv), s1 = surface.point(vs[t[1]].uv),
-                   s2 = surface.point(vs[t[2]].uv);
-  double worst = 0;
-  for (int i = 0; i <= n; ++i)
-    for (int j = 0; i + j <= n; ++j) {
-      const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
-      if (i == n || j == n || i + j == 0) continue;  // a corner: 0 by construction
-      const glm::dvec2 uv = a * vs[t[0]].uv + b * vs[t[1]].uv + c * vs[t[2]].uv;
-      worst = std::max(worst, glm::length(a * s0 + b * s1 + c * s2 - surface.point(uv)));
-    }
-  return worst;
+  return sampledDeviations(surface, vs, t, n).interpolation;
 }
 
 double interpolationDistance(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
@@ -169,7 +185,7 @@ double cornerOffset(const FaceSurface& surface, const std::vector<FaceVertex>& v
 
 size_t refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
                  std::vector<FaceTriangle>& triangles, const std::set<EdgeKey>& trimEdges,
-                 const GapRefineOptions& options) {
+                 const GapRefineOptions& options, std::vector<double>* parametric) {
   EdgeUsers users(triangles);
   const auto isTrim = [&](uint32_t a, uint32_t b) { return trimEdges.count(edgeKey(a, b)) > 0; };
   const glm::dvec2 metric = options.metric;
@@ -241,8 +257,8 @@ size_t refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
   const bool geometric = options.measure == GapMeasure::Geometric;
   const auto deviation = [&](const std::array<uint32_t, 3>& v) {
     Measures& m = cache.of(v);
-    if (m.parametric < 0) m.parametric = interpolationDeviation(surface, vs, v, options.subdivisions);
-    return m.parametric;
+    if (m.sampled.interpolation < 0) m.sampled = sampledDeviations(surface, vs, v, options.subdivisions);
+    return m.sampled.interpolation;
   };
   const auto withinTolerance = [&](const std::array<uint32_t, 3>& v) {
     if (deviation(v) <= options.tolerance) return true;
@@ -328,6 +344,12 @@ size_t refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
     }
     if (!any) break;
     changes += flipByDeviation();
+  }
+  if (parametric) {
+    parametric->assign(triangles.size(), -1.0);
+    for (size_t t = 0; t < triangles.size(); ++t)
+      if (const Measures* m = triangles[t].gap ? cache.find(triangles[t].v) : nullptr)
+        (*parametric)[t] = m->sampled.parametric;
   }
   return changes;
 }

@@ -172,6 +172,7 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
   // triangles' open edges, reversed.
   std::vector<std::pair<uint32_t, uint32_t>> gapEdges;
   std::set<EdgeKey> trimEdges;
+  std::vector<double> sampledParametric;  // per triangle, where the refinement measured it
   for (const TrimLoop& loop : face.loops) {
     std::vector<uint32_t> ids;
     for (size_t k = 0; k < loop.uv.size(); ++k) {
@@ -203,7 +204,8 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
     stats.refinementSplits = trim_detail::refineGap(
         surface, builder.vertices, triangles, trimEdges,
         {options.tolerance, options.deviationSubdivisions, options.maxRefineRounds, metric,
-         options.gapMeasure});
+         options.gapMeasure},
+        &sampledParametric);
     out.refineMs = step.elapsedMs();
   }
   step.restart();
@@ -215,7 +217,8 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
     return a == b || (vs[a].sharedId >= 0 && vs[a].sharedId == vs[b].sharedId);
   };
   out.collapsed.reserve(triangles.size());
-  for (FaceTriangle& t : triangles) {
+  for (size_t index = 0; index < triangles.size(); ++index) {
+    FaceTriangle& t = triangles[index];
     const std::array<uint32_t, 3> measured = t.v;
     if (face.reversed) std::swap(t.v[1], t.v[2]);
     const std::array<uint32_t, 3>& v = t.v;
@@ -233,7 +236,9 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
     if (!t.gap && !options.measureKeptTriangles) continue;
     ++stats.measuredTriangles;
     const double parametric =
-        trim_detail::parametricDeviation(surface, vs, measured, options.deviationSubdivisions);
+        index < sampledParametric.size() && sampledParametric[index] >= 0
+            ? sampledParametric[index]
+            : trim_detail::parametricDeviation(surface, vs, measured, options.deviationSubdivisions);
     stats.maxParametricDeviation = std::max(stats.maxParametricDeviation, parametric);
     if (t.gap)
       stats.maxGapParametricDeviation = std::max(stats.maxGapParametricDeviation, parametric);

@@ -29,6 +29,14 @@ struct FaceTriangle {
 using EdgeKey = std::pair<uint32_t, uint32_t>;
 inline EdgeKey edgeKey(uint32_t a, uint32_t b) { return a < b ? EdgeKey(a, b) : EdgeKey(b, a); }
 
+// Both of the deviations below in one pass over the samples (the surface point at each sample's
+// uv, the costly part, is shared): interpolationDeviation and parametricDeviation.
+struct SampledDeviations {
+  double interpolation = 0, parametric = 0;
+};
+SampledDeviations sampledDeviations(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
+                                    const std::array<uint32_t, 3>& t, int n);
+
 // Largest |Σ bᵢ Pᵢ − S(Σ bᵢ uvᵢ)| over the barycentric samples (i, j, k)/n: the triangle against
 // the surface at the same (u, v) mix, the corners' own offsets from the surface included.
 double parametricDeviation(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
@@ -68,9 +76,11 @@ struct GapRefineOptions {
 // longest side that is not a trim segment is split at its (u, v) midpoint together with every
 // triangle across it (kept or gap: no T-junction), or, with three trim sides, the centroid is
 // added. Trim segments are never split: the neighbouring face uses them as they are.
-// Returns the number of splits and flips.
+// Returns the number of splits and flips. `parametric`, when given, receives per final triangle
+// its parametricDeviation where the refinement sampled it (every gap triangle it judged), −1
+// elsewhere: the stats need not sample those again.
 size_t refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
                  std::vector<FaceTriangle>& triangles, const std::set<EdgeKey>& trimEdges,
-                 const GapRefineOptions& options);
+                 const GapRefineOptions& options, std::vector<double>* parametric = nullptr);
 
 }  // namespace tessera::trim_detail
