@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <BRepAlgoAPI_Cut.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
@@ -182,5 +183,36 @@ TEST_CASE("gap metric: a trimmed cylinder side meshes along its rulings", "[cad]
     ++sides;
   }
   CHECK(sides == 1);
+}
+#endif
+
+#ifdef TESSERA_HAVE_CAD
+// The tree runs in the model's local frame (geometry/model_frame.h), the bound in model units:
+// the classifier divides it by the frame's scale. A torus and a cone scaled by 1000 and moved
+// far off the origin, at 1000·δ, mesh with the same triangles.
+TEST_CASE("revolution bound: the same triangles at any scale and position", "[cad][trim]") {
+  Backend backend = makeMirrorBackend();
+  for (const Shape& s : revolutionShapes()) {
+    if (s.name != "torus" && s.name != "truncated cone") continue;
+    INFO(s.name);
+    gp_Trsf scale, move;
+    scale.SetScale(gp_Pnt(0, 0, 0), 1000.0);
+    move.SetTranslation(gp_Vec(2.5e5, -1.0e5, 3.0e4));
+    const TopoDS_Shape big = BRepBuilderAPI_Transform(s.shape, move * scale, true).Shape();
+    const double delta = 1e-3 * 5.0;
+    size_t triangles[2];
+    int k = 0;
+    for (const auto& [shape, d] : {std::pair(s.shape, delta), std::pair(big, 1000.0 * delta)}) {
+      const CadImport import = toTrimmedModel(CadFile{s.name, shape, {}}, d);
+      TrimmedMeshOptions options;
+      options.tolerance = d;
+      const TrimmedMesh mesh = meshTrimmedModel(import.model, options, backend);
+      for (const TrimmedFaceStats& f : mesh.faces) CHECK(f.maxGeometricDeviation <= d + f.maxTrimPointOffset);
+      triangles[k++] = mesh.mesh.triangleCount();
+    }
+    WARN(s.name << ": " << triangles[0] << " triangles at δ " << delta << ", " << triangles[1]
+                << " scaled ×1000 and moved, at 1000·δ");
+    CHECK(triangles[0] == triangles[1]);
+  }
 }
 #endif

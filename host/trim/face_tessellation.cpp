@@ -57,7 +57,8 @@ void tessellateGroup(const TrimmedModel& model, const FaceGroup& group, const Mo
     for (size_t piece = 0; piece < face.pieces.size(); ++piece)
       revolutionPatches.push_back({known ? &face.revolution : nullptr, surfaces[k].get(), piece});
   }
-  RevolutionBoundClassifier revolution(*backend.classifier, std::move(revolutionPatches));
+  RevolutionBoundClassifier revolution(*backend.classifier, std::move(revolutionPatches),
+                                       frame.scale);
   QuadtreeResult tree;
   if (trim) {
     const TrimSet set = groupTrimSet(model, group);

@@ -107,8 +107,8 @@ RevolutionBound revolutionNodeBound(const RevolutionForm& form, const FaceSurfac
 }
 
 RevolutionBoundClassifier::RevolutionBoundClassifier(NodeClassifier& inner,
-                                                     std::vector<Patch> patches)
-    : inner_(inner), patches_(std::move(patches)) {}
+                                                     std::vector<Patch> patches, double scale)
+    : inner_(inner), patches_(std::move(patches)), scale_(scale) {}
 
 std::string RevolutionBoundClassifier::name() const {
   return inner_.name() + " (surfaces of revolution by their distance bound)";
@@ -138,11 +138,12 @@ void RevolutionBoundClassifier::classify(const PatchSet& patches,
     const RevolutionBound bound =
         revolutionNodeBound(*patch.form, *patch.surface, patch.piece, glm::dvec4(r));
     // Rule T's decision reads (M_ss + 2·M_st + M_tt)/8 + guard: the azimuth term as the u part
-    // and the profile term as the v part, each ×8, rounded up to fp32.
+    // and the profile term as the v part, each ×8, in the tree's local units, rounded up to fp32.
     gpu::vec4 terms(kUnbounded, 0.0f, kUnbounded, 0.0f);
     if (bound.valid)
-      terms = {std::nextafter(float(8.0 * bound.azimuth), up), 0.0f,
-               std::nextafter(float(8.0 * bound.profile), up), std::nextafter(float(bound.guard), up)};
+      terms = {std::nextafter(float(8.0 * bound.azimuth / scale_), up), 0.0f,
+               std::nextafter(float(8.0 * bound.profile / scale_), up),
+               std::nextafter(float(bound.guard / scale_), up)};
     decisions[i] = mirror::toleranceDecisionOf(terms, nodes[i], params);
     ++decided_;
   }

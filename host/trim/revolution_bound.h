@@ -44,7 +44,9 @@ class RevolutionBoundClassifier final : public NodeClassifier {
     const FaceSurface* surface = nullptr;
     size_t piece = 0;
   };
-  RevolutionBoundClassifier(NodeClassifier& inner, std::vector<Patch> patches);
+  // The tree works in a local frame (geometry/model_frame.h): model = local·scale + centre, so
+  // its tolerance is δ/scale and the bound, found in model units, is divided by `scale` too.
+  RevolutionBoundClassifier(NodeClassifier& inner, std::vector<Patch> patches, double scale);
 
   std::string name() const override;
   void beginTree(const PatchSet& patches) override;
@@ -59,6 +61,7 @@ class RevolutionBoundClassifier final : public NodeClassifier {
  private:
   NodeClassifier& inner_;
   std::vector<Patch> patches_;
+  double scale_;
   size_t groupFirst_ = 0, groupSize_ = 0;
   size_t decided_ = 0;
 };
