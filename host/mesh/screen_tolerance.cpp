@@ -10,6 +10,7 @@
 #include "geometry/general_patch.h"
 #include "geometry/homogeneous_net.h"
 #include "geometry/rational.h"
+#include "quadtree/revising_classifier.h"
 
 namespace tessera {
 namespace {
@@ -62,11 +63,11 @@ bool wholeNetInside(const HomogeneousNet& clip) {
   return true;
 }
 
-class ScreenSpaceClassifier : public NodeClassifier {
+class ScreenSpaceClassifier final : public RevisingClassifier {
  public:
   ScreenSpaceClassifier(NodeClassifier& inner, const std::vector<BezierPatch>& patches,
                         const Camera& camera, uint32_t eyePlaneDepth)
-      : inner_(inner), eyePlaneDepth_(eyePlaneDepth) {
+      : RevisingClassifier(inner, patches.size()), eyePlaneDepth_(eyePlaneDepth) {
     clipNets_.reserve(patches.size());
     needsTest_.reserve(patches.size());
     for (const BezierPatch& p : patches) {
@@ -77,25 +78,15 @@ class ScreenSpaceClassifier : public NodeClassifier {
     }
   }
 
-  std::string name() const override { return inner_.name() + " (screen space)"; }
+  std::string name() const override { return inner().name() + " (screen space)"; }
 
-  // buildQuadtree takes consecutive patch groups, one tree each, in order.
-  void beginTree(const PatchSet& patches) override {
-    groupFirst_ += groupSize_;
-    groupSize_ = patches.size();
-    if (groupFirst_ + groupSize_ > clipNets_.size())
-      throw std::logic_error("screen-space classifier: more patches than it was made for");
-    inner_.beginTree(patches);
-  }
-
-  void classify(const PatchSet& patches, const std::vector<gpu::QuadNode>& nodes,
-                const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
-                LevelStats& stats) override {
-    inner_.classify(patches, nodes, options, decisions, stats);
+ private:
+  void revise(const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions&,
+              std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) override {
     const Stopwatch stopwatch;
     for (size_t i = 0; i < nodes.size(); ++i) {
       const gpu::QuadNode& n = nodes[i];
-      const size_t patch = groupFirst_ + n.patchIndex;
+      const size_t patch = groupFirst() + n.patchIndex;
       if (!needsTest_[patch]) continue;
       const HomogeneousNet sub = subNet(clipNets_[patch], n.rect.x, n.rect.z, n.rect.y, n.rect.w);
       gpu::NodeDecision& d = decisions[i];
@@ -117,15 +108,9 @@ class ScreenSpaceClassifier : public NodeClassifier {
     stats.classifyMs += stopwatch.elapsedMs();
   }
 
-  size_t maxBatchNodes() const override { return inner_.maxBatchNodes(); }
-  size_t maxPatchBufferBytes() const override { return inner_.maxPatchBufferBytes(); }
-
- private:
-  NodeClassifier& inner_;
   uint32_t eyePlaneDepth_;
   std::vector<HomogeneousNet> clipNets_;  // each patch's homogeneous net in clip space
   std::vector<bool> needsTest_;           // false: the whole net is inside the view volume
-  size_t groupFirst_ = 0, groupSize_ = 0;
 };
 
 }  // namespace

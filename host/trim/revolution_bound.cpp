@@ -108,31 +108,20 @@ RevolutionBound revolutionNodeBound(const RevolutionForm& form, const FaceSurfac
 
 RevolutionBoundClassifier::RevolutionBoundClassifier(NodeClassifier& inner,
                                                      std::vector<Patch> patches, double scale)
-    : inner_(inner), patches_(std::move(patches)), scale_(scale) {}
+    : RevisingClassifier(inner, patches.size()), patches_(std::move(patches)), scale_(scale) {}
 
 std::string RevolutionBoundClassifier::name() const {
-  return inner_.name() + " (surfaces of revolution by their distance bound)";
+  return inner().name() + " (surfaces of revolution by their distance bound)";
 }
 
-void RevolutionBoundClassifier::beginTree(const PatchSet& patches) {
-  groupFirst_ += groupSize_;
-  groupSize_ = patches.size();
-  if (groupFirst_ + groupSize_ > patches_.size())
-    throw std::logic_error("revolution bound classifier: more patches than it was given");
-  inner_.beginTree(patches);
-}
-
-void RevolutionBoundClassifier::classify(const PatchSet& patches,
-                                         const std::vector<gpu::QuadNode>& nodes,
-                                         const QuadtreeOptions& options,
-                                         std::vector<gpu::NodeDecision>& decisions,
-                                         LevelStats& stats) {
-  inner_.classify(patches, nodes, options, decisions, stats);
+void RevolutionBoundClassifier::revise(const std::vector<gpu::QuadNode>& nodes,
+                                       const QuadtreeOptions& options,
+                                       std::vector<gpu::NodeDecision>& decisions, LevelStats&) {
   if (options.rule != SplitRule::Tolerance) return;
   const gpu::ClassifyPush params = classifyParams(options, uint32_t(nodes.size()));
   const float up = std::numeric_limits<float>::infinity();
   for (size_t i = 0; i < nodes.size(); ++i) {
-    const Patch& patch = patches_[groupFirst_ + nodes[i].patchIndex];
+    const Patch& patch = patches_[groupFirst() + nodes[i].patchIndex];
     if (!patch.form || patch.form->profile == RevolutionForm::Profile::None) continue;
     const gpu::vec4& r = nodes[i].rect;
     const RevolutionBound bound =

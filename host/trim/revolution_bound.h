@@ -16,6 +16,7 @@
 
 #include "quadtree/quadtree.h"
 #include "trim/face_surface.h"
+#include "quadtree/revising_classifier.h"
 #include "trim/trimmed_face.h"
 
 namespace tessera {
@@ -37,7 +38,7 @@ RevolutionBound revolutionNodeBound(const RevolutionForm& form, const FaceSurfac
 // (rule T's decision text, lib/tolerance_bound.h's toleranceDecision, fed the two terms as its
 // u and v parts), the others keep `inner`'s decision. Patch k of the tree (over all patch groups
 // of buildQuadtree, in order) is `pieces[k]` of `faces[k]`; a null form keeps inner's decision.
-class RevolutionBoundClassifier final : public NodeClassifier {
+class RevolutionBoundClassifier final : public RevisingClassifier {
  public:
   struct Patch {
     const RevolutionForm* form = nullptr;  // null or Profile::None: rule T's own decision
@@ -49,20 +50,14 @@ class RevolutionBoundClassifier final : public NodeClassifier {
   RevolutionBoundClassifier(NodeClassifier& inner, std::vector<Patch> patches, double scale);
 
   std::string name() const override;
-  void beginTree(const PatchSet& patches) override;
-  void classify(const PatchSet& patches, const std::vector<gpu::QuadNode>& nodes,
-                const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
-                LevelStats& stats) override;
-  size_t maxBatchNodes() const override { return inner_.maxBatchNodes(); }
-  size_t maxPatchBufferBytes() const override { return inner_.maxPatchBufferBytes(); }
-
-  size_t decided() const { return decided_; }  // nodes decided by the geometric bound
+  size_t decided() const { return decided_; }  // nodes decided by the distance bound
 
  private:
-  NodeClassifier& inner_;
+  void revise(const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
+              std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) override;
+
   std::vector<Patch> patches_;
   double scale_;
-  size_t groupFirst_ = 0, groupSize_ = 0;
   size_t decided_ = 0;
 };
 

@@ -9,28 +9,18 @@ namespace tessera {
 
 TrimmingClassifier::TrimmingClassifier(NodeClassifier& inner, const TrimSet& set,
                                        TrimClassifier& trim)
-    : inner_(inner), set_(set), trim_(trim) {}
+    : RevisingClassifier(inner, set.pieces.size()), set_(set), trim_(trim) {}
 
 std::string TrimmingClassifier::name() const {
-  return inner_.name() + " (trimmed by " + trim_.name() + ")";
+  return inner().name() + " (trimmed by " + trim_.name() + ")";
 }
 
-void TrimmingClassifier::beginTree(const PatchSet& patches) {
-  groupFirst_ += groupSize_;
-  groupSize_ = patches.size();
-  if (groupFirst_ + groupSize_ > set_.pieces.size())
-    throw std::logic_error("trimming classifier: more patches than the trim set has pieces");
-  inner_.beginTree(patches);
-}
-
-void TrimmingClassifier::classify(const PatchSet& patches, const std::vector<gpu::QuadNode>& nodes,
-                                  const QuadtreeOptions& options,
-                                  std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) {
-  inner_.classify(patches, nodes, options, decisions, stats);
+void TrimmingClassifier::revise(const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions&,
+                                std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) {
   const Stopwatch stopwatch;
   queries_.resize(nodes.size());
   for (size_t i = 0; i < nodes.size(); ++i)
-    queries_[i] = {nodes[i].rect, uint32_t(groupFirst_ + nodes[i].patchIndex), 0u, 0u, 0u};
+    queries_[i] = {nodes[i].rect, uint32_t(groupFirst() + nodes[i].patchIndex), 0u, 0u, 0u};
   const std::vector<uint32_t> where = trim_.classify(set_, queries_);
   for (size_t i = 0; i < nodes.size(); ++i)
     if (where[i] == gpu::kTrimOutside) {

@@ -7,31 +7,27 @@
 #include <memory>
 
 #include "quadtree/quadtree.h"
+#include "quadtree/revising_classifier.h"
 #include "trim/trim_classifier.h"
 
 namespace tessera {
 
-class TrimmingClassifier final : public NodeClassifier {
+class TrimmingClassifier final : public RevisingClassifier {
  public:
   // `inner` decides the nodes, `trim` classifies them against `set`; all three must outlive it.
   TrimmingClassifier(NodeClassifier& inner, const TrimSet& set, TrimClassifier& trim);
 
   std::string name() const override;
-  void beginTree(const PatchSet& patches) override;
-  void classify(const PatchSet& patches, const std::vector<gpu::QuadNode>& nodes,
-                const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
-                LevelStats& stats) override;
-  size_t maxBatchNodes() const override { return inner_.maxBatchNodes(); }
-  size_t maxPatchBufferBytes() const override { return inner_.maxPatchBufferBytes(); }
 
   size_t trimmedAway() const { return trimmedAway_; }  // nodes ended as kCauseTrimmedAway
   double trimMs() const { return trimMs_; }             // time in the trim classifier
 
  private:
-  NodeClassifier& inner_;
+  void revise(const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
+              std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) override;
+
   const TrimSet& set_;
   TrimClassifier& trim_;
-  size_t groupFirst_ = 0, groupSize_ = 0;  // buildQuadtree's patch groups come in order
   size_t trimmedAway_ = 0;
   double trimMs_ = 0;
   std::vector<gpu::TrimQuery> queries_;
