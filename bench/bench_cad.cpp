@@ -21,6 +21,7 @@
 // --tessera-only runs Tessera alone, unmeasured (for profiling its stages).
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_Copy.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
@@ -109,13 +110,13 @@ void printKinds(const char* who, const FaceTriangles& mesh) {
 }
 
 // --detail: the faces where Tessera makes the most triangles beyond OCCT's (face indices of
-// TopExp::MapShapes on the same shape, so both meshes number faces alike).
-void printExcess(const FaceTriangles& occt, const FaceTriangles& tessera,
-                 const TopTools_IndexedMapOfShape& faces) {
+// TopExp::MapShapes on each mesher's shape, a copy and its original: the same numbering).
+void printExcess(const FaceTriangles& occt, const TopTools_IndexedMapOfShape& occtFaces,
+                 const FaceTriangles& tessera, const TopTools_IndexedMapOfShape& faces) {
   std::vector<long> counts[2] = {std::vector<long>(size_t(faces.Extent()) + 1, 0),
                                  std::vector<long>(size_t(faces.Extent()) + 1, 0)};
-  for (int m = 0; m < 2; ++m)
-    for (const TopoDS_Face& face : (m == 0 ? occt : tessera).face) ++counts[m][size_t(faces.FindIndex(face))];
+  for (const TopoDS_Face& face : occt.face) ++counts[0][size_t(occtFaces.FindIndex(face))];
+  for (const TopoDS_Face& face : tessera.face) ++counts[1][size_t(faces.FindIndex(face))];
   std::vector<int> order;
   for (int f = 1; f <= faces.Extent(); ++f) order.push_back(f);
   std::sort(order.begin(), order.end(), [&](int a, int b) {
@@ -328,21 +329,25 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
     const CadFile& file = models.files[f];
     const std::string name = fs::path(file.path).filename().string();
     const double delta = relative * diagonalOf(file.shape);
+    // BRepMesh leaves its work in the shape it meshes (triangulations, which Clean removes, but
+    // also pcurves on planes and updated tolerances), so a later mesher would see another
+    // shape: OCCT meshes a copy made for this tolerance, Tessera the file's shape as read.
+    const TopoDS_Shape occtShape = BRepBuilderAPI_Copy(file.shape).Shape();
     for (int parallel = 0; parallel < (tesseraOnly ? 0 : 2); ++parallel) {
       size_t count = 0;
       std::vector<double> seconds;
       for (int run = 0; run <= bench::kMinRuns; ++run) {  // run 0 warms up
-        BRepTools::Clean(file.shape);
+        BRepTools::Clean(occtShape);
         const Stopwatch clock;
-        BRepMesh_IncrementalMesh mesher(file.shape, delta, Standard_False, 0.5,
+        BRepMesh_IncrementalMesh mesher(occtShape, delta, Standard_False, 0.5,
                                         parallel ? Standard_True : Standard_False);
         if (run > 0) seconds.push_back(clock.elapsedSeconds());
       }
       std::sort(seconds.begin(), seconds.end());
-      const FaceTriangles soup = occtTriangles(file.shape);
+      const FaceTriangles soup = occtTriangles(occtShape);
       count = soup.face.size();
       TopTools_IndexedMapOfShape faceMap;
-      TopExp::MapShapes(file.shape, TopAbs_FACE, faceMap);
+      TopExp::MapShapes(occtShape, TopAbs_FACE, faceMap);
       const Deviation d = parallel ? Deviation{} : measureDistance(soup, &faceMap, "OCCT", delta);
       occt[parallel].add(name, {seconds.front(), seconds[seconds.size() / 2], int(seconds.size())},
                          count, parallel ? Deviation{} : d, delta);
@@ -380,8 +385,10 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
     }
     if (gDetail && !tesseraOnly) {
       TopTools_IndexedMapOfShape faceMap;
-      TopExp::MapShapes(file.shape, TopAbs_FACE, faceMap);
-      printExcess(occtTriangles(file.shape), lastTessera, faceMap);
+      TopExp::MapShapes(occtShape, TopAbs_FACE, faceMap);
+      TopTools_IndexedMapOfShape tesseraFaces;
+      TopExp::MapShapes(file.shape, TopAbs_FACE, tesseraFaces);
+      printExcess(occtTriangles(occtShape), faceMap, lastTessera, tesseraFaces);
     }
     if (!tesseraOnly)
       std::fprintf(stderr, "%s at %g of its diagonal: OCCT %zu triangles, Tessera %zu\n",
