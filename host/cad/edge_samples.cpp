@@ -81,6 +81,15 @@ EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta,
   samples.params.push_back(first);
   if (curve.GetType() == GeomAbs_Line) {
     samples.params.push_back(last);
+  } else if (curve.GetType() == GeomAbs_Circle) {
+    // Parametrised by angle, so the fewest equal segments whose sagitta R·(1 − cos(Δt/2)) is
+    // within δ (at least 4, as below), not a power of two of them.
+    const double radius = curve.Circle().Radius();
+    const double widest = radius > delta ? 2.0 * std::acos(1.0 - delta / radius) : last - first;
+    int count = std::max(4, int(std::ceil((last - first) / widest)));
+    while (chordDeviation(curve, first, first + (last - first) / count) > delta) ++count;  // rounding
+    for (int k = 1; k <= count; ++k) samples.params.push_back(first + (last - first) * k / count);
+    samples.maxChordDeviation = chordDeviation(curve, first, first + (last - first) / count);
   } else {
     for (int k = 0; k < 4; ++k)
       refine(curve, first + (last - first) * k / 4.0, first + (last - first) * (k + 1) / 4.0,

@@ -25,11 +25,11 @@ struct SharedPoints {
   std::vector<double> tolerances;  // the vertex's or edge's OCCT tolerance
 };
 
-// The rule: a straight edge is one segment; any other starts as 4 segments (a closed edge
-// then bounds an area) and a segment [a, b] is halved while the curve lies farther than delta
-// from the chord: for a circle its sagitta, exactly; for any other curve sampled at 15 interior
-// parameters, measured, not proven: a wiggle between samples of a segment can escape it
-// (docs/cad.md). A degenerated edge (a
+// The rule: a straight edge is one segment; a circle the fewest equal segments (at least 4)
+// whose sagitta is within delta, exactly (proven); any other curve starts as 4 segments (a
+// closed edge then bounds an area) and a segment [a, b] is halved while the curve, sampled at
+// 15 interior parameters, lies farther than delta from the chord: measured, not proven, a
+// wiggle between samples of a segment can escape it (docs/cad.md). A degenerated edge (a
 // point in 3D, a segment in uv) gets 8 segments, all at its vertex's point.
 // The edge is taken FORWARD. The vertex with index k in `vertices` is shared point k − 1 (the
 // vertices come first in SharedPoints); the edge's interior samples are appended to `points`.
