@@ -82,7 +82,8 @@ double shortestEdgeRatio(const TriangleMesh& mesh) {
         second = length;
     }
   double ratio = 1e300;
-  for (const auto& [edge, length] : lengths) {
+  for (const auto& [edge, edgeLength] : lengths) {
+    const double length = edgeLength;  // C++17 lambdas cannot capture a structured binding
     const auto other = [&](uint32_t v) {
       return shortest[v].first == length ? shortest[v].second : shortest[v].first;
     };
