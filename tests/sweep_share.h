@@ -25,4 +25,14 @@ std::vector<T> sweptSubset(const std::vector<T>& items) {
   return subset;
 }
 
+// sweptSubset, plus the last item where the stride passes it: for sweeps whose ends are the
+// point (the largest scale, the farthest offset).
+template <typename T>
+std::vector<T> sweptSubsetWithEnds(const std::vector<T>& items) {
+  std::vector<T> subset = sweptSubset(items);
+  if (!items.empty() && subset.size() < items.size() && !(subset.back() == items.back()))
+    subset.push_back(items.back());
+  return subset;
+}
+
 }  // namespace tessera::test

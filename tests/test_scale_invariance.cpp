@@ -20,6 +20,7 @@
 #include "mesh/tessellate.h"
 #include "mesh/triangulate.h"
 #include "quadtree/tolerance.h"
+#include "sweep_share.h"
 #include "trim/mesher.h"
 #include "trimmed_models.h"
 
@@ -139,9 +140,10 @@ TEST_CASE("local frame: the teapot's frame at 10^±300 and moved, without overfl
 
 TEST_CASE("local frame: the teapot scaled by 10^k has the tree it has at 10^0, rules A-D and T",
           "[scale]") {
-  std::vector<int> exponents = {-12, -22, -25};
-  for (int k = -30; k <= 30; k += 5)
-    if (k != 0) exponents.push_back(k);
+  // Every fifth power from 10^-30 to 10^30 and the scales of issue 18; under the sanitizers
+  // (sweep_share.h) a spread share of them, the extremes always.
+  std::vector<int> exponents = test::sweptSubsetWithEnds(
+      std::vector<int>{-30, -25, -22, -20, -15, -12, -10, -5, 5, 10, 15, 20, 25, 30});
   for (char rule : {'A', 'B', 'C', 'D', 'T'}) {
     const Tessellation origin = onMirror(teapot(), rule);
     size_t worstDiffering = 0;
@@ -195,21 +197,26 @@ TEST_CASE("local frame: the teapot at 1e-300 keeps its triangles", "[scale]") {
 TEST_CASE("local frame: the teapot moved up to 1e12 on each axis and all axes keeps its tree",
           "[scale]") {
   // gridTeapot: moved exactly (see there); each tree must equal the origin's bit for bit.
-  const glm::dvec3 directions[] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}, {-1, 1, -1}};
+  // Under the sanitizers (sweep_share.h) a spread share of the 25 offsets, the farthest always.
+  std::vector<glm::dvec3> offsets;
+  for (double distance : {10.0, 1e3, 1e6, 1e9, 1e12})
+    for (const glm::dvec3& direction :
+         {glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1), glm::dvec3(1, 1, 1),
+          glm::dvec3(-1, 1, -1)})
+      offsets.push_back(distance * direction);
+  offsets = test::sweptSubsetWithEnds(offsets);
   for (char rule : {'A', 'B', 'C', 'D', 'T'}) {
     const Tessellation origin = onMirror(gridTeapot(), rule);
     size_t cases = 0;
-    for (double distance : {10.0, 1e3, 1e6, 1e9, 1e12})
-      for (const glm::dvec3& direction : directions) {
-        const glm::dvec3 offset = distance * direction;
-        const Tessellation t = onMirror(placed(gridTeapot(), 1.0, offset), rule);
-        INFO("rule " << rule << ", grid teapot moved by (" << offset.x << ", " << offset.y << ", "
-                     << offset.z << ")");
-        CHECK(differingLeaves(t.tree, origin.tree) == 0);
-        CHECK(t.mesh.indices == origin.mesh.indices);
-        CHECK(t.mesh.normals == origin.mesh.normals);
-        ++cases;
-      }
+    for (const glm::dvec3& offset : offsets) {
+      const Tessellation t = onMirror(placed(gridTeapot(), 1.0, offset), rule);
+      INFO("rule " << rule << ", grid teapot moved by (" << offset.x << ", " << offset.y << ", "
+                   << offset.z << ")");
+      CHECK(differingLeaves(t.tree, origin.tree) == 0);
+      CHECK(t.mesh.indices == origin.mesh.indices);
+      CHECK(t.mesh.normals == origin.mesh.normals);
+      ++cases;
+    }
     WARN("rule " << rule << ": grid teapot moved by 10..1e12 (" << cases
                  << " placements): " << origin.tree.leaves.size() << " leaves, "
                  << origin.mesh.triangleCount() << " triangles, every tree the origin's");
