@@ -18,9 +18,16 @@ for arg in "$@"; do
     *) echo "test: unknown option '$arg' (--cpu-only, --no-sanitize)" >&2; exit 2 ;;
   esac
 done
+# Each stage prints its seconds ("test: ... N s"), so a CI log shows where the time went.
+start=$SECONDS
 scripts/deps.sh
+echo "test: deps $((SECONDS - start)) s"
+start=$SECONDS
 scripts/build.sh
+echo "test: build $((SECONDS - start)) s"
+start=$SECONDS
 (cd "${BUILD_DIR:-build}" && ctest --output-on-failure -j "$(nproc)" "${labels[@]}")
+echo "test: tests $((SECONDS - start)) s"
 # Which Vulkan device the GPU tests ran on (tests/test_gpu_device.cpp), once, in this log.
 if [[ ${#labels[@]} -eq 0 ]]; then
   grep -a -m1 -o "Vulkan device of the GPU tests: .*" \
@@ -29,7 +36,9 @@ if [[ ${#labels[@]} -eq 0 ]]; then
 fi
 # The library as a user takes it: install to a prefix, build examples/consumer against it with
 # find_package and with pkg-config, run both.
+start=$SECONDS
 scripts/check-install.sh
+echo "test: install check $((SECONDS - start)) s"
 if [[ $sanitize == 1 ]]; then
   if [[ ${#labels[@]} -gt 0 ]]; then scripts/sanitize.sh --cpu-only; else scripts/sanitize.sh; fi
 fi
