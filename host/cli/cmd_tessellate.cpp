@@ -14,6 +14,8 @@
 #include "cli/progress.h"
 #include "cli/setup_report.h"
 #include "cli/stdio.h"
+#include "cli/streamed_tessellate.h"
+#include "common/memory_budget.h"
 #include "io/surface_reader.h"
 #include "io/errors.h"
 #include "io/gltf_writer.h"
@@ -53,10 +55,13 @@ struct TessellateArgs {
   CameraArgs camera;  // --view / --view-projection / --viewport: the camera of "--tolerance 1px"
   bool skipBadFaces = false;  // CAD models: mesh the faces that converted (cad_job.h)
   MeshOutputArgs mesh;  // --precision
+  size_t streamPatches = 0;  // --stream-patches N: write the mesh in groups of N patches
 };
 
 // A CAD model (.step, .iges, .brep) goes through host/cad/ and host/trim/ (cad_job.h).
 int runCad(const TessellateArgs& a) {
+  if (a.streamPatches)
+    throw CLI::ValidationError("--stream-patches", "not for CAD models (patch inputs only)");
   // The CAD mesh is fp32 with no patch parameters to carry: the mesh options do not apply.
   if (a.mesh.precision == "double")
     throw CLI::ValidationError("--precision", "double: not for CAD models (yet)");
@@ -179,6 +184,24 @@ int run(const TessellateArgs& a) {
   if (!a.output.empty()) checkMeshFormat(a.output, formats.output);
   const MeshWriteOptions writeOptions = meshWriteOptions(a.mesh, a.output, formats.output);
   const std::string inputFormat = surfaceFormat(a.input, formats.input);
+  StreamedJob job;
+  job.inputName = a.input == kStdioPath ? kStdinName : a.input;
+  job.output = a.output;
+  job.format = a.output.empty() ? "" : meshFormat(a.output, formats.output);
+  job.stats = a.stats;
+  job.json = a.json;
+  job.quiet = a.quiet;
+  job.precisionDouble = writeOptions.precision == MeshPrecision::Double;
+  job.metadata = writeOptions.metadata;
+  job.camera = camera.has_value();
+  job.deviation = a.deviation;
+  job.lowerBound = a.lowerBound;
+  job.measuredBound = a.lowerBound && !ruleT;
+  job.toleranceSpec = toleranceSpec;
+  job.patchesPerGroup = a.streamPatches;
+  if (a.streamPatches)
+    if (const std::string why = whyNotStreamable(job); !why.empty())
+      throw CLI::ValidationError("--stream-patches", why);
   // Before the work: no output overwrites the input or another output, and each can be written.
   checkOutputs({{"input", a.input}}, {{"-o", a.output}, {"--stats", a.stats}});
   // The mesh and the report are written together at the end, both or neither.
@@ -188,15 +211,37 @@ int run(const TessellateArgs& a) {
   if (ruleT)
     options.tolerance =
         toleranceSpec.pixels ? toleranceSpec.value : resolveTolerance(toleranceSpec, patches);
-  const std::string inputName = a.input == kStdioPath ? kStdinName : a.input;
+  const std::string& inputName = job.inputName;
+  job.thresholds = ruleT ? "tolerance " + describeTolerance(toleranceSpec, options.tolerance)
+                         : "linearity " + shortDecimal(a.linearity) + ", flatness " +
+                               shortDecimal(a.flatness);
   Progress progress(!a.quiet, progressIntervalSeconds());
   options.onLevel = progress.treeCallback(patches.size());
 
   ChosenBackend chosen = chooseBackend(a.backend, a.device);
+  const auto stream = [&] {
+    options.onLevel = nullptr;  // the levels of one group's tree are not the job's progress
+    return namingInput(inputName, [&] {
+      return tessellateStreamedToFile(job, patches, options, chosen, files);
+    });
+  };
+  if (a.streamPatches) return stream();
 
-  Tessellation t = namingInput(inputName, [&] {
-    return tessellateWithFallback(chosen, a.backend, patches, options, view ? &*view : nullptr);
-  });
+  std::optional<Tessellation> held;
+  try {
+    held = namingInput(inputName, [&] {
+      return tessellateWithFallback(chosen, a.backend, patches, options, view ? &*view : nullptr);
+    });
+  } catch (const MemoryLimitError& e) {
+    // The held mesh does not fit: written group by group it may (docs/hardening.md).
+    const std::string why = whyNotStreamable(job);
+    if (!why.empty())
+      throw MemoryLimitError(std::string(e.what()) + "; it cannot be streamed instead: " + why);
+    if (!a.quiet)
+      std::fprintf(stderr, "tessera: %s; streaming the mesh in patch groups instead\n", e.what());
+    return stream();
+  }
+  Tessellation& t = *held;
   const std::unique_ptr<vk::Context>& context = chosen.context;
   const Backend& backend = chosen.backend;
   if (writeOptions.precision == MeshPrecision::Double && !a.output.empty())
@@ -263,9 +308,7 @@ int run(const TessellateArgs& a) {
     // With the mesh or the report on standard output, the summary goes to stderr.
     FILE* const to = meshToStdout || statsToStdout ? stderr : stdout;
     const TessellationStats& s = t.stats;
-    const std::string thresholds =
-        ruleT ? "tolerance " + describeTolerance(toleranceSpec, options.tolerance)
-              : "linearity " + shortDecimal(a.linearity) + ", flatness " + shortDecimal(a.flatness);
+    const std::string& thresholds = job.thresholds;
     std::fprintf(to, "%s: %zu patches, method %c, %s, backend %s%s%s\n", inputName.c_str(),
                  s.patches, splitRuleLetter(options.rule), thresholds.c_str(),
                  backend.name.c_str(), context ? " on " : "",
@@ -384,6 +427,12 @@ void addTessellateCommand(CLI::App& app, int& exitCode) {
   cmd->add_flag("--json", args.json,
                 "print the statistics report (JSON) to stdout instead of the summary");
   addMeshOutputOptions(cmd, args.mesh);
+  cmd->add_option("--stream-patches", args.streamPatches,
+                  "write the mesh group by group, N patches a group (each with the patches "
+                  "sharing its sides), instead of holding it whole; chosen by itself (group "
+                  "size automatic) when the held mesh exceeds --memory-budget. .obj and .ply "
+                  "only; not with --deviation, --precision double, --metadata or a camera")
+      ->check(CLI::PositiveNumber);
   cmd->callback([&exitCode] {
     exitCode = runReportingErrors([] { return run(args); },
                                   {args.output, args.stats, kStdoutName});

@@ -71,31 +71,76 @@ void putVectors(LineBuilder& line, const char* tag, const std::vector<glm::vec3>
   }
 }
 
+// One "f" line (the forms of obj_writer.h) of three 0-based corners.
+void putFace(LineBuilder& line, const uint32_t* corners, bool hasUvs, bool hasNormals) {
+  line.put('f');
+  for (int corner = 0; corner < 3; ++corner) {
+    const uint64_t index = uint64_t(corners[corner]) + 1;  // OBJ counts from 1
+    line.put(' ');
+    line.putInteger(index);
+    if (hasUvs || hasNormals) {
+      line.put('/');
+      if (hasUvs) line.putInteger(index);
+      if (hasNormals) {
+        line.put('/');
+        line.putInteger(index);
+      }
+    }
+  }
+  line.endLine();
+}
+
 }  // namespace
 
-void writeObj(std::ostream& out, const TriangleMesh& mesh, const MeshWriteOptions& options) {
-  mesh.validate();
-  const bool hasUvs = !mesh.uvs.empty();
-  const bool hasNormals = !mesh.normals.empty();
-
+void writeObjComment(std::ostream& out, uint64_t vertices, uint64_t triangles) {
   LineBuilder line(out);
   line.put("# Tessera triangle mesh: ");
-  line.putInteger(mesh.vertexCount());
+  line.putInteger(vertices);
   line.put(" vertices, ");
-  line.putInteger(mesh.triangleCount());
+  line.putInteger(triangles);
   line.put(" triangles");
   line.endLine();
+  line.flush();
+}
 
-  putVectors(line, "v", mesh.positions, mesh.positionsDouble, options.precision);
-  for (const glm::vec2& uv : mesh.uvs) {
+void writeObjVectors(std::ostream& out, const char* tag, const std::vector<glm::vec3>& values) {
+  LineBuilder line(out);
+  for (const glm::vec3& p : values) putVec3(line, tag, p);
+  line.flush();
+}
+
+void writeObjUvs(std::ostream& out, const std::vector<glm::vec2>& uvs) {
+  LineBuilder line(out);
+  for (const glm::vec2& uv : uvs) {
     line.put("vt ");
     line.putReal(uv.x);
     line.put(' ');
     line.putReal(uv.y);
     line.endLine();
   }
-  putVectors(line, "vn", mesh.normals, mesh.normalsDouble, options.precision);
+  line.flush();
+}
 
+void writeObjFaces(std::ostream& out, const std::vector<uint32_t>& indices, bool hasUvs,
+                   bool hasNormals) {
+  LineBuilder line(out);
+  for (size_t k = 0; k + 2 < indices.size(); k += 3) putFace(line, &indices[k], hasUvs, hasNormals);
+  line.flush();
+}
+
+void writeObj(std::ostream& out, const TriangleMesh& mesh, const MeshWriteOptions& options) {
+  mesh.validate();
+  const bool hasUvs = !mesh.uvs.empty();
+  const bool hasNormals = !mesh.normals.empty();
+  writeObjComment(out, mesh.vertexCount(), mesh.triangleCount());
+  {
+    LineBuilder line(out);
+    putVectors(line, "v", mesh.positions, mesh.positionsDouble, options.precision);
+    line.flush();
+  }
+  writeObjUvs(out, mesh.uvs);
+  LineBuilder line(out);
+  putVectors(line, "vn", mesh.normals, mesh.normalsDouble, options.precision);
   const bool groups = options.metadata && !mesh.trianglePatchIds.empty();
   for (size_t t = 0; t < mesh.triangleCount(); ++t) {
     // A group line where the patch changes; OBJ readers merge groups of one name.
@@ -104,21 +149,7 @@ void writeObj(std::ostream& out, const TriangleMesh& mesh, const MeshWriteOption
       line.putInteger(mesh.trianglePatchIds[t]);
       line.endLine();
     }
-    line.put('f');
-    for (int corner = 0; corner < 3; ++corner) {
-      const uint64_t index = uint64_t(mesh.indices[3 * t + corner]) + 1;  // OBJ counts from 1
-      line.put(' ');
-      line.putInteger(index);
-      if (hasUvs || hasNormals) {
-        line.put('/');
-        if (hasUvs) line.putInteger(index);
-        if (hasNormals) {
-          line.put('/');
-          line.putInteger(index);
-        }
-      }
-    }
-    line.endLine();
+    putFace(line, &mesh.indices[3 * t], hasUvs, hasNormals);
   }
   line.flush();
 }

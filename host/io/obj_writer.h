@@ -11,7 +11,9 @@
 // "g patch_<id>" line (trianglePatchIds) starts each run of triangles of one patch.
 #pragma once
 #include <ostream>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "io/mesh_write_options.h"
 #include "mesh/mesh.h"
@@ -26,5 +28,14 @@ void writeObj(std::ostream& out, const TriangleMesh& mesh, const MeshWriteOption
 // std::invalid_argument and leaves the file as it was.
 void writeObjFile(const std::string& path, const TriangleMesh& mesh,
                   const MeshWriteOptions& options = {});
+
+// writeObj's sections at MeshPrecision::Float without metadata, byte for byte, for a writer
+// that puts a mesh out in parts (io/mesh_stream_writer.h): the comment line, "v"/"vn" lines,
+// "vt" lines, and "f" lines of `indices` (0-based here, written 1-based).
+void writeObjComment(std::ostream& out, uint64_t vertices, uint64_t triangles);
+void writeObjVectors(std::ostream& out, const char* tag, const std::vector<glm::vec3>& values);
+void writeObjUvs(std::ostream& out, const std::vector<glm::vec2>& uvs);
+void writeObjFaces(std::ostream& out, const std::vector<uint32_t>& indices, bool hasUvs,
+                   bool hasNormals);
 
 }  // namespace tessera

@@ -46,30 +46,53 @@ class ByteSink {
   std::string bytes_;
 };
 
-std::string plyHeader(const TriangleMesh& mesh, const MeshWriteOptions& options) {
+}  // namespace
+
+std::string plyHeader(uint64_t vertices, uint64_t faces, const PlyVertexLayout& layout,
+                      const MeshWriteOptions& options) {
   const std::string real = options.precision == MeshPrecision::Double ? "double" : "float";
   std::string header =
       "ply\n"
       "format binary_little_endian 1.0\n"
       "comment Tessera triangle mesh\n"
-      "element vertex " + std::to_string(mesh.vertexCount()) + "\n";
+      "element vertex " + std::to_string(vertices) + "\n";
   for (const char* name : {"x", "y", "z"}) header += "property " + real + " " + name + "\n";
-  if (!mesh.normals.empty())
+  if (layout.normals)
     for (const char* name : {"nx", "ny", "nz"}) header += "property " + real + " " + name + "\n";
-  if (options.metadata && !mesh.uvs.empty()) header += "property float u\nproperty float v\n";
-  if (options.metadata && !mesh.patchIds.empty()) header += "property uint patch\n";
-  header += "element face " + std::to_string(mesh.triangleCount()) + "\n"
+  if (options.metadata && layout.uvs) header += "property float u\nproperty float v\n";
+  if (options.metadata && layout.patchIds) header += "property uint patch\n";
+  header += "element face " + std::to_string(faces) + "\n"
             "property list uchar uint vertex_indices\n"
             "end_header\n";
   return header;
 }
 
-}  // namespace
+void writePlyVertices(std::ostream& out, const std::vector<glm::vec3>& positions,
+                      const std::vector<glm::vec3>& normals) {
+  ByteSink sink(out);
+  for (size_t v = 0; v < positions.size(); ++v) {
+    for (int c = 0; c < 3; ++c) sink.putF32(positions[v][c]);
+    if (!normals.empty())
+      for (int c = 0; c < 3; ++c) sink.putF32(normals[v][c]);
+  }
+  sink.flush();
+}
+
+void writePlyFaces(std::ostream& out, const std::vector<uint32_t>& indices) {
+  ByteSink sink(out);
+  for (size_t k = 0; k + 2 < indices.size(); k += 3) {
+    sink.putU8(3);
+    for (int corner = 0; corner < 3; ++corner) sink.putU32(indices[k + corner]);
+  }
+  sink.flush();
+}
 
 void writePly(std::ostream& out, const TriangleMesh& mesh, const MeshWriteOptions& options) {
   mesh.validate();
   ByteSink sink(out);
-  sink.putText(plyHeader(mesh, options));
+  sink.putText(plyHeader(mesh.vertexCount(), mesh.triangleCount(),
+                         {!mesh.normals.empty(), !mesh.uvs.empty(), !mesh.patchIds.empty()},
+                         options));
   const bool hasNormals = !mesh.normals.empty();
   const bool inDouble = options.precision == MeshPrecision::Double;
   // The double copy where the mesh has one, else the fp32 value widened.
@@ -91,11 +114,8 @@ void writePly(std::ostream& out, const TriangleMesh& mesh, const MeshWriteOption
     }
     if (options.metadata && !mesh.patchIds.empty()) sink.putU32(mesh.patchIds[v]);
   }
-  for (size_t t = 0; t < mesh.triangleCount(); ++t) {
-    sink.putU8(3);
-    for (int corner = 0; corner < 3; ++corner) sink.putU32(mesh.indices[3 * t + corner]);
-  }
   sink.flush();
+  writePlyFaces(out, mesh.indices);
 }
 
 void writePlyFile(const std::string& path, const TriangleMesh& mesh,

@@ -19,7 +19,9 @@
 // vertex's patch is one of those that share it). Each header line ends in a single '\n'.
 #pragma once
 #include <ostream>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "io/mesh_write_options.h"
 #include "mesh/mesh.h"
@@ -34,5 +36,18 @@ void writePly(std::ostream& out, const TriangleMesh& mesh, const MeshWriteOption
 // std::invalid_argument and leaves the file as it was.
 void writePlyFile(const std::string& path, const TriangleMesh& mesh,
                   const MeshWriteOptions& options = {});
+
+// writePly's parts, byte for byte, for a writer that puts a mesh out in parts
+// (io/mesh_stream_writer.h): the header for the given counts and vertex properties; vertex
+// records at MeshPrecision::Float without metadata (normals: empty, or one per position);
+// face records.
+struct PlyVertexLayout {
+  bool normals = false, uvs = false, patchIds = false;
+};
+std::string plyHeader(uint64_t vertices, uint64_t faces, const PlyVertexLayout& layout,
+                      const MeshWriteOptions& options);
+void writePlyVertices(std::ostream& out, const std::vector<glm::vec3>& positions,
+                      const std::vector<glm::vec3>& normals);
+void writePlyFaces(std::ostream& out, const std::vector<uint32_t>& indices);
 
 }  // namespace tessera

@@ -200,6 +200,11 @@ void addToleranceReport(nlohmann::json& report, const Tessellation& t, const Tol
   // eye-plane ones unproven (mesh/screen_tolerance.h); they are counted instead.
   const ScreenLeafCounts screen = screenLeafCounts(t.tree);
   const double bound = spec.pixels ? screen.largestBound : largestLeafBound(t.tree);
+  addToleranceBound(report, spec, resolved, bound, spec.pixels ? &screen : nullptr);
+}
+
+void addToleranceBound(nlohmann::json& report, const ToleranceSpec& spec, double resolved,
+                       double bound, const ScreenLeafCounts* screen) {
   report["tolerance"] = {
       {"requested", resolved},
       {"given", spec.text},
@@ -208,8 +213,8 @@ void addToleranceReport(nlohmann::json& report, const Tessellation& t, const Tol
       {"diagonal", spec.relative ? nlohmann::json(resolved / spec.value) : nlohmann::json()},
       {"largestLeafBound", bound},
       {"provenWithin", bound <= resolved},
-      {"culledLeaves", spec.pixels ? nlohmann::json(screen.culled) : nlohmann::json()},
-      {"eyePlaneLeaves", spec.pixels ? nlohmann::json(screen.eyePlane) : nlohmann::json()}};
+      {"culledLeaves", screen ? nlohmann::json(screen->culled) : nlohmann::json()},
+      {"eyePlaneLeaves", screen ? nlohmann::json(screen->eyePlane) : nlohmann::json()}};
 }
 
 nlohmann::json optionsToJson(const QuadtreeOptions& o) {

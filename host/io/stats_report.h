@@ -19,6 +19,8 @@
 
 namespace tessera {
 
+struct ScreenLeafCounts;  // mesh/screen_tolerance.h
+
 // Every report has "schema": "tessera-stats" and "schemaVersion": this; it is bumped when a
 // member changes meaning or goes away (adding members does not bump it).
 constexpr int kStatsSchemaVersion = 1;
@@ -79,6 +81,10 @@ double largestLeafBound(const QuadtreeResult& tree);
 // patches[].largestLeafBound. docs/stats_schema.md.
 void addToleranceReport(nlohmann::json& report, const Tessellation& tessellation,
                         const ToleranceSpec& spec, double resolved);
+// The "tolerance" member alone, from the largest leaf bound `bound` (model units, or pixels
+// with `screen`'s counts): for a streamed run, which holds no tree.
+void addToleranceBound(nlohmann::json& report, const ToleranceSpec& spec, double resolved,
+                       double bound, const ScreenLeafCounts* screen = nullptr);
 
 // The quad-tree options as a JSON object, for the report's optional "run" section.
 nlohmann::json optionsToJson(const QuadtreeOptions& options);

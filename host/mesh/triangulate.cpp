@@ -78,8 +78,13 @@ void between(const std::vector<LinePoint>* points, float lo, float hi, std::vect
 
 class Triangulator {
  public:
-  Triangulator(const std::vector<QuadLeaf>& leaves, const std::vector<BezierPatch>& patches)
-      : leaves_(leaves), patches_(patches), topology_(findSharedEdges(patches)) {
+  Triangulator(const std::vector<QuadLeaf>& leaves, const std::vector<BezierPatch>& patches,
+               const TriangulationScope& scope)
+      : leaves_(leaves),
+        patches_(patches),
+        scope_(scope),
+        ownTopology_(scope.topology ? PatchTopology{} : findSharedEdges(patches)),
+        topology_(scope.topology ? *scope.topology : ownTopology_) {
     mesh_.sharedEdgeGroups = topology_.groupCount;
     sharedLines_.resize(topology_.groupCount);
     groupSide_.assign(topology_.groupCount, {0, -1});
@@ -99,7 +104,12 @@ class Triangulator {
   }
 
   ParamMesh run() {
-    for (const QuadLeaf& leaf : leaves_) triangulateLeaf(leaf);
+    // Leaves outside the scope are walked too, without triangles: their vertices are met in
+    // the same order as in the whole mesh, so a shared vertex takes the same patch's (u, v).
+    for (const QuadLeaf& leaf : leaves_) {
+      silent_ = leaf.patchIndex < scope_.firstPatch || leaf.patchIndex >= scope_.endPatch;
+      triangulateLeaf(leaf);
+    }
     return std::move(mesh_);
   }
 
@@ -304,7 +314,9 @@ class Triangulator {
       double x = p[c] == 0.0 ? 0.0 : p[c];
       std::memcpy(&key[c], &x, sizeof x);
     }
-    return positions_.emplace(key, uint32_t(positions_.size())).first->second;
+    const auto [it, inserted] = positions_.emplace(key, uint32_t(positions_.size()));
+    if (inserted && scope_.seamKeys) positionPoints_.push_back(p);
+    return it->second;
   }
 
   // A side that folds back over itself (side_fold.h) and is no other patch's: over the part
@@ -320,8 +332,11 @@ class Triangulator {
 
   void findFolds() {
     foldOf_.assign(patches_.size(), {-1, -1, -1, -1});
+    // Only the patches with leaves here (all of them, unless a scope passes part of them).
+    std::vector<bool> present(patches_.size(), false);
+    for (const QuadLeaf& leaf : leaves_) present[leaf.patchIndex] = true;
     for (uint32_t p = 0; p < patches_.size(); ++p)
-      for (int side = 0; side < 4; ++side) {
+      for (int side = 0; side < 4 && present[p]; ++side) {
         const SideInfo& s = topology_.sides[p][side];
         if (s.group >= 0 || s.collapsed) continue;
         std::optional<SideFold> fold = findSideFold(sideControlPoints(patches_[p], side));
@@ -356,8 +371,17 @@ class Triangulator {
 
   uint32_t addVertex(const VertexKey& key, uint32_t patch, float u, float v) {
     auto [it, inserted] = index_.emplace(key, uint32_t(mesh_.vertices.size()));
-    if (inserted) mesh_.vertices.push_back({patch, u, v});
+    if (inserted) {
+      mesh_.vertices.push_back({patch, u, v});
+      if (scope_.seamKeys) mesh_.seamKeys.push_back(seamKeyOf(key));
+    }
     return it->second;
+  }
+
+  SeamKey seamKeyOf(const VertexKey& key) const {
+    if (key.kind == kEdgeParam) return {SeamKey::kSharedSide, key.a, uint32_t(key.b), {}};
+    if (key.kind == kPosition) return {SeamKey::kPosition, 0, 0, positionPoints_[key.a]};
+    return {};  // a point of one patch, or of its folded side (never shared: findFolds)
   }
 
   // The key of the vertex at (u, v) of `patch` before merging near points: patch corners and
@@ -459,6 +483,7 @@ class Triangulator {
   }
 
   void emit(uint32_t patch, const RingVertex& a, const RingVertex& b, const RingVertex& c) {
+    if (silent_) return;
     if (a.index == b.index || b.index == c.index || c.index == a.index) {
       ++mesh_.droppedTriangles;
       return;
@@ -569,7 +594,9 @@ class Triangulator {
 
   const std::vector<QuadLeaf>& leaves_;
   const std::vector<BezierPatch>& patches_;
-  PatchTopology topology_;
+  const TriangulationScope scope_;
+  const PatchTopology ownTopology_;
+  const PatchTopology& topology_;
   LineIndex alongU_, alongV_;
   std::vector<std::vector<LinePoint>> sharedLines_;  // per group, in canonical parameters
   std::unordered_map<uint64_t, MovedCorners> movedAlongU_, movedAlongV_;  // lines with merges
@@ -579,9 +606,11 @@ class Triangulator {
   std::unordered_map<VertexKey, VertexKey, VertexKeyHash> merged_;
   std::vector<std::array<int32_t, 4>> foldOf_;    // per patch side, index in folds_ or -1
   std::vector<FoldedSide> folds_;
+  bool silent_ = false;  // the leaf being triangulated is outside the scope
   bool touchesFold_ = false;  // the leaf being triangulated has a vertex on a folded side
   bool touchesMerge_ = false;  // ... or a vertex merged into a near one
   std::map<std::array<uint64_t, 3>, uint32_t> positions_;
+  std::vector<glm::dvec3> positionPoints_;  // by position id, for seam keys
   std::unordered_map<VertexKey, uint32_t, VertexKeyHash> index_;
   ParamMesh mesh_;
   std::vector<RingVertex> ring_;
@@ -594,8 +623,9 @@ class Triangulator {
 }  // namespace
 
 ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
-                            const std::vector<BezierPatch>& patches) {
-  return Triangulator(leaves, patches).run();
+                            const std::vector<BezierPatch>& patches,
+                            const TriangulationScope& scope) {
+  return Triangulator(leaves, patches, scope).run();
 }
 
 }  // namespace tessera

@@ -27,6 +27,17 @@ struct ParamVertex {
   float u, v;
 };
 
+// What identifies a vertex across separate triangulations of the same patches: a point of a
+// shared side by (side group, canonical parameter bits); a patch corner, collapsed side or
+// fold end by its exact control point; anything else belongs to one patch.
+struct SeamKey {
+  enum Kind : uint32_t { kOwnPatch, kSharedSide, kPosition };
+  uint32_t kind = kOwnPatch;
+  uint32_t group = 0;     // kSharedSide: the side group
+  uint32_t parameter = 0; // kSharedSide: bits of the canonical parameter
+  glm::dvec3 point{0.0};  // kPosition: the control point (in the frame of the patches given)
+};
+
 struct ParamMesh {
   std::vector<ParamVertex> vertices;
   std::vector<uint32_t> indices;  // counter-clockwise in (u, v): normals along Pu × Pv
@@ -36,9 +47,27 @@ struct ParamMesh {
   std::vector<glm::vec2> cornerUv;  // 3 per triangle
   size_t droppedTriangles = 0;    // collapsed by welding (two corners at one vertex)
   size_t sharedEdgeGroups = 0;    // patch boundaries found shared
+  // Per vertex, when TriangulationScope::seamKeys asks: how another run over other leaves of
+  // the same patches names this vertex (streamed_tessellation.h).
+  std::vector<SeamKey> seamKeys;
+};
+
+struct PatchTopology;
+
+// A triangulation of part of the leaves, for streaming the mesh in patch groups
+// (streamed_tessellation.h): the leaves passed are a group's and its neighbours' (so shared
+// sides see both sides' points), in the whole tree's order; only the group's become
+// triangles. The others' vertices are made too (unreferenced), in the same order as for the
+// whole tree, so each shared vertex keeps the (patch, u, v) the whole mesh gives it.
+struct TriangulationScope {
+  const PatchTopology* topology = nullptr;  // findSharedEdges(patches), computed once; null:
+                                            // computed here
+  uint32_t firstPatch = 0, endPatch = UINT32_MAX;  // the patches whose leaves become triangles
+  bool seamKeys = false;                           // fill ParamMesh::seamKeys
 };
 
 ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
-                            const std::vector<BezierPatch>& patches);
+                            const std::vector<BezierPatch>& patches,
+                            const TriangulationScope& scope = {});
 
 }  // namespace tessera

@@ -1,0 +1,113 @@
+#include "cli/streamed_tessellate.h"
+
+#include <cstdio>
+#include <optional>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.h"
+#include "cli/setup_report.h"
+#include "common/memory_budget.h"
+#include "cli/stdio.h"
+#include "io/mesh_stream_writer.h"
+#include "io/stats_report.h"
+#include "mesh/lower_bound.h"
+#include "mesh/streamed_tessellation.h"
+
+namespace tessera::cli {
+
+std::string whyNotStreamable(const StreamedJob& job) {
+  if (job.output.empty()) return "no mesh output (-o) to stream to";
+  if (job.output == kStdioPath) return "a mesh on standard output is written whole (-o -)";
+  if (job.format != "obj" && job.format != "ply")
+    return "a " + job.format + " output needs the whole mesh (its JSON chunk holds the "
+                               "accessors' sizes and bounds); write .obj or .ply";
+  if (job.precisionDouble) return "--precision double evaluates the whole mesh again";
+  if (job.metadata) return "--metadata is not written while streaming";
+  if (job.camera) return "a screen tolerance (--view, --view-projection) needs the whole tree";
+  if (job.deviation) return "--deviation measures the whole mesh";
+  if (job.measuredBound) return "--lower-bound with rules A–D measures the whole mesh's deviation";
+  return "";
+}
+
+int tessellateStreamedToFile(const StreamedJob& job, const std::vector<BezierPatch>& patches,
+                             const QuadtreeOptions& options, ChosenBackend& chosen,
+                             AtomicFileGroup& files) {
+  MeshStreamWriter writer(
+      job.format == "obj" ? MeshStreamWriter::Format::Obj : MeshStreamWriter::Format::Ply,
+      job.output);
+  const StreamedTessellationStats streamed =
+      tessellateStreamed(patches, options, chosen.backend, job.patchesPerGroup,
+                         [&](const MeshChunk& chunk) { writer.add(chunk); });
+  files.stage(job.output, [&](std::ostream& out) { writer.finish(out); });
+  const TessellationStats& s = streamed.totals;
+  const bool ruleT = options.rule == SplitRule::Tolerance;
+  const bool wantReport = !job.stats.empty() || job.json;
+  const bool summary = !job.quiet && !job.json;
+  std::optional<TriangleLowerBound> bound;  // rule T's needs only the patches and δ
+  if (ruleT && (wantReport || (summary && job.lowerBound)))
+    bound = asymptoticTriangleLowerBound(patches, options.tolerance);
+  const bool statsToStdout = job.stats == kStdioPath;
+  if (wantReport) {
+    nlohmann::json report = statsToJson(s);
+    addUnmeasuredGeometricDeviation(report);
+    if (bound) addLowerBound(report, *bound);
+    else addUncomputedLowerBound(report);
+    report["patches"] = nullptr;
+    report["tolerance"] = nullptr;
+    if (ruleT) addToleranceBound(report, job.toleranceSpec, options.tolerance, streamed.largestLeafBound);
+    addWarnings(report, {});
+    report["streamed"] = {
+        {"groups", streamed.groups},
+        {"patchesPerGroup", streamed.patchesPerGroup},
+        {"seamVertices", streamed.seamVertices},
+        {"largestGroupBytes", streamed.largestGroupBytes},
+        {"notComputed", {"patches", "levels", "warnings", "deviation"}}};
+    report["run"] = {{"input", job.inputName},
+                     {"output", job.output},
+                     {"backend", chosen.backend.name},
+                     {"device", chosen.context ? nlohmann::json(chosen.deviceName())
+                                               : nlohmann::json()},
+                     {"options", optionsToJson(options)}};
+    report["setup"] = setupToJson(chosen.context.get());
+    if (!job.stats.empty() && !statsToStdout)
+      files.stage(job.stats, [&](std::ostream& out) { writeStats(out, report); });
+    if (job.json || statsToStdout)
+      std::printf("%s\n",
+                  report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
+  }
+  files.commit();
+  if (summary) {
+    FILE* const to = statsToStdout ? stderr : stdout;
+    std::fprintf(to, "%s: %zu patches, method %c, %s, backend %s%s%s\n", job.inputName.c_str(),
+                 s.patches, splitRuleLetter(options.rule), job.thresholds.c_str(),
+                 chosen.backend.name.c_str(), chosen.context ? " on " : "",
+                 chosen.deviceName().c_str());
+    std::fprintf(to,
+                 "streamed in %zu groups of up to %zu patches (largest group's estimate %s, "
+                 "%zu seam vertices kept for welding)\n",
+                 streamed.groups, streamed.patchesPerGroup,
+                 formatByteSize(streamed.largestGroupBytes).c_str(), streamed.seamVertices);
+    std::fprintf(to, "depth %u, leaves %zu, triangles %zu, vertices %zu (%zu zero-area dropped)\n",
+                 s.depth, s.leaves, s.triangles, s.vertices, s.degenerateTrianglesDropped);
+    if (ruleT)
+      std::fprintf(to, "proven within %.4g of the surface (largest leaf bound; tolerance %.4g)%s\n",
+                   streamed.largestLeafBound, options.tolerance,
+                   streamed.largestLeafBound <= options.tolerance ? "" : " — ABOVE the tolerance");
+    if (bound && job.lowerBound)
+      std::fprintf(to,
+                   "lower bound at δ %.3g: %.0f triangles (asymptotic, any interpolating mesh); "
+                   "this mesh has %.2fx that (%.1f ms)\n",
+                   bound->tolerance, bound->triangles,
+                   bound->triangles > 0.0 ? double(s.triangles) / bound->triangles : 0.0,
+                   bound->ms);
+    std::fprintf(to, "time: tree %.1f ms, triangulation %.1f ms, vertices %.1f ms, total %.1f ms\n",
+                 s.treeMs, s.triangulateMs, s.evaluateMs, s.totalMs);
+    if (chosen.context) printSetup(to, chosen.context->timings());
+    std::fprintf(to, "wrote %s\n", job.output.c_str());
+    if (!job.stats.empty() && !statsToStdout) std::fprintf(to, "wrote %s\n", job.stats.c_str());
+  }
+  return kExitOk;
+}
+
+}  // namespace tessera::cli
