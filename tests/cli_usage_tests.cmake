@@ -123,3 +123,11 @@ tessera_usage_error("fit --max-rounds 0" "--max-rounds: Value 0 not in range 1 t
                     fit nofile.obj nofile2.obj --max-rounds 0)
 tessera_usage_error("fit --max-triangles 0" "--max-triangles: Value 0 not in range"
                     fit nofile.obj nofile2.obj --max-triangles 0)
+
+# --stream-patches (docs/cli.md): what needs the whole mesh is refused before the work.
+tessera_usage_error("--stream-patches with glb" "--stream-patches: a glb output needs the whole mesh"
+                    tessellate nofile.bpt --stream-patches 3 --format glb)
+tessera_usage_error("--stream-patches with --deviation"
+                    "--stream-patches: --deviation measures the whole mesh"
+                    tessellate nofile.bpt --stream-patches 3 --deviation)
+tessera_usage_error("--stream-patches 0" "--stream-patches" tessellate nofile.bpt --stream-patches 0)

@@ -320,9 +320,11 @@ StreamedTessellationStats tessellateStreamed(const std::vector<BezierPatch>& pat
     const size_t end = std::min(patches.size(), first + size);
     try {
       streamer.streamGroup(uint32_t(first), uint32_t(end), stats);
-    } catch (const MemoryLimitError&) {
+    } catch (const MemoryLimitError& e) {
       // Nothing of the group reached the sink (the estimate comes before the triangles).
-      if (!adapt || size == 1) throw;
+      if (!adapt || size == 1)
+        throw MemoryLimitError("streamed patches " + std::to_string(first) + "–" +
+                               std::to_string(end - 1) + " with their neighbours: " + e.what());
       size /= 2;
       continue;
     }
