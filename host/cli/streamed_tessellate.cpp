@@ -85,7 +85,7 @@ int tessellateStreamedToFile(const StreamedJob& job, const std::vector<BezierPat
                  chosen.deviceName().c_str());
     std::fprintf(to,
                  "streamed in %zu groups of up to %zu patches (largest group's estimate %s, "
-                 "%zu seam vertices kept for welding)\n",
+                 "at most %zu seam vertices held for welding)\n",
                  streamed.groups, streamed.patchesPerGroup,
                  formatByteSize(streamed.largestGroupBytes).c_str(), streamed.seamVertices);
     std::fprintf(to, "depth %u, leaves %zu, triangles %zu, vertices %zu (%zu zero-area dropped)\n",

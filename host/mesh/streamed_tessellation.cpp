@@ -38,6 +38,13 @@ class CornerIndex {
     std::sort(corners_.begin(), corners_.end());
   }
 
+  // The last patch with a corner at `point` (0 if none).
+  uint32_t lastPatchAt(const glm::dvec3& point) const {
+    const PointBits key = pointBits(point);
+    auto it = std::upper_bound(corners_.begin(), corners_.end(), std::make_pair(key, UINT32_MAX));
+    return it != corners_.begin() && std::prev(it)->first == key ? std::prev(it)->second : 0;
+  }
+
   // Patches [first, end) and every patch meeting one of them at a corner, ascending.
   std::vector<uint32_t> withNeighbours(const std::vector<BezierPatch>& patches, uint32_t first,
                                        uint32_t end) const {
@@ -97,6 +104,7 @@ struct PositionBitsHash {
 struct WrittenVertex {
   uint32_t index;
   glm::vec3 position;  // in the local frame, for the cap removal of later groups
+  uint32_t lastPatch;  // the last patch that can meet it: kept until that patch's group
 };
 
 // The welding map that persists across groups: boundary vertices by shared-side key and by
@@ -122,6 +130,17 @@ class SeamMap {
     byPosition_.emplace(bitsOf(v.position), v);
   }
   size_t size() const { return bySide_.size() + byPoint_.size() + byPosition_.size(); }
+
+  // Drops the vertices no patch from `next` on can meet.
+  void forgetBefore(uint32_t next) {
+    const auto prune = [next](auto& map) {
+      for (auto it = map.begin(); it != map.end();)
+        it = it->second.lastPatch < next ? map.erase(it) : std::next(it);
+    };
+    prune(byPoint_);
+    prune(bySide_);
+    prune(byPosition_);
+  }
 
  private:
   struct PointBitsHash {
@@ -166,6 +185,10 @@ class GroupStreamer {
         sink_(sink),
         topology_(findSharedEdges(local_)),
         corners_(local_) {
+    lastPatchOfSideGroup_.assign(topology_.groupCount, 0);
+    for (uint32_t p = 0; p < topology_.sides.size(); ++p)
+      for (const SideInfo& side : topology_.sides[p])
+        if (side.group >= 0) lastPatchOfSideGroup_[size_t(side.group)] = p;
     if (options.rule == SplitRule::Tolerance) options_.tolerance = options.tolerance / frame_.scale;
     gpuPatches_ = toPatchSet(local_);
     backend_.evaluator->prepare(gpuPatches_);
@@ -217,16 +240,23 @@ class GroupStreamer {
     s.evaluateMs += step.elapsedMs();
     requireFiniteSamples(param, samples);
     s.degenerateTrianglesDropped += param.droppedTriangles;
-    emitChunk(param, samples, s);
+    emitChunk(param, samples, end, s);
+    stats.seamVertices = std::max(stats.seamVertices, seams_.size());
+    seams_.forgetBefore(end);
   }
 
-  size_t seamVertices() const { return seams_.size(); }
-
  private:
+  // The last patch that has the vertex of `key` (on a side group's sides, or at a corner).
+  uint32_t lastPatchMeeting(const SeamKey& key) const {
+    if (key.kind == SeamKey::kSharedSide) return lastPatchOfSideGroup_[key.group];
+    if (key.kind == SeamKey::kPosition) return corners_.lastPatchAt(key.point);
+    return 0;
+  }
+
   // Welds the group's vertices with each other and with the seams written before, cleans the
   // triangles as assembleTessellation does, and hands the chunk to the sink.
   void emitChunk(const ParamMesh& param, const std::vector<gpu::EvalSample>& samples,
-                 TessellationStats& s) {
+                 uint32_t end, TessellationStats& s) {
     const size_t n = samples.size();
     std::vector<glm::vec3> positions(n);
     for (size_t i = 0; i < n; ++i) positions[i] = glm::vec3(samples[i].position);
@@ -260,7 +290,8 @@ class GroupStreamer {
         chunk.uvs.push_back({param.vertices[i].u, param.vertices[i].v});
         chunk.patchIds.push_back(param.vertices[i].patchIndex);
       }
-      seams_.add(key, {output[i], positions[i]});
+      const uint32_t last = lastPatchMeeting(key);
+      if (last >= end) seams_.add(key, {output[i], positions[i], last});
     }
     std::vector<uint32_t> indices;
     std::vector<uint32_t> trianglePatch;
@@ -298,6 +329,7 @@ class GroupStreamer {
   const MeshChunkSink& sink_;
   PatchTopology topology_;
   CornerIndex corners_;
+  std::vector<uint32_t> lastPatchOfSideGroup_;
   PatchSet gpuPatches_;
   SeamMap seams_;
   uint32_t nextIndex_ = 0;
@@ -332,7 +364,6 @@ StreamedTessellationStats tessellateStreamed(const std::vector<BezierPatch>& pat
     first = end;
   }
   stats.patchesPerGroup = size;
-  stats.seamVertices = streamer.seamVertices();
   stats.totals.totalMs = total.elapsedMs();
   return stats;
 }

@@ -2,8 +2,9 @@
 // of consecutive indices; each group's quad-tree, triangles and vertices are made, handed to a
 // sink (the output file's writer, io/mesh_stream_writer.h) and dropped before the next group.
 // What persists across groups is the welding map of the vertices on patch boundaries (shared
-// sides, corners, collapsed sides), so a later group's triangles reference the very vertices
-// an earlier group wrote, and the mesh stays watertight across groups.
+// sides, corners, collapsed sides) that a patch of a later group can meet, so a later group's
+// triangles reference the very vertices an earlier group wrote, and the mesh stays watertight
+// across groups.
 //
 // A group's triangulation needs the points its neighbours put on their shared sides (both
 // sides' leaf corners are vertices of both): the tree is built for the group and the patches
@@ -39,7 +40,8 @@ struct StreamedTessellationStats {
   TessellationStats totals;     // summed over the groups (levels left empty)
   size_t groups = 0;
   size_t patchesPerGroup = 0;   // the group size used (after halving, in the automatic mode)
-  size_t seamVertices = 0;      // entries in the welding map at the end
+  size_t seamVertices = 0;      // the most entries the welding map held (a vertex is kept
+                                // until the group of the last patch that can meet it)
   uint64_t largestGroupBytes = 0;  // the largest group's estimate, welding map included
   double largestLeafBound = 0;  // rule T: the largest leaf bound, in model units
 };
