@@ -48,12 +48,17 @@ class CornerIndex {
   // Patches [first, end) and every patch meeting one of them at a corner, ascending.
   std::vector<uint32_t> withNeighbours(const std::vector<BezierPatch>& patches, uint32_t first,
                                        uint32_t end) const {
-    std::vector<uint32_t> result;
+    // Each distinct corner once: many patches can meet at one point (a pole, copies in place).
+    std::vector<PointBits> keys;
     for (uint32_t p = first; p < end; ++p)
-      for (const PointBits& key : cornersOf(patches[p])) {
-        auto it = std::lower_bound(corners_.begin(), corners_.end(), std::make_pair(key, 0u));
-        for (; it != corners_.end() && it->first == key; ++it) result.push_back(it->second);
-      }
+      for (const PointBits& key : cornersOf(patches[p])) keys.push_back(key);
+    std::sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    std::vector<uint32_t> result;
+    for (const PointBits& key : keys) {
+      auto it = std::lower_bound(corners_.begin(), corners_.end(), std::make_pair(key, 0u));
+      for (; it != corners_.end() && it->first == key; ++it) result.push_back(it->second);
+    }
     std::sort(result.begin(), result.end());
     result.erase(std::unique(result.begin(), result.end()), result.end());
     return result;
