@@ -15,6 +15,7 @@
 #include "cli/setup_report.h"
 #include "cli/stdio.h"
 #include "cli/streamed_tessellate.h"
+#include "cli/tessellate_summary.h"
 #include "common/memory_budget.h"
 #include "io/surface_reader.h"
 #include "io/errors.h"
@@ -308,13 +309,9 @@ int run(const TessellateArgs& a) {
     // With the mesh or the report on standard output, the summary goes to stderr.
     FILE* const to = meshToStdout || statsToStdout ? stderr : stdout;
     const TessellationStats& s = t.stats;
-    const std::string& thresholds = job.thresholds;
-    std::fprintf(to, "%s: %zu patches, method %c, %s, backend %s%s%s\n", inputName.c_str(),
-                 s.patches, splitRuleLetter(options.rule), thresholds.c_str(),
-                 backend.name.c_str(), context ? " on " : "",
-                 context ? context->info().name.c_str() : "");
-    std::fprintf(to, "depth %u, leaves %zu, triangles %zu, vertices %zu (%zu zero-area dropped)\n",
-                 s.depth, s.leaves, s.triangles, s.vertices, s.degenerateTrianglesDropped);
+    printRunLine(to, inputName, s, options.rule, job.thresholds, backend.name,
+                 chosen.deviceName());
+    printCountsLine(to, s);
     // Rule T's leaves each carry their proven bound (QuadLeaf::flatness): the largest of them
     // is what the mesh is proven within, measured or not.
     if (view) {
@@ -327,9 +324,7 @@ int run(const TessellateArgs& a) {
                    leaves.largestBound <= options.tolerance ? "" : " — ABOVE the tolerance",
                    leaves.culled, leaves.eyePlane);
     } else if (ruleT) {
-      const double bound = largestLeafBound(t.tree);
-      std::fprintf(to, "proven within %.4g of the surface (largest leaf bound; tolerance %.4g)%s\n",
-                   bound, options.tolerance, bound <= options.tolerance ? "" : " — ABOVE the tolerance");
+      printProvenLine(to, largestLeafBound(t.tree), options.tolerance);
     }
     if (deviation)
       std::fprintf(to,
@@ -338,15 +333,8 @@ int run(const TessellateArgs& a) {
                    geometric->total.maxDeviation, geometric->total.meanDeviation,
                    deviation->total.maxDeviation, deviation->total.meanDeviation,
                    deviation->total.samples);
-    if (bound)
-      std::fprintf(to,
-                   "lower bound at δ %.3g: %.0f triangles (asymptotic, any interpolating mesh); "
-                   "this mesh has %.2fx that (%.1f ms)\n",
-                   bound->tolerance, bound->triangles,
-                   bound->triangles > 0.0 ? double(s.triangles) / bound->triangles : 0.0,
-                   bound->ms);
-    std::fprintf(to, "time: tree %.1f ms, triangulation %.1f ms, vertices %.1f ms, total %.1f ms\n",
-                 s.treeMs, s.triangulateMs, s.evaluateMs, s.totalMs);
+    if (bound) printLowerBoundLine(to, *bound, s.triangles);
+    printTimesLine(to, s);
     if (context) printSetup(to, context->timings());
     if (deviation)
       std::fprintf(to, "deviation measured in %.1f ms (parametric) + %.1f ms (geometric)\n",

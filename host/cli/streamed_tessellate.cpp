@@ -9,6 +9,7 @@
 #include "cli/setup_report.h"
 #include "common/memory_budget.h"
 #include "cli/stdio.h"
+#include "cli/tessellate_summary.h"
 #include "io/mesh_stream_writer.h"
 #include "io/stats_report.h"
 #include "mesh/lower_bound.h"
@@ -79,30 +80,17 @@ int tessellateStreamedToFile(const StreamedJob& job, const std::vector<BezierPat
   files.commit();
   if (summary) {
     FILE* const to = statsToStdout ? stderr : stdout;
-    std::fprintf(to, "%s: %zu patches, method %c, %s, backend %s%s%s\n", job.inputName.c_str(),
-                 s.patches, splitRuleLetter(options.rule), job.thresholds.c_str(),
-                 chosen.backend.name.c_str(), chosen.context ? " on " : "",
-                 chosen.deviceName().c_str());
+    printRunLine(to, job.inputName, s, options.rule, job.thresholds, chosen.backend.name,
+                 chosen.deviceName());
     std::fprintf(to,
                  "streamed in %zu groups of up to %zu patches (largest group's estimate %s, "
                  "at most %zu seam vertices held for welding)\n",
                  streamed.groups, streamed.patchesPerGroup,
                  formatByteSize(streamed.largestGroupBytes).c_str(), streamed.seamVertices);
-    std::fprintf(to, "depth %u, leaves %zu, triangles %zu, vertices %zu (%zu zero-area dropped)\n",
-                 s.depth, s.leaves, s.triangles, s.vertices, s.degenerateTrianglesDropped);
-    if (ruleT)
-      std::fprintf(to, "proven within %.4g of the surface (largest leaf bound; tolerance %.4g)%s\n",
-                   streamed.largestLeafBound, options.tolerance,
-                   streamed.largestLeafBound <= options.tolerance ? "" : " — ABOVE the tolerance");
-    if (bound && job.lowerBound)
-      std::fprintf(to,
-                   "lower bound at δ %.3g: %.0f triangles (asymptotic, any interpolating mesh); "
-                   "this mesh has %.2fx that (%.1f ms)\n",
-                   bound->tolerance, bound->triangles,
-                   bound->triangles > 0.0 ? double(s.triangles) / bound->triangles : 0.0,
-                   bound->ms);
-    std::fprintf(to, "time: tree %.1f ms, triangulation %.1f ms, vertices %.1f ms, total %.1f ms\n",
-                 s.treeMs, s.triangulateMs, s.evaluateMs, s.totalMs);
+    printCountsLine(to, s);
+    if (ruleT) printProvenLine(to, streamed.largestLeafBound, options.tolerance);
+    if (bound && job.lowerBound) printLowerBoundLine(to, *bound, s.triangles);
+    printTimesLine(to, s);
     if (chosen.context) printSetup(to, chosen.context->timings());
     std::fprintf(to, "wrote %s\n", job.output.c_str());
     if (!job.stats.empty() && !statsToStdout) std::fprintf(to, "wrote %s\n", job.stats.c_str());
