@@ -105,7 +105,7 @@ endif()
 add_test(NAME "cli memory: the teapot over the budget is streamed in patch groups"
   COMMAND ${CMAKE_COMMAND} -DCMD=$<TARGET_FILE:tessera> -DINPUT=${PROJECT_SOURCE_DIR}/data/teapot.bpt
           "-DARGS=-m;D;--linearity;0.02;--flatness;0.02;--backend;cpu"
-          "-DSTREAM_ARGS=--memory-budget;24M" -DDIR=${CMAKE_CURRENT_BINARY_DIR}
+          "-DSTREAM_ARGS=--memory-budget;24M" -DDIR=${CMAKE_CURRENT_BINARY_DIR}/streamed_by_budget
           "-DEXPECT_TEXT=more than the memory budget of 24.0 MiB .*; streaming the mesh in patch groups instead"
           -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_streamed_output.cmake)
 set_tests_properties("cli memory: the teapot over the budget is streamed in patch groups"
@@ -113,7 +113,7 @@ set_tests_properties("cli memory: the teapot over the budget is streamed in patc
 add_test(NAME "cli memory: --stream-patches 3 gives the held counts"
   COMMAND ${CMAKE_COMMAND} -DCMD=$<TARGET_FILE:tessera> -DINPUT=${PROJECT_SOURCE_DIR}/data/teacup.bpt
           "-DARGS=-m;B;--backend;cpu" "-DSTREAM_ARGS=--stream-patches;3"
-          -DDIR=${CMAKE_CURRENT_BINARY_DIR}
+          -DDIR=${CMAKE_CURRENT_BINARY_DIR}/streamed_by_option
           -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_streamed_output.cmake)
 set_tests_properties("cli memory: --stream-patches 3 gives the held counts"
   PROPERTIES LABELS cpu TIMEOUT 120)

@@ -4,6 +4,7 @@
 # stderr says why), and that both files have the same vertex and face counts in their headers,
 # and more than 0: each seam vertex written once, every triangle there (tests/CMakeLists.txt;
 # the triangle sets themselves are compared in tests/test_streamed_tessellation.cpp).
+file(MAKE_DIRECTORY ${DIR})  # one per test: CTest may run them at once
 foreach(run held streamed)
   set(args ${ARGS})
   if(run STREQUAL "streamed")
