@@ -164,6 +164,7 @@ class Triangulator {
     }
     for (uint32_t g = 0; g < sharedLines_.size(); ++g) {
       const auto [patch, side] = groupSide_[g];
+      if (side < 0) continue;  // no leaf of this triangulation is on it (a streamed group's scope)
       const SideInfo& s = topology_.sides[patch][side];
       const bool alongU = side == kSideV0 || side == kSideV1;
       const float fixed = side == kSideV0 || side == kSideU0 ? 0.0f : 1.0f;
