@@ -5,13 +5,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
 #include <map>
 #include <stdexcept>
-#include <type_traits>
 #include <vector>
 
 #include "io/atomic_file.h"
@@ -32,38 +32,17 @@ constexpr int kFloat = 5126;
 constexpr int kTriangles = 4;
 constexpr uint32_t kExactFloatIntegers = 1u << 24;  // every integer below is a float exactly
 
-// Little-endian bytes, appended one by one so the file is the same on any host.
-class LittleEndianBytes {
- public:
-  void putU16(uint16_t value) {
-    bytes_ += static_cast<char>(value & 0xFF);
-    bytes_ += static_cast<char>(value >> 8);
-  }
-  void putU32(uint32_t value) {
-    for (int shift = 0; shift < 32; shift += 8) bytes_ += static_cast<char>((value >> shift) & 0xFF);
-  }
-  void putF32(float value) {
-    uint32_t bits;
-    std::memcpy(&bits, &value, sizeof bits);
-    putU32(bits);
-  }
-  void padTo4(char fill) {
-    while (bytes_.size() % 4 != 0) bytes_ += fill;
-  }
-  size_t size() const { return bytes_.size(); }
-  void reserve(size_t n) { bytes_.reserve(n); }
-  const std::string& bytes() const { return bytes_; }
-
- private:
-  std::string bytes_;
-};
-
-glm::dvec3 areaWeightedFaceNormal(const TriangleMesh& mesh, size_t triangle) {
-  const glm::dvec3 a(mesh.positions[mesh.indices[3 * triangle]]);
-  const glm::dvec3 b(mesh.positions[mesh.indices[3 * triangle + 1]]);
-  const glm::dvec3 c(mesh.positions[mesh.indices[3 * triangle + 2]]);
-  return glm::cross(b - a, c - a);  // length = twice the area: area weighting for free
+void putU32(std::string& bytes, uint32_t value) {
+  for (int shift = 0; shift < 32; shift += 8) bytes += static_cast<char>((value >> shift) & 0xFF);
 }
+
+void padTo4(std::string& bytes, char fill) {
+  while (bytes.size() % 4 != 0) bytes += fill;
+}
+
+uint64_t roundUpTo4(uint64_t n) { return (n + 3) / 4 * 4; }
+
+const glm::vec3 kUp(0, 0, 1);
 
 glm::vec3 normalisedOr(const glm::dvec3& n, const glm::vec3& fallback) {
   const double length = glm::length(n);
@@ -73,66 +52,27 @@ glm::vec3 normalisedOr(const glm::dvec3& n, const glm::vec3& fallback) {
 
 // The NORMAL accessor's data: unit vectors everywhere (see the header for zero normals).
 std::vector<glm::vec3> unitNormals(const TriangleMesh& mesh) {
-  const glm::vec3 kUp(0, 0, 1);
   std::vector<glm::vec3> unit(mesh.normals.size());
   std::vector<size_t> zero;
   for (size_t v = 0; v < mesh.normals.size(); ++v) {
-    const glm::dvec3 n(mesh.normals[v]);
-    if (n == glm::dvec3(0))
+    if (isZeroNormal(mesh.normals[v]))
       zero.push_back(v);
     else
-      unit[v] = normalisedOr(n, kUp);
+      unit[v] = glbUnitNormal(mesh.normals[v]);
   }
   if (zero.empty()) return unit;
   std::vector<glm::dvec3> sums(mesh.normals.size(), glm::dvec3(0));
   std::vector<bool> wanted(mesh.normals.size(), false);
   for (size_t v : zero) wanted[v] = true;
+  const auto at = [&](size_t k) { return mesh.positions[mesh.indices[k]]; };
   for (size_t t = 0; t < mesh.triangleCount(); ++t)
     for (int corner = 0; corner < 3; ++corner) {
       const uint32_t v = mesh.indices[3 * t + corner];
-      if (wanted[v]) sums[v] += areaWeightedFaceNormal(mesh, t);
+      if (wanted[v]) sums[v] += glbFaceNormal(at(3 * t), at(3 * t + 1), at(3 * t + 2));
     }
-  for (size_t v : zero) unit[v] = normalisedOr(sums[v], kUp);
+  for (size_t v : zero) unit[v] = glbSummedNormal(sums[v]);
   return unit;
 }
-
-// The buffer and its views and accessors, built together: one tightly packed bufferView per
-// accessor, each starting on a 4-byte boundary.
-struct DocumentBuilder {
-  nlohmann::json bufferViews = nlohmann::json::array();
-  nlohmann::json accessors = nlohmann::json::array();
-  LittleEndianBytes bin;
-
-  size_t beginView() {
-    bin.padTo4(0);
-    return bin.size();
-  }
-
-  int endView(size_t offset, int target, int componentType, const char* type, size_t count) {
-    bufferViews.push_back({{"buffer", 0},
-                           {"byteOffset", offset},
-                           {"byteLength", bin.size() - offset},
-                           {"target", target}});
-    accessors.push_back({{"bufferView", bufferViews.size() - 1},
-                         {"componentType", componentType},
-                         {"type", type},
-                         {"count", count}});
-    return int(accessors.size() - 1);
-  }
-
-  // glm vectors of `components` floats (VEC2, VEC3), or floats (SCALAR).
-  template <typename Value>
-  int addFloats(const std::vector<Value>& values, int components, const char* type) {
-    const size_t offset = beginView();
-    for (const Value& value : values) {
-      if constexpr (std::is_same_v<Value, float>)
-        bin.putF32(value);
-      else
-        for (int c = 0; c < components; ++c) bin.putF32(value[c]);
-    }
-    return endView(offset, kArrayBuffer, kFloat, type, values.size());
-  }
-};
 
 // The triangles of each face in increasing face order, each face's in mesh order; without
 // faces, all triangles as one group.
@@ -149,12 +89,145 @@ nlohmann::json emptyScene() {
           {"scenes", nlohmann::json::array({nlohmann::json::object()})}};
 }
 
-void putChunkHeader(LittleEndianBytes& glb, uint32_t type, size_t length) {
-  glb.putU32(uint32_t(length));
-  glb.putU32(type);
+template <typename Value>
+void appendValues(std::string& bytes, const std::vector<Value>& values) {
+  static_assert(sizeof(Value) % sizeof(float) == 0, "float components");
+  appendGlbFloats(bytes, reinterpret_cast<const float*>(values.data()),
+                  values.size() * (sizeof(Value) / sizeof(float)));
 }
 
 }  // namespace
+
+bool isZeroNormal(const glm::vec3& normal) { return glm::dvec3(normal) == glm::dvec3(0); }
+
+glm::vec3 glbUnitNormal(const glm::vec3& normal) { return normalisedOr(glm::dvec3(normal), kUp); }
+
+glm::dvec3 glbFaceNormal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+  const glm::dvec3 da(a), db(b), dc(c);
+  return glm::cross(db - da, dc - da);  // length = twice the area: area weighting for free
+}
+
+glm::vec3 glbSummedNormal(const glm::dvec3& sum) { return normalisedOr(sum, kUp); }
+
+bool glbPatchIdFits(uint32_t id) { return id < kExactFloatIntegers; }
+
+void appendGlbFloats(std::string& bytes, const float* values, size_t count) {
+  for (size_t i = 0; i < count; ++i) {
+    uint32_t bits;
+    std::memcpy(&bits, &values[i], sizeof bits);
+    putU32(bytes, bits);
+  }
+}
+
+void appendGlbIndices(std::string& bytes, const uint32_t* indices, size_t count,
+                      bool shortIndices) {
+  for (size_t i = 0; i < count; ++i)
+    if (shortIndices) {
+      bytes += static_cast<char>(indices[i] & 0xFF);
+      bytes += static_cast<char>((indices[i] >> 8) & 0xFF);
+    } else {
+      putU32(bytes, indices[i]);
+    }
+}
+
+std::vector<GlbView> glbViews(const GlbLayout& layout) {
+  std::vector<GlbView> views;
+  if (layout.primitives.empty()) return views;
+  uint64_t offset = 0;
+  const auto add = [&](uint64_t length) {
+    offset = roundUpTo4(offset);
+    views.push_back({offset, length});
+    offset += length;
+  };
+  add(12 * layout.vertices);
+  if (layout.normals) add(12 * layout.vertices);
+  if (layout.uvs) add(8 * layout.vertices);
+  if (layout.patchIds) add(4 * layout.vertices);
+  for (const GlbPrimitive& p : layout.primitives)
+    add((layout.shortIndices() ? 2 : 4) * p.indexCount);
+  return views;
+}
+
+uint64_t glbBinLength(const GlbLayout& layout) {
+  const std::vector<GlbView> views = glbViews(layout);
+  return views.empty() ? 0 : roundUpTo4(views.back().offset + views.back().length);
+}
+
+std::string glbJsonChunk(const GlbLayout& layout) {
+  nlohmann::json document = emptyScene();
+  const std::vector<GlbView> views = glbViews(layout);
+  if (!views.empty()) {
+    nlohmann::json bufferViews = nlohmann::json::array(), accessors = nlohmann::json::array();
+    const auto add = [&](int target, int componentType, const char* type, uint64_t count) {
+      const GlbView& view = views[bufferViews.size()];
+      bufferViews.push_back({{"buffer", 0},
+                             {"byteOffset", view.offset},
+                             {"byteLength", view.length},
+                             {"target", target}});
+      accessors.push_back({{"bufferView", bufferViews.size() - 1},
+                           {"componentType", componentType},
+                           {"type", type},
+                           {"count", count}});
+      return int(accessors.size() - 1);
+    };
+    nlohmann::json attributes;
+    const int position = add(kArrayBuffer, kFloat, "VEC3", layout.vertices);
+    accessors[position]["min"] = {layout.min.x, layout.min.y, layout.min.z};
+    accessors[position]["max"] = {layout.max.x, layout.max.y, layout.max.z};
+    attributes["POSITION"] = position;
+    if (layout.normals) attributes["NORMAL"] = add(kArrayBuffer, kFloat, "VEC3", layout.vertices);
+    if (layout.uvs) attributes["TEXCOORD_0"] = add(kArrayBuffer, kFloat, "VEC2", layout.vertices);
+    if (layout.patchIds)
+      attributes["_PATCH_ID"] = add(kArrayBuffer, kFloat, "SCALAR", layout.vertices);
+    nlohmann::json primitives = nlohmann::json::array();
+    for (const GlbPrimitive& p : layout.primitives) {
+      const int indices = add(kElementArrayBuffer,
+                              layout.shortIndices() ? kUnsignedShort : kUnsignedInt, "SCALAR",
+                              p.indexCount);
+      nlohmann::json primitive = {
+          {"attributes", attributes}, {"indices", indices}, {"mode", kTriangles}};
+      if (layout.faces) primitive["extras"] = {{"face", p.face}};
+      primitives.push_back(std::move(primitive));
+    }
+    // The buffer ends with the last view; the BIN chunk pads it to 4 bytes.
+    document["buffers"] = {{{"byteLength", views.back().offset + views.back().length}}};
+    document["bufferViews"] = std::move(bufferViews);
+    document["accessors"] = std::move(accessors);
+    document["meshes"] = {{{"primitives", std::move(primitives)}}};
+    document["nodes"] = {{{"mesh", 0}}};
+    document["scenes"] = {{{"nodes", {0}}}};
+  }
+  std::string json = document.dump();
+  padTo4(json, ' ');
+  return json;
+}
+
+void checkGlbSize(uint64_t bytes) {
+  if (bytes > std::numeric_limits<uint32_t>::max())
+    throw std::invalid_argument("writeGlb: the mesh needs " + std::to_string(bytes) +
+                                " bytes, over GLB's 4 GiB limit");
+}
+
+void writeGlbContainer(std::ostream& out, const std::string& jsonChunk, uint64_t binLength,
+                       const std::function<void(std::ostream&)>& writeBin) {
+  const uint64_t total = 12 + 8 + uint64_t(jsonChunk.size()) + (binLength ? 8 + binLength : 0);
+  checkGlbSize(total);
+  std::string head;
+  putU32(head, kGlbMagic);
+  putU32(head, kGlbVersion);
+  putU32(head, uint32_t(total));
+  putU32(head, uint32_t(jsonChunk.size()));
+  putU32(head, kChunkJson);
+  out.write(head.data(), std::streamsize(head.size()));
+  out.write(jsonChunk.data(), std::streamsize(jsonChunk.size()));
+  if (binLength) {
+    std::string binHead;
+    putU32(binHead, uint32_t(binLength));
+    putU32(binHead, kChunkBin);
+    out.write(binHead.data(), std::streamsize(binHead.size()));
+    writeBin(out);
+  }
+}
 
 void writeGlb(std::ostream& out, const TriangleMesh& mesh,
               const std::vector<uint32_t>* triangleFace) {
@@ -163,94 +236,46 @@ void writeGlb(std::ostream& out, const TriangleMesh& mesh,
     throw std::invalid_argument("writeGlb: " + std::to_string(triangleFace->size()) +
                                 " face indices for " + std::to_string(mesh.triangleCount()) +
                                 " triangles");
-  nlohmann::json document = emptyScene();
-  DocumentBuilder builder;
-
+  GlbLayout layout;
+  std::string bin;
   if (mesh.triangleCount() > 0) {
-    const size_t vertexCount = mesh.vertexCount();
-    builder.bin.reserve(vertexCount * 36 + mesh.indices.size() * 4 + 16);
-    nlohmann::json attributes;
-
-    const int position = builder.addFloats(mesh.positions, 3, "VEC3");
+    layout.vertices = mesh.vertexCount();
+    layout.normals = !mesh.normals.empty();
+    layout.uvs = !mesh.uvs.empty();
+    layout.patchIds = !mesh.patchIds.empty() &&
+                      std::all_of(mesh.patchIds.begin(), mesh.patchIds.end(), glbPatchIdFits);
+    layout.faces = triangleFace != nullptr;
     glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-lo);
     for (const glm::vec3& p : mesh.positions) {
       lo = glm::min(lo, p);
       hi = glm::max(hi, p);
     }
-    builder.accessors[position]["min"] = {lo.x, lo.y, lo.z};
-    builder.accessors[position]["max"] = {hi.x, hi.y, hi.z};
-    attributes["POSITION"] = position;
+    layout.min = lo;
+    layout.max = hi;
+    const std::map<uint32_t, std::vector<uint32_t>> groups = trianglesByFace(mesh, triangleFace);
+    for (const auto& group : groups) layout.primitives.push_back({group.first, 3 * group.second.size()});
 
-    if (!mesh.normals.empty()) {
-      const std::vector<glm::vec3> unit = unitNormals(mesh);
-      attributes["NORMAL"] = builder.addFloats(unit, 3, "VEC3");
+    bin.reserve(size_t(glbBinLength(layout)));
+    appendValues(bin, mesh.positions);
+    if (layout.normals) appendValues(bin, unitNormals(mesh));
+    if (layout.uvs) appendValues(bin, mesh.uvs);
+    if (layout.patchIds) {
+      const std::vector<float> ids(mesh.patchIds.begin(), mesh.patchIds.end());
+      appendValues(bin, ids);
     }
-    if (!mesh.uvs.empty())
-      attributes["TEXCOORD_0"] = builder.addFloats(mesh.uvs, 2, "VEC2");
-    if (!mesh.patchIds.empty()) {
-      bool exact = true;
-      for (uint32_t id : mesh.patchIds) exact = exact && id < kExactFloatIntegers;
-      if (exact) {
-        std::vector<float> ids(mesh.patchIds.begin(), mesh.patchIds.end());
-        attributes["_PATCH_ID"] = builder.addFloats(ids, 1, "SCALAR");
-      }
+    std::vector<uint32_t> indices;
+    for (const auto& group : groups) {
+      padTo4(bin, 0);
+      indices.clear();
+      for (uint32_t t : group.second)
+        for (int corner = 0; corner < 3; ++corner) indices.push_back(mesh.indices[3 * size_t(t) + corner]);
+      appendGlbIndices(bin, indices.data(), indices.size(), layout.shortIndices());
     }
-
-    // Every index is below vertexCount; 65535 itself would be read as primitive restart.
-    const bool shortIndices = vertexCount <= 65535;
-    auto addIndices = [&](const std::vector<uint32_t>& triangles) {
-      const size_t offset = builder.beginView();
-      for (uint32_t t : triangles)
-        for (int corner = 0; corner < 3; ++corner) {
-          const uint32_t index = mesh.indices[3 * size_t(t) + corner];
-          if (shortIndices)
-            builder.bin.putU16(uint16_t(index));
-          else
-            builder.bin.putU32(index);
-        }
-      return builder.endView(offset, kElementArrayBuffer,
-                             shortIndices ? kUnsignedShort : kUnsignedInt, "SCALAR",
-                             3 * triangles.size());
-    };
-    nlohmann::json primitives = nlohmann::json::array();
-    for (const auto& [face, triangles] : trianglesByFace(mesh, triangleFace)) {
-      nlohmann::json primitive = {
-          {"attributes", attributes}, {"indices", addIndices(triangles)}, {"mode", kTriangles}};
-      if (triangleFace) primitive["extras"] = {{"face", face}};
-      primitives.push_back(std::move(primitive));
-    }
-
-    document["buffers"] = {{{"byteLength", builder.bin.size()}}};
-    document["bufferViews"] = std::move(builder.bufferViews);
-    document["accessors"] = std::move(builder.accessors);
-    document["meshes"] = {{{"primitives", std::move(primitives)}}};
-    document["nodes"] = {{{"mesh", 0}}};
-    document["scenes"] = {{{"nodes", {0}}}};
+    padTo4(bin, 0);
   }
-
-  std::string json = document.dump();
-  while (json.size() % 4 != 0) json += ' ';
-  builder.bin.padTo4(0);
-  const bool hasBin = builder.bin.size() > 0;
-  const uint64_t total =
-      12 + 8 + uint64_t(json.size()) + (hasBin ? 8 + uint64_t(builder.bin.size()) : 0);
-  if (total > std::numeric_limits<uint32_t>::max())
-    throw std::invalid_argument("writeGlb: the mesh needs " + std::to_string(total) +
-                                " bytes, over GLB's 4 GiB limit");
-
-  LittleEndianBytes head;
-  head.putU32(kGlbMagic);
-  head.putU32(kGlbVersion);
-  head.putU32(uint32_t(total));
-  putChunkHeader(head, kChunkJson, json.size());
-  out.write(head.bytes().data(), std::streamsize(head.size()));
-  out.write(json.data(), std::streamsize(json.size()));
-  if (hasBin) {
-    LittleEndianBytes binHead;
-    putChunkHeader(binHead, kChunkBin, builder.bin.size());
-    out.write(binHead.bytes().data(), std::streamsize(binHead.size()));
-    out.write(builder.bin.bytes().data(), std::streamsize(builder.bin.size()));
-  }
+  writeGlbContainer(out, glbJsonChunk(layout), bin.size(), [&](std::ostream& to) {
+    to.write(bin.data(), std::streamsize(bin.size()));
+  });
 }
 
 void writeGlbFile(const std::string& path, const TriangleMesh& mesh,

@@ -32,6 +32,8 @@
 // (glTF forbids empty accessors). A file over 4 GiB (the GLB length field is 32-bit) throws
 // std::invalid_argument before anything is written.
 #pragma once
+#include <cstdint>
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -52,5 +54,53 @@ void writeGlb(std::ostream& out, const TriangleMesh& mesh,
 // std::invalid_argument and leaves the file as it was.
 void writeGlbFile(const std::string& path, const TriangleMesh& mesh,
                   const std::vector<uint32_t>* triangleFace = nullptr);
+
+// writeGlb's pieces, for a writer that puts the mesh out in parts (io/mesh_stream_writer.h);
+// writeGlb itself is made of them, so both give the same bytes for the same mesh.
+//
+// What the JSON chunk says about the mesh: counts, which attributes there are, the positions'
+// bounds, and each primitive's index count.
+struct GlbPrimitive {
+  uint32_t face = 0;
+  uint64_t indexCount = 0;
+};
+struct GlbLayout {
+  uint64_t vertices = 0;
+  bool normals = false, uvs = false, patchIds = false;
+  glm::vec3 min{0}, max{0};  // of the positions
+  bool faces = false;        // each primitive's "extras": {"face": …}
+  std::vector<GlbPrimitive> primitives;  // none: no triangles, an empty scene and no buffer
+  // 16-bit indices (every index below 65535, the primitive-restart value), else 32-bit.
+  bool shortIndices() const { return vertices <= 65535; }
+};
+// The BIN chunk's views in order: POSITION, NORMAL, TEXCOORD_0, _PATCH_ID (those present),
+// then each primitive's indices; each starts on a 4-byte boundary.
+struct GlbView {
+  uint64_t offset = 0, length = 0;
+};
+std::vector<GlbView> glbViews(const GlbLayout& layout);
+// The BIN chunk's length, padding included (0: no BIN chunk).
+uint64_t glbBinLength(const GlbLayout& layout);
+// The JSON chunk's content, padded with spaces to 4 bytes.
+std::string glbJsonChunk(const GlbLayout& layout);
+// The header, the JSON chunk and the BIN chunk's header, then `writeBin` (which writes
+// exactly `binLength` bytes). A file over 4 GiB throws std::invalid_argument before anything
+// is written.
+void writeGlbContainer(std::ostream& out, const std::string& jsonChunk, uint64_t binLength,
+                       const std::function<void(std::ostream&)>& writeBin);
+// Throws std::invalid_argument when a GLB of `bytes` is over the 4 GiB the format can hold.
+void checkGlbSize(uint64_t bytes);
+
+// The values as the BIN chunk holds them (little-endian, whatever the host).
+void appendGlbFloats(std::string& bytes, const float* values, size_t count);
+void appendGlbIndices(std::string& bytes, const uint32_t* indices, size_t count, bool shortIndices);
+// The NORMAL accessor's value for a normal that is not zero (isZeroNormal: replaced by the
+// normalised sum of its triangles' glbFaceNormal, glbSummedNormal).
+bool isZeroNormal(const glm::vec3& normal);
+glm::vec3 glbUnitNormal(const glm::vec3& normal);
+glm::dvec3 glbFaceNormal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
+glm::vec3 glbSummedNormal(const glm::dvec3& sum);
+// _PATCH_ID is written only when every id is below 2^24 (a float holds it exactly).
+bool glbPatchIdFits(uint32_t id);
 
 }  // namespace tessera
