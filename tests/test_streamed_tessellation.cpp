@@ -4,10 +4,11 @@
 // and the streamed mesh is as closed: no crack, T-junction, over-used or inconsistent edge,
 // no zero-area triangle. Vertex numbering differs (the held mesh numbers in the whole tree's
 // leaf order), so the files are not byte for byte the same; the stream writer's files are
-// writeObj's and writePly's bytes for the mesh it was given.
+// writeObj's, writePly's and writeGlb's bytes for the mesh it was given.
 #include <catch2/catch.hpp>
 
 #include <array>
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "common/memory_budget.h"
 #include "gpu_test_context.h"
 #include "io/bpt_reader.h"
+#include "io/gltf_writer.h"
 #include "io/mesh_stream_writer.h"
 #include "io/obj_writer.h"
 #include "io/ply_writer.h"
@@ -57,7 +59,7 @@ std::vector<Triple> triangleSet(const TriangleMesh& mesh) {
 struct Streamed {
   Tessellation whole;  // the chunks put together, as a reader of the file would have them
   StreamedTessellationStats stats;
-  std::string obj, ply;  // what MeshStreamWriter writes
+  std::string obj, ply, glb;  // what MeshStreamWriter writes
 };
 
 Streamed stream(const std::vector<BezierPatch>& patches, const QuadtreeOptions& options,
@@ -65,10 +67,12 @@ Streamed stream(const std::vector<BezierPatch>& patches, const QuadtreeOptions& 
   Streamed s;
   MeshStreamWriter obj(MeshStreamWriter::Format::Obj, "streamed.obj");
   MeshStreamWriter ply(MeshStreamWriter::Format::Ply, "streamed.ply");
+  MeshStreamWriter glb(MeshStreamWriter::Format::Glb, "streamed.glb");
   TriangleMesh& mesh = s.whole.mesh;
   s.stats = tessellateStreamed(patches, options, backend, groupSize, [&](const MeshChunk& c) {
     obj.add(c);
     ply.add(c);
+    glb.add(c);
     mesh.positions.insert(mesh.positions.end(), c.positions.begin(), c.positions.end());
     mesh.normals.insert(mesh.normals.end(), c.normals.begin(), c.normals.end());
     mesh.uvs.insert(mesh.uvs.end(), c.uvs.begin(), c.uvs.end());
@@ -77,11 +81,13 @@ Streamed stream(const std::vector<BezierPatch>& patches, const QuadtreeOptions& 
     s.whole.trianglePatch.insert(s.whole.trianglePatch.end(), c.trianglePatch.begin(),
                                  c.trianglePatch.end());
   });
-  std::ostringstream objText, plyText;
+  std::ostringstream objText, plyText, glbBytes;
   obj.finish(objText);
   ply.finish(plyText);
+  glb.finish(glbBytes);
   s.obj = objText.str();
   s.ply = plyText.str();
+  s.glb = glbBytes.str();
   return s;
 }
 
@@ -106,11 +112,13 @@ void requireSameAsHeld(const std::string& what, const std::vector<BezierPatch>& 
   // written twice would open the edges at it.
   CHECK(c.boundaryEdges == test::censusOf(held.mesh, 0.0).boundaryEdges);
   // The stream writer's bytes are the held writers' for the same mesh.
-  std::ostringstream obj, ply;
+  std::ostringstream obj, ply, glb;
   writeObj(obj, s.whole.mesh);
   writePly(ply, s.whole.mesh);
+  writeGlb(glb, s.whole.mesh);
   CHECK(s.obj == obj.str());
   CHECK(s.ply == ply.str());
+  CHECK(s.glb == glb.str());
 }
 
 // Each setting streams in one group size, taking 7, 3 and 1 in turn (groups of one patch make
@@ -187,4 +195,72 @@ TEST_CASE("Vulkan's streamed teapot is the held mirror mesh", "[gpu][streamed]")
       CHECK(s.stats.totals.triangles > 0);
   }
   test::requireValidationClean();
+}
+
+namespace {
+
+// `chunks` through MeshStreamWriter's GLB, and writeGlb of them put together.
+std::pair<std::string, std::string> glbStreamedAndHeld(const std::vector<MeshChunk>& chunks) {
+  MeshStreamWriter writer(MeshStreamWriter::Format::Glb, "parts.glb");
+  TriangleMesh mesh;
+  for (const MeshChunk& c : chunks) {
+    writer.add(c);
+    mesh.positions.insert(mesh.positions.end(), c.positions.begin(), c.positions.end());
+    mesh.normals.insert(mesh.normals.end(), c.normals.begin(), c.normals.end());
+    mesh.uvs.insert(mesh.uvs.end(), c.uvs.begin(), c.uvs.end());
+    mesh.patchIds.insert(mesh.patchIds.end(), c.patchIds.begin(), c.patchIds.end());
+    mesh.indices.insert(mesh.indices.end(), c.indices.begin(), c.indices.end());
+  }
+  std::ostringstream streamed, held;
+  writer.finish(streamed);
+  writeGlb(held, mesh);
+  return {streamed.str(), held.str()};
+}
+
+MeshChunk fan(uint32_t first, size_t vertices, uint32_t patch) {
+  MeshChunk c;
+  for (size_t i = 0; i < vertices; ++i) {
+    const float a = float(i) * 0.1f;
+    c.positions.push_back({std::cos(a), std::sin(a), float(first) * 0.01f});
+    c.normals.push_back({0.f, 0.5f, 2.f});
+    c.uvs.push_back({a, 1.f - a});
+    c.patchIds.push_back(patch);
+  }
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("the GLB stream writer gives writeGlb's bytes in the cases the tea set misses",
+          "[streamed][gltf]") {
+  SECTION("a zero normal whose triangles come in later chunks, 16-bit indices, odd count") {
+    MeshChunk a = fan(0, 4, 1), b = fan(4, 3, 2);
+    a.normals[0] = glm::vec3(0);  // the collapsed corner
+    a.indices = {0, 1, 2};
+    b.normals[1] = glm::vec3(-0.f, 0.f, 0.f);
+    b.indices = {0, 2, 4, 0, 3, 5, 5, 6, 0};  // vertex 0 again, and chunk b's own zero (5)
+    const auto [streamed, held] = glbStreamedAndHeld({a, b});
+    REQUIRE(held.size() > 0);
+    CHECK(streamed == held);
+  }
+  SECTION("32-bit indices, and a patch id past 2^24 (no _PATCH_ID)") {
+    MeshChunk a = fan(0, 40000, 3), b = fan(40000, 30000, 1u << 24);
+    a.indices = {0, 1, 2};
+    b.indices = {0, 40001, 69999};
+    const auto [streamed, held] = glbStreamedAndHeld({a, b});
+    CHECK(held.find("_PATCH_ID") == std::string::npos);
+    CHECK(held.find("\"componentType\":5125") != std::string::npos);
+    CHECK(streamed == held);
+  }
+  SECTION("no triangles: an empty scene") {
+    const auto [streamed, held] = glbStreamedAndHeld({fan(0, 3, 0)});
+    CHECK(held.find("\"buffers\"") == std::string::npos);
+    CHECK(streamed == held);
+  }
+  SECTION("a malformed chunk is refused") {
+    MeshStreamWriter writer(MeshStreamWriter::Format::Glb, "bad.glb");
+    MeshChunk c = fan(0, 3, 0);
+    c.indices = {0, 1, 3};
+    CHECK_THROWS_AS(writer.add(c), std::invalid_argument);
+  }
 }
