@@ -122,7 +122,18 @@ tessera_limit_case("a streamed group that does not fit still exits 4" 4
   "streamed patches [0-9]+–[0-9]+ with their neighbours: .*more than the memory budget of 8.00 MiB"
   tessellate ${PROJECT_SOURCE_DIR}/data/teapot.bpt --tolerance 0.01% --backend cpu
   --memory-budget 8M)
-tessera_limit_case("a glb over the budget is not streamed" 4
-  "more than the memory budget of 8.00 MiB .*; it cannot be streamed instead: a glb output needs the whole mesh"
-  tessellate ${PROJECT_SOURCE_DIR}/data/teapot.bpt -m D --linearity 0.02 --flatness 0.02
-  --backend cpu --memory-budget 8M --format glb)
+# A .glb streams too (its JSON chunk is made at the end from the counts and bounds): by the
+# budget with the held counts, and by --stream-patches.
+add_test(NAME "cli memory: a glb over the budget is streamed"
+  COMMAND ${CMAKE_COMMAND} -DCMD=$<TARGET_FILE:tessera> -DINPUT=${PROJECT_SOURCE_DIR}/data/teapot.bpt
+          "-DARGS=--tolerance;0.01%;--backend;cpu" -DFORMAT=glb
+          "-DSTREAM_ARGS=--memory-budget;16M" -DDIR=${CMAKE_CURRENT_BINARY_DIR}/streamed_glb_by_budget
+          "-DEXPECT_TEXT=more than the memory budget of 16.0 MiB .*; streaming the mesh in patch groups instead"
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_streamed_output.cmake)
+add_test(NAME "cli memory: --stream-patches 3 to .glb gives the held counts"
+  COMMAND ${CMAKE_COMMAND} -DCMD=$<TARGET_FILE:tessera> -DINPUT=${PROJECT_SOURCE_DIR}/data/teacup.bpt
+          "-DARGS=-m;B;--backend;cpu" "-DSTREAM_ARGS=--stream-patches;3" -DFORMAT=glb
+          -DDIR=${CMAKE_CURRENT_BINARY_DIR}/streamed_glb_by_option
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_streamed_output.cmake)
+set_tests_properties("cli memory: a glb over the budget is streamed"
+  "cli memory: --stream-patches 3 to .glb gives the held counts" PROPERTIES LABELS cpu TIMEOUT 120)

@@ -125,8 +125,9 @@ tessera_usage_error("fit --max-triangles 0" "--max-triangles: Value 0 not in ran
                     fit nofile.obj nofile2.obj --max-triangles 0)
 
 # --stream-patches (docs/cli.md): what needs the whole mesh is refused before the work.
-tessera_usage_error("--stream-patches with glb" "--stream-patches: a glb output needs the whole mesh"
-                    tessellate nofile.bpt --stream-patches 3 --format glb)
+tessera_usage_error("--stream-patches with --metadata"
+                    "--stream-patches: --metadata is not written while streaming"
+                    tessellate nofile.bpt --stream-patches 3 --metadata)
 tessera_usage_error("--stream-patches with --deviation"
                     "--stream-patches: --deviation measures the whole mesh"
                     tessellate nofile.bpt --stream-patches 3 --deviation)

@@ -20,9 +20,6 @@ namespace tessera::cli {
 std::string whyNotStreamable(const StreamedJob& job) {
   if (job.output.empty()) return "no mesh output (-o) to stream to";
   if (job.output == kStdioPath) return "a mesh on standard output is written whole (-o -)";
-  if (job.format != "obj" && job.format != "ply")
-    return "a " + job.format + " output needs the whole mesh (its JSON chunk holds the "
-                               "accessors' sizes and bounds); write .obj or .ply";
   if (job.precisionDouble) return "--precision double evaluates the whole mesh again";
   if (job.metadata) return "--metadata is not written while streaming";
   if (job.camera) return "a screen tolerance (--view, --view-projection) needs the whole tree";
@@ -34,9 +31,10 @@ std::string whyNotStreamable(const StreamedJob& job) {
 int tessellateStreamedToFile(const StreamedJob& job, const std::vector<BezierPatch>& patches,
                              const QuadtreeOptions& options, ChosenBackend& chosen,
                              AtomicFileGroup& files) {
-  MeshStreamWriter writer(
-      job.format == "obj" ? MeshStreamWriter::Format::Obj : MeshStreamWriter::Format::Ply,
-      job.output);
+  MeshStreamWriter writer(job.format == "obj"   ? MeshStreamWriter::Format::Obj
+                          : job.format == "ply" ? MeshStreamWriter::Format::Ply
+                                                : MeshStreamWriter::Format::Glb,
+                          job.output);
   const StreamedTessellationStats streamed =
       tessellateStreamed(patches, options, chosen.backend, job.patchesPerGroup,
                          [&](const MeshChunk& chunk) { writer.add(chunk); });

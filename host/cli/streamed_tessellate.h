@@ -31,7 +31,8 @@ struct StreamedJob {
   size_t patchesPerGroup = 0;  // 0: sized automatically
 };
 
-// Empty when `job` can be streamed, else why not ("glb output needs the whole mesh", …).
+// Empty when `job` can be streamed (to .obj, .ply or .glb), else why not ("--deviation
+// measures the whole mesh", …).
 std::string whyNotStreamable(const StreamedJob& job);
 
 // Tessellates `patches` in groups into job.output (staged in `files`, committed here with the
