@@ -62,6 +62,15 @@ struct Streamed {
   std::string obj, ply, glb;  // what MeshStreamWriter writes
 };
 
+// The chunk's vertices and triangles after the mesh's, as a reader of the file has them.
+void appendChunk(TriangleMesh& mesh, const MeshChunk& c) {
+  mesh.positions.insert(mesh.positions.end(), c.positions.begin(), c.positions.end());
+  mesh.normals.insert(mesh.normals.end(), c.normals.begin(), c.normals.end());
+  mesh.uvs.insert(mesh.uvs.end(), c.uvs.begin(), c.uvs.end());
+  mesh.patchIds.insert(mesh.patchIds.end(), c.patchIds.begin(), c.patchIds.end());
+  mesh.indices.insert(mesh.indices.end(), c.indices.begin(), c.indices.end());
+}
+
 Streamed stream(const std::vector<BezierPatch>& patches, const QuadtreeOptions& options,
                 Backend& backend, size_t groupSize) {
   Streamed s;
@@ -73,11 +82,7 @@ Streamed stream(const std::vector<BezierPatch>& patches, const QuadtreeOptions& 
     obj.add(c);
     ply.add(c);
     glb.add(c);
-    mesh.positions.insert(mesh.positions.end(), c.positions.begin(), c.positions.end());
-    mesh.normals.insert(mesh.normals.end(), c.normals.begin(), c.normals.end());
-    mesh.uvs.insert(mesh.uvs.end(), c.uvs.begin(), c.uvs.end());
-    mesh.patchIds.insert(mesh.patchIds.end(), c.patchIds.begin(), c.patchIds.end());
-    mesh.indices.insert(mesh.indices.end(), c.indices.begin(), c.indices.end());
+    appendChunk(mesh, c);
     s.whole.trianglePatch.insert(s.whole.trianglePatch.end(), c.trianglePatch.begin(),
                                  c.trianglePatch.end());
   });
@@ -205,11 +210,7 @@ std::pair<std::string, std::string> glbStreamedAndHeld(const std::vector<MeshChu
   TriangleMesh mesh;
   for (const MeshChunk& c : chunks) {
     writer.add(c);
-    mesh.positions.insert(mesh.positions.end(), c.positions.begin(), c.positions.end());
-    mesh.normals.insert(mesh.normals.end(), c.normals.begin(), c.normals.end());
-    mesh.uvs.insert(mesh.uvs.end(), c.uvs.begin(), c.uvs.end());
-    mesh.patchIds.insert(mesh.patchIds.end(), c.patchIds.begin(), c.patchIds.end());
-    mesh.indices.insert(mesh.indices.end(), c.indices.begin(), c.indices.end());
+    appendChunk(mesh, c);
   }
   std::ostringstream streamed, held;
   writer.finish(streamed);
