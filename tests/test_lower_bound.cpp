@@ -9,6 +9,7 @@
 #include "experiments/rational_samples.h"
 #include "io/bpt_reader.h"
 #include "mesh/lower_bound.h"
+#include "sweep_share.h"
 
 using namespace tessera;
 
@@ -159,18 +160,21 @@ TEST_CASE("lower bound: a rational torus, both signs, against 1-D references", "
                        std::sqrt(kPi / 2), 20000);
   outer *= 2.0;  // θ ∈ (−π/2, π/2) by symmetry
   inner *= 2.0;
-  // √cos θ at the patches' edges (K = 0 there) slows the convergence to about h^1.5.
-  LowerBoundOptions further;
-  further.relativeChange = 1e-5;
-  const TriangleLowerBound b = asymptoticTriangleLowerBound(patches, 0.001, further);
   const TriangleLowerBound quick = asymptoticTriangleLowerBound(patches, 0.001);
-  printSequence("torus 2/0.75", b);
   const double expected =
       (kEllipticTriangleDensity * outer + kHyperbolicTriangleDensity * inner) / 0.001;
   std::printf("  default options: N_min %.3f at k = %d, reference %.3f (relative %.3g)\n",
               quick.triangles, quick.cells, expected, relative(quick.triangles, expected));
   CHECK(quick.converged);
   CHECK(relative(quick.triangles, expected) < 2e-3);
+  // The tight run is a statistic of convergence, on the quick run's path: the Release suite
+  // asserts it, the sanitizers (sweep_share.h) skip it.
+  if (test::sweepShare() < 1.0) return;
+  // √cos θ at the patches' edges (K = 0 there) slows the convergence to about h^1.5.
+  LowerBoundOptions further;
+  further.relativeChange = 1e-5;
+  const TriangleLowerBound b = asymptoticTriangleLowerBound(patches, 0.001, further);
+  printSequence("torus 2/0.75", b);
   std::printf("  K>0: %.10g vs %.10g (%.3g); K<0: %.10g vs %.10g (%.3g)\n", b.integral.positive,
               outer, relative(b.integral.positive, outer), b.integral.negative, inner,
               relative(b.integral.negative, inner));

@@ -116,6 +116,9 @@ TEST_CASE("revolution bound: every triangle of a node lies within its bound of t
 TEST_CASE("revolution bound: curved faces take fewer triangles, still within δ", "[cad][trim]") {
   Backend backend = makeMirrorBackend();
   for (const Shape& s : revolutionShapes()) {
+    // Under the sanitizers the torus alone stands for the circle profiles (the sphere takes
+    // the same path at twice the cost).
+    if (test::sweepShare() < 1.0 && s.name == "sphere") continue;
     INFO(s.name);
     // The shapes are a few units across. Under the sanitizers (sweep_share.h) 10× coarser: the
     // same code paths with a tenth of the triangles (at 5·10⁻⁴ the parametric sphere and torus
@@ -198,6 +201,7 @@ TEST_CASE("revolution bound: the same triangles at any scale and position", "[ca
   Backend backend = makeMirrorBackend();
   for (const Shape& s : revolutionShapes()) {
     if (s.name != "torus" && s.name != "truncated cone") continue;
+    if (test::sweepShare() < 1.0 && s.name != "torus") continue;  // the sanitizers: one shape
     INFO(s.name);
     gp_Trsf scale, move;
     scale.SetScale(gp_Pnt(0, 0, 0), 1000.0);
