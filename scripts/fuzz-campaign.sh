@@ -2,13 +2,21 @@
 # The long libFuzzer campaigns of docs/hardening.md ("Campaigns"), one target at a time on one
 # core, each on a working corpus grown from its CTest seeds; not part of CI.
 #   scripts/fuzz-campaign.sh [seconds per target = 1800] [targets... = all five]
-# Needs the sanitizer build with the fuzz targets (scripts/sanitize.sh, or SANITIZE_BUILD_DIR).
+# Builds the fuzz targets with ASan + UBSan and libFuzzer's coverage feedback in all of
+# Tessera's code (TESSERA_FUZZ_COVERAGE=ON) into ${FUZZ_BUILD_DIR:-build-fuzz}: scripts/sanitize.sh's
+# build leaves that coverage out of the library, for the CI's speed.
 # Writes ${FUZZ_WORK:-fuzz-work}/<target>/{corpus/,log,crash-*} and appends one line per target
 # to ${FUZZ_WORK:-fuzz-work}/summary.txt: start, end, exit code, executions, corpus, crashes.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 src=$PWD
-fuzzers=${SANITIZE_BUILD_DIR:-build-sanitize}/tests/fuzz
+build=${FUZZ_BUILD_DIR:-build-fuzz}
+command -v clang++ >/dev/null || { echo "fuzz-campaign: clang++ not found (scripts/deps.sh)" >&2; exit 2; }
+cmake -S . -B "$build" -DTESSERA_SANITIZE=ON -DTESSERA_FUZZ=ON -DTESSERA_FUZZ_COVERAGE=ON \
+  -DTESSERA_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
+  -DCMAKE_CXX_COMPILER=clang++ >/dev/null || exit 2
+cmake --build "$build" -j "$(nproc)" --target tessera_fuzzers || exit 2
+fuzzers=$build/tests/fuzz
 work=${FUZZ_WORK:-fuzz-work}
 seconds=${1:-1800}
 shift || true
@@ -26,7 +34,7 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export LSAN_OPTIONS=suppressions=$src/tests/lsan.supp:print_suppressions=0
 status=0
 for t in "${targets[@]}"; do
-  [[ -x $fuzzers/$t ]] || { echo "fuzz-campaign: $fuzzers/$t not built (scripts/sanitize.sh)" >&2; exit 2; }
+  [[ -x $fuzzers/$t ]] || { echo "fuzz-campaign: no fuzz target $t in $fuzzers" >&2; exit 2; }
   dir=$work/$t
   mkdir -p "$dir/corpus"
   shopt -s nullglob
