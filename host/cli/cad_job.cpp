@@ -6,6 +6,7 @@
 
 #include "cli/commands.h"
 #include "cli/outputs.h"
+#include "cli/run_report.h"
 #include "cli/stdio.h"
 #include "common/stopwatch.h"
 #include "io/errors.h"
@@ -186,13 +187,8 @@ int tessellateCadModel(const CadCommand& c) {
   if (!c.stats.empty() || c.json) {
     nlohmann::json report = cadStatsToJson(r);
     report["tolerance"]["given"] = spec.text;
-    report["run"] = {{"input", c.input},
-                     {"output", c.output.empty() ? nlohmann::json() : nlohmann::json(c.output)},
-                     {"backend", chosen.backend.name},
-                     {"device", chosen.context ? nlohmann::json(chosen.deviceName()) : nlohmann::json()}};
-    if (!c.stats.empty()) files.stage(c.stats, [&](std::ostream& out) { writeStats(out, report); });
-    if (c.json)
-      std::printf("%s\n", report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
+    report["run"] = runToJson(c.input, c.output, chosen.backend.name, chosen.context.get());
+    emitReport(report, files, c.stats, c.json);
   }
   files.commit();
   if (!c.quiet && !c.json) {

@@ -12,6 +12,7 @@
 #include "cli/commands.h"
 #include "cli/outputs.h"
 #include "cli/progress.h"
+#include "cli/run_report.h"
 #include "cli/setup_report.h"
 #include "cli/stdio.h"
 #include "cli/streamed_tessellate.h"
@@ -292,17 +293,10 @@ int run(const TessellateArgs& a) {
     else addUncomputedLowerBound(report);
     if (ruleT) addToleranceReport(report, t, toleranceSpec, options.tolerance);
     addWarnings(report, warnings);
-    report["run"] = {{"input", inputName},
-                     {"output", a.output.empty() ? nlohmann::json() : nlohmann::json(a.output)},
-                     {"backend", backend.name},
-                     {"device", context ? nlohmann::json(context->info().name) : nlohmann::json()},
-                     {"options", optionsToJson(options)}};
+    report["run"] = runToJson(inputName, a.output, backend.name, context.get());
+    report["run"]["options"] = optionsToJson(options);
     report["setup"] = setupToJson(context.get());
-    if (!a.stats.empty() && !statsToStdout)
-      files.stage(a.stats, [&](std::ostream& out) { writeStats(out, report); });
-    if (a.json || statsToStdout)
-      std::printf("%s\n",
-                  report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
+    emitReport(report, files, a.stats, a.json);
   }
   files.commit();
   if (summary) {

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
+#include "cli/run_report.h"
 #include "cli/setup_report.h"
 #include "common/memory_budget.h"
 #include "cli/stdio.h"
@@ -62,18 +63,11 @@ int tessellateStreamedToFile(const StreamedJob& job, const std::vector<BezierPat
         {"seamVertices", streamed.seamVertices},
         {"largestGroupBytes", streamed.largestGroupBytes},
         {"notComputed", {"patches", "levels", "warnings", "deviation"}}};
-    report["run"] = {{"input", job.inputName},
-                     {"output", job.output},
-                     {"backend", chosen.backend.name},
-                     {"device", chosen.context ? nlohmann::json(chosen.deviceName())
-                                               : nlohmann::json()},
-                     {"options", optionsToJson(options)}};
+    report["run"] = runToJson(job.inputName, job.output, chosen.backend.name,
+                              chosen.context.get());
+    report["run"]["options"] = optionsToJson(options);
     report["setup"] = setupToJson(chosen.context.get());
-    if (!job.stats.empty() && !statsToStdout)
-      files.stage(job.stats, [&](std::ostream& out) { writeStats(out, report); });
-    if (job.json || statsToStdout)
-      std::printf("%s\n",
-                  report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
+    emitReport(report, files, job.stats, job.json);
   }
   files.commit();
   if (summary) {
