@@ -12,6 +12,8 @@
 #include "cli/outputs.h"
 #include "io/surface_reader.h"
 #if TESSERA_HAVE_VIEWER
+#include "viewer/input_script.h"
+#include "viewer/view_state.h"
 #include "viewer/viewer.h"
 #include "viewer/window.h"
 #endif
@@ -28,6 +30,7 @@ struct ViewArgs {
   std::string cameraPath = "orbit";
   std::string screenshot;
   std::vector<std::string> dumpFrame;  // k, path
+  std::string script;
   bool wireframe = false;
   std::string colour = "shaded";
   std::string device;
@@ -50,7 +53,7 @@ int run(const ViewArgs& a) {
     throw CLI::ValidationError("--size", "expected WxH with each in 16..4096, got '" + a.size + "'");
   if (a.cameraPath != "orbit")
     throw CLI::ValidationError("--camera-path", "the one path is 'orbit', got '" + a.cameraPath + "'");
-  if (!(a.tolerance >= 0.125 && a.tolerance <= 64))
+  if (!(a.tolerance >= viewer::kMinTolerancePixels && a.tolerance <= viewer::kMaxTolerancePixels))
     throw CLI::ValidationError("--tolerance", "expected 0.125..64 pixels");
   if (a.colour == "shaded" || a.colour == "patch" || a.colour == "level")
     o.colouring = a.colour == "shaded" ? 0 : a.colour == "patch" ? 1 : 2;
@@ -72,7 +75,21 @@ int run(const ViewArgs& a) {
     o.dumpPath = a.dumpFrame[1];
     checkMeshFormat(o.dumpPath, "glb");
   }
-  checkOutputs({{"input", a.input}}, {{"--screenshot", a.screenshot}, {"--dump-frame", o.dumpPath}});
+  std::vector<NamedFile> outputs = {{"--screenshot", a.screenshot}, {"--dump-frame", o.dumpPath}};
+  if (!a.script.empty()) {
+    o.script = viewer::readInputScript(a.script);
+    for (const viewer::ScriptStep& step : o.script) {
+      if (a.frames > 0 && step.frame >= a.frames)
+        throw CLI::ValidationError("--script", a.script + ":" + std::to_string(step.line) +
+                                                   ": frame " + std::to_string(step.frame) +
+                                                   " is not below --frames " +
+                                                   std::to_string(a.frames));
+      if (step.kind == viewer::ScriptStep::Kind::Screenshot ||
+          step.kind == viewer::ScriptStep::Kind::Dump)
+        outputs.push_back({a.script + ":" + std::to_string(step.line), step.word});
+    }
+  }
+  checkOutputs({{"input", a.input}, {"--script", a.script}}, outputs);
   o.patches = readSurfaceFile(a.input);
   if (a.teapots > 0)
     o.patches = bench::perturbedCopies(o.patches, a.teapots,
@@ -131,6 +148,9 @@ void addViewCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--dump-frame", args.dumpFrame,
                   "K OUT.glb: write frame K's mesh as drawn (0-based)")
       ->expected(2);
+  cmd->add_option("--script", args.script,
+                  "FILE: keys, drags, wheel steps, screenshots and dumps at given frames "
+                  "(docs/cli.md); every frame's status line is printed");
   cmd->add_flag("--wireframe", args.wireframe, "start with the wireframe on (key W)");
   cmd->add_option("--colour", args.colour,
                   "start colouring: shaded, patch, or level (each patch's ⌈log2 max(N_u, N_v)⌉; key C)")

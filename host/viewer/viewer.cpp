@@ -12,6 +12,7 @@
 #include "viewer/orbit_camera.h"
 #include "viewer/overlay_text.h"
 #include "viewer/presenter.h"
+#include "viewer/view_state.h"
 #include "viewer/window.h"
 #include "vk/loader.h"
 
@@ -24,18 +25,6 @@ struct SurfaceHolder {
   VkSurfaceKHR surface;
   ~SurfaceHolder() { destroySurface(context, surface); }
 };
-
-constexpr double kMinTolerance = 0.125, kMaxTolerance = 64.0;
-
-struct ViewState {
-  bool wireframe = false;
-  bool frozen = false;
-  Colouring colouring = Colouring::Shaded;
-};
-
-const char* colouringName(Colouring c) {
-  return c == Colouring::Patch ? "patch" : c == Colouring::Depth ? "level" : "shaded";
-}
 
 gpu::MeshDrawPush meshPush(const OrbitCamera& orbit, const Camera& camera, const ViewState& s) {
   gpu::MeshDrawPush push{};
@@ -51,21 +40,28 @@ gpu::MeshDrawPush meshPush(const OrbitCamera& orbit, const Camera& camera, const
   return push;
 }
 
-std::string statusLine(double fps, size_t triangles, double errorPixels, double tolerance,
-                       const ViewState& s) {
-  char line[256];
-  std::snprintf(line, sizeof line,
-                "%.1f frames/s  %zu triangles  error %.2f px (tolerance %.3g px)  %s%s%s\n"
-                "drag turn, wheel zoom, W wires, C colour, +/- tolerance, F freeze, Esc",
-                fps, triangles, errorPixels, tolerance, colouringName(s.colouring),
-                s.wireframe ? " wire" : "", s.frozen ? "  FROZEN" : "");
-  return line;
+// The log (stdout): "view: frame K: TEXT", flushed so that a reader sees it at once.
+void logLine(bool quiet, int frame, const std::string& text) {
+  if (quiet) return;
+  std::printf("view: frame %d: %s\n", frame, text.c_str());
+  std::fflush(stdout);
 }
+
+// Orders steps and frame numbers by frame, for std::equal_range.
+struct ByFrame {
+  bool operator()(const ScriptStep& step, int frame) const { return step.frame < frame; }
+  bool operator()(int frame, const ScriptStep& step) const { return frame < step.frame; }
+};
 
 }  // namespace
 
 ViewerReport runViewer(const ViewerOptions& options) {
   const bool scripted = options.frames > 0;
+  const std::vector<ScriptStep>& script = options.script;
+  const int lastStepFrame = script.empty() ? -1 : script.back().frame;
+  bool screenshots = !options.screenshot.empty();
+  for (const ScriptStep& step : script)
+    screenshots = screenshots || step.kind == ScriptStep::Kind::Screenshot;
   Window window(options.width, options.height, options.title);
   vk::ContextOptions contextOptions;
   contextOptions.device = options.device;
@@ -81,14 +77,15 @@ ViewerReport runViewer(const ViewerOptions& options) {
                                   "' cannot present to this window");
 
   FrameSource source(context, options.patches, options.tolerancePixels);
-  Presenter presenter(context, window, surface.surface, !options.screenshot.empty());
+  Presenter presenter(context, window, surface.surface, screenshots);
   const VkExtent2D first = presenter.extent();
   const OrbitCamera start =
       OrbitCamera::framing(options.patches, double(first.width) / double(first.height));
-  OrbitCamera orbit = start;
+  OrbitCamera orbit = start;  // where the mouse has put it
   ViewState state;
   state.wireframe = options.wireframe;
   state.colouring = Colouring(options.colouring);
+  state.tolerancePixels = options.tolerancePixels;
 
   vk::Buffer meshVertices, overlayVertices;
   std::vector<uint8_t> screenshot;
@@ -98,66 +95,78 @@ ViewerReport runViewer(const ViewerOptions& options) {
   bool fpsWindowDone = false;
   double fps = 0, errorPixels = 0;
   bool measureNow = true;
+  int injectedFrame = -1;  // a frame drawn again after a resize takes its steps once
   for (int frame = 0; !window.closeRequested();) {
     if (window.waitWhileMinimised()) continue;
-    const InputEvents input = window.poll();
-    for (KeyAction key : input.keys) {
-      switch (key) {
-        case KeyAction::Wireframe: state.wireframe = !state.wireframe; break;
-        case KeyAction::Colour:
-          state.colouring = state.colouring == Colouring::Shaded  ? Colouring::Patch
-                            : state.colouring == Colouring::Patch ? Colouring::Depth
-                                                                  : Colouring::Shaded;
-          break;
-        case KeyAction::Finer:
-        case KeyAction::Coarser: {
-          const double factor = key == KeyAction::Finer ? 0.5 : 2.0;
-          const double next = source.tolerance() * factor;
-          if (next >= kMinTolerance && next <= kMaxTolerance) {
-            source.setTolerance(next);
-            state.frozen = false;  // the frozen frame belonged to the old tessellator
-            measureNow = true;
-          }
-          break;
-        }
-        case KeyAction::Freeze: state.frozen = !state.frozen; break;
-        case KeyAction::Quit: window.requestClose(); break;
+    const auto [firstStep, lastStep] = std::equal_range(script.begin(), script.end(), frame,
+                                                        ByFrame());
+    if (injectedFrame != frame) {
+      for (auto step = firstStep; step != lastStep; ++step) {
+        if (step->kind == ScriptStep::Kind::Key) window.injectKey(step->glfwKey);
+        if (step->kind == ScriptStep::Kind::Drag) window.injectDrag(step->x, step->y);
+        if (step->kind == ScriptStep::Kind::Wheel) window.injectWheel(step->x);
       }
+      injectedFrame = frame;
+    }
+    const InputEvents input = window.poll();
+    for (KeyAction key : input.keys) logLine(options.quiet, frame, applyKey(key, state));
+    if (state.quit) window.requestClose();
+    if (state.tolerancePixels != source.tolerance()) {
+      source.setTolerance(state.tolerancePixels);
+      measureNow = true;
+    }
+    if (!script.empty() && (input.dragX != 0 || input.dragY != 0 || input.wheel != 0)) {
+      char moved[96];
+      std::snprintf(moved, sizeof moved, "drag %g %g, wheel %g", input.dragX, input.dragY,
+                    input.wheel);
+      logLine(options.quiet, frame, moved);
     }
     orbit.drag(input.dragX, input.dragY, int(presenter.extent().width));
     orbit.zoom(input.wheel);
-    if (scripted) orbit = orbitPathFrame(start, frame, options.frames);
+    const OrbitCamera view = scripted ? orbitPathFrame(orbit, frame, options.frames) : orbit;
 
     const VkExtent2D extent = presenter.extent();
-    const Camera camera = orbit.camera(int(extent.width), int(extent.height));
+    const Camera camera = view.camera(int(extent.width), int(extent.height));
     if (!state.frozen || !source.lastFrame()) source.tessellate(camera);
     const size_t triangles = source.lastFrame()->triangles;
-    if (frame == options.dumpFrame && !options.dumpPath.empty())
-      writeGlbFile(options.dumpPath, source.lastMesh());
-    // The error check re-evaluates every triangle in double: about once a second, and on the
-    // scripted path's last frame (the screenshot's).
+    // The error check re-evaluates every triangle in double: about once a second, on the
+    // scripted path's last frame (the screenshot's), and every frame of a script (its log).
     const bool lastFrame = scripted && frame == options.frames - 1;
-    if (measureNow || lastFrame || sinceError.elapsedSeconds() > 1.0) {
+    if (measureNow || lastFrame || !script.empty() || sinceError.elapsedSeconds() > 1.0) {
       errorPixels = source.measureError(camera).maxAffinePixels;
       sinceError.restart();
       measureNow = false;
     }
 
     const uint32_t meshCount = source.writeDrawVertices(state.colouring, meshVertices);
+    const std::string status = statusLine(fps, triangles, errorPixels, state);
     const std::vector<DrawVertex> text = overlayTriangles(
-        statusLine(fps, triangles, errorPixels, source.tolerance(), state),
+        status + "\ndrag turn, wheel zoom, W wires, C colour, +/- tolerance, F freeze, Esc",
         extent.width >= 900 ? 2 : 1);
     if (overlayVertices.size() < text.size() * sizeof(DrawVertex))
       overlayVertices = vk::Buffer(context, 2 * text.size() * sizeof(DrawVertex),
                                    vk::BufferUse::Upload, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
     overlayVertices.upload(text);
     const std::vector<DrawCall> calls = {
-        {meshVertices.handle(), meshCount, meshPush(orbit, camera, state)},
+        {meshVertices.handle(), meshCount, meshPush(view, camera, state)},
         {overlayVertices.handle(), uint32_t(text.size()),
          overlayPush(int(extent.width), int(extent.height))}};
-    const bool wantPicture = lastFrame && !options.screenshot.empty();
+    bool wantPicture = lastFrame && !options.screenshot.empty();
+    for (auto step = firstStep; step != lastStep; ++step)
+      wantPicture = wantPicture || step->kind == ScriptStep::Kind::Screenshot;
     if (!presenter.present(calls, wantPicture ? &screenshot : nullptr))
       continue;  // the window changed size: the same frame again at the new size
+
+    if (!script.empty()) logLine(options.quiet, frame, status);
+    if (frame == options.dumpFrame && !options.dumpPath.empty())
+      writeGlbFile(options.dumpPath, source.lastMesh());
+    if (lastFrame && !options.screenshot.empty())
+      writePngFile(options.screenshot, screenshot, int(extent.width), int(extent.height));
+    for (auto step = firstStep; step != lastStep; ++step) {
+      if (step->kind == ScriptStep::Kind::Screenshot)
+        writePngFile(step->word, screenshot, int(extent.width), int(extent.height));
+      if (step->kind == ScriptStep::Kind::Dump) writeGlbFile(step->word, source.lastMesh());
+    }
 
     ++frame;
     ++framesSinceFps;
@@ -172,9 +181,7 @@ ViewerReport runViewer(const ViewerOptions& options) {
     report.frames = frame;
     report.lastTriangles = triangles;
     report.lastErrorPixels = errorPixels;
-    if (wantPicture) writePngFile(options.screenshot, screenshot, int(extent.width),
-                                  int(extent.height));
-    if (scripted && frame == options.frames) break;
+    if (scripted ? frame == options.frames : frame == lastStepFrame + 1) break;
   }
   report.framesPerSecond = report.frames / std::max(sinceStart.elapsedSeconds(), 1e-9);
   report.validationMessages = context.validationMessageCount();

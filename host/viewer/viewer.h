@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geometry/patch.h"
+#include "viewer/input_script.h"
 
 namespace tessera::viewer {
 
@@ -17,14 +18,19 @@ struct ViewerOptions {
   double tolerancePixels = 1.0;
   std::string device;       // as --device elsewhere
   bool validation = false;  // Khronos validation required; every message is counted
-  // Scripted: `frames` > 0 frames along the orbit path, then exit (the keys still work).
+  // Scripted: `frames` > 0 frames along the orbit path (turning the camera the mouse has
+  // set), then exit (the keys still work).
   int frames = 0;
+  // Input and pictures at given frames (viewer/input_script.h), steps below `frames` when it
+  // is set; without `frames` the run ends after the last step's frame. Each key's effect,
+  // each scripted drag and wheel step, and every frame's status line are printed.
+  std::vector<ScriptStep> script;
   std::string screenshot;  // the last frame as PNG ("" = none); needs frames > 0
   int dumpFrame = -1;      // this frame's mesh (0-based) ...
   std::string dumpPath;    // ... as .glb
   bool wireframe = false;
   int colouring = 0;  // Colouring (viewer/frame_source.h) to start with: 0 shaded, 1 patch, 2 level
-  bool quiet = false;
+  bool quiet = false;  // nothing printed, not even the keys' effects
 };
 
 struct ViewerReport {

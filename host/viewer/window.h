@@ -2,6 +2,7 @@
 // that includes GLFW: the library and the rest of the viewer never see it.
 #pragma once
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -22,6 +23,13 @@ class WindowSystemUnavailable : public std::runtime_error {
 
 // The viewer's keys (docs/cli.md, `tessera view`).
 enum class KeyAction { Wireframe, Colour, Finer, Coarser, Freeze, Quit };
+
+// The key bindings: the action of GLFW's key code `glfwKey`, none for a key the viewer leaves
+// alone. Real key presses and scripted ones (--script) both go through it.
+std::optional<KeyAction> keyActionFor(int glfwKey);
+// The GLFW key code of a key as a script names it: a letter A..Z (either case), "=" or "+"
+// (the same key), "-", "KP+", "KP-", "Esc"; -1 for any other name.
+int glfwKeyNamed(const std::string& name);
 
 // What happened since the last poll: key presses, the mouse drag in pixels with the left
 // button held, and wheel steps (positive: away from the user, zoom in).
@@ -53,6 +61,12 @@ class Window {
   void requestClose();
   void setTitle(const std::string& title);
   InputEvents poll();
+
+  // Scripted input (--script): fed through the handlers GLFW's callbacks call, so the next
+  // poll() reports it as it would a real key press, a drag with the left button, or the wheel.
+  void injectKey(int glfwKey);
+  void injectDrag(double dx, double dy);
+  void injectWheel(double steps);
 
  private:
   GLFWwindow* window_ = nullptr;

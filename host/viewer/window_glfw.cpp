@@ -1,5 +1,7 @@
 #include "viewer/window.h"
 
+#include <cctype>
+
 #include "vk/loader.h"  // Vulkan types before GLFW, so glfwCreateWindowSurface is declared
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -11,29 +13,60 @@ std::string lastGlfwError;  // GLFW reports failures through a callback, not ret
 
 void recordGlfwError(int, const char* description) { lastGlfwError = description; }
 
-// W wireframe, C colouring, + and - the tolerance (either row of keys), F freeze, Esc or Q quit.
-bool keyAction(int key, KeyAction& action) {
-  switch (key) {
-    case GLFW_KEY_W: action = KeyAction::Wireframe; return true;
-    case GLFW_KEY_C: action = KeyAction::Colour; return true;
-    case GLFW_KEY_EQUAL: case GLFW_KEY_KP_ADD: action = KeyAction::Coarser; return true;
-    case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: action = KeyAction::Finer; return true;
-    case GLFW_KEY_F: action = KeyAction::Freeze; return true;
-    case GLFW_KEY_ESCAPE: case GLFW_KEY_Q: action = KeyAction::Quit; return true;
-    default: return false;
-  }
-}
-
 std::string glfwReason() {
   return lastGlfwError.empty() ? std::string("no reason given") : lastGlfwError;
 }
 
 }  // namespace
 
+// W wireframe, C colouring, + and - the tolerance (either row of keys), F freeze, Esc or Q quit.
+std::optional<KeyAction> keyActionFor(int glfwKey) {
+  switch (glfwKey) {
+    case GLFW_KEY_W: return KeyAction::Wireframe;
+    case GLFW_KEY_C: return KeyAction::Colour;
+    case GLFW_KEY_EQUAL: case GLFW_KEY_KP_ADD: return KeyAction::Coarser;
+    case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: return KeyAction::Finer;
+    case GLFW_KEY_F: return KeyAction::Freeze;
+    case GLFW_KEY_ESCAPE: case GLFW_KEY_Q: return KeyAction::Quit;
+    default: return std::nullopt;
+  }
+}
+
+int glfwKeyNamed(const std::string& name) {
+  if (name.size() == 1 && std::isalpha(static_cast<unsigned char>(name[0])))
+    return GLFW_KEY_A + (std::toupper(static_cast<unsigned char>(name[0])) - 'A');
+  if (name == "=" || name == "+") return GLFW_KEY_EQUAL;  // '+' is shifted '=' on the keyboard
+  if (name == "-") return GLFW_KEY_MINUS;
+  if (name == "KP+") return GLFW_KEY_KP_ADD;
+  if (name == "KP-") return GLFW_KEY_KP_SUBTRACT;
+  if (name == "Esc") return GLFW_KEY_ESCAPE;
+  return -1;
+}
+
+// The input handlers: GLFW's callbacks and the scripted input both call these.
 struct Window::State {
   InputEvents pending;
   bool dragging = false;
   double lastX = 0, lastY = 0;
+
+  void key(int glfwKey) {
+    if (const std::optional<KeyAction> action = keyActionFor(glfwKey))
+      pending.keys.push_back(*action);
+  }
+  void leftButton(bool pressed, double x, double y) {
+    dragging = pressed;
+    lastX = x;
+    lastY = y;
+  }
+  void cursor(double x, double y) {
+    if (dragging) {
+      pending.dragX += x - lastX;
+      pending.dragY += y - lastY;
+    }
+    lastX = x;
+    lastY = y;
+  }
+  void wheel(double steps) { pending.wheel += steps; }
 };
 
 Window::Window(int width, int height, const std::string& title) : state_(new State) {
@@ -55,27 +88,20 @@ Window::Window(int width, int height, const std::string& title) : state_(new Sta
   }
   glfwSetWindowUserPointer(window_, state_.get());
   glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int) {
-    KeyAction viewerAction;
-    if ((action == GLFW_PRESS || action == GLFW_REPEAT) && keyAction(key, viewerAction))
-      static_cast<State*>(glfwGetWindowUserPointer(w))->pending.keys.push_back(viewerAction);
+    if (action == GLFW_PRESS || action == GLFW_REPEAT)
+      static_cast<State*>(glfwGetWindowUserPointer(w))->key(key);
   });
   glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int button, int action, int) {
-    auto* s = static_cast<State*>(glfwGetWindowUserPointer(w));
     if (button != GLFW_MOUSE_BUTTON_LEFT) return;
-    s->dragging = action == GLFW_PRESS;
-    glfwGetCursorPos(w, &s->lastX, &s->lastY);
+    double x = 0, y = 0;
+    glfwGetCursorPos(w, &x, &y);
+    static_cast<State*>(glfwGetWindowUserPointer(w))->leftButton(action == GLFW_PRESS, x, y);
   });
   glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double x, double y) {
-    auto* s = static_cast<State*>(glfwGetWindowUserPointer(w));
-    if (s->dragging) {
-      s->pending.dragX += x - s->lastX;
-      s->pending.dragY += y - s->lastY;
-    }
-    s->lastX = x;
-    s->lastY = y;
+    static_cast<State*>(glfwGetWindowUserPointer(w))->cursor(x, y);
   });
   glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double dy) {
-    static_cast<State*>(glfwGetWindowUserPointer(w))->pending.wheel += dy;
+    static_cast<State*>(glfwGetWindowUserPointer(w))->wheel(dy);
   });
 }
 
@@ -126,5 +152,17 @@ InputEvents Window::poll() {
   state_->pending = {};
   return events;
 }
+
+void Window::injectKey(int glfwKey) { state_->key(glfwKey); }
+
+// Press where the cursor was last seen, move by (dx, dy), release: as a hand would drag.
+void Window::injectDrag(double dx, double dy) {
+  const double x = state_->lastX, y = state_->lastY;
+  state_->leftButton(true, x, y);
+  state_->cursor(x + dx, y + dy);
+  state_->leftButton(false, x + dx, y + dy);
+}
+
+void Window::injectWheel(double steps) { state_->wheel(steps); }
 
 }  // namespace tessera::viewer

@@ -1,6 +1,7 @@
 # Runs `tessera view` scripted under a virtual X server (xvfb-run), then viewer_check on what it
 # wrote. MODE picture: --screenshot, the picture must show a mesh; MODE mesh: --dump-frame, the
-# frame must have no T-junction. The viewer runs with --validation: any message fails it.
+# frame must have no T-junction; MODE keys: --script SCRIPT in OUT_DIR/keys, whose log and
+# files viewer_check keys reads. The viewer runs with --validation: any message fails it.
 # Without xvfb-run the test FAILS (a GPU run that cannot run the viewer must not pass quietly);
 # a CPU-only run (ctest -LE gpu) leaves these tests out by their label.
 find_program(XVFB_RUN xvfb-run)
@@ -8,7 +9,17 @@ if(NOT XVFB_RUN)
   message(FATAL_ERROR "xvfb-run is missing (apt-get install xvfb): the viewer tests need a "
                       "virtual X server. Run `ctest -LE gpu` for a deliberate CPU-only run.")
 endif()
-if(MODE STREQUAL "picture")
+set(workdir ${OUT_DIR})
+set(size 640x360)
+if(MODE STREQUAL "keys")
+  set(workdir ${OUT_DIR}/keys)
+  set(output ${workdir}/view.log)
+  file(REMOVE_RECURSE ${workdir})
+  file(MAKE_DIRECTORY ${workdir})
+  set(size 480x270)
+  set(viewer_args --script ${SCRIPT})
+  set(check_args keys ${output} ${workdir})
+elseif(MODE STREQUAL "picture")
   set(output ${OUT_DIR}/viewer_frames.png)
   set(viewer_args --frames 30 --screenshot ${output})
   set(check_args picture ${output} 0.03 200)
@@ -20,9 +31,12 @@ endif()
 file(REMOVE ${output})
 execute_process(
   COMMAND ${XVFB_RUN} -a -s "-screen 0 1280x800x24" ${TESSERA} view ${SCENE} --validation
-          --size 640x360 ${viewer_args}
-  RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+          --size ${size} ${viewer_args}
+  WORKING_DIRECTORY ${workdir} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("${out}${err}")
+if(MODE STREQUAL "keys")
+  file(WRITE ${output} "${out}")
+endif()
 if(NOT code EQUAL 0)
   message(FATAL_ERROR "tessera view exited with ${code}")
 endif()

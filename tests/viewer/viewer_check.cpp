@@ -5,13 +5,20 @@
 //     at least that many distinct colours (shading, not a flat fill);
 //   viewer_check mesh FRAME.glb
 //     the dumped frame, its vertices welded where positions are equal bit for bit, has no
-//     T-junction and no edge used by three triangles (tests/mesh_checks.h).
+//     T-junction and no edge used by three triangles (tests/mesh_checks.h);
+//   viewer_check keys LOG DIR
+//     the run of keys_script.txt: its log (every frame's status line, every key's effect) and
+//     the pictures and meshes it wrote into DIR show that each key and the drag did their job
+//     (checkKeys below says how).
 // Prints what it measured either way; exit 0 when the check holds, 1 when not, 2 on bad input.
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <cmath>
+#include <functional>
 #include <map>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -134,13 +141,274 @@ int checkMesh(const char* path) {
   return mesh.triangleCount() > 0 && tJunctions == 0 && census.overusedEdges == 0 ? 0 : 1;
 }
 
+// ---- viewer_check keys -------------------------------------------------------------------
+
+// One frame's status line, as the log prints it (viewer/view_state.h, statusLine).
+struct FrameStatus {
+  double fps = 0;
+  size_t triangles = 0;
+  double error = 0, tolerance = 0;
+  std::string colour;
+  bool wire = false, frozen = false;
+};
+
+struct KeysLog {
+  std::map<int, FrameStatus> frames;
+  std::vector<std::pair<int, std::string>> events;  // (frame, what the key or mouse did)
+};
+
+bool readKeysLog(const char* path, KeysLog& log) {
+  std::ifstream in(path);
+  if (!in) return false;
+  const std::regex status(
+      R"(view: frame (\d+): ([0-9.]+) frames/s  (\d+) triangles  error ([0-9.]+) px )"
+      R"(\(tolerance ([0-9.e+-]+) px\)  (shaded|patch|level)( wire)?(  FROZEN)?)");
+  const std::regex event(R"(view: frame (\d+): (.*))");
+  std::string line;
+  std::smatch m;
+  while (std::getline(in, line)) {
+    if (std::regex_match(line, m, status)) {
+      FrameStatus f{std::stod(m[2]), std::stoul(m[3]), std::stod(m[4]), std::stod(m[5]),
+                    m[6], m[7].matched, m[8].matched};
+      log.frames[std::stoi(m[1])] = f;
+    } else if (std::regex_match(line, m, event)) {
+      log.events.emplace_back(std::stoi(m[1]), m[2]);
+    }
+  }
+  return true;
+}
+
+struct Rgb {
+  int r, g, b;
+};
+
+std::vector<Rgb> meshPixels(const std::string& path, int& width, int& height) {
+  int channels = 0;
+  stbi_uc* pixels = stbi_load(path.c_str(), &width, &height, &channels, 4);
+  if (!pixels) throw std::runtime_error(path + ": not a PNG");
+  const std::array<uint8_t, 3> overlay[2] = {{255, 255, 255}, {31, 31, 31}};
+  std::vector<Rgb> out;
+  for (size_t p = 0; p < size_t(width) * height; ++p) {
+    const stbi_uc* c = &pixels[4 * p];
+    bool background = std::memcmp(c, tessera::kRenderBackground.data(), 3) == 0;
+    for (const auto& o : overlay) background = background || std::memcmp(c, o.data(), 3) == 0;
+    if (!background) out.push_back({c[0], c[1], c[2]});
+  }
+  stbi_image_free(pixels);
+  return out;
+}
+
+// The wireframe darkens edges to a quarter of the surface's colour (shaders/mesh.frag.glsl);
+// lit or not, the filled surface stays above this grey (ambient 0.2 of the porcelain: ~106).
+double darkFraction(const std::vector<Rgb>& pixels) {
+  size_t dark = 0;
+  for (const Rgb& p : pixels) dark += std::max({p.r, p.g, p.b}) < 80;
+  return pixels.empty() ? 0 : double(dark) / double(pixels.size());
+}
+
+// The mesh's pixels matched to a palette's colours. Light scales a colour (shading in linear
+// light, then gamma: the result is the sRGB colour times one factor), so a pixel's direction
+// in RGB is its palette colour's; pixels brighter than 60 are matched within 2 degrees.
+// Returns the share of those pixels matched, and how many colours got at least 0.5% of them.
+std::pair<double, int> paletteMatch(const std::vector<Rgb>& pixels,
+                                    const std::vector<std::array<uint8_t, 3>>& palette) {
+  std::vector<size_t> hits(palette.size(), 0);
+  size_t bright = 0, matched = 0;
+  const double cosLimit = std::cos(2.0 * 3.14159265358979 / 180);
+  for (const Rgb& p : pixels) {
+    if (std::max({p.r, p.g, p.b}) <= 60) continue;
+    ++bright;
+    const double pl = std::sqrt(double(p.r * p.r + p.g * p.g + p.b * p.b));
+    for (size_t k = 0; k < palette.size(); ++k) {
+      const auto& c = palette[k];
+      const double cl = std::sqrt(double(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]));
+      if ((p.r * c[0] + p.g * c[1] + p.b * c[2]) / (pl * cl) >= cosLimit) {
+        ++hits[k];
+        ++matched;
+        break;
+      }
+    }
+  }
+  int used = 0;
+  for (size_t h : hits) used += h >= 0.005 * double(bright) && h > 0;
+  return {bright ? double(matched) / double(bright) : 0.0, used};
+}
+
+std::vector<std::array<uint8_t, 3>> palette(tessera::RenderOptions::Colour colour, int size) {
+  std::vector<std::array<uint8_t, 3>> out;
+  for (int k = 0; k < size; ++k) out.push_back(tessera::paletteColour(colour, k));
+  return out;
+}
+
+std::string fileBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  if (!in) throw std::runtime_error(path + ": cannot be read");
+  return buffer.str();
+}
+
+// What keys_script.txt did, from the log and the files:
+// - every frame has its status line, with frames/s (from frame 1 on), triangles > 0, an error
+//   within the tolerance while the mesh is not frozen; the run ends at Esc;
+// - each key's effect is seen between its frame's line and the one before: W flips " wire"
+//   and keeps the triangles; C goes shaded -> patch -> level -> shaded; + doubles the
+//   tolerance, fewer triangles and a larger error, - the opposite; F flips FROZEN, and frozen
+//   frames keep their triangles while a drag turns the camera (the error moves) and the wheel
+//   brings it nearer (the error grows); thawed, the wheel farther gives fewer triangles;
+// - the pictures: the wireframe's dark lines; the shaded, patch and level pictures in the
+//   colours of their palettes (patch: several colours, level: its own palette); the drag turns
+//   the picture although the mesh is frozen;
+// - the meshes: frozen, a later frame's mesh equals the earlier one byte for byte, though the
+//   camera moved; thawed, a drag gives a new mesh.
+int checkKeys(const char* logPath, const std::string& dir) {
+  KeysLog log;
+  if (!readKeysLog(logPath, log) || log.frames.empty()) {
+    std::fprintf(stderr, "viewer_check: %s: no status lines\n", logPath);
+    return 2;
+  }
+  int failures = 0;
+  auto expect = [&](bool ok, const std::string& what) {
+    std::printf("%s: %s\n", ok ? "ok  " : "FAIL", what.c_str());
+    failures += !ok;
+  };
+  const int lastFrame = log.frames.rbegin()->first;
+  expect(int(log.frames.size()) == lastFrame + 1 && lastFrame == 19,
+         "a status line for each of frames 0.." + std::to_string(lastFrame) + ", Esc's 19");
+  for (const auto& [frame, f] : log.frames) {
+    const std::string at = "frame " + std::to_string(frame) + ": ";
+    if (frame > 0) expect(f.fps > 0, at + "frames/s " + std::to_string(f.fps) + " > 0");
+    expect(f.triangles > 0, at + std::to_string(f.triangles) + " triangles > 0");
+    if (!f.frozen)
+      expect(f.error > 0 && f.error <= f.tolerance,
+             at + "error " + std::to_string(f.error) + " px within the tolerance " +
+                 std::to_string(f.tolerance));
+  }
+  std::set<std::string> seen;
+  for (const auto& [frame, what] : log.events) {
+    if (frame == 0 || !log.frames.count(frame) || !log.frames.count(frame - 1)) {
+      expect(false, what + " at frame " + std::to_string(frame) + " has no frame before it");
+      continue;
+    }
+    const FrameStatus &before = log.frames[frame - 1], &after = log.frames[frame];
+    const std::string at = "frame " + std::to_string(frame) + ", " + what + ": ";
+    const std::string kind = what.substr(0, what.find(' '));
+    seen.insert(what.rfind("tolerance", 0) == 0 ? (after.tolerance > before.tolerance ? "+" : "-")
+                                                : what.rfind("drag", 0) == 0 ? kind : what);
+    if (what == "wireframe on" || what == "wireframe off") {
+      expect(after.wire == (what == "wireframe on") && before.wire != after.wire &&
+                 after.triangles == before.triangles,
+             at + "the line's ' wire' flips, the triangles stay");
+    } else if (what.rfind("colour ", 0) == 0) {
+      const std::map<std::string, std::string> next = {
+          {"shaded", "patch"}, {"patch", "level"}, {"level", "shaded"}};
+      expect(next.at(before.colour) == after.colour && what == "colour " + after.colour,
+             at + before.colour + " -> " + after.colour);
+    } else if (what.rfind("tolerance ", 0) == 0) {
+      const bool coarser = after.tolerance == 2 * before.tolerance;
+      const bool finer = after.tolerance == 0.5 * before.tolerance;
+      expect(coarser ? after.triangles < before.triangles && after.error > before.error
+                     : finer && after.triangles > before.triangles && after.error < before.error,
+             at + std::to_string(before.triangles) + " -> " + std::to_string(after.triangles) +
+                 " triangles, error " + std::to_string(before.error) + " -> " +
+                 std::to_string(after.error) + " px");
+    } else if (what == "frozen" || what == "unfrozen") {
+      expect(after.frozen == (what == "frozen") && before.frozen != after.frozen,
+             at + "the line's FROZEN flips");
+    } else if (what.rfind("drag", 0) == 0) {
+      const double wheel = std::stod(what.substr(what.find("wheel ") + 6));
+      const bool frozen = before.frozen && after.frozen;
+      if (frozen)
+        expect(after.triangles == before.triangles && after.error != before.error,
+               at + "frozen: the triangles stay (" + std::to_string(after.triangles) +
+                   "), the error moves (" + std::to_string(before.error) + " -> " +
+                   std::to_string(after.error) + " px)");
+      if (wheel != 0) seen.insert("wheel");
+      if (wheel > 0 && frozen)
+        expect(after.error > 1.1 * before.error,  // 2 steps: 0.81 the distance, ~1.23 the error
+               at + "nearer, frozen: the error grows, " + std::to_string(before.error) +
+                   " -> " + std::to_string(after.error) + " px");
+      if (wheel != 0 && !frozen)
+        expect(wheel > 0 ? after.triangles > before.triangles
+                         : after.triangles < before.triangles,
+               at + (wheel > 0 ? "nearer: " : "farther: ") + std::to_string(before.triangles) +
+                   " -> " + std::to_string(after.triangles) + " triangles");
+    } else if (what != "quit") {
+      expect(false, at + "an event this check does not know");
+    }
+  }
+  for (const char* needed : {"wireframe on", "wireframe off", "colour patch", "colour level",
+                             "colour shaded", "+", "-", "frozen", "unfrozen", "drag", "wheel",
+                             "quit"})
+    expect(seen.count(needed) == 1, std::string("the log shows '") + needed + "'");
+  for (const auto& [frame, f] : log.frames)
+    if (frame > 0 && f.frozen && log.frames[frame - 1].frozen)
+      expect(f.triangles == log.frames[frame - 1].triangles,
+             "frame " + std::to_string(frame) + ": frozen, the triangles stay");
+
+  try {
+    int w = 0, h = 0;
+    const std::vector<Rgb> filled = meshPixels(dir + "/keys_filled.png", w, h);
+    const std::vector<Rgb> wire = meshPixels(dir + "/keys_wire.png", w, h);
+    const double darkFilled = darkFraction(filled), darkWire = darkFraction(wire);
+    expect(darkFilled < 0.005 && darkWire > 0.05 && filled.size() > 0.03 * w * h,
+           "wireframe: dark line pixels " + std::to_string(100 * darkFilled) + "% of the " +
+               "mesh filled, " + std::to_string(100 * darkWire) + "% with wires");
+    using C = tessera::RenderOptions::Colour;
+    const auto porcelain = palette(C::Shaded, 1), patch = palette(C::Patch, 10),
+               level = palette(C::Depth, 11);
+    for (const char* name : {"keys_filled.png", "keys_shaded.png"}) {
+      const auto [share, used] = paletteMatch(meshPixels(dir + "/" + name, w, h), porcelain);
+      expect(share > 0.97, std::string(name) + ": " + std::to_string(100 * share) +
+                               "% of the mesh in the porcelain colour");
+    }
+    const std::vector<Rgb> patchPixels = meshPixels(dir + "/keys_patch.png", w, h);
+    const std::vector<Rgb> levelPixels = meshPixels(dir + "/keys_level.png", w, h);
+    const auto [patchShare, patchUsed] = paletteMatch(patchPixels, patch);
+    const auto [patchAsPorcelain, unused1] = paletteMatch(patchPixels, porcelain);
+    expect(patchShare > 0.97 && patchUsed >= 6 && patchAsPorcelain < 0.5,
+           "patch colours: " + std::to_string(100 * patchShare) + "% in the patch palette, " +
+               std::to_string(patchUsed) + " of its colours (need 6), " +
+               std::to_string(100 * patchAsPorcelain) + "% porcelain");
+    const auto [levelShare, levelUsed] = paletteMatch(levelPixels, level);
+    const auto [levelAsPatch, unused2] = paletteMatch(levelPixels, patch);
+    expect(levelShare > 0.97 && levelUsed >= 2 && levelAsPatch < 0.5,
+           "level colours: " + std::to_string(100 * levelShare) + "% in the level palette, " +
+               std::to_string(levelUsed) + " of its colours (need 2), " +
+               std::to_string(100 * levelAsPatch) + "% in the patch palette");
+    const std::string before = fileBytes(dir + "/keys_before_drag.png");
+    const std::string after = fileBytes(dir + "/keys_after_drag.png");
+    const std::vector<Rgb> beforeMesh = meshPixels(dir + "/keys_before_drag.png", w, h);
+    const std::vector<Rgb> afterMesh = meshPixels(dir + "/keys_after_drag.png", w, h);
+    expect(before != after && beforeMesh.size() != afterMesh.size(),
+           "the drag turns the view: " + std::to_string(beforeMesh.size()) + " -> " +
+               std::to_string(afterMesh.size()) + " mesh pixels");
+    const std::string frozenA = fileBytes(dir + "/keys_frozen_a.glb");
+    const std::string frozenB = fileBytes(dir + "/keys_frozen_b.glb");
+    const std::string thawedA = fileBytes(dir + "/keys_thawed_a.glb");
+    const std::string thawedB = fileBytes(dir + "/keys_thawed_b.glb");
+    expect(!frozenA.empty() && frozenA == frozenB,
+           "frozen: the mesh after the drag is the mesh before it, byte for byte (" +
+               std::to_string(frozenA.size()) + " bytes)");
+    expect(thawedA != frozenB, "thawed: the mesh is made again for the turned camera");
+    expect(thawedA != thawedB, "thawed: a drag gives a new mesh");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "viewer_check: %s\n", e.what());
+    return 2;
+  }
+  std::printf("%d failed\n", failures);
+  return failures == 0 ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc == 5 && std::strcmp(argv[1], "picture") == 0)
     return checkPicture(argv[2], std::atof(argv[3]), size_t(std::atol(argv[4])));
   if (argc == 3 && std::strcmp(argv[1], "mesh") == 0) return checkMesh(argv[2]);
+  if (argc == 4 && std::strcmp(argv[1], "keys") == 0) return checkKeys(argv[2], argv[3]);
   std::fprintf(stderr, "usage: viewer_check picture SHOT.png MIN_MESH_FRACTION MIN_COLOURS\n"
-                       "       viewer_check mesh FRAME.glb\n");
+                       "       viewer_check mesh FRAME.glb\n"
+                       "       viewer_check keys LOG DIR\n");
   return 2;
 }
