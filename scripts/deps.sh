@@ -9,8 +9,8 @@ packages=(
   glslang-tools spirv-tools
   libglm-dev libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev libstb-dev
   libosd-dev
-  # tessera view (host/viewer/): the window, and a virtual X server for its tests
-  libglfw3-dev xvfb
+  # tessera view (host/viewer/): the window, and a virtual X server and X input for its tests
+  libglfw3-dev xvfb xdotool
   # the Python module (python/, TESSERA_BUILD_PYTHON) and its test
   pybind11-dev python3-dev python3-numpy
   # the sanitizer and fuzz build of scripts/test.sh: clang, and libFuzzer's runtime

@@ -47,17 +47,16 @@ int glfwKeyNamed(const std::string& name) {
 struct Window::State {
   InputEvents pending;
   bool dragging = false;
+  bool cursorSeen = false;  // lastX, lastY hold a motion event's position
   double lastX = 0, lastY = 0;
 
   void key(int glfwKey) {
     if (const std::optional<KeyAction> action = keyActionFor(glfwKey))
       pending.keys.push_back(*action);
   }
-  void leftButton(bool pressed, double x, double y) {
-    dragging = pressed;
-    lastX = x;
-    lastY = y;
-  }
+  // The press is where the last motion event put the cursor: events come in order, and one
+  // poll may hold the press, the whole drag and the release (a slow frame, a quick hand).
+  void leftButton(bool pressed) { dragging = pressed; }
   void cursor(double x, double y) {
     if (dragging) {
       pending.dragX += x - lastX;
@@ -65,6 +64,7 @@ struct Window::State {
     }
     lastX = x;
     lastY = y;
+    cursorSeen = true;
   }
   void wheel(double steps) { pending.wheel += steps; }
 };
@@ -93,9 +93,10 @@ Window::Window(int width, int height, const std::string& title) : state_(new Sta
   });
   glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int button, int action, int) {
     if (button != GLFW_MOUSE_BUTTON_LEFT) return;
-    double x = 0, y = 0;
-    glfwGetCursorPos(w, &x, &y);
-    static_cast<State*>(glfwGetWindowUserPointer(w))->leftButton(action == GLFW_PRESS, x, y);
+    auto* s = static_cast<State*>(glfwGetWindowUserPointer(w));
+    // No motion event yet: the cursor's position now (after the press, if it has moved since).
+    if (!s->cursorSeen) glfwGetCursorPos(w, &s->lastX, &s->lastY);
+    s->leftButton(action == GLFW_PRESS);
   });
   glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double x, double y) {
     static_cast<State*>(glfwGetWindowUserPointer(w))->cursor(x, y);
@@ -157,10 +158,9 @@ void Window::injectKey(int glfwKey) { state_->key(glfwKey); }
 
 // Press where the cursor was last seen, move by (dx, dy), release: as a hand would drag.
 void Window::injectDrag(double dx, double dy) {
-  const double x = state_->lastX, y = state_->lastY;
-  state_->leftButton(true, x, y);
-  state_->cursor(x + dx, y + dy);
-  state_->leftButton(false, x + dx, y + dy);
+  state_->leftButton(true);
+  state_->cursor(state_->lastX + dx, state_->lastY + dy);
+  state_->leftButton(false);
 }
 
 void Window::injectWheel(double steps) { state_->wheel(steps); }

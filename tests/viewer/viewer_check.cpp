@@ -9,7 +9,10 @@
 //   viewer_check keys LOG DIR
 //     the run of keys_script.txt: its log (every frame's status line, every key's effect) and
 //     the pictures and meshes it wrote into DIR show that each key and the drag did their job
-//     (checkKeys below says how).
+//     (checkKeys below says how);
+//   viewer_check keys-log LOG DX DY
+//     the log of real X input (real_input.sh): the same rules on the log, and its drags add
+//     up to (DX, DY) pixels.
 // Prints what it measured either way; exit 0 when the check holds, 1 when not, 2 on bad input.
 #include <cstdint>
 #include <cstdio>
@@ -248,42 +251,38 @@ std::string fileBytes(const std::string& path) {
   return buffer.str();
 }
 
-// What keys_script.txt did, from the log and the files:
+using Expect = std::function<void(bool ok, const std::string& what)>;
+
+// The rules every log of key presses obeys, scripted or real:
 // - every frame has its status line, with frames/s (from frame 1 on), triangles > 0, an error
-//   within the tolerance while the mesh is not frozen; the run ends at Esc;
+//   within the tolerance while the mesh is not frozen;
 // - each key's effect is seen between its frame's line and the one before: W flips " wire"
 //   and keeps the triangles; C goes shaded -> patch -> level -> shaded; + doubles the
 //   tolerance, fewer triangles and a larger error, - the opposite; F flips FROZEN, and frozen
 //   frames keep their triangles while a drag turns the camera (the error moves) and the wheel
-//   brings it nearer (the error grows); thawed, the wheel farther gives fewer triangles;
-// - the pictures: the wireframe's dark lines; the shaded, patch and level pictures in the
-//   colours of their palettes (patch: several colours, level: its own palette); the drag turns
-//   the picture although the mesh is frozen;
-// - the meshes: frozen, a later frame's mesh equals the earlier one byte for byte, though the
-//   camera moved; thawed, a drag gives a new mesh.
-int checkKeys(const char* logPath, const std::string& dir) {
-  KeysLog log;
-  if (!readKeysLog(logPath, log) || log.frames.empty()) {
-    std::fprintf(stderr, "viewer_check: %s: no status lines\n", logPath);
-    return 2;
-  }
-  int failures = 0;
-  auto expect = [&](bool ok, const std::string& what) {
-    std::printf("%s: %s\n", ok ? "ok  " : "FAIL", what.c_str());
-    failures += !ok;
-  };
+//   brings it nearer (the error grows); thawed, the wheel nearer gives more triangles and
+//   farther fewer; every key and the mouse show up at least once.
+// Adds up the drags the log reports.
+void checkLogRules(KeysLog& log, const Expect& expect, double& dragX, double& dragY) {
   const int lastFrame = log.frames.rbegin()->first;
-  expect(int(log.frames.size()) == lastFrame + 1 && lastFrame == 19,
-         "a status line for each of frames 0.." + std::to_string(lastFrame) + ", Esc's 19");
+  expect(int(log.frames.size()) == lastFrame + 1,
+         "a status line for each of frames 0.." + std::to_string(lastFrame));
+  size_t framesOk = 0;
   for (const auto& [frame, f] : log.frames) {
     const std::string at = "frame " + std::to_string(frame) + ": ";
-    if (frame > 0) expect(f.fps > 0, at + "frames/s " + std::to_string(f.fps) + " > 0");
-    expect(f.triangles > 0, at + std::to_string(f.triangles) + " triangles > 0");
-    if (!f.frozen)
-      expect(f.error > 0 && f.error <= f.tolerance,
-             at + "error " + std::to_string(f.error) + " px within the tolerance " +
-                 std::to_string(f.tolerance));
+    const bool ok = (frame == 0 || f.fps > 0) && f.triangles > 0 &&
+                    (f.frozen || (f.error > 0 && f.error <= f.tolerance));
+    if (!ok)
+      expect(false, at + std::to_string(f.fps) + " frames/s, " + std::to_string(f.triangles) +
+                        " triangles, error " + std::to_string(f.error) + " px, tolerance " +
+                        std::to_string(f.tolerance));
+    framesOk += ok;
   }
+  expect(framesOk == log.frames.size(),
+         std::to_string(framesOk) + " of " + std::to_string(log.frames.size()) +
+             " frames: frames/s > 0 (after frame 0), triangles > 0, error > 0 and within the "
+             "tolerance (unless frozen)");
+  dragX = dragY = 0;
   std::set<std::string> seen;
   for (const auto& [frame, what] : log.events) {
     if (frame == 0 || !log.frames.count(frame) || !log.frames.count(frame - 1)) {
@@ -292,9 +291,10 @@ int checkKeys(const char* logPath, const std::string& dir) {
     }
     const FrameStatus &before = log.frames[frame - 1], &after = log.frames[frame];
     const std::string at = "frame " + std::to_string(frame) + ", " + what + ": ";
-    const std::string kind = what.substr(0, what.find(' '));
-    seen.insert(what.rfind("tolerance", 0) == 0 ? (after.tolerance > before.tolerance ? "+" : "-")
-                                                : what.rfind("drag", 0) == 0 ? kind : what);
+    if (what.rfind("tolerance", 0) == 0)
+      seen.insert(after.tolerance > before.tolerance ? "+" : "-");
+    else if (what.rfind("drag", 0) != 0)
+      seen.insert(what);
     if (what == "wireframe on" || what == "wireframe off") {
       expect(after.wire == (what == "wireframe on") && before.wire != after.wire &&
                  after.triangles == before.triangles,
@@ -316,7 +316,11 @@ int checkKeys(const char* logPath, const std::string& dir) {
       expect(after.frozen == (what == "frozen") && before.frozen != after.frozen,
              at + "the line's FROZEN flips");
     } else if (what.rfind("drag", 0) == 0) {
-      const double wheel = std::stod(what.substr(what.find("wheel ") + 6));
+      double dx = 0, dy = 0, wheel = 0;
+      std::sscanf(what.c_str(), "drag %lf %lf, wheel %lf", &dx, &dy, &wheel);
+      dragX += dx;
+      dragY += dy;
+      if (dx != 0 || dy != 0) seen.insert("drag");
       const bool frozen = before.frozen && after.frozen;
       if (frozen)
         expect(after.triangles == before.triangles && after.error != before.error,
@@ -341,11 +345,39 @@ int checkKeys(const char* logPath, const std::string& dir) {
                              "colour shaded", "+", "-", "frozen", "unfrozen", "drag", "wheel",
                              "quit"})
     expect(seen.count(needed) == 1, std::string("the log shows '") + needed + "'");
+  size_t frozen = 0, frozenKept = 0;
   for (const auto& [frame, f] : log.frames)
-    if (frame > 0 && f.frozen && log.frames[frame - 1].frozen)
-      expect(f.triangles == log.frames[frame - 1].triangles,
-             "frame " + std::to_string(frame) + ": frozen, the triangles stay");
+    if (frame > 0 && f.frozen && log.frames[frame - 1].frozen) {
+      ++frozen;
+      frozenKept += f.triangles == log.frames[frame - 1].triangles;
+    }
+  expect(frozen > 0 && frozenKept == frozen,
+         std::to_string(frozenKept) + " of " + std::to_string(frozen) +
+             " frames after a frozen one keep its triangles");
+}
 
+// What keys_script.txt did, from the log (checkLogRules, and the run ends at Esc in frame 19)
+// and the files:
+// - the pictures: the wireframe's dark lines; the shaded, patch and level pictures in the
+//   colours of their palettes (patch: several colours, level: its own palette); the drag turns
+//   the picture although the mesh is frozen;
+// - the meshes: frozen, a later frame's mesh equals the earlier one byte for byte, though the
+//   camera moved; thawed, a drag gives a new mesh.
+int checkKeys(const char* logPath, const std::string& dir) {
+  KeysLog log;
+  if (!readKeysLog(logPath, log) || log.frames.empty()) {
+    std::fprintf(stderr, "viewer_check: %s: no status lines\n", logPath);
+    return 2;
+  }
+  int failures = 0;
+  auto expect = [&](bool ok, const std::string& what) {
+    std::printf("%s: %s\n", ok ? "ok  " : "FAIL", what.c_str());
+    failures += !ok;
+  };
+  double dragX = 0, dragY = 0;
+  checkLogRules(log, expect, dragX, dragY);
+  expect(log.frames.rbegin()->first == 19, "the last frame is Esc's, 19");
+  expect(dragX == 0 && dragY == -20, "the drags add up to the script's: 0, -20");
   try {
     int w = 0, h = 0;
     const std::vector<Rgb> filled = meshPixels(dir + "/keys_filled.png", w, h);
@@ -402,13 +434,38 @@ int checkKeys(const char* logPath, const std::string& dir) {
 
 }  // namespace
 
+// The log of real X input (real_input.sh): checkLogRules, and the drags it reports add up to
+// the one xdotool made.
+int checkRealInput(const char* logPath, double dragX, double dragY) {
+  KeysLog log;
+  if (!readKeysLog(logPath, log) || log.frames.empty()) {
+    std::fprintf(stderr, "viewer_check: %s: no status lines\n", logPath);
+    return 2;
+  }
+  int failures = 0;
+  auto expect = [&](bool ok, const std::string& what) {
+    std::printf("%s: %s\n", ok ? "ok  " : "FAIL", what.c_str());
+    failures += !ok;
+  };
+  double x = 0, y = 0;
+  checkLogRules(log, expect, x, y);
+  expect(x == dragX && y == dragY, "the drags add up to " + std::to_string(x) + ", " +
+                                       std::to_string(y) + ": the mouse's " +
+                                       std::to_string(dragX) + ", " + std::to_string(dragY));
+  std::printf("%d failed\n", failures);
+  return failures == 0 ? 0 : 1;
+}
+
 int main(int argc, char** argv) {
   if (argc == 5 && std::strcmp(argv[1], "picture") == 0)
     return checkPicture(argv[2], std::atof(argv[3]), size_t(std::atol(argv[4])));
   if (argc == 3 && std::strcmp(argv[1], "mesh") == 0) return checkMesh(argv[2]);
   if (argc == 4 && std::strcmp(argv[1], "keys") == 0) return checkKeys(argv[2], argv[3]);
+  if (argc == 5 && std::strcmp(argv[1], "keys-log") == 0)
+    return checkRealInput(argv[2], std::atof(argv[3]), std::atof(argv[4]));
   std::fprintf(stderr, "usage: viewer_check picture SHOT.png MIN_MESH_FRACTION MIN_COLOURS\n"
                        "       viewer_check mesh FRAME.glb\n"
-                       "       viewer_check keys LOG DIR\n");
+                       "       viewer_check keys LOG DIR\n"
+                       "       viewer_check keys-log LOG DX DY\n");
   return 2;
 }
