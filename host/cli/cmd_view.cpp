@@ -38,9 +38,11 @@ struct ViewArgs {
   bool quiet = false;
 };
 
-int run(const ViewArgs& a) {
+// `outputs`: the files written, for exit 5 (runReportingErrors); the script's are added.
+int run(const ViewArgs& a, std::vector<std::string>& outputPaths) {
 #if !TESSERA_HAVE_VIEWER
   (void)a;
+  (void)outputPaths;
   std::fprintf(stderr, "tessera: view: this tessera was built without the viewer "
                        "(GLFW was not found when it was configured: apt-get install "
                        "libglfw3-dev, then configure again)\n");
@@ -85,8 +87,10 @@ int run(const ViewArgs& a) {
                                                    " is not below --frames " +
                                                    std::to_string(a.frames));
       if (step.kind == viewer::ScriptStep::Kind::Screenshot ||
-          step.kind == viewer::ScriptStep::Kind::Dump)
+          step.kind == viewer::ScriptStep::Kind::Dump) {
         outputs.push_back({a.script + ":" + std::to_string(step.line), step.word});
+        outputPaths.push_back(step.word);
+      }
     }
   }
   checkOutputs({{"input", a.input}, {"--script", a.script}}, outputs);
@@ -161,7 +165,9 @@ void addViewCommand(CLI::App& app, int& exitCode) {
   cmd->add_flag("-q,--quiet", args.quiet, "print nothing on success");
   cmd->callback([&exitCode] {
     const std::string dumpPath = args.dumpFrame.size() == 2 ? args.dumpFrame[1] : "";
-    exitCode = runReportingErrors([] { return run(args); }, {args.screenshot, dumpPath},
+    // run() adds the script's outputs to the list runReportingErrors holds by reference.
+    std::vector<std::string> outputs = {args.screenshot, dumpPath};
+    exitCode = runReportingErrors([&outputs] { return run(args, outputs); }, outputs,
                                   "view needs a Vulkan device that draws");
   });
 }
