@@ -34,8 +34,9 @@ struct CentredNet {
   }
 };
 
-// False when some W ≤ 0 (the net reaches the eye plane: no bound here).
-bool centredNet(const glm::dvec4* net, int n, int m, CentredNet& out) {
+// False when some W ≤ 0 (the net reaches the eye plane: no bound here). The radius is the
+// bound's (hull()); the estimate does without it (`withRadius` false: 16 square roots saved).
+bool centredNet(const glm::dvec4* net, int n, int m, CentredNet& out, bool withRadius) {
   if (n < 1 || n > 3 || m < 0 || m > 3)
     throw std::invalid_argument("projected division counts: degrees 1..3 (v: 0..3), got " +
                                 std::to_string(n) + "×" + std::to_string(m));
@@ -53,7 +54,7 @@ bool centredNet(const glm::dvec4* net, int n, int m, CentredNet& out) {
   const glm::dvec2 centre = 0.5 * (lo + hi);
   for (int k = 0; k < count; ++k) {
     const glm::dvec4& h = net[k];
-    out.radius = std::max(out.radius, glm::length(glm::dvec2(h) / h.w - centre));
+    if (withRadius) out.radius = std::max(out.radius, glm::length(glm::dvec2(h) / h.w - centre));
     out.c[size_t(k)] = glm::dvec3(h.x - centre.x * h.w, h.y - centre.y * h.w, h.w);
   }
   return true;
@@ -132,22 +133,42 @@ struct Triple {
   }
 };
 
+// The triples, kept twice: as Triples (the strips) and as coordinate arrays, which the cell
+// estimate's loop runs over two or four at a time (the same arithmetic per triple).
 struct SecondPartials {
   int count = 0;
-  std::array<Triple, 32> t{};
+  std::array<Triple, 32> t;  // the first `count` are set
+  std::array<double, 32> uuX, uuY, uvX, uvY, vvX, vvY;
   double largestUu = 0, largestVv = 0;  // the largest ‖S_uu‖, ‖S_vv‖
+
+  void set(size_t l, const Triple& triple) {
+    t[l] = triple;
+    uuX[l] = triple.uu.x, uuY[l] = triple.uu.y;
+    uvX[l] = triple.uv.x, uvY[l] = triple.uv.y;
+    vvX[l] = triple.vv.x, vvY[l] = triple.vv.y;
+  }
 };
 
+// A curve's (m = 0) largest ‖S_uu‖ alone, all its count needs: secondPartials' arithmetic with
+// the v derivatives zero, and no triples.
+double curveLargestSecond(const CentredNet& x) {
+  const CentredNet du = degreeKeepingDerivative(x, true), duu = degreeKeepingDerivative(du, true);
+  double largest = 0;
+  for (size_t l = 0; l <= size_t(x.n); ++l) {
+    const double w = x.c[l].z;
+    const glm::dvec2 p = glm::dvec2(x.c[l]) / w;
+    const glm::dvec2 su = (glm::dvec2(du.c[l]) - du.c[l].z * p) / w;
+    const glm::dvec2 uu = (glm::dvec2(duu.c[l]) - duu.c[l].z * p) / w;
+    const glm::dvec2 affineUu = uu - 2.0 * du.c[l].z / w * su;
+    largest = std::max({largest, glm::dot(affineUu, affineUu), glm::dot(uu, uu)});
+  }
+  return std::sqrt(largest);  // glm::length is sqrt(dot), and sqrt is monotone
+}
+
 SecondPartials secondPartials(const CentredNet& x) {
-  // A curve (m = 0) has no derivatives along v: those nets stay zero.
-  CentredNet zero = x;
-  zero.c.fill(glm::dvec3(0.0));
-  const bool curve = x.m == 0;
-  const CentredNet du = degreeKeepingDerivative(x, true),
-                   dv = curve ? zero : degreeKeepingDerivative(x, false);
-  const CentredNet duu = degreeKeepingDerivative(du, true),
-                   duv = curve ? zero : degreeKeepingDerivative(du, false),
-                   dvv = curve ? zero : degreeKeepingDerivative(dv, false);
+  const CentredNet du = degreeKeepingDerivative(x, true), dv = degreeKeepingDerivative(x, false);
+  const CentredNet duu = degreeKeepingDerivative(du, true), duv = degreeKeepingDerivative(du, false),
+                   dvv = degreeKeepingDerivative(dv, false);
   SecondPartials s;
   const size_t perSet = size_t((x.n + 1) * (x.m + 1));
   s.count = 2 * int(perSet);
@@ -162,11 +183,13 @@ SecondPartials secondPartials(const CentredNet& x) {
     const glm::dvec2 affineUu = uu - 2.0 * du.c[l].z / w * su,
                      affineUv = uv - (du.c[l].z * sv + dv.c[l].z * su) / w,
                      affineVv = vv - 2.0 * dv.c[l].z / w * sv;
-    s.t[l] = {affineUu, affineUv, affineVv};
-    s.t[l + perSet] = {uu, uv, vv};
-    s.largestUu = std::max({s.largestUu, glm::length(affineUu), glm::length(uu)});
-    s.largestVv = std::max({s.largestVv, glm::length(affineVv), glm::length(vv)});
+    s.set(l, {affineUu, affineUv, affineVv});
+    s.set(l + perSet, {uu, uv, vv});
+    s.largestUu = std::max({s.largestUu, glm::dot(affineUu, affineUu), glm::dot(uu, uu)});
+    s.largestVv = std::max({s.largestVv, glm::dot(affineVv, affineVv), glm::dot(vv, vv)});
   }
+  s.largestUu = std::sqrt(s.largestUu);  // glm::length is sqrt(dot), and sqrt is monotone
+  s.largestVv = std::sqrt(s.largestVv);
   return s;
 }
 
@@ -177,28 +200,46 @@ SecondPartials secondPartials(const CentredNet& x) {
 // along the other one (docs/realtime.md). The largest over the triples. Only whether it exceeds
 // `stopAbove` matters when that is finite: ½·Σ λλ c lies between max c/8 and max c/6, which
 // settles most triples without the exact maximum.
+// Square roots are taken only where needed: sqrt, /6 and /8 are monotone, so the largest of
+// the square roots is the square root of the largest.
 double estimatedCellDeviation(const SecondPartials& s, double h, double k, double stopAbove) {
-  std::array<glm::dvec4, 32> c2{};  // per triple: the squared norms along the legs, diagonals
-  std::array<double, 32> most{};
-  double settled = 0.0, largest = 0.0;
-  for (size_t l = 0; l < size_t(s.count); ++l) {
-    const glm::dvec2 a = h * h * s.t[l].uu, b = 2.0 * h * k * s.t[l].uv, d = k * k * s.t[l].vv;
-    const glm::dvec2 plus = a + b + d, minus = a - b + d;
-    c2[l] = glm::dvec4(glm::dot(a, a), glm::dot(d, d), glm::dot(plus, plus), glm::dot(minus, minus));
-    most[l] = std::sqrt(std::max(std::max(c2[l].x, c2[l].y), std::max(c2[l].z, c2[l].w)));
-    settled = std::max(settled, most[l] / 8.0);
-    largest = std::max(largest, most[l] / 6.0);
+  // Per triple: the squared norms along the legs and diagonals, and the largest of them.
+  std::array<double, 32> legU, legV, plus2, minus2, most2;
+  const double hh = h * h, hk = 2.0 * h * k, kk = k * k;
+  const size_t count = size_t(s.count);
+  for (size_t l = 0; l < count; ++l) {  // glm's arithmetic, written out per coordinate
+    const double ax = hh * s.uuX[l], ay = hh * s.uuY[l], bx = hk * s.uvX[l], by = hk * s.uvY[l];
+    const double dx = kk * s.vvX[l], dy = kk * s.vvY[l];
+    const double px = ax + bx + dx, py = ay + by + dy, mx = ax - bx + dx, my = ay - by + dy;
+    legU[l] = ax * ax + ay * ay;
+    legV[l] = dx * dx + dy * dy;
+    plus2[l] = px * px + py * py;
+    minus2[l] = mx * mx + my * my;
+    most2[l] = std::max(std::max(legU[l], legV[l]), std::max(plus2[l], minus2[l]));
   }
+  // Four running maxima, not one chain (NaNs drop out of std::max(largest, NaN) in any order).
+  std::array<double, 4> lanes{};
+  for (size_t l = 0; l < count; ++l) lanes[l % 4] = std::max(lanes[l % 4], most2[l]);
+  const double largest2 = std::max(std::max(lanes[0], lanes[1]), std::max(lanes[2], lanes[3]));
+  const double settled = std::sqrt(largest2) / 8.0, largest = std::sqrt(largest2) / 6.0;
   if (std::isfinite(stopAbove)) {
     if (largest <= stopAbove) return largest;
     if (settled > stopAbove) return settled;
   }
-  double worst = settled;
+  // A triple whose sqrt(most²)/6 is not above the worst so far cannot raise it. Below
+  // (6·worst)²·(1 − 1e-12) that holds despite rounding, and the square root is skipped (no
+  // skipping where that product overflows).
+  auto skipBelowOf = [](double worst) {
+    const double below = 36.0 * worst * worst * (1.0 - 1e-12);
+    return below < INFINITY ? below : 0.0;
+  };
+  double worst = settled, skipBelow = skipBelowOf(worst);
   for (size_t l = 0; l < size_t(s.count); ++l)
-    if (most[l] / 6.0 > worst) {
-      const glm::dvec4 c = glm::sqrt(c2[l]);
+    if (!(most2[l] < skipBelow) && std::sqrt(most2[l]) / 6.0 > worst) {
+      const glm::dvec4 c = glm::sqrt(glm::dvec4(legU[l], legV[l], plus2[l], minus2[l]));
       worst = std::max({worst, 0.5 * largestSimplexProduct(c.x, c.y, c.z),
                         0.5 * largestSimplexProduct(c.x, c.y, c.w)});
+      skipBelow = skipBelowOf(worst);
     }
   return worst;
 }
@@ -266,7 +307,7 @@ void fitStrips(const CentredNet& x, const SecondPartials& s, const std::array<in
 SecondDerivativeBounds projectedGridBounds(const glm::dvec4* net, int degreeU, int degreeV) {
   SecondDerivativeBounds r;
   CentredNet x;
-  if (!centredNet(net, degreeU, degreeV, x)) {
+  if (!centredNet(net, degreeU, degreeV, x, true)) {
     r.bounded = false;
     r.uu = r.uv = r.vv = INFINITY;
     return r;
@@ -295,20 +336,20 @@ Divisions estimatedProjectedDivisions(const glm::dvec4* net, int degreeU, int de
                                       const std::array<int, 4>* sideSegments) {
   Divisions r;
   CentredNet x;
-  if (!centredNet(net, degreeU, degreeV, x)) {
+  if (!centredNet(net, degreeU, degreeV, x, false)) {
     r.status = DivisionStatus::Unbounded;
     r.bounds.bounded = false;
     r.nu = r.nv = maxPerDirection;
     r.realU = r.realV = INFINITY;
     return r;
   }
-  const SecondPartials s = secondPartials(x);
-  const double largestUu = s.largestUu, largestVv = s.largestVv;
   if (x.m == 0) {  // a curve: a segment's midpoint deviates ‖C''‖·h²/8, nothing else
-    r.realU = std::max(1.0, std::sqrt(largestUu / (8.0 * tolerance)));
+    r.realU = std::max(1.0, std::sqrt(curveLargestSecond(x) / (8.0 * tolerance)));
     r.nu = toCount(r.realU, maxPerDirection, r);
     return r;
   }
+  const SecondPartials s = secondPartials(x);
+  const double largestUu = s.largestUu, largestVv = s.largestVv;
   // The counts each direction needs alone (a leg's midpoint deviates ‖S''‖·leg²/8), then both
   // scaled up together until the diagonals and the triangles' interiors pass too (the
   // deviation scales with the square of the legs).
