@@ -1,7 +1,8 @@
 // The Vulkan backend of NodeClassifier: one dispatch of shaders/quadtree.comp.glsl (bicubic)
 // or quadtree_general.comp.glsl (general patches) per level, or of their rule-B-only variants
-// quadtree_midpoint.comp.glsl and quadtree_general_midpoint.comp.glsl. Pipelines are made once per
-// (shader, rule, S) and buffers grow and are kept between levels.
+// quadtree_midpoint.comp.glsl and quadtree_general_midpoint.comp.glsl, or rule-T-only ones
+// quadtree_tolerance.comp.glsl and quadtree_general_tolerance.comp.glsl. Pipelines are made once
+// per (shader, rule, S) and buffers grow and are kept between levels.
 #include <cstdint>  // before the generated SPIR-V array, which uses uint32_t
 #include <map>
 #include <tuple>
@@ -13,7 +14,9 @@
 #include "quadtree_comp.h"
 #include "quadtree_general_comp.h"
 #include "quadtree_general_midpoint_comp.h"
+#include "quadtree_general_tolerance_comp.h"
 #include "quadtree_midpoint_comp.h"
+#include "quadtree_tolerance_comp.h"
 #include "vk/buffer.h"
 #include "vk/pipeline.h"
 
@@ -116,20 +119,26 @@ class VulkanClassifier final : public NodeClassifier {
     size_t bytes;
   };
 
-  // Rule B runs the variants built without rules C and D's searches: the driver compiles a
-  // pipeline at every run, and the whole shader costs it several times as long.
+  // Rules B and T run the variants built for them alone (without rules C and D's searches;
+  // without the frames and rules B-D): the driver compiles a pipeline at every run, and the whole
+  // shader costs it several times as long.
   static ShaderCode shaderFor(bool general, uint32_t rule) {
-    const bool midpoint = rule == gpu::kSplitRuleMidpoint;
-    if (general && midpoint)
-      return {"quadtree_general_midpoint.comp", kSpirv_quadtree_general_midpoint_comp,
-              sizeof(kSpirv_quadtree_general_midpoint_comp)};
-    if (general)
-      return {"quadtree_general.comp", kSpirv_quadtree_general_comp,
-              sizeof(kSpirv_quadtree_general_comp)};
-    if (midpoint)
-      return {"quadtree_midpoint.comp", kSpirv_quadtree_midpoint_comp,
-              sizeof(kSpirv_quadtree_midpoint_comp)};
-    return {"quadtree.comp", kSpirv_quadtree_comp, sizeof(kSpirv_quadtree_comp)};
+    if (rule == gpu::kSplitRuleMidpoint)
+      return general ? ShaderCode{"quadtree_general_midpoint.comp",
+                                  kSpirv_quadtree_general_midpoint_comp,
+                                  sizeof(kSpirv_quadtree_general_midpoint_comp)}
+                     : ShaderCode{"quadtree_midpoint.comp", kSpirv_quadtree_midpoint_comp,
+                                  sizeof(kSpirv_quadtree_midpoint_comp)};
+    if (rule == gpu::kSplitRuleTolerance)
+      return general ? ShaderCode{"quadtree_general_tolerance.comp",
+                                  kSpirv_quadtree_general_tolerance_comp,
+                                  sizeof(kSpirv_quadtree_general_tolerance_comp)}
+                     : ShaderCode{"quadtree_tolerance.comp", kSpirv_quadtree_tolerance_comp,
+                                  sizeof(kSpirv_quadtree_tolerance_comp)};
+    return general ? ShaderCode{"quadtree_general.comp", kSpirv_quadtree_general_comp,
+                                sizeof(kSpirv_quadtree_general_comp)}
+                   : ShaderCode{"quadtree.comp", kSpirv_quadtree_comp,
+                                sizeof(kSpirv_quadtree_comp)};
   }
 
   vk::Context& context_;

@@ -1,11 +1,13 @@
-// The body of quadtree.comp.glsl and quadtree_midpoint.comp.glsl: one invocation per node of a
+// The body of quadtree.comp.glsl and its rule-B-only and rule-T-only variants
+// (quadtree_midpoint.comp.glsl, quadtree_tolerance.comp.glsl): one invocation per node of a
 // frontier level of bicubic patches finds the split point (rule: specialization constant 0) and
-// decides leaf or split, or by rule T its proven deviation bound (lib/tolerance_bound.h) against δ. The arithmetic lives in lib/quadtree_classify.h, shared with the fp32
-// mirror.
+// decides leaf or split, or by rule T its proven deviation bound (lib/tolerance_bound.h) against
+// δ. The arithmetic lives in lib/quadtree_classify.h, shared with the fp32 mirror.
 #include "layout.h"
 #include "lib/shared_glsl_cpp.h"
 #include "lib/bicubic_eval.h"
 #ifndef CLASSIFY_MIDPOINT_ONLY
+#define TOLERANCE_ROW_ORDER 4  // bicubic rows: lib/tolerance_bound.h
 #include "lib/tolerance_bound.h"  // rule T
 #endif
 #include "lib/quadtree_classify.h"

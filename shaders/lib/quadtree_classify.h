@@ -269,6 +269,11 @@ vec2 splitPointLocal(IN(CLASSIFY_PATCH) bp, vec4 rect, uint rule, int samples, f
 
 NodeDecision classifyNode(IN(CLASSIFY_PATCH) bp, IN(QuadNode) node, uint rule, int samples,
                           IN(ClassifyPush) params) {
+#ifdef CLASSIFY_TOLERANCE_ONLY
+  // A rule-T-only shader (quadtree_tolerance.comp.glsl) is never run for another rule: the
+  // frames and rules B-D below are left out, sparing the driver compiling them.
+  return toleranceDecision(CLASSIFY_SECOND_BOUNDS(bp, node.rect), node, params);
+#else
 #ifndef CLASSIFY_MIDPOINT_ONLY
   // Rule T needs no corner frames: its bound comes from the node's restricted control net.
   if (rule == kSplitRuleTolerance)
@@ -319,6 +324,7 @@ NodeDecision classifyNode(IN(CLASSIFY_PATCH) bp, IN(QuadNode) node, uint rule, i
     d.cause = kCauseSplit;
   }
   return d;
+#endif  // CLASSIFY_TOLERANCE_ONLY
 }
 
 #endif

@@ -1,4 +1,5 @@
-// The body of quadtree_general.comp.glsl and quadtree_general_midpoint.comp.glsl: the
+// The body of quadtree_general.comp.glsl and its rule-B-only and rule-T-only variants
+// (quadtree_general_midpoint.comp.glsl, quadtree_general_tolerance.comp.glsl): the
 // quad-tree classification of general patches (degree 1..7 each way, polynomial or rational):
 // one invocation per node finds the split point (rule: specialization constant 0) and decides
 // leaf or split. The same lib/quadtree_classify.h, evaluating by lib/general_eval.h.

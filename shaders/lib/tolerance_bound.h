@@ -26,21 +26,27 @@ const float kToleranceDifferenceGuard = 1.4901161193847656e-8f;  // 2⁻²⁶
 // cannot bound), the node splits in both directions.
 const float kToleranceUnbounded = 1.0e30f;
 
-// One row of Bernstein coefficients (at most kGeneralMaxOrder).
+// One row of Bernstein coefficients (at most kGeneralMaxOrder; a shader for bicubic patches
+// alone defines TOLERANCE_ROW_ORDER 4, its rows' largest order: lavapipe compiles the pipeline
+// at every run, and unrolling the restriction's loops to 4 rather than 8 costs it a fifth less.
+// The loops break at the degree either way, so the arithmetic is the same).
+#ifndef TOLERANCE_ROW_ORDER
+#define TOLERANCE_ROW_ORDER kGeneralMaxOrder
+#endif
 struct BernsteinRow4 {
-  vec4 c[kGeneralMaxOrder];
+  vec4 c[TOLERANCE_ROW_ORDER];
 };
 
 // The row's coefficients restricted to [t0, t1] (0 ≤ t0 < t1 ≤ 1) and reparametrised to
 // [0, 1]: split at t1 keeping the left piece, then at t0/t1 keeping the right piece (de
 // Casteljau both times), as restrictCoefficients in host/geometry/homogeneous_net.h.
 void restrictBernsteinRow(INOUT(BernsteinRow4) row, int degree, float t0, float t1) {
-  vec4 left[kGeneralMaxOrder];
+  vec4 left[TOLERANCE_ROW_ORDER];
   left[0] = row.c[0];
   PRECISE float om1 = 1.0f - t1;
-  for (int r = 1; r < kGeneralMaxOrder; ++r) {
+  for (int r = 1; r < TOLERANCE_ROW_ORDER; ++r) {
     if (r > degree) break;
-    for (int k = 0; k < kGeneralMaxOrder; ++k) {
+    for (int k = 0; k < TOLERANCE_ROW_ORDER; ++k) {
       if (k > degree - r) break;
       PRECISE vec4 x = om1 * row.c[k] + t1 * row.c[k + 1];
       row.c[k] = x;
@@ -49,22 +55,22 @@ void restrictBernsteinRow(INOUT(BernsteinRow4) row, int degree, float t0, float 
   }
   PRECISE float s = t0 / t1;
   PRECISE float om = 1.0f - s;
-  for (int k = 0; k < kGeneralMaxOrder; ++k) {
+  for (int k = 0; k < TOLERANCE_ROW_ORDER; ++k) {
     if (k > degree) break;
     row.c[k] = left[k];
   }
-  vec4 right[kGeneralMaxOrder];
+  vec4 right[TOLERANCE_ROW_ORDER];
   right[degree] = row.c[degree];
-  for (int r = 1; r < kGeneralMaxOrder; ++r) {
+  for (int r = 1; r < TOLERANCE_ROW_ORDER; ++r) {
     if (r > degree) break;
-    for (int k = 0; k < kGeneralMaxOrder; ++k) {
+    for (int k = 0; k < TOLERANCE_ROW_ORDER; ++k) {
       if (k > degree - r) break;
       PRECISE vec4 x = om * row.c[k] + s * row.c[k + 1];
       row.c[k] = x;
     }
     right[degree - r] = row.c[degree - r];
   }
-  for (int k = 0; k < kGeneralMaxOrder; ++k) {
+  for (int k = 0; k < TOLERANCE_ROW_ORDER; ++k) {
     if (k > degree) break;
     row.c[k] = right[k];
   }
