@@ -132,6 +132,14 @@ struct NodeDecision {
   uint pad;         // rule T, kCauseSplitGrid: the child counts k_u | k_v << 8; else 0
 };
 
+// Rule T on bicubic patches classifies a level in two dispatches whose pipelines the driver
+// compiles side by side (quadtree_tolerance_nets.comp.glsl, then quadtree_tolerance.comp.glsl):
+// the first writes, per node, two of the three restricted difference nets' bounds
+// (lib/tolerance_bound.h, bicubicNetBound), which the second reads.
+struct ToleranceNetBounds {
+  vec4 ssSt;  // (‖Δ²_s‖, its error term, ‖Δ_sΔ_t‖, its error term)
+};
+
 // Push constants of quadtree.comp.glsl. The split rule and S are specialization constants.
 struct ClassifyPush {
   float linearity;

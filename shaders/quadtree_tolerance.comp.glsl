@@ -1,9 +1,31 @@
 #version 450
-// quadtree.comp.glsl for rule T alone (CLASSIFY_TOLERANCE_ONLY): the proven bound against δ
-// without the corner frames and rules B-D's tests. The driver compiles the pipeline at every run
-// (lavapipe keeps no pipeline cache), and the default job of `tessera tessellate` runs rule T:
-// this variant costs the driver a fraction of the whole shader (bench/bench_startup.cpp). Rule
-// T's arithmetic is the very same text, so the trees are bit-identical.
+// Rule T on bicubic patches, second of two dispatches a level: the third restricted net's bound
+// (Δ²_t), with the two quadtree_tolerance_nets.comp.glsl wrote, gives the node's proven bound
+// (lib/tolerance_bound.h), and toleranceDecision decides against δ. Without the corner frames
+// and rules B-D's tests, which quadtree.comp.glsl has: the driver compiles the pipeline at
+// every run (lavapipe keeps no pipeline cache), and this default job's shaders should cost it
+// as little as they can. The mirror's text, so the decisions are bit-identical.
 #extension GL_GOOGLE_include_directive : require
-#define CLASSIFY_TOLERANCE_ONLY
-#include "lib/quadtree_bicubic_main.glsl"
+#include "layout.h"
+#include "lib/shared_glsl_cpp.h"
+#define TOLERANCE_ROW_ORDER 4  // bicubic rows: lib/tolerance_bound.h
+#include "lib/tolerance_bound.h"
+#include "lib/dispatch.glsl"
+
+layout(std430, binding = 0) readonly buffer Patches { BicubicPatch patches[]; };
+layout(std430, binding = 1) readonly buffer Nodes { QuadNode nodes[]; };
+layout(std430, binding = 2) writeonly buffer Decisions { NodeDecision decisions[]; };
+layout(std430, binding = 3) readonly buffer Nets { ToleranceNetBounds nets[]; };
+
+layout(push_constant) uniform Push { ClassifyPush pc; };
+
+void main() {
+  uint index = linearInvocationIndex();
+  if (index >= pc.nodeCount) return;
+  QuadNode node = nodes[index];
+  vec4 first = nets[index].ssSt;
+  vec4 bounds = bicubicBoundsOfNets(first.xy, first.zw,
+                                    bicubicNetBound(patches[node.patchIndex], node.rect, 2),
+                                    node.rect);
+  decisions[index] = toleranceDecision(bounds, node, pc);
+}

@@ -1,8 +1,10 @@
 // The Vulkan backend of NodeClassifier: one dispatch of shaders/quadtree.comp.glsl (bicubic)
 // or quadtree_general.comp.glsl (general patches) per level, or of their rule-B-only variants
-// quadtree_midpoint.comp.glsl and quadtree_general_midpoint.comp.glsl, or rule-T-only ones
-// quadtree_tolerance.comp.glsl and quadtree_general_tolerance.comp.glsl. Pipelines are made once
-// per (shader, rule, S) and buffers grow and are kept between levels.
+// quadtree_midpoint.comp.glsl and quadtree_general_midpoint.comp.glsl, or rule-T-only ones:
+// quadtree_general_tolerance.comp.glsl, and for bicubic patches two dispatches a level,
+// quadtree_tolerance_nets.comp.glsl then quadtree_tolerance.comp.glsl, whose pipelines are built
+// on two threads. Pipelines are made once per (shader, rule, S) and buffers grow and are kept
+// between levels.
 #include <cstdint>  // before the generated SPIR-V array, which uses uint32_t
 #include <map>
 #include <tuple>
@@ -17,6 +19,8 @@
 #include "quadtree_general_tolerance_comp.h"
 #include "quadtree_midpoint_comp.h"
 #include "quadtree_tolerance_comp.h"
+#include "quadtree_tolerance_nets_comp.h"
+#include "vk/background_pipeline.h"
 #include "vk/buffer.h"
 #include "vk/pipeline.h"
 
@@ -66,6 +70,8 @@ class VulkanClassifier final : public NodeClassifier {
       throw std::logic_error("VulkanClassifier: classify() without beginTree() for these patches");
     if (general)
       run(true, {&patches_, &nodes_, &decisions_, &points_}, nodes, options, decisions, stats);
+    else if (options.rule == SplitRule::Tolerance)
+      run(false, {&patches_, &nodes_, &decisions_, &netBounds_}, nodes, options, decisions, stats);
     else
       run(false, {&patches_, &nodes_, &decisions_}, nodes, options, decisions, stats);
   }
@@ -77,7 +83,15 @@ class VulkanClassifier final : public NodeClassifier {
     const Stopwatch stopwatch;
     decisions.resize(nodes.size());
     if (nodes.empty()) return;
+    // Rule T on bicubic patches: the nets' pipeline builds on a worker thread while this one
+    // builds the deciding pipeline.
+    const bool twoDispatches = !general && options.rule == SplitRule::Tolerance;
+    if (twoDispatches) toleranceNets_.start();
     vk::ComputePipeline& pipeline = pipelineFor(general, ruleConstant(options.rule), options.samples);
+    vk::ComputePipeline* nets = twoDispatches ? &toleranceNets_.get() : nullptr;
+    if (nets)
+      vk::ensureCapacity(context_, netBounds_, nodes.size() * sizeof(gpu::ToleranceNetBounds),
+                         vk::BufferUse::Upload);
     vk::ensureCapacity(context_, nodes_, nodes.size() * sizeof(gpu::QuadNode),
                        vk::BufferUse::Upload);
     vk::ensureCapacity(context_, decisions_, nodes.size() * sizeof(gpu::NodeDecision),
@@ -87,6 +101,10 @@ class VulkanClassifier final : public NodeClassifier {
     context_.submitAndWait([&](VkCommandBuffer cmd) {
       timer_.reset(cmd);
       timer_.mark(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+      if (nets) {
+        nets->dispatch(cmd, {&patches_, &nodes_, &netBounds_}, &push, push.nodeCount);
+        vk::computeToComputeBarrier(context_, cmd);
+      }
       pipeline.dispatch(cmd, buffers, &push, push.nodeCount);
       timer_.mark(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
       vk::computeToHostBarrier(context_, cmd);
@@ -105,7 +123,7 @@ class VulkanClassifier final : public NodeClassifier {
       vk::ComputePipelineDesc desc{code.name,
                                    code.spirv,
                                    code.bytes,
-                                   general ? 4u : 3u,
+                                   general || rule == gpu::kSplitRuleTolerance ? 4u : 3u,
                                    sizeof(gpu::ClassifyPush),
                                    {{0, rule}, {1, uint32_t(samples)}}};
       it = pipelines_.emplace(key, std::make_unique<vk::ComputePipeline>(context_, desc)).first;
@@ -143,8 +161,12 @@ class VulkanClassifier final : public NodeClassifier {
 
   vk::Context& context_;
   vk::GpuTimer timer_;
+  vk::BackgroundPipeline toleranceNets_{
+      context_,
+      {"quadtree_tolerance_nets.comp", kSpirv_quadtree_tolerance_nets_comp,
+       sizeof(kSpirv_quadtree_tolerance_nets_comp), 3, sizeof(gpu::ClassifyPush), {}}};
   std::map<std::tuple<bool, uint32_t, int>, std::unique_ptr<vk::ComputePipeline>> pipelines_;
-  vk::Buffer patches_, nodes_, decisions_, points_;
+  vk::Buffer patches_, nodes_, decisions_, points_, netBounds_;
   size_t uploadedCount_ = 0;
   bool uploadedGeneral_ = false;
 };

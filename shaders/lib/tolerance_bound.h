@@ -189,37 +189,35 @@ float restrictedLargestNorm(INOUT(DifferenceNet4) q, int du, int dv, vec4 rect) 
   return big;
 }
 
-// (M_ss, M_st, M_tt, guard) of the bicubic patch on the node: its three second-difference
-// nets (2 × 4, 3 × 3, 4 × 2) restricted to the node. Differences of control points: the same
-// for the model moved anywhere fp32 holds it exactly (docs/quadtree.md, "fp32").
-vec4 bicubicSecondBounds(IN(BicubicPatch) bp, vec4 rect) {
+// (largest norm, error term) of one of the bicubic patch's three second-difference nets
+// restricted to the node: net 0 = Δ²_s (2 × 4), 1 = Δ_sΔ_t (3 × 3), 2 = Δ²_t (4 × 2).
+// Differences of control points: the same for the model moved anywhere fp32 holds it exactly
+// (docs/quadtree.md, "fp32"). One function a net, so that a shader may compute some nets
+// and another shader the rest (quadtree_tolerance_nets.comp.glsl).
+vec2 bicubicNetBound(IN(BicubicPatch) bp, vec4 rect, int net) {
   DifferenceNet4 q;
-  vec3 norms;
-  vec3 errors;
   PRECISE float big1 = 0.0f;
   PRECISE float big2 = 0.0f;
-  for (int i = 0; i < 2; ++i)
-    for (int j = 0; j < 4; ++j) {
-      vec3 d = secondDifferenceOf(vec3(bp.cp[i * 4 + j]), vec3(bp.cp[(i + 1) * 4 + j]),
-                                  vec3(bp.cp[(i + 2) * 4 + j]), big1);
-      big2 = max(big2, maxAbsComponent(d));
-      q.c[i * 4 + j] = vec4(d, 0.0f);
-    }
-  norms.x = restrictedLargestNorm(q, 1, 3, rect);
-  errors.x = differenceNetError(big1, big2, 1, 3);
-  big1 = 0.0f;
-  big2 = 0.0f;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      vec3 d = twistOf(vec3(bp.cp[i * 4 + j]), vec3(bp.cp[(i + 1) * 4 + j]),
-                       vec3(bp.cp[i * 4 + j + 1]), vec3(bp.cp[(i + 1) * 4 + j + 1]), big1);
-      big2 = max(big2, maxAbsComponent(d));
-      q.c[i * 4 + j] = vec4(d, 0.0f);
-    }
-  norms.y = restrictedLargestNorm(q, 2, 2, rect);
-  errors.y = differenceNetError(big1, big2, 2, 2);
-  big1 = 0.0f;
-  big2 = 0.0f;
+  if (net == 0) {
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 4; ++j) {
+        vec3 d = secondDifferenceOf(vec3(bp.cp[i * 4 + j]), vec3(bp.cp[(i + 1) * 4 + j]),
+                                    vec3(bp.cp[(i + 2) * 4 + j]), big1);
+        big2 = max(big2, maxAbsComponent(d));
+        q.c[i * 4 + j] = vec4(d, 0.0f);
+      }
+    return vec2(restrictedLargestNorm(q, 1, 3, rect), differenceNetError(big1, big2, 1, 3));
+  }
+  if (net == 1) {
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        vec3 d = twistOf(vec3(bp.cp[i * 4 + j]), vec3(bp.cp[(i + 1) * 4 + j]),
+                         vec3(bp.cp[i * 4 + j + 1]), vec3(bp.cp[(i + 1) * 4 + j + 1]), big1);
+        big2 = max(big2, maxAbsComponent(d));
+        q.c[i * 4 + j] = vec4(d, 0.0f);
+      }
+    return vec2(restrictedLargestNorm(q, 2, 2, rect), differenceNetError(big1, big2, 2, 2));
+  }
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 2; ++j) {
       vec3 d = secondDifferenceOf(vec3(bp.cp[i * 4 + j]), vec3(bp.cp[i * 4 + j + 1]),
@@ -227,9 +225,19 @@ vec4 bicubicSecondBounds(IN(BicubicPatch) bp, vec4 rect) {
       big2 = max(big2, maxAbsComponent(d));
       q.c[i * 4 + j] = vec4(d, 0.0f);
     }
-  norms.z = restrictedLargestNorm(q, 3, 1, rect);
-  errors.z = differenceNetError(big1, big2, 3, 1);
-  return differenceBounds(norms, errors, 3, 3, rect);
+  return vec2(restrictedLargestNorm(q, 3, 1, rect), differenceNetError(big1, big2, 3, 1));
+}
+
+// (M_ss, M_st, M_tt, guard) of the bicubic patch on the node from its three nets' bounds.
+vec4 bicubicBoundsOfNets(vec2 ss, vec2 st, vec2 tt, vec4 rect) {
+  return differenceBounds(vec3(ss.x, st.x, tt.x), vec3(ss.y, st.y, tt.y), 3, 3, rect);
+}
+
+// (M_ss, M_st, M_tt, guard) of the bicubic patch on the node: its three second-difference
+// nets restricted to the node.
+vec4 bicubicSecondBounds(IN(BicubicPatch) bp, vec4 rect) {
+  return bicubicBoundsOfNets(bicubicNetBound(bp, rect, 0), bicubicNetBound(bp, rect, 1),
+                             bicubicNetBound(bp, rect, 2), rect);
 }
 
 // Rule T's equal split of a node that fails δ: the fewest children k_u·k_v (each count at

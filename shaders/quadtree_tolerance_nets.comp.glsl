@@ -1,0 +1,28 @@
+#version 450
+// Rule T on bicubic patches, first of two dispatches a level: per node, the bounds of two of
+// the three restricted second-difference nets (Δ²_s and Δ_sΔ_t: lib/tolerance_bound.h,
+// bicubicNetBound) into ToleranceNetBounds; quadtree_tolerance.comp.glsl adds the third and
+// decides. Why two shaders: lavapipe compiles every pipeline at every run, on the thread that
+// asks, and the nets' de Casteljau restrictions are most of the compile: two pipelines built
+// on two threads take about half the time of one (bench/bench_startup.cpp). The same text as
+// the mirror's bicubicSecondBounds, net by net, so the decisions are bit-identical.
+#extension GL_GOOGLE_include_directive : require
+#include "layout.h"
+#include "lib/shared_glsl_cpp.h"
+#define TOLERANCE_ROW_ORDER 4  // bicubic rows: lib/tolerance_bound.h
+#include "lib/tolerance_bound.h"
+#include "lib/dispatch.glsl"
+
+layout(std430, binding = 0) readonly buffer Patches { BicubicPatch patches[]; };
+layout(std430, binding = 1) readonly buffer Nodes { QuadNode nodes[]; };
+layout(std430, binding = 2) writeonly buffer Nets { ToleranceNetBounds nets[]; };
+
+layout(push_constant) uniform Push { ClassifyPush pc; };
+
+void main() {
+  uint index = linearInvocationIndex();
+  if (index >= pc.nodeCount) return;
+  QuadNode node = nodes[index];
+  nets[index].ssSt = vec4(bicubicNetBound(patches[node.patchIndex], node.rect, 0),
+                          bicubicNetBound(patches[node.patchIndex], node.rect, 1));
+}
