@@ -1,10 +1,12 @@
-// The Vulkan path's fixed cost (issue 15): README's command 1, the teapot by rule B, on Vulkan
-// and on the CPU backend, in process (context + backend + tessellate, each run from scratch)
-// and as whole `tessera tessellate` processes, warm (Mesa's shader cache and the pipeline cache
-// as a second run finds them) and cold (both off). Prints where the Vulkan time goes
-// (vk::ContextTimings: instance, device, pipeline cache, pipelines, first dispatch, dispatches)
-// and the Vulkan/CPU ratios, minima and medians over the runs.
-//   bench_startup [runs]   (default 9; at least 5)
+// The Vulkan path's fixed cost (issue 15): README's command 1 (the teapot in the default mode,
+// rule T at 0.1% of the diagonal) and the teapot by rule B, on Vulkan and on the CPU backend,
+// in process (context + backend + tessellate, each run from scratch) and as whole `tessera
+// tessellate` processes, warm (Mesa's shader cache and the pipeline cache as a second run finds
+// them) and cold (both off). Prints where the Vulkan time goes (vk::ContextTimings: instance,
+// device, pipeline cache, pipelines, first dispatch, dispatches) and the Vulkan/CPU ratios,
+// minima and medians over the runs.
+//   bench_startup [runs]   (default 9; at least 5; per job and backend)
+#include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -15,12 +17,14 @@
 #include <cstring>
 #include <fstream>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "bench_report.h"
 #include "io/bpt_reader.h"
 #include "mesh/tessellate.h"
+#include "quadtree/tolerance.h"
 #include "vk/context.h"
 
 extern char** environ;
@@ -63,10 +67,15 @@ double runProcess(const std::vector<std::string>& args, const std::vector<std::s
   std::vector<char*> envp;
   for (const std::string& e : envStrings) envp.push_back(const_cast<char*>(e.c_str()));
   envp.push_back(nullptr);
+  // The summary a run without -q prints (as README's command 1 does) goes to /dev/null.
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
   const Stopwatch stopwatch;
   pid_t pid = 0;
-  if (posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), envp.data()) != 0)
-    throw std::runtime_error("cannot start " + args[0]);
+  const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data());
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) throw std::runtime_error("cannot start " + args[0]);
   int status = 0;
   waitpid(pid, &status, 0);
   const double ms = stopwatch.elapsedMs();
@@ -75,39 +84,35 @@ double runProcess(const std::vector<std::string>& args, const std::vector<std::s
   return ms;
 }
 
-}  // namespace
-}  // namespace tessera
 
-int main(int argc, char** argv) {
-  using namespace tessera;
-  bench::Report report("bench_startup", argc, argv);
-  const int runs = std::max(bench::kMinRuns, argc > 1 ? std::atoi(argv[1]) : 9);
-  const auto teapot = readBpt(TESSERA_BENCH_DATA "/teapot.bpt");
-  QuadtreeOptions options;  // rule B, thresholds 0.1: README's command 1
-  const std::string loadAtStart = loadAverage();
-  report.note("loadAverageAtStart", loadAtStart);
+// One job: its name, its options in process and its extra arguments on the command line.
+struct Job {
+  const char* name;
+  QuadtreeOptions options;
+  std::vector<std::string> cliArgs;
+};
 
-  // In process, every run from scratch: what one CLI run pays besides process start.
+// In process, every run from scratch: what one CLI run pays besides process start.
+void inProcess(bench::Report& report, const std::vector<BezierPatch>& teapot, const Job& job,
+               int runs) {
   Series cpu, vulkan, instance, device, cache, pipelines, firstSubmit, submits, tree;
   size_t triangles = 0;
   std::string deviceName;
   for (int r = 0; r <= runs; ++r) {  // run 0 warms the caches and is not counted
     Stopwatch stopwatch;
     Backend mirror = makeMirrorBackend();
-    Tessellation c = tessellate(teapot, options, mirror);
+    Tessellation c = tessellate(teapot, job.options, mirror);
     const double cpuMs = stopwatch.elapsedMs();
     stopwatch.restart();
     vk::Context context;
     Tessellation v;
     {
       Backend backend = makeVulkanBackend(context);
-      v = tessellate(teapot, options, backend);
+      v = tessellate(teapot, job.options, backend);
     }
     const double vulkanMs = stopwatch.elapsedMs();
-    if (v.mesh.positions != c.mesh.positions || v.mesh.indices != c.mesh.indices) {
-      std::fprintf(stderr, "bench_startup: the Vulkan mesh differs from the CPU one\n");
-      return 1;
-    }
+    if (v.mesh.positions != c.mesh.positions || v.mesh.indices != c.mesh.indices)
+      throw std::runtime_error(std::string("the Vulkan mesh differs from the CPU one: ") + job.name);
     triangles = v.mesh.triangleCount();
     deviceName = context.info().name;
     if (r == 0) {
@@ -125,10 +130,9 @@ int main(int argc, char** argv) {
     submits.add(t.submitsMs);
     tree.add(v.stats.treeMs);
   }
-
   // Milliseconds, so printed by hand: the report's tables are for throughputs.
-  std::printf("### teapot rule B on %s (%zu triangles), in process, %d runs: ms\n\n", deviceName.c_str(),
-              triangles, runs);
+  std::printf("### teapot %s on %s (%zu triangles), in process, %d runs: ms\n\n", job.name,
+              deviceName.c_str(), triangles, runs);
   std::printf("| part | min | median |\n|---|---|---|\n");
   const std::vector<std::pair<const char*, const Series*>> parts = {
       {"CPU backend: backend + tessellate", &cpu},
@@ -145,15 +149,20 @@ int main(int argc, char** argv) {
     std::printf("| %s | %.1f | %.1f |\n", name, series->min(), series->median());
     breakdown[name] = {{"minMs", series->min()}, {"medianMs", series->median()}};
   }
-  std::printf("\n");
-  report.note("inProcessMs", breakdown);
+  std::printf("\nVulkan / CPU, in process: %.2f× by minima, %.2f× by medians\n\n",
+              vulkan.min() / cpu.min(), vulkan.median() / cpu.median());
+  report.note(std::string("inProcessMs ") + job.name, breakdown);
+}
 
-  // Whole processes, as a user runs README's command 1.
 #ifdef TESSERA_CLI_PATH
+// Whole processes, as a user runs the job; the summary goes to /dev/null.
+void wholeProcess(bench::Report& report, const Job& job, int runs) {
   const std::string out = "/tmp/bench_startup_" + std::to_string(::getpid()) + ".obj";
   auto command = [&](const char* backend) {
-    return std::vector<std::string>{TESSERA_CLI_PATH, "tessellate", TESSERA_BENCH_DATA "/teapot.bpt",
-                                    "-m", "B", "--backend", backend, "-o", out, "-q"};
+    std::vector<std::string> args{TESSERA_CLI_PATH, "tessellate", TESSERA_BENCH_DATA "/teapot.bpt"};
+    args.insert(args.end(), job.cliArgs.begin(), job.cliArgs.end());
+    args.insert(args.end(), {"--backend", backend, "-o", out});
+    return args;
   };
   const std::vector<std::string> cold = {"MESA_SHADER_CACHE_DISABLE=true",
                                          "TESSERA_PIPELINE_CACHE=off"};
@@ -166,23 +175,54 @@ int main(int argc, char** argv) {
     coldProcess.add(runProcess(command("vulkan"), cold));
   }
   std::remove(out.c_str());
+  std::string line = "`tessera tessellate data/teapot.bpt";
+  for (const std::string& a : job.cliArgs) line += " " + a;
   bench::Table& processes =
-      report.table("process", "runs",
-                   "`tessera tessellate data/teapot.bpt -m B -o x.obj -q`, whole process wall "
-                   "time; cold = MESA_SHADER_CACHE_DISABLE=true TESSERA_PIPELINE_CACHE=off");
+      report.table(std::string("process ") + job.name, "runs",
+                   line + " --backend … -o x.obj`, whole process wall time; cold = "
+                          "MESA_SHADER_CACHE_DISABLE=true TESSERA_PIPELINE_CACHE=off");
   processes.cases = {toCase("--backend cpu", cpuProcess),
                      toCase("--backend vulkan, warm caches", vulkanProcess),
                      toCase("--backend vulkan, cold", coldProcess)};
   report.print(processes);
-  std::printf("Vulkan / CPU, whole process: %.2f× by minima, %.2f× by medians (cold: %.2f×, "
-              "%.2f×)\n",
-              vulkanProcess.min() / cpuProcess.min(), vulkanProcess.median() / cpuProcess.median(),
-              coldProcess.min() / cpuProcess.min(), coldProcess.median() / cpuProcess.median());
-  report.note("processRatioMin", vulkanProcess.min() / cpuProcess.min());
-  report.note("processRatioMedian", vulkanProcess.median() / cpuProcess.median());
+  std::printf("Vulkan / CPU, whole process, %s: %.2f× by minima, %.2f× by medians (cold: %.2f×, "
+              "%.2f×)\n\n",
+              job.name, vulkanProcess.min() / cpuProcess.min(),
+              vulkanProcess.median() / cpuProcess.median(), coldProcess.min() / cpuProcess.min(),
+              coldProcess.median() / cpuProcess.median());
+  report.note(std::string("processRatioMin ") + job.name, vulkanProcess.min() / cpuProcess.min());
+  report.note(std::string("processRatioMedian ") + job.name,
+              vulkanProcess.median() / cpuProcess.median());
+}
 #endif
-  std::printf("Vulkan / CPU, in process: %.2f× by minima, %.2f× by medians\n",
-              vulkan.min() / cpu.min(), vulkan.median() / cpu.median());
+
+}  // namespace
+}  // namespace tessera
+
+int main(int argc, char** argv) {
+  using namespace tessera;
+  bench::Report report("bench_startup", argc, argv);
+  const int runs = std::max(bench::kMinRuns, argc > 1 ? std::atoi(argv[1]) : 9);
+  const auto teapot = readBpt(TESSERA_BENCH_DATA "/teapot.bpt");
+  // README's command 1 gives no -m: rule T at the default tolerance, as the CLI resolves it.
+  const std::vector<Job> jobs = {
+      {"rule T (default, README command 1)",
+       toleranceOptions(resolveTolerance(ToleranceSpec{}, teapot)),
+       {}},
+      {"rule B", QuadtreeOptions{}, {"-m", "B"}}};
+  const std::string loadAtStart = loadAverage();
+  report.note("loadAverageAtStart", loadAtStart);
+  try {
+    for (const Job& job : jobs) {
+      inProcess(report, teapot, job, runs);
+#ifdef TESSERA_CLI_PATH
+      wholeProcess(report, job, runs);
+#endif
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_startup: %s\n", e.what());
+    return 1;
+  }
   std::printf("load average: %s at start, %s at end\n",
               loadAtStart.c_str(), loadAverage().c_str());
   report.note("loadAverageAtEnd", loadAverage());
