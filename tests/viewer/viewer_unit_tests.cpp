@@ -2,7 +2,6 @@
 // docs/cli.md lists), what each action does to the view state, the status line, the orbit
 // camera under a drag and the wheel, and --script files. The window's own handlers, and the
 // picture each key gives, are checked under Xvfb (keys_script.txt, viewer_check keys).
-#define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
 
 #define GLFW_INCLUDE_NONE
