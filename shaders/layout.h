@@ -281,10 +281,13 @@ struct StitchPush {
 // ---- The fixed-function peer: Vulkan tessellation shaders (shaders/tess_peer.*.glsl,
 // host/realtime/tess_shader_peer_vulkan.cpp) ----
 
-// Push constants of tess_peer.tesc/tese.glsl (80 of the guaranteed 128 bytes).
+// Push constants of tess_peer.tesc/tese.glsl (96 of the guaranteed 128 bytes).
 struct TessPeerPush {
   vec4 viewProjection[4];  // clip from world, glm column order, Vulkan clip space
   vec4 params;             // viewport width, height (pixels), tolerance (pixels), max factor
+  vec4 rules;  // factor scale (multiplies each factor before rounding up; 1 = the chord rule),
+               // a collapsed side's factor as a multiple of the inner one along it (0: its own,
+               // 1), 0, 0
 };
 
 // One triangle of the peer as its capture pipeline records it (tess_peer_capture.geom.glsl):

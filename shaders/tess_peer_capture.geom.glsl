@@ -16,7 +16,7 @@ layout(location = 0) out vec3 normal;
 
 // The capture draws at most 256 patches a draw (TessShaderPeer::captureFrame): lavapipe's
 // gl_PrimitiveID wraps at 256 within one draw. The draw's first patch comes from here.
-layout(push_constant) uniform CapturePush { layout(offset = 80) uint patchBase; } capture;
+layout(push_constant) uniform CapturePush { layout(offset = 96) uint patchBase; } capture;
 layout(std430, binding = 1) writeonly buffer Triangles { TessPeerTriangle triangles[]; };
 layout(std430, binding = 2) buffer Count { uint count; };
 

@@ -1,6 +1,7 @@
 // The tessellation-shader peer (host/realtime/tess_shader_peer.h): draws validation-clean, culls what
 // is off screen, and its triangle count grows as the tolerance shrinks (the screen-space rule);
-// its capture pipeline records the triangles it draws, for measuring its screen error.
+// its capture pipeline records the triangles it draws, for measuring its screen error; and the
+// search for its factor scale at 1 px finds one that measures within 1 px.
 #include <catch2/catch.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -12,6 +13,7 @@
 #include "gpu_test_context.h"
 #include "io/bpt_reader.h"
 #include "realtime/frame.h"
+#include "realtime/tess_peer_tuning.h"
 #include "realtime/tess_shader_peer.h"
 
 using namespace tessera;
@@ -89,5 +91,49 @@ TEST_CASE("tessellation-shader peer: captured triangles are the drawn ones", "[g
   CHECK(error.triangles > 0);
   CHECK(error.maxAffinePixels > 0.0);
   CHECK(std::isfinite(error.maxAffinePixels));
+  test::requireValidationClean();
+}
+
+// The peer tuned to 1 px (bench case 5's equal-error row): as derived its rule misses 1 px on
+// these views (poles' sides at factor 1, the twist ignored); with poles' sides at the inner
+// factor, searchFactorScale finds a scale whose measured error is within 1 px, again when
+// measured afresh, with a scale less than `resolution` below it measured above 1 px.
+TEST_CASE("tessellation-shader peer: the factor scale searched for 1 px meets it",
+          "[gpu][tesspeer]") {
+  vk::Context& context = test::gpuContext();
+  const std::vector<BezierPatch> teapot = readBpt(TESSERA_SOURCE_DIR "/data/teapot.bpt");
+  std::vector<PeerView> views;
+  for (const glm::dvec3& eye : {glm::dvec3(8, -10, 6), glm::dvec3(1.5, -2.5, 6.5)}) {
+    const glm::dvec3 target(0, 0, 1.5);
+    const Camera camera = lookAtCamera(eye, target, {0, 0, 1}, glm::radians(40.0), 640, 480, 0.1,
+                                       100.0);
+    views.push_back({glm::perspectiveRH_ZO(glm::radians(40.0f), 640.0f / 480.0f, 0.1f, 100.0f) *
+                         glm::lookAtRH(glm::vec3(eye), glm::vec3(target), glm::vec3(0, 0, 1)),
+                     camera});
+  }
+  TessShaderPeer naive(context, toGpuPatches(teapot), {640, 480, 1.0f, 64.0f});
+  const ScreenErrorReport asDerived = measurePeerScreenError(naive, teapot, views);
+  TessPeerOptions options{640, 480, 1.0f, 64.0f};
+  options.collapsedSideScale = 1.0f;
+  TessShaderPeer tuned(context, toGpuPatches(teapot), options);
+  const float resolution = 0.05f;
+  const FactorScaleSearch search = searchFactorScale(tuned, teapot, views, 1.0, resolution);
+  const ScreenErrorReport found = measurePeerScreenError(tuned, teapot, views);
+  WARN("as derived " << asDerived.maxAffinePixels << " px; tuned: scale " << search.scale
+                     << " after " << search.trials.size() << " trials, " << found.maxAffinePixels
+                     << " px affine, " << found.maxPerspectivePixels << " px perspective, "
+                     << found.triangles << " triangles (as derived " << asDerived.triangles
+                     << ")");
+  CHECK(asDerived.maxAffinePixels > 1.0);
+  REQUIRE(search.met);
+  CHECK(found.triangles > 0);
+  CHECK(found.maxAffinePixels <= 1.0);
+  bool bracketed = search.scale == 1.0f;
+  for (const FactorScaleTrial& t : search.trials) {
+    if (t.scale == search.scale) CHECK(t.error.maxAffinePixels == found.maxAffinePixels);
+    bracketed = bracketed || (t.scale < search.scale && t.scale >= search.scale - resolution &&
+                              t.error.maxAffinePixels > 1.0);
+  }
+  CHECK(bracketed);
   test::requireValidationClean();
 }

@@ -1,7 +1,8 @@
 // The fixed-function alternative to Tessera's view-dependent tessellation (bench case 6):
 // bicubic patches drawn through Vulkan's tessellation stages (shaders/tess_peer.*.glsl), with
 // per-edge factors from a screen-space chord-error rule (tolerance in pixels, factor ≤ 64),
-// into an offscreen colour + depth target. Needs the tessellationShader feature; counts the
+// into an offscreen colour + depth target. The rule as derived overshoots the tolerance (it
+// ignores the twist, and a pole's side gets factor 1); its two tuning knobs are options. Needs the tessellationShader feature; counts the
 // triangles the tessellator made with a pipeline-statistics query when the device has one.
 #pragma once
 #include <glm/glm.hpp>
@@ -21,6 +22,13 @@ struct TessPeerOptions {
   uint32_t width = 1920, height = 1080;
   float tolerancePixels = 1.0f;
   float maxFactor = 64.0f;  // what every device supports is at least 64
+  // Multiplies every factor before it is rounded up (as engines tune a screen-space factor
+  // heuristic): 1 is the chord rule as derived.
+  float factorScale = 1.0f;
+  // A collapsed side (four equal control points: a pole) takes this multiple of the inner
+  // factor along it (at most maxFactor); 0: its own factor, 1. No crack either way: no other
+  // patch shares that side.
+  float collapsedSideScale = 0.0f;
 };
 
 class TessShaderPeer {
@@ -37,6 +45,8 @@ class TessShaderPeer {
   // patches not culled), or 0 when the device has no pipeline-statistics queries.
   uint64_t drawFrame(const glm::mat4& viewProjection);
   bool countsTriangles() const;
+  // The next frames' factor scale (TessPeerOptions::factorScale), for searching it.
+  void setFactorScale(float factorScale);
 
   // Draws one frame as drawFrame does, through a pipeline with a geometry stage that records
   // every triangle the tessellator made (before clipping): world corners, their (u, v) and

@@ -114,6 +114,8 @@ TessShaderPeer::~TessShaderPeer() = default;
 
 bool TessShaderPeer::countsTriangles() const { return d_->query != VK_NULL_HANDLE; }
 
+void TessShaderPeer::setFactorScale(float factorScale) { d_->options.factorScale = factorScale; }
+
 bool TessShaderPeer::capturesTriangles() const {
   return d_->context.enabledFeatures().geometryShader &&
          d_->context.enabledFeatures().vertexPipelineStoresAndAtomics;
@@ -187,6 +189,7 @@ void recordDraw(TessShaderPeer::Objects& d, VkCommandBuffer cmd, bool capture,
   for (int c = 0; c < 4; ++c) push.viewProjection[c] = viewProjection[c];
   push.params = glm::vec4(float(d.options.width), float(d.options.height),
                           d.options.tolerancePixels, d.options.maxFactor);
+  push.rules = glm::vec4(d.options.factorScale, d.options.collapsedSideScale, 0.0f, 0.0f);
   if (d.query) vk.vkCmdResetQueryPool(cmd, d.query, 0, 1);
   VkClearValue clears[2]{};
   clears[0].color = {{0.96f, 0.96f, 0.97f, 1.0f}};

@@ -15,6 +15,7 @@ static_assert(offsetof(GridEvalPush, pointsPerSide) == 4 &&
 }  // namespace tessera::gpu
 
 namespace tessera::gpu {
-static_assert(sizeof(TessPeerPush) == 80, "TessPeerPush: 5 vec4");
-static_assert(offsetof(TessPeerPush, params) == 64, "TessPeerPush member offsets");
+static_assert(sizeof(TessPeerPush) == 96, "TessPeerPush: 6 vec4");
+static_assert(offsetof(TessPeerPush, params) == 64 && offsetof(TessPeerPush, rules) == 80,
+              "TessPeerPush member offsets");
 }  // namespace tessera::gpu
