@@ -413,13 +413,13 @@ int main(int argc, char** argv) {
     peer.extra = peerExtras(peerNaive, n, ours, sampled);
     table.cases.push_back(peer);
   }
+  char tunedName[160];
+  std::snprintf(tunedName, sizeof tunedName,
+                "Vulkan tessellation shaders tuned to %.2g px (factors x%.4g, poles' sides at the "
+                "inner factor)",
+                tolerance, peerSearch.scale);
   if (!peerTuned.seconds.empty()) {
-    char name[160];
-    std::snprintf(name, sizeof name,
-                  "Vulkan tessellation shaders tuned to %.2g px: factors x%.4g, poles' sides at "
-                  "the inner factor",
-                  tolerance, peerSearch.scale);
-    bench::Case peer{name, double(frames), timingOf(peerTuned.seconds)};
+    bench::Case peer{tunedName, double(frames), timingOf(peerTuned.seconds)};
     peer.throughput = frames / peerTuned.total;
     peer.extra = peerExtras(peerTuned, n, ours, sampled);
     peer.extra["factorScale"] = peerSearch.scale;
@@ -457,16 +457,11 @@ int main(int argc, char** argv) {
   printRun("Tessera with proven counts", oursProven, frames, tolerance, sampled.size());
   if (!peerNaive.seconds.empty()) {
     std::printf("\n");
-    printPeer("tessellation shaders on the same path, rule as derived", peerNaive, frames, ours,
-              sampled.size());
+    printPeer("Vulkan tessellation shaders on the same path, rule as derived", peerNaive, frames,
+              ours, sampled.size());
   }
   if (!peerTuned.seconds.empty()) {
-    char name[160];
-    std::snprintf(name, sizeof name,
-                  "tessellation shaders tuned to %.2g px (factors x%.4g, poles' sides at the "
-                  "inner factor)",
-                  tolerance, peerSearch.scale);
-    printPeer(name, peerTuned, frames, ours, sampled.size());
+    printPeer(tunedName, peerTuned, frames, ours, sampled.size());
     std::printf("  on %zu frames it was not tuned on (each sampled + %d): max %.3f px affine, "
                 "%.3f px perspective-correct%s\n",
                 heldOut.size(), frames / 10, peerHeldOut.maxAffinePixels,
