@@ -134,10 +134,13 @@ struct NodeDecision {
 
 // Rule T on bicubic patches classifies a level in two dispatches whose pipelines the driver
 // compiles side by side (quadtree_tolerance_nets.comp.glsl, then quadtree_tolerance.comp.glsl):
-// the first writes, per node, two of the three restricted difference nets' bounds
-// (lib/tolerance_bound.h, bicubicNetBound), which the second reads.
+// the first writes, per node, two of the three restricted difference nets' terms
+// (lib/tolerance_bound.h, bicubicNetBound), which the second reads: the largest norms and
+// error terms, and for the centred form each net's bounding-box centre and spread about it.
 struct ToleranceNetBounds {
-  vec4 ssSt;  // (‖Δ²_s‖, its error term, ‖Δ_sΔ_t‖, its error term)
+  vec4 ssSt;      // (‖Δ²_s‖, its error term, ‖Δ_sΔ_t‖, its error term)
+  vec4 ssCentre;  // Δ²_s's centre (xyz) and spread (w)
+  vec4 stCentre;  // Δ_sΔ_t's centre (xyz) and spread (w)
 };
 
 // Push constants of quadtree.comp.glsl. The split rule and S are specialization constants.

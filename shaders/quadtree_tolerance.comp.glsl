@@ -1,6 +1,6 @@
 #version 450
-// Rule T on bicubic patches, second of two dispatches a level: the third restricted net's bound
-// (Δ²_t), with the two quadtree_tolerance_nets.comp.glsl wrote, gives the node's proven bound
+// Rule T on bicubic patches, second of two dispatches a level: the third restricted net's terms
+// (Δ²_t), with the two quadtree_tolerance_nets.comp.glsl wrote, give the node's proven bound
 // (lib/tolerance_bound.h), and toleranceDecision decides against δ. Without the corner frames
 // and rules B-D's tests, which quadtree.comp.glsl has: the driver compiles the pipeline at
 // every run (lavapipe keeps no pipeline cache), and this default job's shaders should cost it
@@ -23,9 +23,12 @@ void main() {
   uint index = linearInvocationIndex();
   if (index >= pc.nodeCount) return;
   QuadNode node = nodes[index];
-  vec4 first = nets[index].ssSt;
-  vec4 bounds = bicubicBoundsOfNets(first.xy, first.zw,
-                                    bicubicNetBound(patches[node.patchIndex], node.rect, 2),
-                                    node.rect);
-  decisions[index] = toleranceDecision(bounds, node, pc);
+  ToleranceNetBounds first = nets[index];
+  vec3 errors;
+  errors.xy = first.ssSt.yw;
+  NetTerms tt = bicubicNetBound(patches[node.patchIndex], node.rect, 2, errors.z);
+  ToleranceTerms terms = bicubicTermsOfNets(netTermsOf(first.ssCentre, first.ssSt.x),
+                                            netTermsOf(first.stCentre, first.ssSt.z), tt, errors,
+                                            node.rect);
+  decisions[index] = toleranceDecision(terms, node, pc);
 }

@@ -1,6 +1,6 @@
 #version 450
-// Rule T on bicubic patches, first of two dispatches a level: per node, the bounds of two of
-// the three restricted second-difference nets (Δ²_s and Δ_sΔ_t: lib/tolerance_bound.h,
+// Rule T on bicubic patches, first of two dispatches a level: per node, the terms (largest
+// norm, error term, centre, spread) of two of the three restricted second-difference nets (Δ²_s and Δ_sΔ_t: lib/tolerance_bound.h,
 // bicubicNetBound) into ToleranceNetBounds; quadtree_tolerance.comp.glsl adds the third and
 // decides. Why two shaders: lavapipe compiles every pipeline at every run, on the thread that
 // asks, and the nets' de Casteljau restrictions are most of the compile: two pipelines built
@@ -23,6 +23,11 @@ void main() {
   uint index = linearInvocationIndex();
   if (index >= pc.nodeCount) return;
   QuadNode node = nodes[index];
-  nets[index].ssSt = vec4(bicubicNetBound(patches[node.patchIndex], node.rect, 0),
-                          bicubicNetBound(patches[node.patchIndex], node.rect, 1));
+  float ssError;
+  float stError;
+  NetTerms ss = bicubicNetBound(patches[node.patchIndex], node.rect, 0, ssError);
+  NetTerms st = bicubicNetBound(patches[node.patchIndex], node.rect, 1, stError);
+  nets[index].ssSt = vec4(ss.largest, ssError, st.largest, stError);
+  nets[index].ssCentre = netCentreSpread(ss);
+  nets[index].stCentre = netCentreSpread(st);
 }

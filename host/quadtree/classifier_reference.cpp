@@ -219,29 +219,59 @@ dvec2 splitPointLocal(const PatchContext& p, const Rect& r, SplitRule rule, int 
   return glm::clamp(dvec2(best.x, best.y), dvec2(m), dvec2(1.0 - m));
 }
 
-// Rule T: (M_ss, M_st, M_tt) of the node in local coordinates (docs/quadtree.md, "Rule T").
+// Rule T: (M_ss, M_st, M_tt) of the node in local coordinates (docs/quadtree.md, "Rule T"),
+// and for polynomial nets the centred form's C (the nets' bounding-box centres) and
+// m = (m_ss, m_st, m_tt) (their largest distances from them; "A tighter bound").
 struct SecondBounds {
   double ss = 0, st = 0, tt = 0;
+  dvec3 css{0.0}, cst{0.0}, ctt{0.0};
+  double mss = 0, mst = 0, mtt = 0;
 };
+
+// One second-difference net's largest norm, bounding-box centre and spread, scaled by c.
+void netTerms(const std::vector<dvec3>& net, double c, double& largest, dvec3& centre,
+              double& spread) {
+  dvec3 lo(INFINITY), hi(-INFINITY);
+  largest = 0;
+  for (const dvec3& d : net) lo = glm::min(lo, d), hi = glm::max(hi, d), largest = std::max(largest, glm::length(d));
+  centre = net.empty() ? dvec3(0.0) : 0.5 * (lo + hi);
+  spread = 0;
+  for (const dvec3& d : net) spread = std::max(spread, glm::length(d - centre));
+  largest *= c, centre *= c, spread *= c;
+}
 
 SecondBounds polynomialBounds(const HomogeneousNet& net) {
   SecondBounds b;
   const int n = net.n, m = net.m;
+  std::vector<dvec3> ss, st, tt;
   for (int i = 0; i <= n; ++i)
     for (int j = 0; j <= m; ++j) {
       const dvec3 p(net.at(i, j));
-      if (i + 2 <= n)
-        b.ss = std::max(b.ss, glm::length(dvec3(net.at(i + 2, j)) - 2.0 * dvec3(net.at(i + 1, j)) + p));
-      if (j + 2 <= m)
-        b.tt = std::max(b.tt, glm::length(dvec3(net.at(i, j + 2)) - 2.0 * dvec3(net.at(i, j + 1)) + p));
+      if (i + 2 <= n) ss.push_back(dvec3(net.at(i + 2, j)) - 2.0 * dvec3(net.at(i + 1, j)) + p);
+      if (j + 2 <= m) tt.push_back(dvec3(net.at(i, j + 2)) - 2.0 * dvec3(net.at(i, j + 1)) + p);
       if (i < n && j < m)
-        b.st = std::max(b.st, glm::length(dvec3(net.at(i + 1, j + 1)) - dvec3(net.at(i + 1, j)) -
-                                          dvec3(net.at(i, j + 1)) + p));
+        st.push_back(dvec3(net.at(i + 1, j + 1)) - dvec3(net.at(i + 1, j)) -
+                     dvec3(net.at(i, j + 1)) + p);
     }
-  b.ss *= double(n * (n - 1));
-  b.st *= double(n * m);
-  b.tt *= double(m * (m - 1));
+  netTerms(ss, double(n * (n - 1)), b.ss, b.css, b.mss);
+  netTerms(st, double(n * m), b.st, b.cst, b.mst);
+  netTerms(tt, double(m * (m - 1)), b.tt, b.ctt, b.mtt);
   return b;
+}
+
+// W(C) of lib/tolerance_bound.h's quadraticPartBound, in double.
+double quadraticPartBound(const dvec3& ss, const dvec3& st, const dvec3& tt) {
+  return std::max({glm::length(ss + tt + 2.0 * st), glm::length(ss + tt - 2.0 * st),
+                   glm::length(ss + st), glm::length(ss - st), glm::length(tt + st),
+                   glm::length(tt - st)});
+}
+
+// 8·k_u²·k_v² × the bound of a child of the node split k_u × k_v (toleranceGridNumerator).
+double gridNumerator(const SecondBounds& m, double uu, double uv, double vv) {
+  const double plain = m.ss * vv + 2.0 * m.st * uv + m.tt * uu;
+  const double centred = quadraticPartBound(vv * m.css, uv * m.cst, uu * m.ctt) + m.mss * vv +
+                         2.0 * m.mst * uv + m.mtt * uu;
+  return std::min(plain, centred);
 }
 
 // The patch's homogeneous net moved to a control point O (P_h − w·O), the local frame of the
@@ -272,13 +302,15 @@ SecondBounds toleranceBounds(const PatchContext& p, const Rect& r) {
   DivisionOptions options;
   options.method = DivisionMethod::Split;
   options.ratioPieces = gpu::kToleranceRatioPieces;
-  const SecondDerivativeBounds d = secondDerivativeBounds(toPatch(sub), options);
-  if (!d.bounded) return {INFINITY, INFINITY, INFINITY};
-  return {d.uu, d.uv, d.vv};
+  SecondDerivativeBounds d = secondDerivativeBounds(toPatch(sub), options);
+  SecondBounds b;  // no centred form: C = 0, m = M
+  if (!d.bounded) d.uu = d.uv = d.vv = INFINITY;
+  b.ss = b.mss = d.uu, b.st = b.mst = d.uv, b.tt = b.mtt = d.vv;
+  return b;
 }
 
 // The fewest equal children k_u × k_v (each ≤ the cap) whose estimated bound
-// (M_ss/k_u² + 2·M_st/(k_u·k_v) + M_tt/k_v²)/8 is within δ, as k_u | k_v << 8; 0 if none
+// gridNumerator/(8·k_u²·k_v²) is within δ, as k_u | k_v << 8; 0 if none
 // (the double twin of toleranceGridCounts in lib/tolerance_bound.h, without its fp32 guard).
 uint32_t toleranceGridCounts(const SecondBounds& m, double tolerance, uint32_t cap) {
   uint32_t best = 0, bestCount = cap * cap + 1;
@@ -287,7 +319,7 @@ uint32_t toleranceGridCounts(const SecondBounds& m, double tolerance, uint32_t c
     for (uint32_t kv = 1; kv <= cap && ku * kv <= bestCount; ++kv) {
       if (ku * kv < 2) continue;
       const double fu = ku, fv = kv;
-      const double estimate = (m.ss / (fu * fu) + 2.0 * m.st / (fu * fv) + m.tt / (fv * fv)) / 8.0;
+      const double estimate = gridNumerator(m, fu * fu, fu * fv, fv * fv) / (fu * fu * fv * fv) / 8.0;
       if (!(estimate <= tolerance)) continue;
       if (ku * kv < bestCount || estimate < bestEstimate) {
         best = ku | (kv << 8);
@@ -303,7 +335,7 @@ gpu::NodeDecision toleranceDecision(const PatchContext& p, const gpu::QuadNode& 
                                     const QuadtreeOptions& o) {
   Rect r{node.rect.x, node.rect.y, node.rect.z, node.rect.w};
   const SecondBounds m = toleranceBounds(p, r);
-  const double a = m.ss + m.st, b = m.tt + m.st, bound = (a + b) / 8.0;
+  const double a = m.ss + m.st, b = m.tt + m.st, bound = gridNumerator(m, 1, 1, 1) / 8.0;
   gpu::NodeDecision d{};
   d.split = gpu::vec4(float(r.u(0.5)), float(r.v(0.5)), 0.0f, 0.0f);
   d.linearity = float(a + b > 0.0 ? a / (a + b) : 0.5);

@@ -22,7 +22,7 @@ gpu::NodeDecision classifyNode(const gpu::BicubicPatch& patch, const gpu::QuadNo
 
 gpu::NodeDecision toleranceDecisionOf(gpu::vec4 bounds, const gpu::QuadNode& node,
                                       const gpu::ClassifyPush& params) {
-  return glsl::toleranceDecision(bounds, node, params);
+  return glsl::toleranceDecision(glsl::toleranceTermsOf(bounds), node, params);
 }
 
 }  // namespace tessera::mirror

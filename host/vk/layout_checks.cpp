@@ -24,7 +24,9 @@ static_assert(sizeof(NodeDecision) == 32 && offsetof(NodeDecision, cause) == 16 
                   offsetof(NodeDecision, linearity) == 20 && offsetof(NodeDecision, flatness) == 24 &&
                   offsetof(NodeDecision, pad) == 28,
               "NodeDecision layout");
-static_assert(sizeof(ToleranceNetBounds) == 16, "ToleranceNetBounds layout");
+static_assert(sizeof(ToleranceNetBounds) == 48 && offsetof(ToleranceNetBounds, ssCentre) == 16 &&
+                  offsetof(ToleranceNetBounds, stCentre) == 32,
+              "ToleranceNetBounds layout");
 static_assert(sizeof(ClassifyPush) == 32 && offsetof(ClassifyPush, maxDepth) == 16 &&
                   offsetof(ClassifyPush, nodeCount) == 20 &&
                   offsetof(ClassifyPush, tolerance) == 24 &&

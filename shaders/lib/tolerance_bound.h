@@ -122,23 +122,98 @@ float differenceNetError(float big1, float big2, int du, int dv) {
   return e;
 }
 
-// (M_ss, M_st, M_tt, guard) from the largest norms of the three restricted difference nets
-// (in the patch's parameters) and their error terms: M_ss = n(n−1)·h_u²·‖Δ²_s‖, M_st =
-// n·m·h_u·h_v·‖Δ_sΔ_t‖, M_tt = m(m−1)·h_v²·‖Δ²_t‖ — de Casteljau commutes with differencing,
-// so these are the node-local bounds of the restricted net.
-vec4 differenceBounds(vec3 norms, vec3 errors, int n, int m, vec4 rect) {
+// One restricted second-difference net's summary: the largest norm of its entries, the
+// centre of their bounding box and their largest distance from it (two passes over the
+// entries: netTermsInclude, then netTermsSpread after netTermsCentre).
+struct NetTerms {
+  vec3 lo;
+  vec3 hi;
+  vec3 centre;
+  float largest;
+  float spread;
+};
+
+NetTerms emptyNetTerms() {
+  NetTerms t;
+  t.lo = vec3(3.0e38f);
+  t.hi = vec3(-3.0e38f);
+  t.centre = vec3(0.0f);
+  t.largest = 0.0f;
+  t.spread = 0.0f;
+  return t;
+}
+
+void netTermsInclude(INOUT(NetTerms) t, vec3 v) {
+  t.lo = min(t.lo, v);
+  t.hi = max(t.hi, v);
+  t.largest = max(t.largest, toleranceNorm(v));
+}
+
+void netTermsCentre(INOUT(NetTerms) t) {
+  PRECISE vec3 halfWidth = (t.hi - t.lo) * 0.5f;
+  PRECISE vec3 c = t.lo + halfWidth;
+  t.centre = t.largest > 0.0f ? c : vec3(0.0f);
+}
+
+void netTermsSpread(INOUT(NetTerms) t, vec3 v) {
+  PRECISE vec3 d = v - t.centre;
+  t.spread = max(t.spread, toleranceNorm(d));
+}
+
+// Rule T's terms of one node, in node-local units (s, t) ∈ [0,1]²: `bounds` = (M_ss, M_st,
+// M_tt, guard), the largest norms of the second derivatives' nets and the fp32 guard (the
+// bound (M_ss + 2·M_st + M_tt)/8); ss, st, tt = constant second derivatives C of a quadratic
+// and `spread` = (m_ss, m_st, m_tt) the largest distances of the nets from them (the bound
+// (W(C) + m_ss + 2·m_st + m_tt)/8, toleranceBoundNumerator). Nets without centres (rational,
+// the revolution bound) have C = 0 and m = M.
+struct ToleranceTerms {
+  vec4 bounds;
+  vec4 spread;
+  vec4 ss;
+  vec4 st;
+  vec4 tt;
+};
+
+ToleranceTerms toleranceTermsOf(vec4 bounds) {
+  ToleranceTerms t;
+  t.bounds = bounds;
+  t.spread = vec4(vec3(bounds), 0.0f);
+  t.ss = vec4(0.0f);
+  t.st = vec4(0.0f);
+  t.tt = vec4(0.0f);
+  return t;
+}
+
+// The node's terms from its three restricted difference nets (in the patch's parameters) and
+// their error terms: M_ss = n(n−1)·h_u²·‖Δ²_s‖, M_st = n·m·h_u·h_v·‖Δ_sΔ_t‖, M_tt =
+// m(m−1)·h_v²·‖Δ²_t‖ — de Casteljau commutes with differencing, so these are the node-local
+// bounds of the restricted net — and likewise C and m from the nets' centres and spreads.
+ToleranceTerms differenceTerms(IN(NetTerms) ss, IN(NetTerms) st, IN(NetTerms) tt, vec3 errors,
+                               int n, int m, vec4 rect) {
   PRECISE float hu = rect.z - rect.x;
   PRECISE float hv = rect.w - rect.y;
   PRECISE float css = float(n * (n - 1)) * (hu * hu);
   PRECISE float cst = float(n * m) * (hu * hv);
   PRECISE float ctt = float(m * (m - 1)) * (hv * hv);
-  PRECISE float mss = css * norms.x;
-  PRECISE float mst = cst * norms.y;
-  PRECISE float mtt = ctt * norms.z;
+  PRECISE float mss = css * ss.largest;
+  PRECISE float mst = cst * st.largest;
+  PRECISE float mtt = ctt * tt.largest;
   PRECISE float twoSt = 2.0f * cst;
   PRECISE float spread = (css * errors.x + twoSt * errors.y) + ctt * errors.z;
   PRECISE float guard = kToleranceDifferenceGuard * spread;
-  return vec4(mss, mst, mtt, guard);
+  ToleranceTerms t;
+  t.bounds = vec4(mss, mst, mtt, guard);
+  PRECISE float sss = css * ss.spread;
+  PRECISE float sst = cst * st.spread;
+  PRECISE float stt = ctt * tt.spread;
+  t.spread = vec4(sss, sst, stt, 0.0f);
+  PRECISE vec3 css3 = css * ss.centre;
+  PRECISE vec3 cst3 = cst * st.centre;
+  PRECISE vec3 ctt3 = ctt * tt.centre;
+  t.ss = vec4(css3, 0.0f);
+  t.st = vec4(cst3, 0.0f);
+  t.tt = vec4(ctt3, 0.0f);
+  return t;
 }
 
 // A bicubic difference net, at most 4 × 4 entries, entry (i, j) at i·4 + j (xyz; w = 0).
@@ -146,9 +221,8 @@ struct DifferenceNet4 {
   vec4 c[16];
 };
 
-// The (du + 1) × (dv + 1) net restricted to rect (de Casteljau along u, then v); its
-// largest norm.
-float restrictedLargestNorm(INOUT(DifferenceNet4) q, int du, int dv, vec4 rect) {
+// The (du + 1) × (dv + 1) net restricted to rect (de Casteljau along u, then v); its terms.
+NetTerms restrictedNetTerms(INOUT(DifferenceNet4) q, int du, int dv, vec4 rect) {
   BernsteinRow4 row;
   if (rect.x != 0.0f || rect.z != 1.0f) {
     for (int j = 0; j < 4; ++j) {
@@ -178,23 +252,31 @@ float restrictedLargestNorm(INOUT(DifferenceNet4) q, int du, int dv, vec4 rect) 
       }
     }
   }
-  PRECISE float big = 0.0f;
+  NetTerms t = emptyNetTerms();
   for (int i = 0; i < 4; ++i) {
     if (i > du) break;
     for (int j = 0; j < 4; ++j) {
       if (j > dv) break;
-      big = max(big, toleranceNorm(vec3(q.c[i * 4 + j])));
+      netTermsInclude(t, vec3(q.c[i * 4 + j]));
     }
   }
-  return big;
+  netTermsCentre(t);
+  for (int i = 0; i < 4; ++i) {
+    if (i > du) break;
+    for (int j = 0; j < 4; ++j) {
+      if (j > dv) break;
+      netTermsSpread(t, vec3(q.c[i * 4 + j]));
+    }
+  }
+  return t;
 }
 
-// (largest norm, error term) of one of the bicubic patch's three second-difference nets
-// restricted to the node: net 0 = Δ²_s (2 × 4), 1 = Δ_sΔ_t (3 × 3), 2 = Δ²_t (4 × 2).
-// Differences of control points: the same for the model moved anywhere fp32 holds it exactly
-// (docs/quadtree.md, "fp32"). One function a net, so that a shader may compute some nets
-// and another shader the rest (quadtree_tolerance_nets.comp.glsl).
-vec2 bicubicNetBound(IN(BicubicPatch) bp, vec4 rect, int net) {
+// The terms of one of the bicubic patch's three second-difference nets restricted to the
+// node (net 0 = Δ²_s (2 × 4), 1 = Δ_sΔ_t (3 × 3), 2 = Δ²_t (4 × 2)), and its error term of
+// differenceNetError in `error`. Differences of control points: the same for the model moved
+// anywhere fp32 holds it exactly (docs/quadtree.md, "fp32"). One function a net, so that a
+// shader may compute some nets and another shader the rest (quadtree_tolerance_nets.comp.glsl).
+NetTerms bicubicNetBound(IN(BicubicPatch) bp, vec4 rect, int net, OUT(float) error) {
   DifferenceNet4 q;
   PRECISE float big1 = 0.0f;
   PRECISE float big2 = 0.0f;
@@ -206,7 +288,8 @@ vec2 bicubicNetBound(IN(BicubicPatch) bp, vec4 rect, int net) {
         big2 = max(big2, maxAbsComponent(d));
         q.c[i * 4 + j] = vec4(d, 0.0f);
       }
-    return vec2(restrictedLargestNorm(q, 1, 3, rect), differenceNetError(big1, big2, 1, 3));
+    error = differenceNetError(big1, big2, 1, 3);
+    return restrictedNetTerms(q, 1, 3, rect);
   }
   if (net == 1) {
     for (int i = 0; i < 3; ++i)
@@ -216,7 +299,8 @@ vec2 bicubicNetBound(IN(BicubicPatch) bp, vec4 rect, int net) {
         big2 = max(big2, maxAbsComponent(d));
         q.c[i * 4 + j] = vec4(d, 0.0f);
       }
-    return vec2(restrictedLargestNorm(q, 2, 2, rect), differenceNetError(big1, big2, 2, 2));
+    error = differenceNetError(big1, big2, 2, 2);
+    return restrictedNetTerms(q, 2, 2, rect);
   }
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 2; ++j) {
@@ -225,31 +309,96 @@ vec2 bicubicNetBound(IN(BicubicPatch) bp, vec4 rect, int net) {
       big2 = max(big2, maxAbsComponent(d));
       q.c[i * 4 + j] = vec4(d, 0.0f);
     }
-  return vec2(restrictedLargestNorm(q, 3, 1, rect), differenceNetError(big1, big2, 3, 1));
+  error = differenceNetError(big1, big2, 3, 1);
+  return restrictedNetTerms(q, 3, 1, rect);
 }
 
-// (M_ss, M_st, M_tt, guard) of the bicubic patch on the node from its three nets' bounds.
-vec4 bicubicBoundsOfNets(vec2 ss, vec2 st, vec2 tt, vec4 rect) {
-  return differenceBounds(vec3(ss.x, st.x, tt.x), vec3(ss.y, st.y, tt.y), 3, 3, rect);
+// The bicubic patch's terms on the node from its three nets' terms and error terms.
+ToleranceTerms bicubicTermsOfNets(IN(NetTerms) ss, IN(NetTerms) st, IN(NetTerms) tt,
+                                  vec3 errors, vec4 rect) {
+  return differenceTerms(ss, st, tt, errors, 3, 3, rect);
 }
 
-// (M_ss, M_st, M_tt, guard) of the bicubic patch on the node: its three second-difference
-// nets restricted to the node.
-vec4 bicubicSecondBounds(IN(BicubicPatch) bp, vec4 rect) {
-  return bicubicBoundsOfNets(bicubicNetBound(bp, rect, 0), bicubicNetBound(bp, rect, 1),
-                             bicubicNetBound(bp, rect, 2), rect);
+// One net's terms as the first of rule T's two dispatches passes them to the second
+// (ToleranceNetBounds, shaders/layout.h): (centre, spread), and the largest norm apart. Stored
+// floats as they are, so the second dispatch computes as bicubicSecondBounds does.
+vec4 netCentreSpread(IN(NetTerms) t) {
+  return vec4(t.centre, t.spread);
+}
+
+NetTerms netTermsOf(vec4 centreSpread, float largest) {
+  NetTerms t = emptyNetTerms();
+  t.centre = vec3(centreSpread);
+  t.spread = centreSpread.w;
+  t.largest = largest;
+  return t;
+}
+
+// The terms of the bicubic patch on the node: its three second-difference nets restricted to
+// the node.
+ToleranceTerms bicubicSecondBounds(IN(BicubicPatch) bp, vec4 rect) {
+  vec3 errors;
+  NetTerms ss = bicubicNetBound(bp, rect, 0, errors.x);
+  NetTerms st = bicubicNetBound(bp, rect, 1, errors.y);
+  NetTerms tt = bicubicNetBound(bp, rect, 2, errors.z);
+  return bicubicTermsOfNets(ss, st, tt, errors, rect);
+}
+
+// The bound's absolute guard for the centred form, as a fraction of (M_ss + 2·M_st + M_tt):
+// C's products and W's sums round by a few u relative to the M's, not to the result, which
+// may cancel (docs/quadtree.md, "A tighter bound").
+const float kToleranceCentredGuard = 3.814697265625e-6f;  // 2⁻¹⁸
+
+// W(C) = max over |τ| ≤ 1 of ‖C_ss + 2τ·C_st + τ²·C_tt‖ and ‖τ²·C_ss + 2τ·C_st + C_tt‖, bounded
+// by the two curves' Bézier control points on τ ∈ [−1, 0] and [0, 1]: C_ss ± 2·C_st + C_tt
+// (τ = ±1), C_ss ± C_st and C_tt ± C_st (the middle ones; C_ss and C_tt at τ = 0 are their
+// means). 8 × the largest deviation of any triangle in the node from a quadratic surface of
+// constant second derivatives C (docs/quadtree.md, "A tighter bound").
+float quadraticPartBound(vec3 ss, vec3 st, vec3 tt) {
+  PRECISE vec3 sum = ss + tt;
+  PRECISE vec3 twoSt = 2.0f * st;
+  PRECISE vec3 p = sum + twoSt;
+  PRECISE vec3 q = sum - twoSt;
+  PRECISE vec3 sp = ss + st;
+  PRECISE vec3 sm = ss - st;
+  PRECISE vec3 tp = tt + st;
+  PRECISE vec3 tm = tt - st;
+  PRECISE float w = max(toleranceNorm(p), toleranceNorm(q));
+  w = max(w, max(toleranceNorm(sp), toleranceNorm(sm)));
+  w = max(w, max(toleranceNorm(tp), toleranceNorm(tm)));
+  return w;
+}
+
+// 8·k_u²·k_v² × the bound, before its guards, of a child of the node split k_u × k_v (uu =
+// k_u², uv = k_u·k_v, vv = k_v²; all 1 for the node itself): the smaller of
+// (M_ss·k_v² + 2·M_st·k_u·k_v + M_tt·k_u²) — every term scales by 1/k² in the child — and the
+// centred form W(C_ss·k_v², C_st·k_u·k_v, C_tt·k_u²) + (m_ss·k_v² + 2·m_st·k_u·k_v + m_tt·k_u²)
+// + its absolute guard (W is homogeneous of degree 1).
+float toleranceGridNumerator(IN(ToleranceTerms) t, float uu, float uv, float vv) {
+  PRECISE float twoSt = 2.0f * t.bounds.y;
+  PRECISE float plain = (t.bounds.x * vv + twoSt * uv) + t.bounds.z * uu;
+  PRECISE vec3 ss = vv * vec3(t.ss);
+  PRECISE vec3 st = uv * vec3(t.st);
+  PRECISE vec3 tt = uu * vec3(t.tt);
+  PRECISE float w = quadraticPartBound(ss, st, tt);
+  PRECISE float twoSpreadSt = 2.0f * t.spread.y;
+  PRECISE float rest = (t.spread.x * vv + twoSpreadSt * uv) + t.spread.z * uu;
+  PRECISE float guard = plain * kToleranceCentredGuard;
+  PRECISE float centred = (w + rest) + guard;
+  return min(plain, centred);
 }
 
 // Rule T's equal split of a node that fails δ: the fewest children k_u·k_v (each count at
-// most the cap) whose estimated bound (1 + 2⁻¹⁰)·(M_ss/k_u² + 2·M_st/(k_u·k_v) + M_tt/k_v²)/8
-// + guard is within δ, as k_u | k_v << 8; 0 when no counts within the cap reach δ. Restricting
-// a polynomial net to 1/k of the interval scales its second differences by at most 1/k² (the
-// sub-net's scaled differences are convex combinations of the parent's), so for polynomial
-// patches the children's own bounds are at most this estimate, up to rounding; rational
-// children just split again where it was optimistic. Compared multiplied out by k_u²·k_v²
-// (no division: GPU and mirror agree bit for bit); among equal counts, the smaller estimate.
-uint toleranceGridCounts(vec4 bounds, float tolerance, uint cap) {
-  PRECISE float room = tolerance - bounds.w;
+// most the cap) whose estimated bound (1 + 2⁻¹⁰)·toleranceGridNumerator/(8·k_u²·k_v²) + guard
+// is within δ, as k_u | k_v << 8; 0 when no counts within the cap reach δ. Restricting a
+// polynomial net to 1/k of the interval scales its second differences by 1/k² and keeps them
+// convex combinations of the parent's (so within the parent's spreads of its centres, scaled
+// alike): for polynomial patches the children's own bounds are at most this estimate, up to
+// rounding; rational children just split again where it was optimistic. Compared multiplied
+// out by k_u²·k_v² (no division: GPU and mirror agree bit for bit); among equal counts, the
+// smaller estimate.
+uint toleranceGridCounts(IN(ToleranceTerms) t, float tolerance, uint cap) {
+  PRECISE float room = tolerance - t.bounds.w;
   uint best = 0u;
   uint bestCount = cap * cap + 1u;
   PRECISE float bestNum = 0.0f;
@@ -264,8 +413,7 @@ uint toleranceGridCounts(vec4 bounds, float tolerance, uint cap) {
       PRECISE float uu = fu * fu;
       PRECISE float vv = fv * fv;
       PRECISE float uv = fu * fv;
-      PRECISE float twoSt = 2.0f * bounds.y;
-      PRECISE float num = (bounds.x * vv + twoSt * uv) + bounds.z * uu;
+      PRECISE float num = toleranceGridNumerator(t, uu, uv, vv);
       PRECISE float scaled = num * 0.125f;
       PRECISE float guarded = scaled * kToleranceRelativeGuard;
       PRECISE float den = uu * vv;
@@ -285,20 +433,26 @@ uint toleranceGridCounts(vec4 bounds, float tolerance, uint cap) {
   return best;
 }
 
-// The decision of rule T from the node's (M_ss, M_st, M_tt, rounding guard). With
-// A = M_ss + M_st and B = M_tt + M_st, every triangle with its corners in the leaf (its two
-// triangles, its ring's triangles, a fan) is within (A + B)/8 of the surface (docs/quadtree.md). Not within
-// δ: k_u × k_v equal children where counts within the cap reach δ (toleranceGridCounts);
-// else split at the midpoint along u where A ≥ B/2, v where B ≥ A/2 (both when neither
-// holds: a NaN bound).
-NodeDecision toleranceDecision(vec4 bounds, IN(QuadNode) node, IN(ClassifyPush) params) {
+// The decision of rule T from the node's terms. Every triangle with its corners in the leaf
+// (its two triangles, its ring's triangles, a fan) is within both (A + B)/8, A = M_ss + M_st
+// and B = M_tt + M_st, and (W(C) + m_ss + 2·m_st + m_tt)/8 of the surface (docs/quadtree.md);
+// the bound is the smaller, guarded. Not within δ: k_u × k_v equal children where counts
+// within the cap reach δ (toleranceGridCounts); else split at the midpoint along u where
+// A ≥ B/2, v where B ≥ A/2 (both when neither holds: a NaN bound).
+NodeDecision toleranceDecision(IN(ToleranceTerms) t, IN(QuadNode) node, IN(ClassifyPush) params) {
   vec4 r = node.rect;
-  PRECISE float a = bounds.x + bounds.y;
-  PRECISE float b = bounds.z + bounds.y;
+  PRECISE float a = t.bounds.x + t.bounds.y;
+  PRECISE float b = t.bounds.z + t.bounds.y;
   PRECISE float sum = a + b;
-  PRECISE float scaled = sum * 0.125f;
+  PRECISE float w = quadraticPartBound(vec3(t.ss), vec3(t.st), vec3(t.tt));
+  PRECISE float twoSpreadSt = 2.0f * t.spread.y;
+  PRECISE float rest = (t.spread.x + twoSpreadSt) + t.spread.z;
+  PRECISE float guard = sum * kToleranceCentredGuard;
+  PRECISE float centred = (w + rest) + guard;
+  PRECISE float tighter = min(sum, centred);
+  PRECISE float scaled = tighter * 0.125f;
   PRECISE float guarded = scaled * kToleranceRelativeGuard;
-  PRECISE float bound = guarded + bounds.w;
+  PRECISE float bound = guarded + t.bounds.w;
   float us = toleranceMidpoint(r.x, r.z);
   float vs = toleranceMidpoint(r.y, r.w);
   PRECISE float share = sum > 0.0f ? a / sum : 0.5f;
@@ -314,7 +468,7 @@ NodeDecision toleranceDecision(vec4 bounds, IN(QuadNode) node, IN(ClassifyPush) 
   } else if (min(r.z - r.x, r.w - r.y) < params.minSize) {
     d.cause = kCauseMinSize;
   } else {
-    uint grid = toleranceGridCounts(bounds, params.tolerance, params.toleranceSplitCap);
+    uint grid = toleranceGridCounts(t, params.tolerance, params.toleranceSplitCap);
     PRECISE float halfA = 0.5f * a;
     PRECISE float halfB = 0.5f * b;
     bool splitU = !(a < halfB);

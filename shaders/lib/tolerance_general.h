@@ -7,7 +7,7 @@
 #ifndef TESSERA_TOLERANCE_GENERAL_H
 #define TESSERA_TOLERANCE_GENERAL_H
 
-vec4 generalSecondBounds(IN(GeneralPatch) gp, vec4 rect) {
+ToleranceTerms generalSecondBounds(IN(GeneralPatch) gp, vec4 rect) {
   int n = int(gp.degreeU);
   int m = int(gp.degreeV);
   gNet.n = n;
@@ -44,7 +44,7 @@ vec4 generalSecondBounds(IN(GeneralPatch) gp, vec4 rect) {
   }
   if (!rational) return polynomialNetSecondBounds(rect);
   restrictDivisionNet(rect);
-  return rationalNetSecondBounds();
+  return toleranceTermsOf(rationalNetSecondBounds());
 }
 
 #endif

@@ -38,15 +38,16 @@ void restrictDivisionNet(vec4 rect) {
 
 // Difference net `kind` (0: Δ²_s, 1: Δ_sΔ_t, 2: Δ²_t) of the control points in gNet.d1u
 // (the polynomial path's copy of the net, (n + 1) × (m + 1)) into gNet.h, entry (i, j) at
-// i·(dv + 1) + j for its degrees du × dv, restricted to rect; returns (its largest norm, its
-// error term of differenceNetError).
-vec2 restrictedDifferenceNet(int kind, vec4 rect) {
+// i·(dv + 1) + j for its degrees du × dv, restricted to rect; returns its terms, and its
+// error term of differenceNetError in `error`.
+NetTerms restrictedDifferenceNet(int kind, vec4 rect, OUT(float) error) {
   int n = gNet.n;
   int m = gNet.m;
   int s = m + 1;
   int du = kind == 0 ? n - 2 : (kind == 1 ? n - 1 : n);
   int dv = kind == 0 ? m : (kind == 1 ? m - 1 : m - 2);
-  if (du < 0 || dv < 0) return vec2(0.0f, 0.0f);
+  error = 0.0f;
+  if (du < 0 || dv < 0) return emptyNetTerms();
   PRECISE float big1 = 0.0f;
   PRECISE float big2 = 0.0f;
   for (int i = 0; i < kGeneralMaxOrder; ++i) {
@@ -73,21 +74,28 @@ vec2 restrictedDifferenceNet(int kind, vec4 rect) {
     restrictDivisionNetRows(dv + 1, du, 1, dv + 1, rect.x, rect.z);
   if (rect.y != 0.0f || rect.w != 1.0f)
     restrictDivisionNetRows(du + 1, dv, dv + 1, 1, rect.y, rect.w);
-  PRECISE float big = 0.0f;
+  NetTerms t = emptyNetTerms();
   for (int k = 0; k < kGeneralMaxOrder * kGeneralMaxOrder; ++k) {
     if (k >= (du + 1) * (dv + 1)) break;
-    big = max(big, toleranceNorm(vec3(gNet.h[k])));
+    netTermsInclude(t, vec3(gNet.h[k]));
   }
-  return vec2(big, differenceNetError(big1, big2, du, dv));
+  netTermsCentre(t);
+  for (int k = 0; k < kGeneralMaxOrder * kGeneralMaxOrder; ++k) {
+    if (k >= (du + 1) * (dv + 1)) break;
+    netTermsSpread(t, vec3(gNet.h[k]));
+  }
+  error = differenceNetError(big1, big2, du, dv);
+  return t;
 }
 
-// (M_ss, M_st, M_tt, guard) of the polynomial net in gNet.d1u on rect: the three
-// second-difference nets restricted to the node (differenceBounds in tolerance_bound.h).
-vec4 polynomialNetSecondBounds(vec4 rect) {
-  vec2 ss = restrictedDifferenceNet(0, rect);
-  vec2 st = restrictedDifferenceNet(1, rect);
-  vec2 tt = restrictedDifferenceNet(2, rect);
-  return differenceBounds(vec3(ss.x, st.x, tt.x), vec3(ss.y, st.y, tt.y), gNet.n, gNet.m, rect);
+// The terms of the polynomial net in gNet.d1u on rect: the three second-difference nets
+// restricted to the node (differenceTerms in tolerance_bound.h).
+ToleranceTerms polynomialNetSecondBounds(vec4 rect) {
+  vec3 errors;
+  NetTerms ss = restrictedDifferenceNet(0, rect, errors.x);
+  NetTerms st = restrictedDifferenceNet(1, rect, errors.y);
+  NetTerms tt = restrictedDifferenceNet(2, rect, errors.z);
+  return differenceTerms(ss, st, tt, errors, gNet.n, gNet.m, rect);
 }
 
 // (M_ss, M_st, M_tt, guard) of the rational net in gNet.h (translated to its control point of
