@@ -266,11 +266,12 @@ double quadraticPartBound(const dvec3& ss, const dvec3& st, const dvec3& tt) {
                    glm::length(tt - st)});
 }
 
-// 8·k_u²·k_v² × the bound of a child of the node split k_u × k_v (toleranceGridNumerator).
-double gridNumerator(const SecondBounds& m, double uu, double uv, double vv) {
+// 8·k_u²·k_v² × the bound of a child of the node split k_u × k_v, the spreads counted by
+// spreadShare (toleranceGridNumerator; 1 for the node's own bound).
+double gridNumerator(const SecondBounds& m, double uu, double uv, double vv, double spreadShare) {
   const double plain = m.ss * vv + 2.0 * m.st * uv + m.tt * uu;
-  const double centred = quadraticPartBound(vv * m.css, uv * m.cst, uu * m.ctt) + m.mss * vv +
-                         2.0 * m.mst * uv + m.mtt * uu;
+  const double centred = quadraticPartBound(vv * m.css, uv * m.cst, uu * m.ctt) +
+                         spreadShare * (m.mss * vv + 2.0 * m.mst * uv + m.mtt * uu);
   return std::min(plain, centred);
 }
 
@@ -319,7 +320,8 @@ uint32_t toleranceGridCounts(const SecondBounds& m, double tolerance, uint32_t c
     for (uint32_t kv = 1; kv <= cap && ku * kv <= bestCount; ++kv) {
       if (ku * kv < 2) continue;
       const double fu = ku, fv = kv;
-      const double estimate = gridNumerator(m, fu * fu, fu * fv, fv * fv) / (fu * fu * fv * fv) / 8.0;
+      const double estimate = gridNumerator(m, fu * fu, fu * fv, fv * fv, gpu::kToleranceSpreadShare) /
+                              (fu * fu * fv * fv) / 8.0;
       if (!(estimate <= tolerance)) continue;
       if (ku * kv < bestCount || estimate < bestEstimate) {
         best = ku | (kv << 8);
@@ -335,7 +337,7 @@ gpu::NodeDecision toleranceDecision(const PatchContext& p, const gpu::QuadNode& 
                                     const QuadtreeOptions& o) {
   Rect r{node.rect.x, node.rect.y, node.rect.z, node.rect.w};
   const SecondBounds m = toleranceBounds(p, r);
-  const double a = m.ss + m.st, b = m.tt + m.st, bound = gridNumerator(m, 1, 1, 1) / 8.0;
+  const double a = m.ss + m.st, b = m.tt + m.st, bound = gridNumerator(m, 1, 1, 1, 1.0) / 8.0;
   gpu::NodeDecision d{};
   d.split = gpu::vec4(float(r.u(0.5)), float(r.v(0.5)), 0.0f, 0.0f);
   d.linearity = float(a + b > 0.0 ? a / (a + b) : 0.5);

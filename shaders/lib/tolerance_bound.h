@@ -370,11 +370,12 @@ float quadraticPartBound(vec3 ss, vec3 st, vec3 tt) {
 }
 
 // 8·k_u²·k_v² × the bound, before its guards, of a child of the node split k_u × k_v (uu =
-// k_u², uv = k_u·k_v, vv = k_v²; all 1 for the node itself): the smaller of
-// (M_ss·k_v² + 2·M_st·k_u·k_v + M_tt·k_u²) — every term scales by 1/k² in the child — and the
-// centred form W(C_ss·k_v², C_st·k_u·k_v, C_tt·k_u²) + (m_ss·k_v² + 2·m_st·k_u·k_v + m_tt·k_u²)
-// + its absolute guard (W is homogeneous of degree 1).
-float toleranceGridNumerator(IN(ToleranceTerms) t, float uu, float uv, float vv) {
+// k_u², uv = k_u·k_v, vv = k_v²): the smaller of (M_ss·k_v² + 2·M_st·k_u·k_v + M_tt·k_u²) —
+// every term scales by 1/k² in the child — and the centred form W(C_ss·k_v², C_st·k_u·k_v,
+// C_tt·k_u²) + spreadShare·(m_ss·k_v² + 2·m_st·k_u·k_v + m_tt·k_u²) + its absolute guard (W
+// is homogeneous of degree 1). spreadShare = 1 is the sound estimate; the grid split takes
+// kToleranceSpreadShare.
+float toleranceGridNumerator(IN(ToleranceTerms) t, float uu, float uv, float vv, float spreadShare) {
   PRECISE float twoSt = 2.0f * t.bounds.y;
   PRECISE float plain = (t.bounds.x * vv + twoSt * uv) + t.bounds.z * uu;
   PRECISE vec3 ss = vv * vec3(t.ss);
@@ -384,8 +385,9 @@ float toleranceGridNumerator(IN(ToleranceTerms) t, float uu, float uv, float vv)
   PRECISE float twoSpreadSt = 2.0f * t.spread.y;
   PRECISE float rest = (t.spread.x * vv + twoSpreadSt * uv) + t.spread.z * uu;
   PRECISE float guard = plain * kToleranceCentredGuard;
-  PRECISE float centred = (w + rest) + guard;
-  return min(plain, centred);
+  PRECISE float counted = rest * spreadShare;
+  PRECISE float centred = (w + counted) + guard;
+  return centred < plain ? centred : plain;  // not min(): the same pick for a NaN on GPU and CPU
 }
 
 // Rule T's equal split of a node that fails δ: the fewest children k_u·k_v (each count at
@@ -413,7 +415,7 @@ uint toleranceGridCounts(IN(ToleranceTerms) t, float tolerance, uint cap) {
       PRECISE float uu = fu * fu;
       PRECISE float vv = fv * fv;
       PRECISE float uv = fu * fv;
-      PRECISE float num = toleranceGridNumerator(t, uu, uv, vv);
+      PRECISE float num = toleranceGridNumerator(t, uu, uv, vv, kToleranceSpreadShare);
       PRECISE float scaled = num * 0.125f;
       PRECISE float guarded = scaled * kToleranceRelativeGuard;
       PRECISE float den = uu * vv;
@@ -449,7 +451,7 @@ NodeDecision toleranceDecision(IN(ToleranceTerms) t, IN(QuadNode) node, IN(Class
   PRECISE float rest = (t.spread.x + twoSpreadSt) + t.spread.z;
   PRECISE float guard = sum * kToleranceCentredGuard;
   PRECISE float centred = (w + rest) + guard;
-  PRECISE float tighter = min(sum, centred);
+  PRECISE float tighter = centred < sum ? centred : sum;
   PRECISE float scaled = tighter * 0.125f;
   PRECISE float guarded = scaled * kToleranceRelativeGuard;
   PRECISE float bound = guarded + t.bounds.w;
