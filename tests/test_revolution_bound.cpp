@@ -224,3 +224,38 @@ TEST_CASE("revolution bound: the same triangles at any scale and position", "[ca
   }
 }
 #endif
+
+#ifdef TESSERA_HAVE_CAD
+// The gap refinement (trim/gap_refine.cpp) once churned: a sliver flip was taken for any gain
+// in the thinner triangle's height, and among points nearly on one uv line every flip gained a
+// little, so rounds went by in flips and a chain of slivers stayed 2δ from the surface at
+// δ = 0.00025 when the 24 rounds ran out (a truncated cone meshed by rule T's parametric bound;
+// 0.094 at 0.0005 with another tree). Its rational faces leave wide gaps to refine: at every δ
+// here every face ends within δ.
+TEST_CASE("gap refinement: a rational cone's wide gaps end within δ", "[cad][trim]") {
+  Backend backend = makeMirrorBackend();
+  gp_Ax2 tilted(gp_Pnt(3.0, -1.0, 2.0), gp_Dir(1.0, 2.0, 2.0));
+  const TopoDS_Shape cone = BRepPrimAPI_MakeCone(tilted, 1.0, 0.3, 2.0).Shape();
+  const std::vector<double> deltas = test::sweepShare() < 1.0 ? std::vector<double>{2e-3}
+                                                             : std::vector<double>{2e-3, 6e-4, 2.5e-4};
+  for (double delta : deltas) {
+    INFO("δ " << delta);
+    TrimmedModel parametric = toTrimmedModel(CadFile{"truncated cone", cone, {}}, delta).model;
+    for (TrimmedFace& face : parametric.faces) face.revolution = RevolutionForm{};
+    TrimmedMeshOptions options;
+    options.tolerance = delta;
+    const TrimmedMesh mesh = meshTrimmedModel(parametric, options, backend);
+    size_t splits = 0;
+    for (const TrimmedFaceStats& f : mesh.faces) {
+      INFO("face " << f.faceIndex << ": " << f.gapTriangles << " gap triangles");
+      CHECK(f.maxGeometricDeviation <= delta + f.maxTrimPointOffset);
+      CHECK(f.unfinishedGapTriangles == 0);
+      splits += f.refinementSplits;
+    }
+    WARN("truncated cone by the parametric bound at δ " << delta << ": "
+                                                        << mesh.mesh.triangleCount()
+                                                        << " triangles, " << splits << " gap splits and flips");
+    CHECK(splits > 0);  // the gap did need refining
+  }
+}
+#endif

@@ -14,6 +14,7 @@
 #include "vk/context.h"
 #ifdef TESSERA_HAVE_CAD
 #include "cad/cad_file.h"
+#include "cad/detail/number_text.h"
 #include "cad/to_trimmed.h"
 #endif
 
@@ -67,6 +68,15 @@ CadResult runCadJob(const CadJob& job, ChosenBackend& chosen) {
   // The faces' indices in the model (TrimmedFace::faceIndex), not their place in the list of
   // faces that converted: what the glb's primitives and the stats name.
   for (uint32_t& face : result.mesh.triangleFace) face = import.model.faces[face].faceIndex;
+  // The gap refinement stops after TrimmedMeshOptions::maxRefineRounds; a face it left over δ
+  // is said, never passed off as within δ.
+  for (const TrimmedFaceStats& f : result.mesh.faces)
+    if (f.unfinishedGapTriangles > 0)
+      result.faceWarnings.push_back(
+          "face " + std::to_string(f.faceIndex) + ": the gap refinement ran out of rounds with " +
+          std::to_string(f.unfinishedGapTriangles) + " triangles over the tolerance " +
+          cad_detail::numberText(result.delta) + "; measured up to " +
+          cad_detail::numberText(f.maxGeometricDeviation) + " from the surface");
   return result;
 }
 
@@ -109,6 +119,7 @@ nlohmann::json cadStatsToJson(const CadResult& r) {
           {"facesMeshed", r.mesh.faces.size()},
           {"failedFaces", r.failures},
           {"edgeWarnings", r.warnings},
+          {"faceWarnings", r.faceWarnings},
           {"edges", r.edges},
           {"sharedPoints", r.sharedPoints},
           {"maxEdgeChordDeviation", r.maxChordDeviation},
@@ -138,6 +149,7 @@ void printCadSummary(FILE* to, const std::string& input, const CadResult& r,
                largest(r, &TrimmedFaceStats::maxTrimPointOffset));
   for (const std::string& f : r.failures) std::fprintf(to, "skipped: %s\n", f.c_str());
   for (const std::string& w : r.warnings) std::fprintf(to, "warning: %s\n", w.c_str());
+  for (const std::string& w : r.faceWarnings) std::fprintf(to, "warning: %s\n", w.c_str());
   std::fprintf(to, "time: read %.1f ms, faces and edges %.1f ms, mesh %.1f ms\n", r.readMs,
                r.importMs, r.meshMs);
 }

@@ -20,6 +20,11 @@ double shapeRatio(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
 // A sliver's longest side goes to the triangle across it by a flip when its height is under 1%
 // of that side: the flip removes it, a midpoint split would keep both halves as thin.
 constexpr double kFlipSliverRatio = 0.01;
+// A sliver flip is taken only when it at least doubles the thinner triangle's height ratio.
+// Any gain at all let rounds pass in flips among points nearly on one uv line, each a little
+// less thin, with no split: a rational cone's wide gap stayed 2δ off when the rounds ran out
+// (test "gap refinement: a rational cone's wide gaps end within δ").
+constexpr double kFlipSliverGain = 2.0;
 
 // The edge → triangles map kept in step with every split and flip, hashed by the edge's exact
 // 64-bit key (smaller vertex in the high word).
@@ -183,7 +188,7 @@ double cornerOffset(const FaceSurface& surface, const std::vector<FaceVertex>& v
   return worst;
 }
 
-size_t refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
+GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
                  std::vector<FaceTriangle>& triangles, const std::set<EdgeKey>& trimEdges,
                  const GapRefineOptions& options, std::vector<double>* parametric) {
   EdgeUsers users(triangles);
@@ -194,8 +199,8 @@ size_t refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
   };
 
   // t = (a, b, c) with a → b its longest side, s = (b, a, d) across it: (c, a, d) and (d, b, c)
-  // when both are counter-clockwise and the thinner of them is fatter than the thinner of t and
-  // s (so a flip is never undone).
+  // when both are counter-clockwise and the thinner of them is kFlipSliverGain times as fat as
+  // the thinner of t and s (so a flip is never undone).
   const auto flipSliver = [&](uint32_t t, int longest) {
     const std::array<uint32_t, 3> v = rotated(triangles[t].v, longest);
     const uint32_t a = v[0], b = v[1], c = v[2];
@@ -208,7 +213,8 @@ size_t refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
     if (d == c) return false;
     const std::array<uint32_t, 3> t2 = {c, a, d}, s2 = {d, b, c};
     const double before = std::min(ratioOf(v), ratioOf(triangles[s].v));
-    if (!(std::min(ratioOf(t2), ratioOf(s2)) > std::max(before, 0.0))) return false;
+    if (!(std::min(ratioOf(t2), ratioOf(s2)) > kFlipSliverGain * std::max(before, 0.0)))
+      return false;
     triangles[t] = {t2, true};
     triangles[s] = {s2, true};
     users.erase(a, b);
@@ -308,6 +314,7 @@ size_t refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
   };
 
   size_t changes = flipByDeviation();
+  bool finished = false;
   for (int round = 0; round < options.maxRounds; ++round) {
     bool any = false;
     const size_t count = triangles.size();  // the pieces made this round wait for the next
@@ -342,16 +349,24 @@ size_t refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
         splitSide(v[split], v[(split + 1) % 3]);
       ++changes, any = true;
     }
-    if (!any) break;
+    if (!any) {
+      finished = true;
+      break;
+    }
     changes += flipByDeviation();
   }
+  // Out of rounds: the last round's pieces were never judged.
+  size_t unfinished = 0;
+  if (!finished)
+    for (const FaceTriangle& t : triangles)
+      if (t.gap && !withinTolerance(t.v)) ++unfinished;
   if (parametric) {
     parametric->assign(triangles.size(), -1.0);
     for (size_t t = 0; t < triangles.size(); ++t)
       if (const Measures* m = triangles[t].gap ? cache.find(triangles[t].v) : nullptr)
         (*parametric)[t] = m->sampled.parametric;
   }
-  return changes;
+  return {changes, unfinished};
 }
 
 }  // namespace tessera::trim_detail

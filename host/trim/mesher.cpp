@@ -201,11 +201,13 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
     for (const auto& t : gap.triangles) triangles.push_back({t, true});
     out.gapMs = step.elapsedMs();
     step.restart();
-    stats.refinementSplits = trim_detail::refineGap(
+    const trim_detail::GapRefineResult refined = trim_detail::refineGap(
         surface, builder.vertices, triangles, trimEdges,
         {options.tolerance, options.deviationSubdivisions, options.maxRefineRounds, metric,
          options.gapMeasure},
         &sampledParametric);
+    stats.refinementSplits = refined.changes;
+    stats.unfinishedGapTriangles = refined.unfinished;
     out.refineMs = step.elapsedMs();
   }
   step.restart();

@@ -54,6 +54,9 @@ struct TrimmedFaceStats {
   size_t gapTriangles = 0;           // triangles between the kept ones and the loops
   size_t triangles = 0;              // emitted (kept + gap − collapsed)
   size_t refinementSplits = 0;       // edges or triangles split for the gap to meet δ
+  // Gap triangles still over δ when the refinement's rounds ran out (maxRefineRounds): 0 unless
+  // the face breaks its promise; the CLI warns naming the face.
+  size_t unfinishedGapTriangles = 0;
   size_t collapsedTriangles = 0;     // two corners on one shared point (a pole, a seam end)
   // gap_triangulate.h's failures: 0 unless the loops are bad (open, crossing each other or
   // themselves); then the face's mesh may have holes or overlaps, and a caller should report

@@ -76,10 +76,15 @@ struct GapRefineOptions {
 // longest side that is not a trim segment is split at its (u, v) midpoint together with every
 // triangle across it (kept or gap: no T-junction), or, with three trim sides, the centroid is
 // added. Trim segments are never split: the neighbouring face uses them as they are.
-// Returns the number of splits and flips. `parametric`, when given, receives per final triangle
+// Returns the number of splits and flips and the gap triangles still over δ when the rounds ran
+// out (GapRefineOptions::maxRounds; 0 when it finished). `parametric`, when given, receives per final triangle
 // its parametricDeviation where the refinement sampled it (every gap triangle it judged), −1
 // elsewhere: the stats need not sample those again.
-size_t refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
+struct GapRefineResult {
+  size_t changes = 0;     // splits and flips
+  size_t unfinished = 0;  // gap triangles left over δ
+};
+GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
                  std::vector<FaceTriangle>& triangles, const std::set<EdgeKey>& trimEdges,
                  const GapRefineOptions& options, std::vector<double>* parametric = nullptr);
 
