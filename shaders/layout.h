@@ -90,18 +90,17 @@ TESSERA_CONST(uint, kCauseTrimmedAway, 11u);
 // Rule T on rational patches: the pieces per direction on which the `split` bounds take the
 // weight ratios where a weight of the node's net vanishes (DivisionOptions::ratioPieces).
 TESSERA_CONST(int, kToleranceRatioPieces, 4);
-// Rule T's grid estimate counts this share of the spreads m of the node's second derivatives
-// about their centres (lib/tolerance_bound.h, toleranceGridNumerator). The children's second
-// derivatives lie within the parent's C ± m (scaled by 1/k²), but their own spreads about
-// their own centres are smaller again, by about 1/k (m is the variation of S'' across the
-// node): counting all of m over-refined (tea set at δ = 0.01 and 0.001: 10,907 and 80,787
-// triangles with 1; 9,915 and 75,348 with ½; 10,907 and 77,980 with ¼; docs/quadtree.md).
-// Only an estimate: every child is classified by its own bound. Yet with ½, the trimmed
-// mesher's revolution bound (host/trim/revolution_bound.*, which feeds this decision its own
-// two terms) left a truncated cone's face 0.094 from the surface at δ = 0.0005 (test
-// "revolution bound: curved faces take fewer triangles, still within δ"); the cause is not
-// found yet, so the sound share, all of m, is kept.
-TESSERA_CONST(float, kToleranceSpreadShare, 1.0f);
+// Rule T's grid estimate counts this share of the spreads m of a polynomial node's second
+// derivatives about their centres (lib/tolerance_bound.h, toleranceGridNumerator). The
+// children's second derivatives lie within the parent's C ± m (scaled by 1/k²), but their own
+// spreads about their own centres are smaller again, by about 1/k (m is the variation of S''
+// across the node): counting all of m over-refined (tea set at δ = 0.01 and 0.001: 10,907 and
+// 80,787 triangles with 1; 9,915 and 75,348 with ½; docs/quadtree.md). Only an estimate: every
+// child is classified by its own bound. Terms without centres (rational nets, the trimmed
+// mesher's revolution bound) count all of m: theirs is the whole bound, which shrinks by 1/k²
+// at best (with ½ there, the grid splits were too few and the children split again: a sphere
+// took 26% more triangles).
+TESSERA_CONST(float, kToleranceSpreadShare, 0.5f);
 
 // C and D keep the split point at least this fraction of the node's width from its edges,
 // so a child is at least a quarter of its parent in each direction. A small margin lets a κ

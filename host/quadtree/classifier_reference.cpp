@@ -226,6 +226,7 @@ struct SecondBounds {
   double ss = 0, st = 0, tt = 0;
   dvec3 css{0.0}, cst{0.0}, ctt{0.0};
   double mss = 0, mst = 0, mtt = 0;
+  double spreadShare = 1.0;  // of m, in the grid estimate: lib/tolerance_bound.h's spread.w
 };
 
 // One second-difference net's largest norm, bounding-box centre and spread, scaled by c.
@@ -256,6 +257,7 @@ SecondBounds polynomialBounds(const HomogeneousNet& net) {
   netTerms(ss, double(n * (n - 1)), b.ss, b.css, b.mss);
   netTerms(st, double(n * m), b.st, b.cst, b.mst);
   netTerms(tt, double(m * (m - 1)), b.tt, b.ctt, b.mtt);
+  b.spreadShare = gpu::kToleranceSpreadShare;
   return b;
 }
 
@@ -320,7 +322,7 @@ uint32_t toleranceGridCounts(const SecondBounds& m, double tolerance, uint32_t c
     for (uint32_t kv = 1; kv <= cap && ku * kv <= bestCount; ++kv) {
       if (ku * kv < 2) continue;
       const double fu = ku, fv = kv;
-      const double estimate = gridNumerator(m, fu * fu, fu * fv, fv * fv, gpu::kToleranceSpreadShare) /
+      const double estimate = gridNumerator(m, fu * fu, fu * fv, fv * fv, m.spreadShare) /
                               (fu * fu * fv * fv) / 8.0;
       if (!(estimate <= tolerance)) continue;
       if (ku * kv < bestCount || estimate < bestEstimate) {

@@ -164,8 +164,10 @@ void netTermsSpread(INOUT(NetTerms) t, vec3 v) {
 // M_tt, guard), the largest norms of the second derivatives' nets and the fp32 guard (the
 // bound (M_ss + 2·M_st + M_tt)/8); ss, st, tt = constant second derivatives C of a quadratic
 // and `spread` = (m_ss, m_st, m_tt) the largest distances of the nets from them (the bound
-// (W(C) + m_ss + 2·m_st + m_tt)/8, toleranceBoundNumerator). Nets without centres (rational,
-// the revolution bound) have C = 0 and m = M.
+// (W(C) + m_ss + 2·m_st + m_tt)/8, toleranceBoundNumerator); spread.w = the share of m that the
+// grid estimate counts, kToleranceSpreadShare for difference nets. Nets without centres
+// (rational, the revolution bound) have C = 0, m = M and a share of 1: a child's terms shrink
+// by 1/k² at best, with no spread about centres of its own to lose.
 struct ToleranceTerms {
   vec4 bounds;
   vec4 spread;
@@ -177,7 +179,7 @@ struct ToleranceTerms {
 ToleranceTerms toleranceTermsOf(vec4 bounds) {
   ToleranceTerms t;
   t.bounds = bounds;
-  t.spread = vec4(vec3(bounds), 0.0f);
+  t.spread = vec4(vec3(bounds), 1.0f);
   t.ss = vec4(0.0f);
   t.st = vec4(0.0f);
   t.tt = vec4(0.0f);
@@ -206,7 +208,7 @@ ToleranceTerms differenceTerms(IN(NetTerms) ss, IN(NetTerms) st, IN(NetTerms) tt
   PRECISE float sss = css * ss.spread;
   PRECISE float sst = cst * st.spread;
   PRECISE float stt = ctt * tt.spread;
-  t.spread = vec4(sss, sst, stt, 0.0f);
+  t.spread = vec4(sss, sst, stt, kToleranceSpreadShare);
   PRECISE vec3 css3 = css * ss.centre;
   PRECISE vec3 cst3 = cst * st.centre;
   PRECISE vec3 ctt3 = ctt * tt.centre;
@@ -374,7 +376,7 @@ float quadraticPartBound(vec3 ss, vec3 st, vec3 tt) {
 // every term scales by 1/k² in the child — and the centred form W(C_ss·k_v², C_st·k_u·k_v,
 // C_tt·k_u²) + spreadShare·(m_ss·k_v² + 2·m_st·k_u·k_v + m_tt·k_u²) + its absolute guard (W
 // is homogeneous of degree 1). spreadShare = 1 is the sound estimate; the grid split takes
-// kToleranceSpreadShare.
+// the terms' own share (spread.w).
 float toleranceGridNumerator(IN(ToleranceTerms) t, float uu, float uv, float vv, float spreadShare) {
   PRECISE float twoSt = 2.0f * t.bounds.y;
   PRECISE float plain = (t.bounds.x * vv + twoSt * uv) + t.bounds.z * uu;
@@ -415,7 +417,7 @@ uint toleranceGridCounts(IN(ToleranceTerms) t, float tolerance, uint cap) {
       PRECISE float uu = fu * fu;
       PRECISE float vv = fv * fv;
       PRECISE float uv = fu * fv;
-      PRECISE float num = toleranceGridNumerator(t, uu, uv, vv, kToleranceSpreadShare);
+      PRECISE float num = toleranceGridNumerator(t, uu, uv, vv, t.spread.w);
       PRECISE float scaled = num * 0.125f;
       PRECISE float guarded = scaled * kToleranceRelativeGuard;
       PRECISE float den = uu * vv;
