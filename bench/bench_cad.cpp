@@ -15,10 +15,12 @@
 // box grown by 1%), the largest over the corpus, as a
 // multiple of δ. A point the projection cannot place is counted, not guessed.
 // Usage: bench_cad [relative tolerances = 0.001,0.0001] [--dir folder] [--json file] [--cpu]
-//        [--model name-part] [--detail] [--tessera-only]
+//        [--model name-part] [--detail] [--tessera-only] [--tessera-scale s]
 // --cpu leaves Vulkan out; --model keeps the models whose file name contains the text;
 // --detail prints each model's worst faces (distance, unprojected samples) for both meshers;
 // --tessera-only runs Tessera alone, unmeasured (for profiling its stages).
+// --tessera-scale s meshes Tessera at s·δ while OCCT keeps δ, distances still over δ: set s to
+// OCCT's measured distance / Tessera's to compare triangles at equal measured deviation.
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
@@ -318,6 +320,7 @@ struct TesseraBackend {
 };
 
 bool tesseraOnly = false;
+double tesseraScale = 1.0;
 
 void runTolerance(bench::Report& report, const Models& models, double relative,
                   std::vector<TesseraBackend>& backends) {
@@ -355,7 +358,7 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
     FaceTriangles lastTessera;  // the first backend's, for --detail
     for (size_t b = 0; b < backends.size(); ++b) {
       TrimmedMeshOptions options;
-      options.tolerance = delta;
+      options.tolerance = tesseraScale * delta;
       options.measureGeometric = false;  // measured below by the bench's own code
       // Rule T proves the kept quad-tree triangles; the gap ones are measured (refinement).
       options.measureKeptTriangles = false;
@@ -365,7 +368,7 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
       TrimmedMeshTimings fastestTimings;
       const bench::Timing time = bench::timeRepeated(bench::kMinRuns, [&] {
         const Stopwatch clock;
-        import = toTrimmedModel(file, delta);
+        import = toTrimmedModel(file, options.tolerance);
         const double convertMs = clock.elapsedMs();
         mesh = meshTrimmedModel(import.model, options, *backends[b].backend, backends[b].trim);
         if (clock.elapsedMs() < fastest)
@@ -432,7 +435,9 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
     addCase("OCCT BRepMesh, parallel (all cores)", occt[1], &occt[0]);  // the same mesh
   }
   for (size_t b = 0; b < backends.size(); ++b) {
-    addCase("Tessera trimmed faces, " + backends[b].name, tessera[b], nullptr);
+    char scaled[48] = "";
+    if (tesseraScale != 1.0) std::snprintf(scaled, sizeof scaled, " at %g δ", tesseraScale);
+    addCase("Tessera trimmed faces, " + backends[b].name + scaled, tessera[b], nullptr);
     table.cases.back().extra["stages"] = stages[b].json();
     const TrimmedMeshTimings& t = stages[b].mesh;
     std::fprintf(stderr,
@@ -477,6 +482,8 @@ int main(int argc, char** argv) {
       ++i;  // bench::Report's
     else if (arg == "--tessera-only")
       tesseraOnly = true;
+    else if (arg == "--tessera-scale" && i + 1 < argc)
+      tesseraScale = std::stod(argv[++i]);
     else
       relatives = parseList(arg);
   }
@@ -489,6 +496,7 @@ int main(int argc, char** argv) {
   report.note("corpus", folder);
   report.note("models", models.paths.size());
   report.note("occtVersion", OCC_VERSION_COMPLETE);
+  report.note("tesseraScale", tesseraScale);
 
   Backend cpu = makeMirrorBackend();
   const std::unique_ptr<TrimClassifier> cpuTrim = makeMirrorTrimClassifier();
