@@ -7,9 +7,11 @@
 // on two threads take about half the time of one (bench/bench_startup.cpp). The same text as
 // the mirror's bicubicSecondBounds, net by net, so the decisions are bit-identical.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
 #include "layout.h"
 #include "lib/shared_glsl_cpp.h"
 #define TOLERANCE_ROW_ORDER 4  // bicubic rows: lib/tolerance_bound.h
+#define TOLERANCE_UNROLL [[unroll]]  // constant trip counts: lib/tolerance_bound.h
 #include "lib/tolerance_bound.h"
 #include "lib/dispatch.glsl"
 

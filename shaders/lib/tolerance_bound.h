@@ -29,9 +29,18 @@ const float kToleranceUnbounded = 1.0e30f;
 // One row of Bernstein coefficients (at most kGeneralMaxOrder; a shader for bicubic patches
 // alone defines TOLERANCE_ROW_ORDER 4, its rows' largest order: lavapipe compiles the pipeline
 // at every run, and unrolling the restriction's loops to 4 rather than 8 costs it a fifth less.
-// The loops break at the degree either way, so the arithmetic is the same).
+// The loops skip the entries past the degree either way, so the arithmetic is the same).
 #ifndef TOLERANCE_ROW_ORDER
 #define TOLERANCE_ROW_ORDER kGeneralMaxOrder
+#endif
+// The bicubic shaders also define TOLERANCE_UNROLL [[unroll]]: their loops have constant trip
+// counts (the degrees are constants there) and neither break nor continue, the entries past
+// the degree skipped by a test, so spirv-opt unrolls them (run twice: it unrolls a level of nesting per run) and
+// lavapipe gets straight-line code instead of unrolling 48 loops itself at every run, which was
+// most of its compile (bench/README.md, "The Vulkan path's fixed cost"). The general shaders'
+// degrees vary per patch: their loops stay loops.
+#ifndef TOLERANCE_UNROLL
+#define TOLERANCE_UNROLL
 #endif
 struct BernsteinRow4 {
   vec4 c[TOLERANCE_ROW_ORDER];
@@ -44,36 +53,36 @@ void restrictBernsteinRow(INOUT(BernsteinRow4) row, int degree, float t0, float 
   vec4 left[TOLERANCE_ROW_ORDER];
   left[0] = row.c[0];
   PRECISE float om1 = 1.0f - t1;
-  for (int r = 1; r < TOLERANCE_ROW_ORDER; ++r) {
-    if (r > degree) break;
-    for (int k = 0; k < TOLERANCE_ROW_ORDER; ++k) {
-      if (k > degree - r) break;
-      PRECISE vec4 x = om1 * row.c[k] + t1 * row.c[k + 1];
-      row.c[k] = x;
+  TOLERANCE_UNROLL for (int r = 1; r < TOLERANCE_ROW_ORDER; ++r) {
+    if (r <= degree) {
+      TOLERANCE_UNROLL for (int k = 0; k < TOLERANCE_ROW_ORDER - 1; ++k) {
+        if (k <= degree - r) {
+          PRECISE vec4 x = om1 * row.c[k] + t1 * row.c[k + 1];
+          row.c[k] = x;
+        }
+      }
+      left[r] = row.c[0];
     }
-    left[r] = row.c[0];
   }
   PRECISE float s = t0 / t1;
   PRECISE float om = 1.0f - s;
-  for (int k = 0; k < TOLERANCE_ROW_ORDER; ++k) {
-    if (k > degree) break;
-    row.c[k] = left[k];
-  }
+  TOLERANCE_UNROLL for (int k = 0; k < TOLERANCE_ROW_ORDER; ++k)
+    if (k <= degree) row.c[k] = left[k];
   vec4 right[TOLERANCE_ROW_ORDER];
   right[degree] = row.c[degree];
-  for (int r = 1; r < TOLERANCE_ROW_ORDER; ++r) {
-    if (r > degree) break;
-    for (int k = 0; k < TOLERANCE_ROW_ORDER; ++k) {
-      if (k > degree - r) break;
-      PRECISE vec4 x = om * row.c[k] + s * row.c[k + 1];
-      row.c[k] = x;
+  TOLERANCE_UNROLL for (int r = 1; r < TOLERANCE_ROW_ORDER; ++r) {
+    if (r <= degree) {
+      TOLERANCE_UNROLL for (int k = 0; k < TOLERANCE_ROW_ORDER - 1; ++k) {
+        if (k <= degree - r) {
+          PRECISE vec4 x = om * row.c[k] + s * row.c[k + 1];
+          row.c[k] = x;
+        }
+      }
+      right[degree - r] = row.c[degree - r];
     }
-    right[degree - r] = row.c[degree - r];
   }
-  for (int k = 0; k < TOLERANCE_ROW_ORDER; ++k) {
-    if (k > degree) break;
-    row.c[k] = right[k];
-  }
+  TOLERANCE_UNROLL for (int k = 0; k < TOLERANCE_ROW_ORDER; ++k)
+    if (k <= degree) row.c[k] = right[k];
 }
 
 // ‖v‖, scaled by its largest |component| first so that the squares neither underflow nor
@@ -227,49 +236,35 @@ struct DifferenceNet4 {
 NetTerms restrictedNetTerms(INOUT(DifferenceNet4) q, int du, int dv, vec4 rect) {
   BernsteinRow4 row;
   if (rect.x != 0.0f || rect.z != 1.0f) {
-    for (int j = 0; j < 4; ++j) {
-      if (j > dv) break;
-      for (int i = 0; i < 4; ++i) {
-        if (i > du) break;
-        row.c[i] = q.c[i * 4 + j];
-      }
-      restrictBernsteinRow(row, du, rect.x, rect.z);
-      for (int i = 0; i < 4; ++i) {
-        if (i > du) break;
-        q.c[i * 4 + j] = row.c[i];
+    TOLERANCE_UNROLL for (int j = 0; j < 4; ++j) {
+      if (j <= dv) {
+        TOLERANCE_UNROLL for (int i = 0; i < 4; ++i)
+          if (i <= du) row.c[i] = q.c[i * 4 + j];
+        restrictBernsteinRow(row, du, rect.x, rect.z);
+        TOLERANCE_UNROLL for (int i = 0; i < 4; ++i)
+          if (i <= du) q.c[i * 4 + j] = row.c[i];
       }
     }
   }
   if (rect.y != 0.0f || rect.w != 1.0f) {
-    for (int i = 0; i < 4; ++i) {
-      if (i > du) break;
-      for (int j = 0; j < 4; ++j) {
-        if (j > dv) break;
-        row.c[j] = q.c[i * 4 + j];
-      }
-      restrictBernsteinRow(row, dv, rect.y, rect.w);
-      for (int j = 0; j < 4; ++j) {
-        if (j > dv) break;
-        q.c[i * 4 + j] = row.c[j];
+    TOLERANCE_UNROLL for (int i = 0; i < 4; ++i) {
+      if (i <= du) {
+        TOLERANCE_UNROLL for (int j = 0; j < 4; ++j)
+          if (j <= dv) row.c[j] = q.c[i * 4 + j];
+        restrictBernsteinRow(row, dv, rect.y, rect.w);
+        TOLERANCE_UNROLL for (int j = 0; j < 4; ++j)
+          if (j <= dv) q.c[i * 4 + j] = row.c[j];
       }
     }
   }
   NetTerms t = emptyNetTerms();
-  for (int i = 0; i < 4; ++i) {
-    if (i > du) break;
-    for (int j = 0; j < 4; ++j) {
-      if (j > dv) break;
-      netTermsInclude(t, vec3(q.c[i * 4 + j]));
-    }
-  }
+  TOLERANCE_UNROLL for (int i = 0; i < 4; ++i)
+    TOLERANCE_UNROLL for (int j = 0; j < 4; ++j)
+      if (i <= du && j <= dv) netTermsInclude(t, vec3(q.c[i * 4 + j]));
   netTermsCentre(t);
-  for (int i = 0; i < 4; ++i) {
-    if (i > du) break;
-    for (int j = 0; j < 4; ++j) {
-      if (j > dv) break;
-      netTermsSpread(t, vec3(q.c[i * 4 + j]));
-    }
-  }
+  TOLERANCE_UNROLL for (int i = 0; i < 4; ++i)
+    TOLERANCE_UNROLL for (int j = 0; j < 4; ++j)
+      if (i <= du && j <= dv) netTermsSpread(t, vec3(q.c[i * 4 + j]));
   return t;
 }
 
@@ -283,8 +278,8 @@ NetTerms bicubicNetBound(IN(BicubicPatch) bp, vec4 rect, int net, OUT(float) err
   PRECISE float big1 = 0.0f;
   PRECISE float big2 = 0.0f;
   if (net == 0) {
-    for (int i = 0; i < 2; ++i)
-      for (int j = 0; j < 4; ++j) {
+    TOLERANCE_UNROLL for (int i = 0; i < 2; ++i)
+      TOLERANCE_UNROLL for (int j = 0; j < 4; ++j) {
         vec3 d = secondDifferenceOf(vec3(bp.cp[i * 4 + j]), vec3(bp.cp[(i + 1) * 4 + j]),
                                     vec3(bp.cp[(i + 2) * 4 + j]), big1);
         big2 = max(big2, maxAbsComponent(d));
@@ -294,8 +289,8 @@ NetTerms bicubicNetBound(IN(BicubicPatch) bp, vec4 rect, int net, OUT(float) err
     return restrictedNetTerms(q, 1, 3, rect);
   }
   if (net == 1) {
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
+    TOLERANCE_UNROLL for (int i = 0; i < 3; ++i)
+      TOLERANCE_UNROLL for (int j = 0; j < 3; ++j) {
         vec3 d = twistOf(vec3(bp.cp[i * 4 + j]), vec3(bp.cp[(i + 1) * 4 + j]),
                          vec3(bp.cp[i * 4 + j + 1]), vec3(bp.cp[(i + 1) * 4 + j + 1]), big1);
         big2 = max(big2, maxAbsComponent(d));
@@ -304,8 +299,8 @@ NetTerms bicubicNetBound(IN(BicubicPatch) bp, vec4 rect, int net, OUT(float) err
     error = differenceNetError(big1, big2, 2, 2);
     return restrictedNetTerms(q, 2, 2, rect);
   }
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 2; ++j) {
+  TOLERANCE_UNROLL for (int i = 0; i < 4; ++i)
+    TOLERANCE_UNROLL for (int j = 0; j < 2; ++j) {
       vec3 d = secondDifferenceOf(vec3(bp.cp[i * 4 + j]), vec3(bp.cp[i * 4 + j + 1]),
                                   vec3(bp.cp[i * 4 + j + 2]), big1);
       big2 = max(big2, maxAbsComponent(d));
