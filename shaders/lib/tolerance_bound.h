@@ -87,11 +87,19 @@ void restrictBernsteinRow(INOUT(BernsteinRow4) row, int degree, float t0, float 
 
 // ‖v‖, scaled by its largest |component| first so that the squares neither underflow nor
 // overflow (coordinates of 10⁻³⁰ or 10³⁰ keep their bound) and a scale by 2ᵏ scales it exactly.
+// 0 or not finite: `big` itself, picked by selects rather than an early return: each bicubic
+// rule T shader inlines dozens of norms, and their branches cost lavapipe's compiler ~1.5 ms a
+// shader at every run (of ~9).
 float toleranceNorm(vec3 v) {
   PRECISE float big = max(abs(v.x), max(abs(v.y), abs(v.z)));
-  if (!(big > 0.0f && big <= 3.0e38f)) return big;  // 0, or not finite
-  PRECISE vec3 w = v / big;
+  bool positive = big > 0.0f;
+  bool bounded = big <= 3.0e38f;  // false for ∞ and NaN
+  float divisor = positive ? big : 1.0f;
+  divisor = bounded ? divisor : 1.0f;
+  PRECISE vec3 w = v / divisor;
   PRECISE float r = big * sqrt(dot(w, w));
+  r = positive ? r : big;
+  r = bounded ? r : big;
   return r;
 }
 
