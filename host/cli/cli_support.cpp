@@ -121,7 +121,23 @@ void refuseBadNumbers(CLI::App& app) {
     }
 }
 
-ChosenBackend chooseBackend(const std::string& name, const std::string& device) {
+namespace {
+
+std::unique_ptr<vk::Context> makeContext(const std::string& device) {
+  vk::ContextOptions options;
+  options.device = device;
+  return std::make_unique<vk::Context>(options);
+}
+
+}  // namespace
+
+PendingContext startMakingContext(const std::string& name, const std::string& device) {
+  if (name != "vulkan" && name != "auto") return {};
+  return std::async(std::launch::async, makeContext, device);
+}
+
+ChosenBackend chooseBackend(const std::string& name, const std::string& device,
+                            PendingContext pending) {
   ChosenBackend chosen;
   if (name == "cpu") {
     chosen.backend = makeMirrorBackend();
@@ -130,9 +146,7 @@ ChosenBackend chooseBackend(const std::string& name, const std::string& device) 
   if (name != "vulkan" && name != "auto")
     throw CLI::ValidationError("--backend", "expected vulkan, cpu or auto, got '" + name + "'");
   try {
-    vk::ContextOptions options;
-    options.device = device;
-    chosen.context = std::make_unique<vk::Context>(options);
+    chosen.context = pending.valid() ? pending.get() : makeContext(device);
     chosen.backend = makeVulkanBackend(*chosen.context);
   } catch (const vk::VulkanUnavailable& e) {
     if (name == "vulkan") throw;

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include <functional>
+#include <future>
 #include <memory>
 #include <string>
 #include <vector>
@@ -54,9 +55,21 @@ struct ChosenBackend {
   std::string deviceName() const { return context ? context->info().name : ""; }
 };
 
+// The Vulkan context chooseBackend will take, being made on a worker thread.
+using PendingContext = std::future<std::unique_ptr<vk::Context>>;
+
+// Starts making the Vulkan context for chooseBackend(name, device) on a worker thread, so that
+// the caller reads its input meanwhile: on lavapipe the context is the largest fixed cost of a
+// run (the loader opens every installed driver). None (an invalid future) for "cpu" or a name
+// chooseBackend refuses. Its errors reach the caller through chooseBackend, in the same order as
+// without it; a pending context that is never taken is waited for and destroyed.
+PendingContext startMakingContext(const std::string& name, const std::string& device);
+
 // "vulkan": Vulkan or VulkanUnavailable; "cpu": the CPU; "auto": Vulkan if a usable device
-// exists, else the CPU with a notice on stderr. Anything else is a usage error.
-ChosenBackend chooseBackend(const std::string& name, const std::string& device);
+// exists, else the CPU with a notice on stderr. Anything else is a usage error. `pending`, from
+// startMakingContext with the same name and device, is the context to take.
+ChosenBackend chooseBackend(const std::string& name, const std::string& device,
+                            PendingContext pending = {});
 
 // Runs `work` (a tessellation); a patch it cannot take (std::invalid_argument naming the patch:
 // validateTessellationPatch, or an fp32 evaluation that is not finite) becomes an InputError

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -209,6 +210,7 @@ int run(const TessellateArgs& a) {
   // The mesh and the report are written together at the end, both or neither.
   AtomicFileGroup files;
 
+  PendingContext pendingContext = startMakingContext(a.backend, a.device);
   std::vector<BezierPatch> patches = readSurface(a.input, inputFormat);
   if (ruleT)
     options.tolerance =
@@ -220,7 +222,7 @@ int run(const TessellateArgs& a) {
   Progress progress(!a.quiet, progressIntervalSeconds());
   options.onLevel = progress.treeCallback(patches.size());
 
-  ChosenBackend chosen = chooseBackend(a.backend, a.device);
+  ChosenBackend chosen = chooseBackend(a.backend, a.device, std::move(pendingContext));
   const auto stream = [&] {
     options.onLevel = nullptr;  // the levels of one group's tree are not the job's progress
     return namingInput(inputName, [&] {
