@@ -4,10 +4,12 @@
 // tessellate` processes, warm (Mesa's shader cache and the pipeline cache as a second run finds
 // them) and cold (both off). Prints where the Vulkan time goes (vk::ContextTimings: instance,
 // device, pipeline cache, pipelines, first dispatch, dispatches) and the Vulkan/CPU ratios,
-// minima and medians over the runs.
+// minima and medians over the runs. Whole processes are timed by wall clock and by their CPU time
+// (user + sys of all their threads), which a loaded machine moves much less.
 //   bench_startup [runs]   (default 9; at least 5; per job and backend)
 #include <fcntl.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -56,9 +58,15 @@ std::string loadAverage() {
   return a + " " + b + " " + c;
 }
 
-// One `tessera tessellate` process with `extraEnv` added; its wall time in ms. Throws when it
-// cannot start or fails.
-double runProcess(const std::vector<std::string>& args, const std::vector<std::string>& extraEnv) {
+struct ProcessTimes {
+  double wallMs = 0;
+  double cpuMs = 0;  // user + sys, all threads
+};
+
+// One `tessera tessellate` process with `extraEnv` added; its times. Throws when it cannot
+// start or fails.
+ProcessTimes runProcess(const std::vector<std::string>& args,
+                        const std::vector<std::string>& extraEnv) {
   std::vector<char*> argv;
   for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
@@ -77,11 +85,13 @@ double runProcess(const std::vector<std::string>& args, const std::vector<std::s
   posix_spawn_file_actions_destroy(&actions);
   if (spawned != 0) throw std::runtime_error("cannot start " + args[0]);
   int status = 0;
-  waitpid(pid, &status, 0);
+  struct rusage usage {};
+  wait4(pid, &status, 0, &usage);
   const double ms = stopwatch.elapsedMs();
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
     throw std::runtime_error(args[0] + " failed (status " + std::to_string(status) + ")");
-  return ms;
+  const auto toMs = [](const timeval& t) { return t.tv_sec * 1e3 + t.tv_usec * 1e-3; };
+  return {ms, toMs(usage.ru_utime) + toMs(usage.ru_stime)};
 }
 
 
@@ -167,30 +177,44 @@ void wholeProcess(bench::Report& report, const Job& job, int runs) {
   };
   const std::vector<std::string> cold = {"MESA_SHADER_CACHE_DISABLE=true",
                                          "TESSERA_PIPELINE_CACHE=off"};
-  Series cpuProcess, vulkanProcess, coldProcess;
+  Series cpuProcess, vulkanProcess, coldProcess, cpuCpu, vulkanCpu, coldCpu;
   runProcess(command("vulkan"), {});  // warms Mesa's shader cache and the pipeline cache
   runProcess(command("cpu"), {});
+  const auto add = [](const ProcessTimes& t, Series& wall, Series& cpu) {
+    wall.add(t.wallMs);
+    cpu.add(t.cpuMs);
+  };
   for (int r = 0; r < runs; ++r) {
-    cpuProcess.add(runProcess(command("cpu"), {}));
-    vulkanProcess.add(runProcess(command("vulkan"), {}));
-    coldProcess.add(runProcess(command("vulkan"), cold));
+    add(runProcess(command("cpu"), {}), cpuProcess, cpuCpu);
+    add(runProcess(command("vulkan"), {}), vulkanProcess, vulkanCpu);
+    add(runProcess(command("vulkan"), cold), coldProcess, coldCpu);
   }
   std::remove(out.c_str());
   std::string line = "`tessera tessellate data/teapot.bpt";
   for (const std::string& a : job.cliArgs) line += " " + a;
   bench::Table& processes =
       report.table(std::string("process ") + job.name, "runs",
-                   line + " --backend … -o x.obj`, whole process wall time; cold = "
-                          "MESA_SHADER_CACHE_DISABLE=true TESSERA_PIPELINE_CACHE=off");
+                   line + " --backend … -o x.obj`, whole process wall time and CPU time (user + "
+                          "sys); cold = MESA_SHADER_CACHE_DISABLE=true TESSERA_PIPELINE_CACHE=off");
   processes.cases = {toCase("--backend cpu", cpuProcess),
                      toCase("--backend vulkan, warm caches", vulkanProcess),
-                     toCase("--backend vulkan, cold", coldProcess)};
+                     toCase("--backend vulkan, cold", coldProcess),
+                     toCase("CPU time: --backend cpu", cpuCpu),
+                     toCase("CPU time: --backend vulkan, warm caches", vulkanCpu),
+                     toCase("CPU time: --backend vulkan, cold", coldCpu)};
   report.print(processes);
   std::printf("Vulkan / CPU, whole process, %s: %.2f× by minima, %.2f× by medians (cold: %.2f×, "
-              "%.2f×)\n\n",
+              "%.2f×)\n",
               job.name, vulkanProcess.min() / cpuProcess.min(),
               vulkanProcess.median() / cpuProcess.median(), coldProcess.min() / cpuProcess.min(),
               coldProcess.median() / cpuProcess.median());
+  std::printf("Vulkan / CPU, process CPU time, %s: %.2f× by minima, %.2f× by medians (cold: "
+              "%.2f×, %.2f×)\n\n",
+              job.name, vulkanCpu.min() / cpuCpu.min(), vulkanCpu.median() / cpuCpu.median(),
+              coldCpu.min() / cpuCpu.min(), coldCpu.median() / cpuCpu.median());
+  report.note(std::string("processCpuRatioMin ") + job.name, vulkanCpu.min() / cpuCpu.min());
+  report.note(std::string("processCpuRatioMedian ") + job.name,
+              vulkanCpu.median() / cpuCpu.median());
   report.note(std::string("processRatioMin ") + job.name, vulkanProcess.min() / cpuProcess.min());
   report.note(std::string("processRatioMedian ") + job.name,
               vulkanProcess.median() / cpuProcess.median());
