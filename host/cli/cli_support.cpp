@@ -157,6 +157,16 @@ ChosenBackend chooseBackend(const std::string& name, const std::string& device,
   return chosen;
 }
 
+std::future<void> releaseInBackground(ChosenBackend&& chosen) {
+  if (!chosen.context) {  // the CPU backend: nothing slow to destroy, no thread
+    ChosenBackend released = std::move(chosen);
+    return {};
+  }
+  return std::async(std::launch::async, [held = std::move(chosen)]() mutable {
+    ChosenBackend released = std::move(held);  // its members go in reverse order: backend first
+  });
+}
+
 }  // namespace tessera::cli
 
 namespace tessera::cli {

@@ -71,6 +71,13 @@ PendingContext startMakingContext(const std::string& name, const std::string& de
 ChosenBackend chooseBackend(const std::string& name, const std::string& device,
                             PendingContext pending = {});
 
+// Destroys `chosen` (its backend, then its context) on a worker thread, so that lavapipe's
+// teardown (joining its threads, unloading the drivers: several ms at the end of a run) goes on
+// while the caller writes the mesh; the future's destructor waits for it (without a context it
+// is destroyed at once, and the future is empty). Take from the context what the report needs
+// first.
+std::future<void> releaseInBackground(ChosenBackend&& chosen);
+
 // Runs `work` (a tessellation); a patch it cannot take (std::invalid_argument naming the patch:
 // validateTessellationPatch, or an fp32 evaluation that is not finite) becomes an InputError
 // naming `input` too, so the message says which file (exit 2 either way).

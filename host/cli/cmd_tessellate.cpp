@@ -1,6 +1,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <future>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -246,8 +247,15 @@ int run(const TessellateArgs& a) {
     return stream();
   }
   Tessellation& t = *held;
-  const std::unique_ptr<vk::Context>& context = chosen.context;
-  const Backend& backend = chosen.backend;
+  // The GPU's work is done: what the report and the summary need of the context is taken now,
+  // and the context is destroyed while the mesh is written.
+  const std::string backendName = chosen.backend.name;
+  const std::string deviceName = chosen.deviceName();
+  const nlohmann::json runJson = runToJson(inputName, a.output, backendName, chosen.context.get());
+  const nlohmann::json setupJson = setupToJson(chosen.context.get());
+  const std::optional<vk::ContextTimings> setupTimings =
+      chosen.context ? std::optional(chosen.context->timings()) : std::nullopt;
+  const std::future<void> released = releaseInBackground(std::move(chosen));
   if (writeOptions.precision == MeshPrecision::Double && !a.output.empty())
     evaluateVerticesInDouble(t.mesh, patches);
   if (writeOptions.metadata) t.mesh.trianglePatchIds = t.trianglePatch;
@@ -295,9 +303,9 @@ int run(const TessellateArgs& a) {
     else addUncomputedLowerBound(report);
     if (ruleT) addToleranceReport(report, t, toleranceSpec, options.tolerance);
     addWarnings(report, warnings);
-    report["run"] = runToJson(inputName, a.output, backend.name, context.get());
+    report["run"] = runJson;
     report["run"]["options"] = optionsToJson(options);
-    report["setup"] = setupToJson(context.get());
+    report["setup"] = setupJson;
     emitReport(report, files, a.stats, a.json);
   }
   files.commit();
@@ -305,8 +313,7 @@ int run(const TessellateArgs& a) {
     // With the mesh or the report on standard output, the summary goes to stderr.
     FILE* const to = meshToStdout || statsToStdout ? stderr : stdout;
     const TessellationStats& s = t.stats;
-    printRunLine(to, inputName, s, options.rule, job.thresholds, backend.name,
-                 chosen.deviceName());
+    printRunLine(to, inputName, s, options.rule, job.thresholds, backendName, deviceName);
     printCountsLine(to, s);
     // Rule T's leaves each carry their proven bound (QuadLeaf::flatness): the largest of them
     // is what the mesh is proven within, measured or not.
@@ -331,7 +338,7 @@ int run(const TessellateArgs& a) {
                    deviation->total.samples);
     if (bound) printLowerBoundLine(to, *bound, s.triangles);
     printTimesLine(to, s);
-    if (context) printSetup(to, context->timings());
+    if (setupTimings) printSetup(to, *setupTimings);
     if (deviation)
       std::fprintf(to, "deviation measured in %.1f ms (parametric) + %.1f ms (geometric)\n",
                    deviation->ms, geometric->ms);
