@@ -240,31 +240,27 @@ struct DifferenceNet4 {
   vec4 c[16];
 };
 
+// Restricts the net's lines to [t0, t1]: lines 0..lines−1 of degree+1 entries each, entry e of
+// line l at q.c[l·lineStride + e·entryStride] (the columns along u: strides 1 and 4; the rows
+// along v: 4 and 1).
+void restrictNetLines(INOUT(DifferenceNet4) q, int lines, int degree, int lineStride,
+                      int entryStride, float t0, float t1) {
+  BernsteinRow4 row;
+  TOLERANCE_UNROLL for (int l = 0; l < 4; ++l) {
+    if (l < lines) {
+      TOLERANCE_UNROLL for (int e = 0; e < 4; ++e)
+        if (e <= degree) row.c[e] = q.c[l * lineStride + e * entryStride];
+      restrictBernsteinRow(row, degree, t0, t1);
+      TOLERANCE_UNROLL for (int e = 0; e < 4; ++e)
+        if (e <= degree) q.c[l * lineStride + e * entryStride] = row.c[e];
+    }
+  }
+}
+
 // The (du + 1) × (dv + 1) net restricted to rect (de Casteljau along u, then v); its terms.
 NetTerms restrictedNetTerms(INOUT(DifferenceNet4) q, int du, int dv, vec4 rect) {
-  BernsteinRow4 row;
-  if (rect.x != 0.0f || rect.z != 1.0f) {
-    TOLERANCE_UNROLL for (int j = 0; j < 4; ++j) {
-      if (j <= dv) {
-        TOLERANCE_UNROLL for (int i = 0; i < 4; ++i)
-          if (i <= du) row.c[i] = q.c[i * 4 + j];
-        restrictBernsteinRow(row, du, rect.x, rect.z);
-        TOLERANCE_UNROLL for (int i = 0; i < 4; ++i)
-          if (i <= du) q.c[i * 4 + j] = row.c[i];
-      }
-    }
-  }
-  if (rect.y != 0.0f || rect.w != 1.0f) {
-    TOLERANCE_UNROLL for (int i = 0; i < 4; ++i) {
-      if (i <= du) {
-        TOLERANCE_UNROLL for (int j = 0; j < 4; ++j)
-          if (j <= dv) row.c[j] = q.c[i * 4 + j];
-        restrictBernsteinRow(row, dv, rect.y, rect.w);
-        TOLERANCE_UNROLL for (int j = 0; j < 4; ++j)
-          if (j <= dv) q.c[i * 4 + j] = row.c[j];
-      }
-    }
-  }
+  if (rect.x != 0.0f || rect.z != 1.0f) restrictNetLines(q, dv + 1, du, 1, 4, rect.x, rect.z);
+  if (rect.y != 0.0f || rect.w != 1.0f) restrictNetLines(q, du + 1, dv, 4, 1, rect.y, rect.w);
   NetTerms t = emptyNetTerms();
   TOLERANCE_UNROLL for (int i = 0; i < 4; ++i)
     TOLERANCE_UNROLL for (int j = 0; j < 4; ++j)
