@@ -35,12 +35,18 @@ const float kToleranceUnbounded = 1.0e30f;
 #endif
 // The bicubic shaders also define TOLERANCE_UNROLL [[unroll]]: their loops have constant trip
 // counts (the degrees are constants there) and neither break nor continue, the entries past
-// the degree skipped by a test, so spirv-opt unrolls them (run twice: it unrolls a level of nesting per run) and
-// lavapipe gets straight-line code instead of unrolling 48 loops itself at every run, which was
-// most of its compile (bench/README.md, "The Vulkan path's fixed cost"). The general shaders'
-// degrees vary per patch: their loops stay loops.
+// the degree skipped by a test, so spirv-opt unrolls them (run twice: it unrolls a level of
+// nesting per run) and lavapipe gets straight-line code instead of unrolling 48 loops itself at
+// every run, which was most of its compile (bench/README.md, "The Vulkan path's fixed cost").
+// Elsewhere (the general shaders, whose degrees vary per patch, and the mirrors) the loops stay
+// loops and break at the degree. TOLERANCE_WHILE(c) { … } runs the block while c holds: the
+// bicubic shaders test c at every iteration, the others break at the first where it fails.
 #ifndef TOLERANCE_UNROLL
 #define TOLERANCE_UNROLL
+#define TOLERANCE_WHILE(condition) \
+  if (!(condition)) break;
+#else
+#define TOLERANCE_WHILE(condition) if (condition)
 #endif
 struct BernsteinRow4 {
   vec4 c[TOLERANCE_ROW_ORDER];
@@ -54,9 +60,9 @@ void restrictBernsteinRow(INOUT(BernsteinRow4) row, int degree, float t0, float 
   left[0] = row.c[0];
   PRECISE float om1 = 1.0f - t1;
   TOLERANCE_UNROLL for (int r = 1; r < TOLERANCE_ROW_ORDER; ++r) {
-    if (r <= degree) {
+    TOLERANCE_WHILE(r <= degree) {
       TOLERANCE_UNROLL for (int k = 0; k < TOLERANCE_ROW_ORDER - 1; ++k) {
-        if (k <= degree - r) {
+        TOLERANCE_WHILE(k <= degree - r) {
           PRECISE vec4 x = om1 * row.c[k] + t1 * row.c[k + 1];
           row.c[k] = x;
         }
@@ -66,14 +72,15 @@ void restrictBernsteinRow(INOUT(BernsteinRow4) row, int degree, float t0, float 
   }
   PRECISE float s = t0 / t1;
   PRECISE float om = 1.0f - s;
-  TOLERANCE_UNROLL for (int k = 0; k < TOLERANCE_ROW_ORDER; ++k)
-    if (k <= degree) row.c[k] = left[k];
+  TOLERANCE_UNROLL for (int k = 0; k < TOLERANCE_ROW_ORDER; ++k) {
+    TOLERANCE_WHILE(k <= degree) row.c[k] = left[k];
+  }
   vec4 right[TOLERANCE_ROW_ORDER];
   right[degree] = row.c[degree];
   TOLERANCE_UNROLL for (int r = 1; r < TOLERANCE_ROW_ORDER; ++r) {
-    if (r <= degree) {
+    TOLERANCE_WHILE(r <= degree) {
       TOLERANCE_UNROLL for (int k = 0; k < TOLERANCE_ROW_ORDER - 1; ++k) {
-        if (k <= degree - r) {
+        TOLERANCE_WHILE(k <= degree - r) {
           PRECISE vec4 x = om * row.c[k] + s * row.c[k + 1];
           row.c[k] = x;
         }
@@ -81,8 +88,9 @@ void restrictBernsteinRow(INOUT(BernsteinRow4) row, int degree, float t0, float 
       right[degree - r] = row.c[degree - r];
     }
   }
-  TOLERANCE_UNROLL for (int k = 0; k < TOLERANCE_ROW_ORDER; ++k)
-    if (k <= degree) row.c[k] = right[k];
+  TOLERANCE_UNROLL for (int k = 0; k < TOLERANCE_ROW_ORDER; ++k) {
+    TOLERANCE_WHILE(k <= degree) row.c[k] = right[k];
+  }
 }
 
 // ‖v‖, scaled by its largest |component| first so that the squares neither underflow nor
