@@ -41,15 +41,34 @@ void main() {
   uint cv = stitchInner(sp.nv);
   uint v0 = sp.firstVertex;
   uint t0 = sp.firstIndex / 3u;
+  // A degenerate point (a pole: |Pu × Pv| ≤ tol) takes bicubicNormal's full rule, ~4× a
+  // vertex's arithmetic. A CPU driver runs both sides of a branch in every SIMD lane, so that
+  // rule runs in a second loop over the range of degenerate points only (usually empty).
   if (slot < cu) {  // inner row i: its vertices, then the cells between it and row i + 1
     uint i = slot;
     float u = stitchInnerParam(i, sp.nu);
     GridRow row = gridRow(bp, u);
-    for (uint j = 0u; j < cv; ++j)
-      vertices[v0 + i * cv + j] = gridVertex(bp, row, u, stitchInnerParam(j, sp.nv), tol);
+    uint rowFirst = v0 + i * cv;
+    uint degenerateFirst = cv;
+    uint degenerateLast = 0u;
+    for (uint j = 0u; j < cv; ++j) {
+      GridPoint q = gridRowPoint(row, stitchInnerParam(j, sp.nv));
+      vec3 normal;
+      if (!gridRegularNormal(q, tol, normal)) {
+        degenerateFirst = min(degenerateFirst, j);
+        degenerateLast = j;
+      }
+      vertices[rowFirst + j] = gridPointVertex(bp, q, normal);
+    }
+    for (uint j = degenerateFirst; j <= degenerateLast; ++j) {
+      float v = stitchInnerParam(j, sp.nv);
+      vec3 normal;
+      if (!gridRegularNormal(gridRowPoint(row, v), tol, normal))
+        vertices[rowFirst + j].normal = vec4(gridDegenerateNormal(bp, u, v, tol), 0.0f);
+    }
     if (i + 1u < cu) {
       for (uint j = 0u; j + 1u < cv; ++j) {
-        uint a = v0 + i * cv + j;
+        uint a = rowFirst + j;
         uint at = t0 + 2u * (i * (cv - 1u) + j);
         triangle(at, a, a + cv, a + cv + 1u);
         triangle(at + 1u, a, a + cv + 1u, a + 1u);
@@ -62,16 +81,30 @@ void main() {
   uint edge = sp.sideEdge[s];
   uint first = v0 + stitchSideFirstVertex(sp, s);
   // Sides V0, V1 (v = 0, 1) take a column, U0, U1 (u = 0, 1) a row: one for all their points.
+  bool column = (s & 1u) == 0u;
   vec2 end = stitchSideUV(sp, s, 0u);
-  GridRow side = (s & 1u) == 0u ? gridColumn(bp, end.y) : gridRow(bp, end.x);
+  GridRow side = gridCurves(bp, column ? end.y : end.x, column);
+  uint degenerateFirst = e + 1u;
+  uint degenerateLast = 0u;
   for (uint k = 0u; k <= e; ++k) {
     vec2 uv = stitchSideUV(sp, s, k);
-    GridVertex g = (s & 1u) == 0u ? gridColumnVertex(bp, side, uv.x, uv.y, tol)
-                                   : gridVertex(bp, side, uv.x, uv.y, tol);
+    GridPoint q = gridCurvesPoint(side, column ? uv.x : uv.y, column);
+    vec3 normal;
+    if (!gridRegularNormal(q, tol, normal)) {
+      degenerateFirst = min(degenerateFirst, k);
+      degenerateLast = k;
+    }
+    GridVertex g = gridPointVertex(bp, q, normal);
     g.position = vec4(stitchSidePosition(sp, s, k, edgePoints[4u * edge], edgePoints[4u * edge + 1u],
                                          edgePoints[4u * edge + 2u], edgePoints[4u * edge + 3u]),
                       1.0f);
     vertices[first + k] = g;
+  }
+  for (uint k = degenerateFirst; k <= degenerateLast; ++k) {
+    vec2 uv = stitchSideUV(sp, s, k);
+    vec3 normal;
+    if (!gridRegularNormal(gridCurvesPoint(side, column ? uv.x : uv.y, column), tol, normal))
+      vertices[first + k].normal = vec4(gridDegenerateNormal(bp, uv.x, uv.y, tol), 0.0f);
   }
   // The zipper: edge points o_k (outside) and inner vertices n_i, counter-clockwise in (u, v):
   // sides V0 and U1 have the edge on the right of increasing t, V1 and U0 on the left.

@@ -1,5 +1,7 @@
 #include "realtime/detail/stitch_mirror.h"
 
+#include <algorithm>
+
 #include "common/glsl_builtins.h"
 
 namespace tessera::mirror {
@@ -41,11 +43,26 @@ void stitchItem(const gpu::BicubicPatch* patches, const gpu::StitchPatch* record
     uint32_t i = slot;
     float u = stitchInnerParam(i, sp.nu);
     GridRow row = gridRow(bp, u);
-    for (uint32_t j = 0; j < cv; ++j)
-      vertices[v0 + i * cv + j] = gridVertex(bp, row, u, stitchInnerParam(j, sp.nv), tol);
+    uint32_t rowFirst = v0 + i * cv;
+    uint32_t degenerateFirst = cv, degenerateLast = 0;
+    for (uint32_t j = 0; j < cv; ++j) {
+      GridPoint q = gridRowPoint(row, stitchInnerParam(j, sp.nv));
+      vec3 normal;
+      if (!gridRegularNormal(q, tol, normal)) {
+        degenerateFirst = std::min(degenerateFirst, j);
+        degenerateLast = j;
+      }
+      vertices[rowFirst + j] = gridPointVertex(bp, q, normal);
+    }
+    for (uint32_t j = degenerateFirst; j <= degenerateLast; ++j) {
+      float v = stitchInnerParam(j, sp.nv);
+      vec3 normal;
+      if (!gridRegularNormal(gridRowPoint(row, v), tol, normal))
+        vertices[rowFirst + j].normal = vec4(gridDegenerateNormal(bp, u, v, tol), 0.0f);
+    }
     if (i + 1 < cu) {
       for (uint32_t j = 0; j + 1 < cv; ++j) {
-        uint32_t a = v0 + i * cv + j;
+        uint32_t a = rowFirst + j;
         uint32_t at = t0 + 2 * (i * (cv - 1) + j);
         triangle(indices, at, a, a + cv, a + cv + 1);
         triangle(indices, at + 1, a, a + cv + 1, a + 1);
@@ -57,17 +74,29 @@ void stitchItem(const gpu::BicubicPatch* patches, const gpu::StitchPatch* record
   uint32_t e = sp.sideSegments[s];
   uint32_t edge = sp.sideEdge[s];
   uint32_t first = v0 + stitchSideFirstVertex(sp, s);
-  // Sides V0, V1 (v = 0, 1) take a column, U0, U1 (u = 0, 1) a row: one for all their points.
+  bool column = (s & 1) == 0;
   vec2 end = stitchSideUV(sp, s, 0);
-  GridRow side = (s & 1) == 0 ? gridColumn(bp, end.y) : gridRow(bp, end.x);
+  GridRow side = gridCurves(bp, column ? end.y : end.x, column);
+  uint32_t degenerateFirst = e + 1, degenerateLast = 0;
   for (uint32_t k = 0; k <= e; ++k) {
     vec2 uv = stitchSideUV(sp, s, k);
-    GridVertex g = (s & 1) == 0 ? gridColumnVertex(bp, side, uv.x, uv.y, tol)
-                                   : gridVertex(bp, side, uv.x, uv.y, tol);
+    GridPoint q = gridCurvesPoint(side, column ? uv.x : uv.y, column);
+    vec3 normal;
+    if (!gridRegularNormal(q, tol, normal)) {
+      degenerateFirst = std::min(degenerateFirst, k);
+      degenerateLast = k;
+    }
+    GridVertex g = gridPointVertex(bp, q, normal);
     g.position = vec4(stitchSidePosition(sp, s, k, edgePoints[4 * edge], edgePoints[4 * edge + 1],
                                          edgePoints[4 * edge + 2], edgePoints[4 * edge + 3]),
                       1.0f);
     vertices[first + k] = g;
+  }
+  for (uint32_t k = degenerateFirst; k <= degenerateLast; ++k) {
+    vec2 uv = stitchSideUV(sp, s, k);
+    vec3 normal;
+    if (!gridRegularNormal(gridCurvesPoint(side, column ? uv.x : uv.y, column), tol, normal))
+      vertices[first + k].normal = vec4(gridDegenerateNormal(bp, uv.x, uv.y, tol), 0.0f);
   }
   uint32_t n = stitchSideCount(sp, s);
   uint32_t c = stitchInner(n);

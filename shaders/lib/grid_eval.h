@@ -4,13 +4,15 @@
 // (12 multiply-adds for P, Pu, Pv instead of 48 for a full point evaluation from 16 points).
 // Reading the control points once per row instead of once per point is what lets lavapipe
 // reach the memory-bandwidth cap (bench/README.md, case 1).
-// Compiled as GLSL (shaders/grid_eval.comp.glsl) and as C++ (host/realtime/grid_mirror.cpp).
+// Compiled as GLSL (shaders/grid_eval.comp.glsl, shaders/stitch_pattern.comp.glsl) and as C++
+// (host/realtime/grid_mirror.cpp, host/realtime/stitch_mirror.cpp).
 // Include shared_glsl_cpp.h, layout.h and bicubic_eval.h first.
 #ifndef TESSERA_GRID_EVAL_H
 #define TESSERA_GRID_EVAL_H
 
 // The v-curves through one row, relative to the patch's first control point (as in
-// evalBicubic: sums of differences lose no digits to a far-away origin).
+// evalBicubic: sums of differences lose no digits to a far-away origin); or, made by
+// gridCurves(…, true), the u-curves through one column (v fixed, for the sides v = 0, 1).
 struct GridRow {
   vec3 c[4];  // Σ_i B_i(u) (b_ij − b_00): the curve u = const
   vec3 d[4];  // Σ_i B'_i(u) (b_ij − b_00): its u-derivative
@@ -22,22 +24,64 @@ float gridParam(uint i, uint pointsPerSide) {
   return t;
 }
 
-GridRow gridRow(IN(BicubicPatch) bp, float u) {
-  CubicBasis bu = cubicBasis(u);
+// The four curves of one direction through parameter t of the other, relative to b_00: a row
+// (column false: c[j] = Σ_i B_i(t) (b_ij − b_00), the v-curve u = t) or a column (column true:
+// c[i] = Σ_j B_j(t) (b_ij − b_00), the u-curve v = t), and d their derivatives in t. One text
+// for both, so a side of either direction runs the same instructions (no divergent lanes).
+GridRow gridCurves(IN(BicubicPatch) bp, float t, bool column) {
+  CubicBasis b = cubicBasis(t);
   vec3 origin = vec3(bp.cp[0]);
   GridRow r;
-  for (int j = 0; j < 4; ++j) {
+  for (int m = 0; m < 4; ++m) {
     PRECISE vec3 c = vec3(0.0f);
     PRECISE vec3 d = vec3(0.0f);
-    for (int i = 0; i < 4; ++i) {
-      PRECISE vec3 q = vec3(bp.cp[i * 4 + j]) - origin;
-      c = c + bu.b0[i] * q;
-      d = d + bu.b1[i] * q;
+    for (int k = 0; k < 4; ++k) {
+      PRECISE vec3 q = vec3(column ? bp.cp[m * 4 + k] : bp.cp[k * 4 + m]) - origin;
+      c = c + b.b0[k] * q;
+      d = d + b.b1[k] * q;
     }
-    r.c[j] = c;
-    r.d[j] = d;
+    r.c[m] = c;
+    r.d[m] = d;
   }
   return r;
+}
+
+GridRow gridRow(IN(BicubicPatch) bp, float u) { return gridCurves(bp, u, false); }
+
+// A point of a row (or column) of the grid: its position relative to b_00 and its partials.
+struct GridPoint {
+  vec3 p;
+  vec3 pu;
+  vec3 pv;
+};
+
+// The unit normal Pu × Pv / |Pu × Pv| where |Pu × Pv| > `tol` (= ε·L², bicubicScale), and true;
+// else vec3(0) and false: the point is degenerate, and only the full rule of bicubicNormal (higher
+// derivatives, gridDegenerateNormal) gives its normal.
+bool gridRegularNormal(IN(GridPoint) q, float tol, OUT(vec3) normal) {
+  PRECISE vec3 n = cross(q.pu, q.pv);
+  PRECISE float len = sqrt(dot(n, n));
+  if (len > tol) {
+    normal = scaleToUnit(n, len);
+    return true;
+  }
+  normal = vec3(0.0f);
+  return false;
+}
+
+// The normal at a degenerate point (u, v): bicubicNormal's limiting direction from the full
+// derivatives at the point.
+vec3 gridDegenerateNormal(IN(BicubicPatch) bp, float u, float v, float tol) {
+  return bicubicNormal(evalBicubic(bp, u, v), u, v, tol);
+}
+
+// The vertex of point q with its normal.
+GridVertex gridPointVertex(IN(BicubicPatch) bp, IN(GridPoint) q, vec3 normal) {
+  PRECISE vec3 position = q.p + vec3(bp.cp[0]);
+  GridVertex g;
+  g.position = vec4(position, 1.0f);
+  g.normal = vec4(normal, 0.0f);
+  return g;
 }
 
 // The vertex at (u, v) from its position relative to b_00 and its two derivatives. `tol` =
@@ -45,18 +89,13 @@ GridRow gridRow(IN(BicubicPatch) bp, float u) {
 // bicubicNormal (higher derivatives) gives the normal.
 GridVertex gridVertexFrom(IN(BicubicPatch) bp, vec3 p, vec3 pu, vec3 pv, float u, float v,
                           float tol) {
-  PRECISE vec3 n = cross(pu, pv);
-  PRECISE float len = sqrt(dot(n, n));
+  GridPoint q;
+  q.p = p;
+  q.pu = pu;
+  q.pv = pv;
   vec3 normal;
-  if (len > tol)
-    normal = scaleToUnit(n, len);
-  else
-    normal = bicubicNormal(evalBicubic(bp, u, v), u, v, tol);
-  PRECISE vec3 position = p + vec3(bp.cp[0]);
-  GridVertex g;
-  g.position = vec4(position, 1.0f);
-  g.normal = vec4(normal, 0.0f);
-  return g;
+  if (!gridRegularNormal(q, tol, normal)) normal = gridDegenerateNormal(bp, u, v, tol);
+  return gridPointVertex(bp, q, normal);
 }
 
 // The cubic Bernstein values (b0) and derivatives (b1) at t, as gridVertex weighs a row.
@@ -71,58 +110,34 @@ void gridBasis(float t, OUT(vec4) b0, OUT(vec4) b1) {
   b1 = r1;
 }
 
+// Point t of a row's (column false) or column's (true) curves: P = Σ B_k(t) c_k, its derivative
+// along the curves Σ B'_k(t) c_k and across them Σ B_k(t) d_k (Pv and Pu for a row, Pu and Pv for
+// a column).
+GridPoint gridCurvesPoint(IN(GridRow) curves, float t, bool column) {
+  vec4 b0;
+  vec4 b1;
+  gridBasis(t, b0, b1);
+  PRECISE vec3 p = vec3(0.0f);
+  PRECISE vec3 across = vec3(0.0f);
+  PRECISE vec3 along = vec3(0.0f);
+  for (int k = 0; k < 4; ++k) {
+    p = p + b0[k] * curves.c[k];
+    across = across + b0[k] * curves.d[k];
+    along = along + b1[k] * curves.c[k];
+  }
+  GridPoint q;
+  q.p = p;
+  q.pu = column ? along : across;
+  q.pv = column ? across : along;
+  return q;
+}
+
+GridPoint gridRowPoint(IN(GridRow) row, float v) { return gridCurvesPoint(row, v, false); }
+
 // Vertex (u, v) of the row.
 GridVertex gridVertex(IN(BicubicPatch) bp, IN(GridRow) row, float u, float v, float tol) {
-  vec4 b0;
-  vec4 b1;
-  gridBasis(v, b0, b1);
-  PRECISE vec3 p = vec3(0.0f);
-  PRECISE vec3 pu = vec3(0.0f);
-  PRECISE vec3 pv = vec3(0.0f);
-  for (int j = 0; j < 4; ++j) {
-    p = p + b0[j] * row.c[j];
-    pu = pu + b0[j] * row.d[j];
-    pv = pv + b1[j] * row.c[j];
-  }
-  return gridVertexFrom(bp, p, pu, pv, u, v, tol);
-}
-
-// The u-curves through one column (fixed v): c[i] = Σ_j B_j(v) (b_ij − b_00) and d its
-// v-derivative; for vertices along a side v = const (one column for the whole side instead of
-// a row per vertex).
-GridRow gridColumn(IN(BicubicPatch) bp, float v) {
-  CubicBasis bv = cubicBasis(v);
-  vec3 origin = vec3(bp.cp[0]);
-  GridRow r;
-  for (int i = 0; i < 4; ++i) {
-    PRECISE vec3 c = vec3(0.0f);
-    PRECISE vec3 d = vec3(0.0f);
-    for (int j = 0; j < 4; ++j) {
-      PRECISE vec3 q = vec3(bp.cp[i * 4 + j]) - origin;
-      c = c + bv.b0[j] * q;
-      d = d + bv.b1[j] * q;
-    }
-    r.c[i] = c;
-    r.d[i] = d;
-  }
-  return r;
-}
-
-// Vertex (u, v) of the column.
-GridVertex gridColumnVertex(IN(BicubicPatch) bp, IN(GridRow) column, float u, float v,
-                            float tol) {
-  vec4 b0;
-  vec4 b1;
-  gridBasis(u, b0, b1);
-  PRECISE vec3 p = vec3(0.0f);
-  PRECISE vec3 pu = vec3(0.0f);
-  PRECISE vec3 pv = vec3(0.0f);
-  for (int i = 0; i < 4; ++i) {
-    p = p + b0[i] * column.c[i];
-    pu = pu + b1[i] * column.c[i];
-    pv = pv + b0[i] * column.d[i];
-  }
-  return gridVertexFrom(bp, p, pu, pv, u, v, tol);
+  GridPoint q = gridRowPoint(row, v);
+  return gridVertexFrom(bp, q.p, q.pu, q.pv, u, v, tol);
 }
 
 #endif
