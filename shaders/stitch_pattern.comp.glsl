@@ -84,6 +84,11 @@ void main() {
   bool column = (s & 1u) == 0u;
   vec2 end = stitchSideUV(sp, s, 0u);
   GridRow side = gridCurves(bp, column ? end.y : end.x, column);
+  // The edge's canonical control points, read once for all its points.
+  vec4 e0 = edgePoints[4u * edge];
+  vec4 e1 = edgePoints[4u * edge + 1u];
+  vec4 e2 = edgePoints[4u * edge + 2u];
+  vec4 e3 = edgePoints[4u * edge + 3u];
   uint degenerateFirst = e + 1u;
   uint degenerateLast = 0u;
   for (uint k = 0u; k <= e; ++k) {
@@ -95,9 +100,7 @@ void main() {
       degenerateLast = k;
     }
     GridVertex g = gridPointVertex(bp, q, normal);
-    g.position = vec4(stitchSidePosition(sp, s, k, edgePoints[4u * edge], edgePoints[4u * edge + 1u],
-                                         edgePoints[4u * edge + 2u], edgePoints[4u * edge + 3u]),
-                      1.0f);
+    g.position = vec4(stitchSidePosition(sp, s, k, e0, e1, e2, e3), 1.0f);
     vertices[first + k] = g;
   }
   for (uint k = degenerateFirst; k <= degenerateLast; ++k) {

@@ -77,6 +77,10 @@ void stitchItem(const gpu::BicubicPatch* patches, const gpu::StitchPatch* record
   bool column = (s & 1) == 0;
   vec2 end = stitchSideUV(sp, s, 0);
   GridRow side = gridCurves(bp, column ? end.y : end.x, column);
+  vec4 e0 = edgePoints[4 * edge];
+  vec4 e1 = edgePoints[4 * edge + 1];
+  vec4 e2 = edgePoints[4 * edge + 2];
+  vec4 e3 = edgePoints[4 * edge + 3];
   uint32_t degenerateFirst = e + 1, degenerateLast = 0;
   for (uint32_t k = 0; k <= e; ++k) {
     vec2 uv = stitchSideUV(sp, s, k);
@@ -87,9 +91,7 @@ void stitchItem(const gpu::BicubicPatch* patches, const gpu::StitchPatch* record
       degenerateLast = k;
     }
     GridVertex g = gridPointVertex(bp, q, normal);
-    g.position = vec4(stitchSidePosition(sp, s, k, edgePoints[4 * edge], edgePoints[4 * edge + 1],
-                                         edgePoints[4 * edge + 2], edgePoints[4 * edge + 3]),
-                      1.0f);
+    g.position = vec4(stitchSidePosition(sp, s, k, e0, e1, e2, e3), 1.0f);
     vertices[first + k] = g;
   }
   for (uint32_t k = degenerateFirst; k <= degenerateLast; ++k) {
