@@ -282,8 +282,11 @@ struct StitchPatch {
 };
 
 // Push constants of stitch_pattern.comp.glsl: one invocation per work item, an item being
-// (record << kStitchSlotBits) | slot, slot < cu: inner row, slot cu + s: side s's strip.
+// (record << kStitchSlotBits) | band: band b draws the inner rows b·kStitchBandRows .. (b + 1)·
+// kStitchBandRows − 1 of the record's patch (those below cu), the last band the four sides too.
+// Most patches are one band. The host orders the items so that neighbouring lanes get equal grids.
 TESSERA_CONST(uint, kStitchSlotBits, 9u);
+TESSERA_CONST(uint, kStitchBandRows, 8u);
 struct StitchPush {
   uint itemCount;
   float degenerateEps;  // ε of docs/conventions.md

@@ -48,9 +48,9 @@ size_t entriesDifferingFromMirror(const RealtimeTessellator& tessellator,
 }
 
 // Vertices whose normal is not a unit vector, and the frame's collapsed sides (poles): there
-// every normal comes from bicubicNormal's full rule, which the pattern runs in a second pass
-// over the degenerate points (shaders/stitch_pattern.comp.glsl); a point that pass missed
-// keeps the first pass's zero.
+// every normal comes from bicubicNormal's full rule, which the pattern runs in a last loop
+// over the degenerate points (shaders/stitch_pattern.comp.glsl); a point that loop missed
+// keeps the vertex loop's zero.
 size_t nonUnitNormals(const RealtimeFrame& frame) {
   size_t bad = 0;
   for (size_t v = 0; v < frame.vertexCount; ++v) {
@@ -58,6 +58,14 @@ size_t nonUnitNormals(const RealtimeFrame& frame) {
     bad += !(std::abs(std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z) - 1.0f) < 1e-5f);
   }
   return bad;
+}
+
+// Patches drawn by more than one work item (more inner rows than a band of the pattern holds).
+size_t patchesInSeveralBands(const RealtimeFrame& frame) {
+  size_t patches = 0;
+  for (const gpu::StitchPatch& record : frame.records)
+    patches += record.nu > gpu::kStitchBandRows + 1;  // inner rows: N_u − 1
+  return patches;
 }
 
 size_t collapsedSides(const RealtimeFrame& frame) {
@@ -80,7 +88,7 @@ TEST_CASE("Real-time frames meet 1 px on screen and match the mirror", "[gpu][re
       {"close", view({1.5, -4, 2.5}, {0, 0, 1.5})},
       {"inside the second teapot", view({8, 0, 1.5}, {0, 0, 1.5})},
   };
-  size_t estimatedTriangles = 0, provenTriangles = 0, polesSeen = 0;
+  size_t estimatedTriangles = 0, provenTriangles = 0, polesSeen = 0, banded = 0;
   for (const auto& [name, camera] : cameras) {
     // The proven counts (host/division/projected.h) on the same view: within 1 px too.
     const RealtimeFrame& provenFrame = provenTessellator.tessellate(camera);
@@ -112,9 +120,11 @@ TEST_CASE("Real-time frames meet 1 px on screen and match the mirror", "[gpu][re
     CHECK(entriesDifferingFromMirror(tessellator, frame) == 0);
     CHECK(nonUnitNormals(frame) == 0);
     polesSeen += collapsedSides(frame);
+    banded += patchesInSeveralBands(frame) + patchesInSeveralBands(provenFrame);
     if (std::string(name) == "inside the second teapot") CHECK(frame.fallback > 0);
   }
-  CHECK(polesSeen > 0);  // the lids' and bottoms' poles were drawn: the second pass ran
+  CHECK(polesSeen > 0);  // the lids' and bottoms' poles were drawn: the degenerate loop ran
+  CHECK(banded > 0);     // and patches split into several work items
   // The estimate (the default) needs far fewer triangles than the bound for the same views.
   CHECK(estimatedTriangles < 0.8 * provenTriangles);
   test::requireValidationClean();

@@ -112,8 +112,8 @@ class RealtimeTessellator {
   RealtimeOptions options_;
   vk::Context& context_;
   std::unique_ptr<StitchPatternRunner> runner_;
-  std::vector<uint32_t> items_;      // the last frame's work items
-  std::vector<uint32_t> sideItems_;  // scratch: the side items, appended after the rows
+  std::vector<uint32_t> items_;        // the last frame's work items: its records, in lane order
+  std::vector<uint32_t> itemScratch_;  // orderBySize's second buffer
   RealtimeFrame frame_;
 };
 

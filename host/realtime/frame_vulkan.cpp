@@ -77,6 +77,30 @@ Counted countsOf(const glm::dvec4* screen, int degreeV, const RationalBezierPatc
   return c;
 }
 
+// The work items ordered by their patches' (N_u, N_v): on a CPU driver neighbouring
+// invocations are SIMD lanes, and a lane group runs each loop as long as its longest lane, so
+// patches with equal grids side by side waste the least (bench/README.md, case 5). Two stable
+// counting passes, by N_v then N_u.
+void orderBySize(const std::vector<gpu::StitchPatch>& records, std::vector<uint32_t>& items,
+                 std::vector<uint32_t>& scratch) {
+  scratch.resize(items.size());
+  uint32_t largest = 0;
+  for (const gpu::StitchPatch& r : records) largest = std::max({largest, r.nu, r.nv});
+  std::vector<uint32_t> starts(size_t(largest) + 2);
+  auto pass = [&](const std::vector<uint32_t>& from, std::vector<uint32_t>& to, bool byU) {
+    auto count = [&](uint32_t item) {
+      const gpu::StitchPatch& r = records[item >> gpu::kStitchSlotBits];
+      return byU ? r.nu : r.nv;
+    };
+    std::fill(starts.begin(), starts.end(), 0u);
+    for (uint32_t item : from) ++starts[count(item) + 1];
+    for (size_t k = 1; k < starts.size(); ++k) starts[k] += starts[k - 1];
+    for (uint32_t item : from) to[starts[count(item)]++] = item;
+  };
+  pass(items, scratch, false);
+  pass(scratch, items, true);
+}
+
 }  // namespace
 
 RealtimeTessellator::RealtimeTessellator(vk::Context& context, std::vector<BezierPatch> patches,
@@ -206,7 +230,6 @@ const RealtimeFrame& RealtimeTessellator::prepareFrame(const Camera& camera) {
 
   stopwatch.restart();
   items_.clear();
-  sideItems_.clear();
   size_t vertexCount = 0, triangleCount = 0;
   for (size_t k = 0; k < visible; ++k) {
     const uint32_t p = visibleIndex[k];
@@ -235,13 +258,11 @@ const RealtimeFrame& RealtimeTessellator::prepareFrame(const Camera& camera) {
     vertexCount += mirror::stitchVertexCount(record);
     triangleCount += mirror::stitchTriangleCount(record);
     const uint32_t recordIndex = uint32_t(frame_.records.size());
-    const uint32_t rows = mirror::stitchItemCount(record) - 4;
-    for (uint32_t slot = 0; slot < rows + 4; ++slot)
-      (slot < rows ? items_ : sideItems_).push_back((recordIndex << gpu::kStitchSlotBits) | slot);
+    for (uint32_t band = 0; band < mirror::stitchItemCount(record); ++band)
+      items_.push_back((recordIndex << gpu::kStitchSlotBits) | band);
     frame_.records.push_back(record);
   }
-  // Rows first, then sides: neighbouring invocations (SIMD lanes) run the same branch.
-  items_.insert(items_.end(), sideItems_.begin(), sideItems_.end());
+  orderBySize(frame_.records, items_, itemScratch_);
   if (3 * triangleCount > UINT32_MAX || vertexCount > UINT32_MAX)
     throw std::length_error("real-time tessellation: a frame of " + std::to_string(triangleCount) +
                             " triangles exceeds 32-bit indices");

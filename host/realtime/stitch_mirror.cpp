@@ -31,7 +31,7 @@ void stitchItem(const gpu::BicubicPatch* patches, const gpu::StitchPatch* record
   // The shader's main(), line for line.
   using namespace glsl;
   const gpu::StitchPatch& sp = records[item >> gpu::kStitchSlotBits];
-  uint32_t slot = item & ((1u << gpu::kStitchSlotBits) - 1u);
+  uint32_t band = item & ((1u << gpu::kStitchSlotBits) - 1u);
   const gpu::BicubicPatch& bp = patches[sp.patchIndex];
   float scale = bicubicScale(bp);
   float tol = eps * scale * scale;
@@ -39,90 +39,85 @@ void stitchItem(const gpu::BicubicPatch* patches, const gpu::StitchPatch* record
   uint32_t cv = stitchInner(sp.nv);
   uint32_t v0 = sp.firstVertex;
   uint32_t t0 = sp.firstIndex / 3u;
-  if (slot < cu) {
-    uint32_t i = slot;
+  uint32_t degenerateFirst = glsl::stitchVertexCount(sp), degenerateLast = 0;
+  uint32_t rowEnd = std::min((band + 1) * gpu::kStitchBandRows, cu);
+  for (uint32_t i = band * gpu::kStitchBandRows; i < rowEnd; ++i) {
     float u = stitchInnerParam(i, sp.nu);
     GridRow row = gridRow(bp, u);
-    uint32_t rowFirst = v0 + i * cv;
-    uint32_t degenerateFirst = cv, degenerateLast = 0;
     for (uint32_t j = 0; j < cv; ++j) {
       GridPoint q = gridRowPoint(row, stitchInnerParam(j, sp.nv));
       vec3 normal;
       if (!gridRegularNormal(q, tol, normal)) {
-        degenerateFirst = std::min(degenerateFirst, j);
-        degenerateLast = j;
+        degenerateFirst = std::min(degenerateFirst, i * cv + j);
+        degenerateLast = i * cv + j;
       }
-      vertices[rowFirst + j] = gridPointVertex(bp, q, normal);
-    }
-    for (uint32_t j = degenerateFirst; j <= degenerateLast; ++j) {
-      float v = stitchInnerParam(j, sp.nv);
-      vec3 normal;
-      if (!gridRegularNormal(gridRowPoint(row, v), tol, normal))
-        vertices[rowFirst + j].normal = vec4(gridDegenerateNormal(bp, u, v, tol), 0.0f);
+      vertices[v0 + i * cv + j] = gridPointVertex(bp, q, normal);
     }
     if (i + 1 < cu) {
       for (uint32_t j = 0; j + 1 < cv; ++j) {
-        uint32_t a = rowFirst + j;
+        uint32_t a = v0 + i * cv + j;
         uint32_t at = t0 + 2 * (i * (cv - 1) + j);
         triangle(indices, at, a, a + cv, a + cv + 1);
         triangle(indices, at + 1, a, a + cv + 1, a + 1);
       }
     }
-    return;
   }
-  uint32_t s = slot - cu;
-  uint32_t e = sp.sideSegments[s];
-  uint32_t edge = sp.sideEdge[s];
-  uint32_t first = v0 + stitchSideFirstVertex(sp, s);
-  bool column = (s & 1) == 0;
-  vec2 end = stitchSideUV(sp, s, 0);
-  GridRow side = gridCurves(bp, column ? end.y : end.x, column);
-  vec4 e0 = edgePoints[4 * edge];
-  vec4 e1 = edgePoints[4 * edge + 1];
-  vec4 e2 = edgePoints[4 * edge + 2];
-  vec4 e3 = edgePoints[4 * edge + 3];
-  uint32_t degenerateFirst = e + 1, degenerateLast = 0;
-  for (uint32_t k = 0; k <= e; ++k) {
-    vec2 uv = stitchSideUV(sp, s, k);
-    GridPoint q = gridCurvesPoint(side, column ? uv.x : uv.y, column);
-    vec3 normal;
-    if (!gridRegularNormal(q, tol, normal)) {
-      degenerateFirst = std::min(degenerateFirst, k);
-      degenerateLast = k;
+  uint32_t sides = rowEnd == cu ? 4 : 0;
+  for (uint32_t s = 0; s < sides; ++s) {
+    uint32_t e = sp.sideSegments[s];
+    uint32_t edge = sp.sideEdge[s];
+    uint32_t local = stitchSideFirstVertex(sp, s);
+    uint32_t first = v0 + local;
+    bool column = (s & 1) == 0;
+    vec2 end = stitchSideUV(sp, s, 0);
+    GridRow side = gridCurves(bp, column ? end.y : end.x, column);
+    vec4 e0 = edgePoints[4 * edge];
+    vec4 e1 = edgePoints[4 * edge + 1];
+    vec4 e2 = edgePoints[4 * edge + 2];
+    vec4 e3 = edgePoints[4 * edge + 3];
+    for (uint32_t k = 0; k <= e; ++k) {
+      vec2 uv = stitchSideUV(sp, s, k);
+      GridPoint q = gridCurvesPoint(side, column ? uv.x : uv.y, column);
+      vec3 normal;
+      if (!gridRegularNormal(q, tol, normal)) {
+        degenerateFirst = std::min(degenerateFirst, local + k);
+        degenerateLast = local + k;
+      }
+      GridVertex g = gridPointVertex(bp, q, normal);
+      g.position = vec4(stitchSidePosition(sp, s, k, e0, e1, e2, e3), 1.0f);
+      vertices[first + k] = g;
     }
-    GridVertex g = gridPointVertex(bp, q, normal);
-    g.position = vec4(stitchSidePosition(sp, s, k, e0, e1, e2, e3), 1.0f);
-    vertices[first + k] = g;
-  }
-  for (uint32_t k = degenerateFirst; k <= degenerateLast; ++k) {
-    vec2 uv = stitchSideUV(sp, s, k);
-    vec3 normal;
-    if (!gridRegularNormal(gridCurvesPoint(side, column ? uv.x : uv.y, column), tol, normal))
-      vertices[first + k].normal = vec4(gridDegenerateNormal(bp, uv.x, uv.y, tol), 0.0f);
-  }
-  uint32_t n = stitchSideCount(sp, s);
-  uint32_t c = stitchInner(n);
-  bool flip = s >= 2;
-  bool collapsed = (sp.sideFlags[s] & gpu::kStitchCollapsed) != 0;
-  uint32_t at = t0 + stitchSideFirstTriangle(sp, s);
-  uint32_t i = 0, k = 0;
-  while (k < e || i + 1 < c) {
-    uint32_t a = first + k;
-    uint32_t d = v0 + stitchInnerAlongSide(sp, s, i);
-    uint32_t b;
-    if (stitchAdvanceOuter(k, e, i, c, n)) {
-      b = first + k + 1;
-      k = k + 1;
-      if (collapsed) continue;
-    } else {
-      b = v0 + stitchInnerAlongSide(sp, s, i + 1);
-      i = i + 1;
+    uint32_t n = stitchSideCount(sp, s);
+    uint32_t c = stitchInner(n);
+    bool flip = s >= 2;
+    bool collapsed = (sp.sideFlags[s] & gpu::kStitchCollapsed) != 0;
+    uint32_t at = t0 + stitchSideFirstTriangle(sp, s);
+    uint32_t i = 0, k = 0;
+    while (k < e || i + 1 < c) {
+      uint32_t a = first + k;
+      uint32_t d = v0 + stitchInnerAlongSide(sp, s, i);
+      uint32_t b;
+      if (stitchAdvanceOuter(k, e, i, c, n)) {
+        b = first + k + 1;
+        k = k + 1;
+        if (collapsed) continue;
+      } else {
+        b = v0 + stitchInnerAlongSide(sp, s, i + 1);
+        i = i + 1;
+      }
+      if (flip)
+        triangle(indices, at, a, d, b);
+      else
+        triangle(indices, at, a, b, d);
+      at = at + 1;
     }
-    if (flip)
-      triangle(indices, at, a, d, b);
-    else
-      triangle(indices, at, a, b, d);
-    at = at + 1;
+  }
+  for (uint32_t local = degenerateFirst; local <= degenerateLast; ++local) {
+    StitchVertexCurve at = stitchVertexCurve(sp, local);
+    GridRow curves = gridCurves(bp, at.fixedParam, at.column);
+    vec3 normal;
+    if (!gridRegularNormal(gridCurvesPoint(curves, at.along, at.column), tol, normal))
+      vertices[v0 + local].normal = vec4(gridDegenerateNormal(bp, at.uv.x, at.uv.y, tol), 0.0f);
   }
 }
 
@@ -133,7 +128,7 @@ uint32_t stitchTriangleCount(const gpu::StitchPatch& record) {
   return glsl::stitchTriangleCount(record);
 }
 uint32_t stitchItemCount(const gpu::StitchPatch& record) {
-  return glsl::stitchInner(record.nu) + 4;
+  return (glsl::stitchInner(record.nu) + gpu::kStitchBandRows - 1) / gpu::kStitchBandRows;
 }
 
 uint32_t stitchSideVertex(const gpu::StitchPatch& record, uint32_t side, uint32_t k) {

@@ -105,4 +105,40 @@ vec2 stitchSideUV(IN(StitchPatch) sp, uint s, uint k) {
   return vec2(0.0f, t);
 }
 
+// Where the pattern evaluates local vertex `local`: its (u, v), and the curves it lies on (a
+// row, column false: gridCurves at u; or a column, true: at v) with its parameter along them.
+// Inner vertices lie on their row, a side's points on the side's own row or column.
+struct StitchVertexCurve {
+  vec2 uv;
+  bool column;
+  float fixedParam;
+  float along;
+};
+
+StitchVertexCurve stitchVertexCurve(IN(StitchPatch) sp, uint local) {
+  uint cv = stitchInner(sp.nv);
+  uint inner = stitchInner(sp.nu) * cv;
+  StitchVertexCurve r;
+  if (local < inner) {
+    uint i = local / cv;
+    r.uv = vec2(stitchInnerParam(i, sp.nu), stitchInnerParam(local - i * cv, sp.nv));
+    r.column = false;
+    r.fixedParam = r.uv.x;
+    r.along = r.uv.y;
+    return r;
+  }
+  uint s = 0u;
+  uint k = local - inner;
+  while (s < 3u && k > sp.sideSegments[s]) {
+    k = k - (sp.sideSegments[s] + 1u);
+    s = s + 1u;
+  }
+  r.uv = stitchSideUV(sp, s, k);
+  r.column = (s & 1u) == 0u;
+  vec2 end = stitchSideUV(sp, s, 0u);
+  r.fixedParam = r.column ? end.y : end.x;
+  r.along = r.column ? r.uv.x : r.uv.y;
+  return r;
+}
+
 #endif

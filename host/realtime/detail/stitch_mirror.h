@@ -9,7 +9,7 @@
 
 namespace tessera::mirror {
 
-// One work item (record << kStitchSlotBits | slot) into the frame's vertex and index arrays,
+// One work item (record << kStitchSlotBits | band) into the frame's vertex and index arrays,
 // as one shader invocation does.
 void stitchItem(const gpu::BicubicPatch* patches, const gpu::StitchPatch* records,
                 const gpu::vec4* edgePoints, uint32_t item, float eps, gpu::GridVertex* vertices,
@@ -17,7 +17,7 @@ void stitchItem(const gpu::BicubicPatch* patches, const gpu::StitchPatch* record
 
 uint32_t stitchVertexCount(const gpu::StitchPatch& record);
 uint32_t stitchTriangleCount(const gpu::StitchPatch& record);
-uint32_t stitchItemCount(const gpu::StitchPatch& record);  // inner rows + 4 sides
+uint32_t stitchItemCount(const gpu::StitchPatch& record);  // bands of inner rows
 // Local index of edge point k (0 ≤ k ≤ sideSegments[side]) of side `side`, in the side's t.
 uint32_t stitchSideVertex(const gpu::StitchPatch& record, uint32_t side, uint32_t k);
 
