@@ -1,5 +1,6 @@
-// The shared helpers in host/common/: parallelFor hands out every index exactly once and
-// reports a worker's exception in the caller; Stopwatch never reads negative or backwards.
+// The shared helpers in host/common/: parallelFor and parallelForChunks hand out every index
+// exactly once, parallelFor reports a worker's exception in the caller; Stopwatch never reads
+// negative or backwards.
 #include <catch2/catch.hpp>
 
 #include <atomic>
@@ -26,6 +27,28 @@ TEST_CASE("parallelFor covers every index exactly once", "[common]") {
       for (size_t i = 0; i < count; ++i) REQUIRE(visits[i] == 1);
       // One share per thread, never more shares than items, none for an empty range.
       CHECK(calls == int(std::min<size_t>(threads, count)));
+    }
+  }
+}
+
+TEST_CASE("parallelForChunks covers every index exactly once, in chunks", "[common]") {
+  for (size_t count : {size_t(0), size_t(1), size_t(7), size_t(1000)}) {
+    for (size_t chunk : {size_t(0), size_t(1), size_t(16), size_t(5000)}) {
+      for (unsigned threads : {1u, 2u, 5u}) {
+        std::vector<std::atomic<int>> visits(count);
+        std::atomic<size_t> calls{0};
+        parallelForChunks(count, chunk, threads, [&](size_t begin, size_t end) {
+          ++calls;
+          CHECK(begin < end);
+          CHECK(end - begin <= std::max<size_t>(chunk, 1));
+          CHECK((begin % std::max<size_t>(chunk, 1)) == 0);
+          for (size_t i = begin; i < end; ++i) ++visits[i];
+        });
+        INFO("count " << count << ", chunk " << chunk << ", threads " << threads);
+        for (size_t i = 0; i < count; ++i) REQUIRE(visits[i] == 1);
+        const size_t step = std::max<size_t>(chunk, 1);
+        CHECK(calls == (count + step - 1) / step);
+      }
     }
   }
 }

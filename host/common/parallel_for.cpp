@@ -1,6 +1,7 @@
 #include "common/parallel_for.h"
 
 #include <algorithm>
+#include <atomic>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -43,6 +44,17 @@ void parallelFor(size_t count, unsigned threads,
   const size_t shares = std::min<size_t>(resolveThreadCount(threads), count);
   parallelParts(unsigned(shares),
                 [&](unsigned part) { body(count * part / shares, count * (part + 1) / shares); });
+}
+
+void parallelForChunks(size_t count, size_t chunk, unsigned threads,
+                       const std::function<void(size_t begin, size_t end)>& body) {
+  if (count == 0) return;
+  chunk = std::max<size_t>(chunk, 1);
+  std::atomic<size_t> next{0};
+  parallelParts(unsigned(std::min<size_t>(resolveThreadCount(threads), count)), [&](unsigned) {
+    for (size_t begin = next.fetch_add(chunk); begin < count; begin = next.fetch_add(chunk))
+      body(begin, std::min(count, begin + chunk));
+  });
 }
 
 }  // namespace tessera

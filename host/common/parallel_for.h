@@ -21,4 +21,10 @@ void parallelParts(unsigned parts, const std::function<void(unsigned part)>& bod
 void parallelFor(size_t count, unsigned threads,
                  const std::function<void(size_t begin, size_t end)>& body);
 
+// The same for items whose costs differ: min(threads, count) threads take chunks [begin, end)
+// of `chunk` items (the last one shorter) in turn from a shared counter, so no thread waits
+// long for the slowest share. Every index is in exactly one chunk.
+void parallelForChunks(size_t count, size_t chunk, unsigned threads,
+                       const std::function<void(size_t begin, size_t end)>& body);
+
 }  // namespace tessera
