@@ -259,3 +259,34 @@ TEST_CASE("gap refinement: a rational cone's wide gaps end within δ", "[cad][tr
   }
 }
 #endif
+
+#ifdef TESSERA_HAVE_CAD
+// When the rounds do run out over δ the face is counted and named, not passed off: the same
+// cone at δ = 2.5·10⁻⁴ with the refinement cut to 2 rounds (it needs more).
+TEST_CASE("gap refinement: a face left over δ is counted and named", "[cad][trim]") {
+  Backend backend = makeMirrorBackend();
+  gp_Ax2 tilted(gp_Pnt(3.0, -1.0, 2.0), gp_Dir(1.0, 2.0, 2.0));
+  const TopoDS_Shape cone = BRepPrimAPI_MakeCone(tilted, 1.0, 0.3, 2.0).Shape();
+  const double delta = test::sweepShare() < 1.0 ? 2e-3 : 2.5e-4;
+  TrimmedModel parametric = toTrimmedModel(CadFile{"truncated cone", cone, {}}, delta).model;
+  for (TrimmedFace& face : parametric.faces) face.revolution = RevolutionForm{};
+  TrimmedMeshOptions options;
+  options.tolerance = delta;
+  // Under the sanitizers (10× coarser δ, sweep_share.h) 2 rounds finish: none at all there.
+  options.maxRefineRounds = test::sweepShare() < 1.0 ? 0 : 2;
+  const TrimmedMesh mesh = meshTrimmedModel(parametric, options, backend);
+  const std::vector<std::string> warnings = unfinishedRefinementWarnings(mesh, delta);
+  size_t unfinishedFaces = 0;
+  for (const TrimmedFaceStats& f : mesh.faces) {
+    if (f.unfinishedGapTriangles == 0) continue;
+    CHECK(f.maxGeometricDeviation > delta);  // what was counted is really over δ
+    const std::string named = "face " + std::to_string(f.faceIndex) + ": the gap refinement ran out";
+    CHECK(std::any_of(warnings.begin(), warnings.end(),
+                      [&](const std::string& w) { return w.rfind(named, 0) == 0; }));
+    ++unfinishedFaces;
+  }
+  WARN(unfinishedFaces << " faces left over δ after " << options.maxRefineRounds << " rounds; " << (warnings.empty() ? "" : warnings[0]));
+  CHECK(unfinishedFaces > 0);
+  CHECK(warnings.size() == unfinishedFaces);
+}
+#endif

@@ -14,7 +14,6 @@
 #include "vk/context.h"
 #ifdef TESSERA_HAVE_CAD
 #include "cad/cad_file.h"
-#include "cad/detail/number_text.h"
 #include "cad/to_trimmed.h"
 #endif
 
@@ -68,15 +67,8 @@ CadResult runCadJob(const CadJob& job, ChosenBackend& chosen) {
   // The faces' indices in the model (TrimmedFace::faceIndex), not their place in the list of
   // faces that converted: what the glb's primitives and the stats name.
   for (uint32_t& face : result.mesh.triangleFace) face = import.model.faces[face].faceIndex;
-  // The gap refinement stops after TrimmedMeshOptions::maxRefineRounds; a face it left over δ
-  // is said, never passed off as within δ.
-  for (const TrimmedFaceStats& f : result.mesh.faces)
-    if (f.unfinishedGapTriangles > 0)
-      result.faceWarnings.push_back(
-          "face " + std::to_string(f.faceIndex) + ": the gap refinement ran out of rounds with " +
-          std::to_string(f.unfinishedGapTriangles) + " triangles over the tolerance " +
-          cad_detail::numberText(result.delta) + "; measured up to " +
-          cad_detail::numberText(f.maxGeometricDeviation) + " from the surface");
+  // A face the gap refinement left over δ is said, never passed off as within δ.
+  result.faceWarnings = unfinishedRefinementWarnings(result.mesh, result.delta);
   return result;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <memory>
 #include <set>
@@ -336,6 +337,20 @@ TrimmedMesh meshTrimmedModel(const TrimmedModel& model, const TrimmedMeshOptions
   timings.emitMs = step.elapsedMs();
   timings.totalMs = total.elapsedMs();
   return out;
+}
+
+std::vector<std::string> unfinishedRefinementWarnings(const TrimmedMesh& mesh, double tolerance) {
+  std::vector<std::string> warnings;
+  for (const TrimmedFaceStats& f : mesh.faces) {
+    if (f.unfinishedGapTriangles == 0) continue;
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "face %u: the gap refinement ran out of rounds with %zu triangles over the "
+                  "tolerance %.4g; measured up to %.4g from the surface",
+                  f.faceIndex, f.unfinishedGapTriangles, tolerance, f.maxGeometricDeviation);
+    warnings.push_back(text);
+  }
+  return warnings;
 }
 
 }  // namespace tessera

@@ -112,4 +112,9 @@ void validateTrimmedModel(const TrimmedModel& model);
 TrimmedMesh meshTrimmedModel(const TrimmedModel& model, const TrimmedMeshOptions& options,
                              Backend& backend, TrimClassifier* trim = nullptr);
 
+// One message per face whose gap refinement ran out of rounds over δ
+// (TrimmedFaceStats::unfinishedGapTriangles), naming the face, the triangles left and the
+// largest measured distance: what a caller reports rather than pass the face off as within δ.
+std::vector<std::string> unfinishedRefinementWarnings(const TrimmedMesh& mesh, double tolerance);
+
 }  // namespace tessera
