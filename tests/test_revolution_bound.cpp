@@ -49,6 +49,16 @@ std::vector<Shape> revolutionShapes() {
   };
 }
 
+// The truncated cone of revolutionShapes() without its revolution forms, so that rule T's
+// parametric bound decides its rational faces: they leave wide gaps for the refinement.
+TrimmedModel parametricTruncatedCone(double delta) {
+  gp_Ax2 tilted(gp_Pnt(3.0, -1.0, 2.0), gp_Dir(1.0, 2.0, 2.0));
+  const TopoDS_Shape cone = BRepPrimAPI_MakeCone(tilted, 1.0, 0.3, 2.0).Shape();
+  TrimmedModel model = toTrimmedModel(CadFile{"truncated cone", cone, {}}, delta).model;
+  for (TrimmedFace& face : model.faces) face.revolution = RevolutionForm{};
+  return model;
+}
+
 }  // namespace
 
 TEST_CASE("revolution bound: every triangle of a node lies within its bound of the surface",
@@ -234,14 +244,11 @@ TEST_CASE("revolution bound: the same triangles at any scale and position", "[ca
 // here every face ends within δ.
 TEST_CASE("gap refinement: a rational cone's wide gaps end within δ", "[cad][trim]") {
   Backend backend = makeMirrorBackend();
-  gp_Ax2 tilted(gp_Pnt(3.0, -1.0, 2.0), gp_Dir(1.0, 2.0, 2.0));
-  const TopoDS_Shape cone = BRepPrimAPI_MakeCone(tilted, 1.0, 0.3, 2.0).Shape();
   const std::vector<double> deltas = test::sweepShare() < 1.0 ? std::vector<double>{2e-3}
                                                              : std::vector<double>{2e-3, 6e-4, 2.5e-4};
   for (double delta : deltas) {
     INFO("δ " << delta);
-    TrimmedModel parametric = toTrimmedModel(CadFile{"truncated cone", cone, {}}, delta).model;
-    for (TrimmedFace& face : parametric.faces) face.revolution = RevolutionForm{};
+    const TrimmedModel parametric = parametricTruncatedCone(delta);
     TrimmedMeshOptions options;
     options.tolerance = delta;
     const TrimmedMesh mesh = meshTrimmedModel(parametric, options, backend);
@@ -265,11 +272,8 @@ TEST_CASE("gap refinement: a rational cone's wide gaps end within δ", "[cad][tr
 // cone at δ = 2.5·10⁻⁴ with the refinement cut to 2 rounds (it needs more).
 TEST_CASE("gap refinement: a face left over δ is counted and named", "[cad][trim]") {
   Backend backend = makeMirrorBackend();
-  gp_Ax2 tilted(gp_Pnt(3.0, -1.0, 2.0), gp_Dir(1.0, 2.0, 2.0));
-  const TopoDS_Shape cone = BRepPrimAPI_MakeCone(tilted, 1.0, 0.3, 2.0).Shape();
   const double delta = test::sweepShare() < 1.0 ? 2e-3 : 2.5e-4;
-  TrimmedModel parametric = toTrimmedModel(CadFile{"truncated cone", cone, {}}, delta).model;
-  for (TrimmedFace& face : parametric.faces) face.revolution = RevolutionForm{};
+  const TrimmedModel parametric = parametricTruncatedCone(delta);
   TrimmedMeshOptions options;
   options.tolerance = delta;
   // Under the sanitizers (10× coarser δ, sweep_share.h) 2 rounds finish: none at all there.
