@@ -13,6 +13,8 @@
 
 #include <cstring>
 #include <map>
+#include <sstream>
+#include <string>
 
 #include "gpu_test_context.h"
 #include "io/bpt_reader.h"
@@ -49,7 +51,29 @@ struct FrameDefects {
   size_t overusedEdges = 0, tJunctions = 0;
   double largestGap = 0;
   double largestCountRatio = 1;  // max(N_u, N_v) of two patches sharing an edge, larger/smaller
+  size_t degenerateTriangles = 0;  // after welding
+  std::string unexpectedOpen;      // where the first open edges off the unshared sides lie
 };
+
+// Where frame vertex v comes from: its patch and its place in the patch's pattern (an inner
+// vertex, or point k of side s), for the report of an unexpected open edge.
+std::string vertexOrigin(const RealtimeFrame& frame, uint32_t v) {
+  for (const gpu::StitchPatch& r : frame.records) {
+    if (v < r.firstVertex || v >= r.firstVertex + mirror::stitchVertexCount(r)) continue;
+    std::ostringstream text;
+    text << "patch " << r.patchIndex << " (" << r.nu << "x" << r.nv << ")";
+    for (uint32_t s = 0; s < 4; ++s)
+      for (uint32_t k = 0; k <= r.sideSegments[s]; ++k)
+        if (r.firstVertex + mirror::stitchSideVertex(r, s, k) == v) {
+          text << " side " << s << " point " << k << "/" << r.sideSegments[s]
+               << ((r.sideFlags[s] & gpu::kStitchCollapsed) ? " collapsed" : "");
+          return text.str();
+        }
+    text << " inner " << v - r.firstVertex;
+    return text.str();
+  }
+  return "no patch";
+}
 
 bool samePosition(const gpu::GridVertex& a, const gpu::GridVertex& b) {
   return std::memcmp(&a.position, &b.position, sizeof a.position) == 0;
@@ -100,16 +124,38 @@ FrameDefects checkFrame(const RealtimeFrame& frame, const std::vector<BezierPatc
   TriangleMesh mesh;
   std::map<std::array<uint32_t, 3>, uint32_t> weld;
   std::vector<uint32_t> welded(frame.vertexCount);
+  std::vector<uint32_t> firstOf;  // a frame vertex of each welded one
   for (size_t v = 0; v < frame.vertexCount; ++v) {
     std::array<uint32_t, 3> key;
     std::memcpy(key.data(), &frame.vertices[v].position, sizeof key);
     const auto [it, inserted] = weld.emplace(key, uint32_t(mesh.positions.size()));
-    if (inserted) mesh.positions.push_back(glm::vec3(frame.vertices[v].position));
+    if (inserted) {
+      mesh.positions.push_back(glm::vec3(frame.vertices[v].position));
+      firstOf.push_back(uint32_t(v));
+    }
     welded[v] = it->second;
   }
   for (size_t k = 0; k < 3 * frame.triangles; ++k) mesh.indices.push_back(welded[frame.indices[k]]);
   const test::EdgeCensus census = test::censusOf(mesh, 0.0);
   d.openEdges = census.boundaryEdges;
+  d.degenerateTriangles = census.degenerateTriangles;
+  if (census.boundaryEdges != d.expectedOpenEdges) {
+    // Name the open edges that are not segments of one unshared side (at most six).
+    std::ostringstream text;
+    int named = 0;
+    for (const auto& [edge, count] : census.undirected) {
+      if (count != 1 || named >= 6) continue;
+      const std::string a = vertexOrigin(frame, firstOf[edge.first]);
+      const std::string b = vertexOrigin(frame, firstOf[edge.second]);
+      const bool sameSide = a.find(" side ") != std::string::npos &&
+                            a.substr(0, a.find(" point ")) == b.substr(0, b.find(" point "));
+      if (sameSide) continue;
+      const glm::vec3 pa = mesh.positions[edge.first], pb = mesh.positions[edge.second];
+      text << "\n  open edge " << a << " -> " << b << ", length " << glm::length(pb - pa);
+      ++named;
+    }
+    d.unexpectedOpen = text.str();
+  }
   d.overusedEdges = census.overusedEdges;
   d.tJunctions = test::tJunctionCount(mesh, census, eps, &d.largestGap);
   return d;
@@ -146,7 +192,8 @@ TEST_CASE("Real-time frames: no cracks, no T-junctions, no non-manifold edges, w
               << d.expectedOpenEdges << "), " << d.overusedEdges << " overused, " << d.tJunctions
               << " T-junctions (longest " << d.largestGap << "), neighbour count ratio up to "
               << d.largestCountRatio << "; error " << error.maxAffinePixels << " px affine, "
-              << error.maxPerspectivePixels << " px perspective");
+              << error.maxPerspectivePixels << " px perspective; " << d.degenerateTriangles
+              << " degenerate triangles after welding" << d.unexpectedOpen);
     CHECK(frame.records.size() > 0);
     CHECK(d.sharedSides > 0);
     CHECK(d.countMismatches == 0);

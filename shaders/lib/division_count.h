@@ -132,10 +132,11 @@ bool divisionWeightRatios(int q, OUT(vec2) ratios) {
         float wk = gNet.h[k].w;
         gPiece[k] = vec3(wk, wk == 0.0f ? 1.0f : 0.0f, abs(wk));
       }
-      PRECISE float u0 = float(pu) / float(q);
-      PRECISE float u1 = float(pu + 1) / float(q);
-      PRECISE float v0 = float(pv) / float(qv);
-      PRECISE float v1 = float(pv + 1) / float(qv);
+      // Exact ends, so the pieces cover [0, 1]² on every driver (u1 = 1 is not restricted).
+      float u0 = exactRatio(uint(pu), uint(q));
+      float u1 = exactRatio(uint(pu + 1), uint(q));
+      float v0 = exactRatio(uint(pv), uint(qv));
+      float v1 = exactRatio(uint(pv + 1), uint(qv));
       if (u0 != 0.0f || u1 != 1.0f)
         for (int j = 0; j <= gNet.m; ++j) restrictPieceRow(j, s, gNet.n, u0, u1);
       if (v0 != 0.0f || v1 != 1.0f)

@@ -18,11 +18,8 @@ struct GridRow {
   vec3 d[4];  // Σ_i B'_i(u) (b_ij − b_00): its u-derivative
 };
 
-// Parameter of grid line i of P (both ends exact: 0 and 1).
-float gridParam(uint i, uint pointsPerSide) {
-  PRECISE float t = float(i) / float(pointsPerSide - 1u);
-  return t;
-}
+// Parameter of grid line i of P (both ends exact: 0 and 1, on every driver).
+float gridParam(uint i, uint pointsPerSide) { return exactRatio(i, pointsPerSide - 1u); }
 
 // The four curves of one direction through parameter t of the other, relative to b_00: a row
 // (column false: c[j] = Σ_i B_i(t) (b_ij − b_00), the v-curve u = t) or a column (column true:

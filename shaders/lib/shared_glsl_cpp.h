@@ -10,10 +10,23 @@
 #define OUT(T) T&
 #define INOUT(T) T&
 #define PRECISE
+#define SHARED_FN inline
 #else
 #define IN(T) in T
 #define OUT(T) out T
 #define INOUT(T) inout T
 #define PRECISE precise
+#define SHARED_FN
 #endif
+
+// i / n for the lines of a grid, with both ends exact on every driver: 0 / n = 0 and n / n = 1.
+// Vulkan allows a division 2.5 ulp of error, and NVIDIA's driver multiplies by a reciprocal, so
+// there n / n need not be 1: on an H100 a stitched patch's corner, evaluated at "1" from two
+// sides, came out as two points and opened cracks. Lavapipe and C++ divide correctly rounded,
+// where this is the plain quotient bit for bit.
+SHARED_FN float exactRatio(uint i, uint n) {
+  if (i == n) return 1.0f;
+  PRECISE float t = float(i) / float(n);
+  return t;
+}
 #endif

@@ -12,10 +12,7 @@
 uint stitchInner(uint n) { return n >= 2u ? n - 1u : 1u; }
 
 // Parameter of inner line i (0 ≤ i < stitchInner(n)).
-float stitchInnerParam(uint i, uint n) {
-  PRECISE float t = n >= 2u ? float(i + 1u) / float(n) : 0.5f;
-  return t;
-}
+float stitchInnerParam(uint i, uint n) { return n >= 2u ? exactRatio(i + 1u, n) : 0.5f; }
 
 // Count n and inner vertices c along side s (V0 and V1 run along u, U1 and U0 along v).
 uint stitchSideCount(IN(StitchPatch) sp, uint s) { return (s & 1u) == 0u ? sp.nu : sp.nv; }
@@ -85,8 +82,7 @@ vec3 stitchEdgePoint(IN(vec4) p0, IN(vec4) p1, IN(vec4) p2, IN(vec4) p3, float t
 float stitchCanonicalParam(IN(StitchPatch) sp, uint s, uint k) {
   uint e = sp.sideSegments[s];
   uint c = (sp.sideFlags[s] & kStitchReversed) != 0u ? e - k : k;
-  PRECISE float t = float(c) / float(e);
-  return t;
+  return exactRatio(c, e);  // the corners exactly: both sides through a corner give its point
 }
 
 // Position of the side's edge point k: on a collapsed side the pole itself (a Bernstein sum of
@@ -98,7 +94,7 @@ vec3 stitchSidePosition(IN(StitchPatch) sp, uint s, uint k, IN(vec4) p0, IN(vec4
 }
 
 vec2 stitchSideUV(IN(StitchPatch) sp, uint s, uint k) {
-  PRECISE float t = float(k) / float(sp.sideSegments[s]);
+  float t = exactRatio(k, sp.sideSegments[s]);
   if (s == 0u) return vec2(t, 0.0f);
   if (s == 1u) return vec2(1.0f, t);
   if (s == 2u) return vec2(t, 1.0f);
