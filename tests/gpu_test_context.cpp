@@ -7,9 +7,12 @@
 
 namespace tessera::test {
 
+namespace {
+std::unique_ptr<vk::Context> context;
+std::string failure;
+}  // namespace
+
 vk::Context& gpuContext() {
-  static std::unique_ptr<vk::Context> context;
-  static std::string failure;
   if (!context && failure.empty()) {
     try {
       vk::ContextOptions options;
@@ -28,6 +31,10 @@ vk::Context& gpuContext() {
                                                  "tests deliberately.");
   return *context;
 }
+
+bool exactMirrorArithmetic() { return gpuContext().info().isLavapipe(); }
+
+void releaseGpuContext() { context.reset(); }
 
 void requireValidationClean() {
   auto messages = gpuContext().validationMessages();

@@ -19,6 +19,7 @@
 #include "sweep_share.h"
 #include "tea_set_settings.h"
 #include "tessellation_defects.h"
+#include "vector_difference.h"
 
 using namespace tessera;
 
@@ -160,7 +161,7 @@ TEST_CASE("Vulkan's tea-set meshes are the mirror's in every mode", "[gpu][water
         continue;
       }
       const Tessellation b = tessellate(patches, s.options, cpu);
-      REQUIRE(a.mesh.indices == b.mesh.indices);
+      REQUIRE(test::vectorDifference(a.mesh.indices, b.mesh.indices) == "");
       REQUIRE(a.mesh.positions == b.mesh.positions);
     }
     ++model;
