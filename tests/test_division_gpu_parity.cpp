@@ -1,5 +1,5 @@
 // GPU division counts (shaders/division_count.comp.glsl) against the fp32 mirror (bit for bit
-// on lavapipe) and against the double reference (counts equal, or one apart only where the
+// on lavapipe; other drivers' mirror differences are printed) and against the double reference (counts equal, or one apart only where the
 // reference's real-valued count lies within the band of docs/rational_division.md).
 #include <catch2/catch.hpp>
 
@@ -109,7 +109,7 @@ TEST_CASE("Division counts: Vulkan equals the fp32 mirror bit for bit and the do
             << ", off by one within the band " << kCountBand << ": " << offByOneInBand
             << ", outside: " << outOfBand << ", max count difference " << maxCountDiff
             << ", max relative bound difference " << maxBoundRel << "\n";
-  CHECK(mirrorMismatches == 0);
+  if (test::exactMirrorArithmetic()) CHECK(mirrorMismatches == 0);
   CHECK(statusMismatches == 0);
   CHECK(outOfBand == 0);
   CHECK(maxCountDiff <= 1);
@@ -162,7 +162,7 @@ TEST_CASE("Division counts of curves (appendDivisionCurves): Vulkan equals the f
             << " compared), mirror mismatches " << mirrorMismatches << ", status mismatches "
             << statusMismatches << ", outside the band: " << outOfBand
             << ", max count difference " << maxCountDiff << "\n";
-  CHECK(mirrorMismatches == 0);
+  if (test::exactMirrorArithmetic()) CHECK(mirrorMismatches == 0);
   CHECK(statusMismatches == 0);
   CHECK(outOfBand == 0);
   CHECK(maxCountDiff <= 1);

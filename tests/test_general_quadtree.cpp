@@ -32,7 +32,7 @@ QuadtreeOptions optionsFor(SplitRule rule, float threshold) {
 // makes that a first-run cost: this case takes ~30 s cold, ~6 s warm).
 void checkGpuTrees(NodeClassifier& gpu, const std::vector<BezierPatch>& input,
                    const char* what) {
-  vk::Context& context = test::gpuContext();
+  test::gpuContext();  // the device comes up (or the test fails loudly) before any tree
   GeneralPatchSet set = toGeneralPatchSet(input);
   auto cpu = makeMirrorClassifier();
   size_t leaves = 0;
@@ -46,10 +46,10 @@ void checkGpuTrees(NodeClassifier& gpu, const std::vector<BezierPatch>& input,
       INFO(what << " rule " << splitRuleLetter(rule) << " threshold " << threshold << ": GPU "
                 << a.leaves.size() << " leaves depth " << a.depth << ", mirror "
                 << b.leaves.size() << " leaves depth " << b.depth);
-      if (context.info().isLavapipe())
+      if (test::exactMirrorArithmetic())
         REQUIRE(identical);
-      else
-        REQUIRE(double(a.leaves.size()) == Approx(double(b.leaves.size())).epsilon(0.02));
+      else  // every differing node explained by the ambiguity band (tree_divergence.h)
+        test::requireExplainedDivergence(a, b, o, kAmbiguityBand, what, "GPU", "mirror");
     }
   WARN(what << ": GPU and mirror trees identical for B, C, D at 0.3, 0.1, 0.05 (" << leaves
             << " leaves in all)");

@@ -1,6 +1,7 @@
 // The GPU quad-tree against its fp32 mirror: on lavapipe (no fused multiply-add) every tree
 // must be identical bit for bit — same leaves, same rectangles, same split points, same test
-// values — for rules B, C, D and thresholds 0.3, 0.2, 0.1, 0.05.
+// values — for rules B, C, D and thresholds 0.3, 0.2, 0.1, 0.05. On other drivers every
+// difference must lie within the ambiguity band of the fp32-against-double test.
 #include <catch2/catch.hpp>
 
 #include "eval/evaluator.h"
@@ -8,10 +9,15 @@
 #include "patch_samples.h"
 #include "quadtree/quadtree.h"
 #include "quadtree_compare.h"
+#include "tree_divergence.h"
 
 using namespace tessera;
 
 namespace {
+
+// As tests/test_quadtree_precision.cpp's band: fp32 test values, with or without fused
+// multiply-adds, carry errors around 1e-6 (more near degenerate points).
+constexpr double kAmbiguityBand = 2e-3;
 
 void checkTrees(const std::vector<BezierPatch>& input, const char* what) {
   vk::Context& context = test::gpuContext();
@@ -34,11 +40,13 @@ void checkTrees(const std::vector<BezierPatch>& input, const char* what) {
                   << ": GPU " << a.leaves.size() << " leaves depth " << a.depth << ", mirror "
                   << b.leaves.size() << " leaves depth " << b.depth
                   << (identical ? " (identical)" : " (DIFFERENT)"));
-      if (context.info().isLavapipe()) {
+      if (test::exactMirrorArithmetic()) {
         REQUIRE(identical);
       } else {
-        // Fused multiply-adds on real GPUs can move a test value across its threshold.
-        REQUIRE(double(a.leaves.size()) == Approx(double(b.leaves.size())).epsilon(0.02));
+        // Fused multiply-adds move test values near their thresholds: every differing node
+        // must be explained as in the fp32-against-double test (tree_divergence.h). Leaf
+        // counts alone said nothing: on an H100, 270 against 264 leaves (collapsed edges, D 0.05).
+        test::requireExplainedDivergence(a, b, options, kAmbiguityBand, what, "GPU", "mirror");
       }
     }
   }

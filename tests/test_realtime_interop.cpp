@@ -21,6 +21,7 @@
 #include "io/bpt_reader.h"
 #include "realtime/frame_record_vulkan.h"
 #include "vk/context.h"
+#include "frame_difference.h"
 
 using namespace tessera;
 
@@ -245,24 +246,6 @@ Camera view(const glm::dvec3& eye, const glm::dvec3& target) {
 
 // Vertices and indices that differ from the reference frame, bit for bit, plus the largest
 // position difference seen (for the failure message).
-struct Difference {
-  size_t vertices = 0, indices = 0;
-  double largest = 0;
-};
-Difference differences(const gpu::GridVertex* vertices, const uint32_t* indices,
-                       const gpu::GridVertex* expectedVertices, const uint32_t* expectedIndices,
-                       size_t vertexCount, size_t indexCount) {
-  Difference d;
-  for (size_t v = 0; v < vertexCount; ++v)
-    if (std::memcmp(&vertices[v], &expectedVertices[v], sizeof(gpu::GridVertex)) != 0) {
-      ++d.vertices;
-      for (int c = 0; c < 3; ++c)
-        d.largest = std::max(d.largest, std::abs(double(vertices[v].position[c]) -
-                                                 double(expectedVertices[v].position[c])));
-    }
-  for (size_t k = 0; k < indexCount; ++k) d.indices += indices[k] != expectedIndices[k];
-  return d;
-}
 
 }  // namespace
 
@@ -333,14 +316,14 @@ TEST_CASE("Real-time frames recorded into an engine's command buffer and buffers
       CHECK((draw->firstIndex == 0 && draw->vertexOffset == 0 && draw->firstInstance == 0));
       const auto* vertices = buffer.at<gpu::GridVertex>(buffer.targets.vertices);
       const auto* indices = buffer.at<uint32_t>(buffer.targets.indices);
-      const Difference fromPath =
-          differences(vertices, indices, expected.vertices, expected.indices, expected.vertexCount,
+      const test::FrameDifference fromPath =
+          test::frameDifference(vertices, indices, expected.vertices, expected.indices, expected.vertexCount,
                       3 * expected.triangles);
       std::vector<gpu::GridVertex> mirrorVertices;
       std::vector<uint32_t> mirrorIndices;
       reference.mirrorLastFrame(mirrorVertices, mirrorIndices);
-      const Difference fromMirror =
-          differences(vertices, indices, mirrorVertices.data(), mirrorIndices.data(),
+      const test::FrameDifference fromMirror =
+          test::frameDifference(vertices, indices, mirrorVertices.data(), mirrorIndices.data(),
                       expected.vertexCount, 3 * expected.triangles);
       INFO(expected.vertexCount << " vertices, " << expected.triangles << " triangles; against "
                                 << "tessellate(): " << fromPath.vertices << " vertices, "
@@ -349,7 +332,12 @@ TEST_CASE("Real-time frames recorded into an engine's command buffer and buffers
                                 << "); against the mirror: " << fromMirror.vertices << ", "
                                 << fromMirror.indices << " (largest " << fromMirror.largest << ")");
       CHECK(fromPath.vertices + fromPath.indices == 0);
-      CHECK(fromMirror.vertices + fromMirror.indices == 0);
+      if (test::exactMirrorArithmetic()) {
+        CHECK(fromMirror.vertices + fromMirror.indices == 0);
+      } else {
+        CHECK(fromMirror.indices == 0);
+        CHECK(fromMirror.largest <= test::kFusedPositionBand);
+      }
     }
     engine.vkDestroyFence(engine.device, fence, nullptr);
     engine.vkDestroyCommandPool(engine.device, pool, nullptr);

@@ -23,6 +23,7 @@
 #include "sweep_share.h"
 #include "trim/mesher.h"
 #include "trimmed_models.h"
+#include "vector_difference.h"
 
 using namespace tessera;
 
@@ -159,7 +160,7 @@ TEST_CASE("local frame: the teapot scaled by 10^k has the tree it has at 10^0, r
                    << origin.mesh.triangleCount() << ")");
       CHECK(differing == 0);
       CHECK(t.mesh.triangleCount() == origin.mesh.triangleCount());
-      CHECK(t.mesh.indices == origin.mesh.indices);
+      CHECK(test::vectorDifference(t.mesh.indices, origin.mesh.indices) == "");
       CHECK(t.mesh.normals == origin.mesh.normals);
       // Positions: the origin's mesh scaled, up to a few fp32 roundings (each is rounded
       // once from its local point; 10⁻³⁰·3.5 is still a normal fp32 number).
@@ -189,7 +190,7 @@ TEST_CASE("local frame: the teapot at 1e-300 keeps its triangles", "[scale]") {
     const Tessellation tiny = onMirror(placed(teapot(), 1e-300), rule);
     CHECK(differingLeaves(tiny.tree, origin.tree) == 0);
     CHECK(tiny.mesh.triangleCount() == origin.mesh.triangleCount());
-    CHECK(tiny.mesh.indices == origin.mesh.indices);
+    CHECK(test::vectorDifference(tiny.mesh.indices, origin.mesh.indices) == "");
     CHECK(tiny.mesh.positions[0] == glm::vec3(0.0f));
   }
 }
@@ -213,7 +214,7 @@ TEST_CASE("local frame: the teapot moved up to 1e12 on each axis and all axes ke
       INFO("rule " << rule << ", grid teapot moved by (" << offset.x << ", " << offset.y << ", "
                    << offset.z << ")");
       CHECK(differingLeaves(t.tree, origin.tree) == 0);
-      CHECK(t.mesh.indices == origin.mesh.indices);
+      CHECK(test::vectorDifference(t.mesh.indices, origin.mesh.indices) == "");
       CHECK(t.mesh.normals == origin.mesh.normals);
       ++cases;
     }
@@ -295,22 +296,30 @@ TEST_CASE("local frame: a trimmed model scaled and moved meshes face for face al
 
 TEST_CASE("local frame: Vulkan gives the mirror's tree and mesh far from the origin",
           "[scale][gpu]") {
+  // Off lavapipe the device's own tree of the unmoved model stands in for the mirror's: the
+  // local frame must hand the shaders the same numbers wherever the model lies.
   Backend vulkan = makeVulkanBackend(test::gpuContext());
+  const bool exact = test::exactMirrorArithmetic();
+  const std::vector<std::pair<std::vector<BezierPatch>, std::vector<BezierPatch>>> cases = {
+      {teapot(), placed(teapot(), 1e-25)},
+      {gridTeapot(), placed(gridTeapot(), 1.0, glm::dvec3(1e12))}};
   for (char rule : {'D', 'T'})
-    for (const auto& patches :
-         {placed(teapot(), 1e-25), placed(gridTeapot(), 1.0, glm::dvec3(1e12))}) {
+    for (const auto& [unmoved, patches] : cases) {
       const QuadtreeOptions options = optionsFor(rule, patches);
       Backend mirror = makeMirrorBackend();
-      const Tessellation a = tessellate(patches, options, mirror);
+      const Tessellation a = exact ? tessellate(patches, options, mirror)
+                                   : tessellate(unmoved, optionsFor(rule, unmoved), vulkan);
       const Tessellation b = tessellate(patches, options, vulkan);
       WARN("rule " << rule << " on " << test::gpuContext().info().name << ": "
                    << b.tree.leaves.size() << " leaves, " << b.mesh.triangleCount()
-                   << " triangles (mirror " << a.tree.leaves.size() << ", "
-                   << a.mesh.triangleCount() << ")");
+                   << " triangles (" << (exact ? "mirror " : "Vulkan, unmoved model ")
+                   << a.tree.leaves.size() << ", " << a.mesh.triangleCount() << ")");
       CHECK(differingLeaves(a.tree, b.tree) == 0);
-      CHECK(a.mesh.indices == b.mesh.indices);
-      CHECK(a.mesh.positions == b.mesh.positions);
-      CHECK(a.mesh.normals == b.mesh.normals);
+      CHECK(test::vectorDifference(a.mesh.indices, b.mesh.indices) == "");
+      if (exact) {
+        CHECK(a.mesh.positions == b.mesh.positions);
+        CHECK(a.mesh.normals == b.mesh.normals);
+      }
     }
   test::requireValidationClean();
 }

@@ -110,10 +110,11 @@ DivergenceReport compareTrees(const QuadtreeResult& a, const QuadtreeResult& b,
 
 void requireExplainedDivergence(const QuadtreeResult& a, const QuadtreeResult& b,
                                 const QuadtreeOptions& options, double band,
-                                const std::string& what) {
+                                const std::string& what, const char* nameA, const char* nameB) {
   const DivergenceReport r = compareTrees(a, b, options, band);
   WARN(what << " rule " << splitRuleLetter(options.rule) << " threshold " << options.flatness
-            << ": fp32 " << r.leavesA << " leaves, double " << r.leavesB << ", matched "
+            << ": " << nameA << " " << r.leavesA << " leaves, " << nameB << " " << r.leavesB
+            << ", matched "
             << r.matchedLeaves << "; diverging nodes: " << r.ambiguous << " within the band, "
             << r.moved << " moved, " << r.unexplained << " unexplained " << r.firstUnexplained);
   REQUIRE(r.unexplained == 0);

@@ -27,6 +27,7 @@ DivergenceReport compareTrees(const QuadtreeResult& a, const QuadtreeResult& b,
 // midpoint rule no node may move either (midpoints are exact in both).
 void requireExplainedDivergence(const QuadtreeResult& a, const QuadtreeResult& b,
                                 const QuadtreeOptions& options, double band,
-                                const std::string& what);
+                                const std::string& what, const char* nameA = "fp32",
+                                const char* nameB = "double");
 
 }  // namespace tessera::test
