@@ -101,6 +101,14 @@ TESSERA_CONST(int, kToleranceRatioPieces, 4);
 // at best (with ½ there, the grid splits were too few and the children split again: a sphere
 // took 26% more triangles).
 TESSERA_CONST(float, kToleranceSpreadShare, 0.5f);
+// Rule T's leaf diagonals (NodeDecision.pad of a kCauseWithinTolerance leaf): the bound holds
+// for any triangles in the leaf (kToleranceAnyDiagonal), or only for triangles whose edges all
+// run along the diagonal (0,0)–(1,1) of the leaf (d_s·d_t ≥ 0: kToleranceMainDiagonal) or
+// along (1,0)–(0,1) (d_s·d_t ≤ 0: kToleranceAntiDiagonal), which the triangulator then keeps
+// to (docs/quadtree.md, "One diagonal").
+TESSERA_CONST(uint, kToleranceAnyDiagonal, 0u);
+TESSERA_CONST(uint, kToleranceMainDiagonal, 1u);
+TESSERA_CONST(uint, kToleranceAntiDiagonal, 2u);
 
 // C and D keep the split point at least this fraction of the node's width from its edges,
 // so a child is at least a quarter of its parent in each direction. A small margin lets a κ
@@ -140,7 +148,8 @@ struct NodeDecision {
   // (A + B)/8 with its fp32 guard (lib/tolerance_bound.h); split = the node's midpoint.
   float linearity;  // largest 1 − Ti·Tj over the 4 edges (0 where a tangent is missing)
   float flatness;   // largest 1 − Ni·Nj over the 8 normal pairs (0 where a normal is missing)
-  uint pad;         // rule T, kCauseSplitGrid: the child counts k_u | k_v << 8; else 0
+  uint pad;         // rule T, kCauseSplitGrid: the child counts k_u | k_v << 8; a
+                    // kCauseWithinTolerance leaf: its diagonal (kTolerance*Diagonal); else 0
 };
 
 // Rule T on bicubic patches classifies a level in two dispatches whose pipelines the driver

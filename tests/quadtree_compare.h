@@ -8,6 +8,7 @@ namespace tessera::test {
 
 inline bool sameLeafBits(const QuadLeaf& a, const QuadLeaf& b) {
   return a.patchIndex == b.patchIndex && a.level == b.level && a.cause == b.cause &&
+         a.diagonal == b.diagonal &&
          a.path == b.path && std::memcmp(&a.rect, &b.rect, sizeof a.rect) == 0 &&
          std::memcmp(&a.linearity, &b.linearity, sizeof(float)) == 0 &&
          std::memcmp(&a.flatness, &b.flatness, sizeof(float)) == 0;

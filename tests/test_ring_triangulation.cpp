@@ -1,6 +1,6 @@
 // ring_triangulation.h: a leaf's ring (corners plus the points its neighbours put on its sides)
 // becomes n − 2 counter-clockwise triangles that cover the rectangle exactly, none of zero area,
-// for every count of points per side.
+// for every count of points per side, also with every edge along one diagonal.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -42,10 +42,13 @@ double doubledArea(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
 // Everything the triangulation promises, checked independently of how it was made: n − 2
 // triangles, each counter-clockwise with positive area; ring edges used once in ring order,
 // every other edge once each way (so the triangles tile the polygon without gaps or overlaps);
-// areas summing to the rectangle's. Returns the smallest area / the rectangle's.
-double checkRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, glm::vec2 hi) {
+// areas summing to the rectangle's. With a diagonal (1 main, 2 anti: triangulateRectangleRing-
+// Along), every edge also has Δu·Δv ≥ 0 (main) or ≤ 0 (anti), the property rule T's diagonal
+// bound needs. Returns the smallest area / the rectangle's.
+double checkRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, glm::vec2 hi,
+                 uint32_t diagonal = 0) {
   std::vector<std::array<uint32_t, 3>> triangles;
-  REQUIRE(triangulateRectangleRing(ring, lo, hi, triangles));
+  REQUIRE(triangulateRectangleRingAlong(ring, lo, hi, diagonal, triangles));
   const size_t n = ring.size();
   REQUIRE(triangles.size() == n - 2);
   std::map<std::pair<uint32_t, uint32_t>, int> directed;
@@ -56,7 +59,12 @@ double checkRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, glm::vec2 hi)
     REQUIRE(area > 0.0);
     total += area;
     smallest = std::min(smallest, area);
-    for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
+    for (int k = 0; k < 3; ++k) {
+      ++directed[{t[k], t[(k + 1) % 3]}];
+      const glm::dvec2 d = glm::dvec2(ring[t[(k + 1) % 3]]) - glm::dvec2(ring[t[k]]);
+      if (diagonal == 1) REQUIRE(d.x * d.y >= 0.0);
+      if (diagonal == 2) REQUIRE(d.x * d.y <= 0.0);
+    }
   }
   for (const auto& [edge, count] : directed) {
     REQUIRE(count == 1);
@@ -81,7 +89,7 @@ TEST_CASE("every ring shape with 0..4 points per side triangulates without a new
   std::mt19937 random(15);
   std::uniform_int_distribution<int> sixtyFourths(1, 63);
   size_t shapes = 0;
-  double smallest = 1;
+  double smallest[3] = {1, 1, 1};
   for (const auto& [lo, hi] : rectangles)
     for (int counts = 0; counts < 5 * 5 * 5 * 5; ++counts)
       for (bool even : {true, false}) {
@@ -97,11 +105,28 @@ TEST_CASE("every ring shape with 0..4 points per side triangulates without a new
           }
         }
         const std::vector<glm::vec2> ring = ringOf(lo, hi, inner);
-        smallest = std::min(smallest, checkRing(ring, lo, hi));
+        for (uint32_t diagonal = 0; diagonal < 3; ++diagonal)
+          smallest[diagonal] = std::min(smallest[diagonal], checkRing(ring, lo, hi, diagonal));
         ++shapes;
       }
-  WARN(shapes << " rings; smallest triangle " << smallest << " of its rectangle");
+  WARN(shapes << " rings; smallest triangle " << smallest[0] << " of its rectangle (along the "
+              << "main diagonal " << smallest[1] << ", the other " << smallest[2] << ")");
   CHECK(shapes == 3 * 625 * 2);
+}
+
+TEST_CASE("a ring cut along one diagonal: the four corners, and a corner of it missing",
+          "[ring]") {
+  const std::vector<glm::vec2> square = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  std::vector<std::array<uint32_t, 3>> triangles;
+  REQUIRE(triangulateRectangleRingAlong(square, {0, 0}, {1, 1}, 2, triangles));
+  REQUIRE(triangles.size() == 2);
+  for (const auto& t : triangles)  // both hold the anti-diagonal 1–3, neither 0–2
+    CHECK((std::count(t.begin(), t.end(), 1u) == 1 && std::count(t.begin(), t.end(), 3u) == 1));
+  // Corner (1, 1) merged away: the main diagonal cannot be kept, the anti-diagonal can.
+  const std::vector<glm::vec2> cut = {{0, 0}, {1, 0}, {1, 0.5f}, {0, 1}};
+  CHECK_FALSE(triangulateRectangleRingAlong(cut, {0, 0}, {1, 1}, 1, triangles));
+  CHECK(triangles.empty());
+  CHECK(triangulateRectangleRingAlong(cut, {0, 0}, {1, 1}, 2, triangles));
 }
 
 TEST_CASE("a long run of points on one side: 64 on the bottom, none elsewhere", "[ring]") {
@@ -112,6 +137,10 @@ TEST_CASE("a long run of points on one side: 64 on the bottom, none elsewhere", 
   for (int i = 1; i < 16; ++i) opposite[0].push_back(float(i) / 16.0f);
   for (int i = 1; i < 16; ++i) opposite[2].push_back(float(i) / 16.0f);
   checkRing(ringOf({0, 0}, {1, 1}, opposite), {0, 0}, {1, 1});
+  for (uint32_t diagonal : {1u, 2u}) {
+    checkRing(ringOf({0, 0}, {1, 1}, inner), {0, 0}, {1, 1}, diagonal);
+    checkRing(ringOf({0, 0}, {1, 1}, opposite), {0, 0}, {1, 1}, diagonal);
+  }
 }
 
 TEST_CASE("one point on a side: its three triangles all use it (shortest new edges first)",

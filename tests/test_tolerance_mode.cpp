@@ -81,15 +81,22 @@ TEST_CASE("rule T: over 1000 random patches of degree 1..7 stay within δ", "[to
     size_t worst = 0;
     for (size_t p = 0; p < zoo.size(); ++p)
       if (r.perPatchMax[p] > r.perPatchMax[worst]) worst = p;
-    size_t maxDepthLeaves = 0;
-    for (const auto& leaf : t.tree.leaves) maxDepthLeaves += leaf.cause != gpu::kCauseWithinTolerance;
+    size_t maxDepthLeaves = 0, diagonalLeaves = 0;
+    for (const auto& leaf : t.tree.leaves) {
+      maxDepthLeaves += leaf.cause != gpu::kCauseWithinTolerance;
+      diagonalLeaves += leaf.diagonal != gpu::kToleranceAnyDiagonal;
+    }
     WARN("δ = " << delta << " of each patch's size: " << zoo.size() << " patches, "
-                << t.stats.triangles << " triangles, depth " << t.stats.depth
+                << t.stats.triangles << " triangles (" << diagonalLeaves << " of "
+                << t.tree.leaves.size() << " leaves proven for one diagonal), depth "
+                << t.stats.depth
                 << ", largest measured/δ = " << r.maxDeviation / delta << " (patch " << worst
                 << ", degree " << zoo[worst].degreeU << "×" << zoo[worst].degreeV
                 << (zoo[worst].weights.empty() ? "" : " rational") << "); tessellated in "
                 << tessellateMs << " ms, measured in " << measureMs << " ms");
     CHECK(maxDepthLeaves == 0);
+    CHECK(diagonalLeaves > 0);  // the one-diagonal bound is exercised, and measured below
+    CHECK(t.stats.diagonalFans == 0);
     REQUIRE(r.maxDeviation <= delta);
   }
 }
@@ -115,6 +122,7 @@ TEST_CASE("rule T: the tea set within δ in both metrics", "[tolerance]") {
                 << "), depth " << t.stats.depth << ", parametric " << par.maxDeviation
                 << ", geometric " << geo.maxDeviation);
       for (const auto& leaf : t.tree.leaves) REQUIRE(leaf.cause == gpu::kCauseWithinTolerance);
+      REQUIRE(t.stats.diagonalFans == 0);  // every leaf's triangles keep to its bound's diagonal
       // Paths name leaves uniquely, grid splits' variable-width codes included.
       std::set<std::tuple<uint32_t, uint32_t, uint64_t>> paths;
       for (const auto& leaf : t.tree.leaves) paths.insert({leaf.patchIndex, leaf.level, leaf.path});
@@ -123,6 +131,50 @@ TEST_CASE("rule T: the tea set within δ in both metrics", "[tolerance]") {
       REQUIRE(geo.maxDeviation <= delta);
     }
   }
+}
+
+// The quadratic S(s, t) = (s, t, s² + σ·st + t²) as a degree-n × n Bézier patch (the
+// coefficients of s, s² and st in the Bernstein basis: i/n, i(i−1)/(n(n−1)), ij/n²).
+BezierPatch quadraticBowl(int n, double sigma) {
+  BezierPatch p;
+  p.degreeU = p.degreeV = n;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      const double s1 = double(i) / n, t1 = double(j) / n;
+      const double s2 = double(i * (i - 1)) / (n * (n - 1)), t2 = double(j * (j - 1)) / (n * (n - 1));
+      p.cp.push_back({s1, t1, s2 + sigma * s1 * t1 + t2});
+    }
+  return p;
+}
+
+TEST_CASE("rule T: a leaf proven for one diagonal keeps its triangles to it", "[tolerance]") {
+  // S_ss = S_tt = 2, S_st = σ = ±1 (along z): across the unit square the diagonal along which
+  // st grows with s + t bends by (2 + 2σ + 2)/8 = 0.75 at its middle, the other by 0.25. The
+  // bound for any triangles, W/8 = 0.75 (also (M_ss + 2·M_st + M_tt)/8), fails δ = 0.6; the
+  // flatter diagonal's, W₂/8 = max(‖S_ss + S_tt‖, …)/8 = 0.5, passes (docs/quadtree.md, "One
+  // diagonal"). So the root is a leaf only for that diagonal, and its two triangles are within
+  // δ only if the triangulator keeps to it (the other pair deviates by 0.75 > δ).
+  Backend backend = makeMirrorBackend();
+  for (int n : {2, 3})  // the general path and the bicubic fast path
+    for (double sigma : {1.0, -1.0}) {
+      const std::vector<BezierPatch> patches = {quadraticBowl(n, sigma)};
+      const double delta = 0.6;
+      Tessellation t = tessellate(patches, toleranceOptions(delta), backend);
+      REQUIRE(t.tree.leaves.size() == 1);
+      const QuadLeaf& leaf = t.tree.leaves[0];
+      CHECK(leaf.cause == gpu::kCauseWithinTolerance);
+      CHECK(leaf.diagonal ==
+            (sigma > 0 ? gpu::kToleranceAntiDiagonal : gpu::kToleranceMainDiagonal));
+      CHECK(leaf.flatness * t.tree.boundScale == Approx(0.5).epsilon(1e-3));
+      REQUIRE(t.stats.triangles == 2);
+      const DeviationReport r = measureDeviation(t, patches, 4, DeviationMetric::Parametric);
+      WARN("degree " << n << ", σ = " << sigma << ": measured " << r.maxDeviation
+                     << " (exactly 1/3 at the triangles' centroids), bound "
+                     << leaf.flatness * t.tree.boundScale << ", δ " << delta);
+      CHECK(r.maxDeviation > 0.3);
+      CHECK(r.maxDeviation <= 1.0 / 3.0 + 1e-6);
+      REQUIRE(r.maxDeviation <= delta);
+    }
 }
 
 TEST_CASE("rule T: a cylinder never splits along its axis, the teapot's poles stay shallow",

@@ -89,4 +89,38 @@ bool triangulateRectangleRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, 
   return true;
 }
 
+bool triangulateRectangleRingAlong(const std::vector<glm::vec2>& ring, glm::vec2 lo,
+                                   glm::vec2 hi, uint32_t diagonal,
+                                   std::vector<std::array<uint32_t, 3>>& triangles) {
+  if (diagonal == 0) return triangulateRectangleRing(ring, lo, hi, triangles);
+  triangles.clear();
+  if (diagonal > 2) return false;
+  const glm::vec2 from = diagonal == 1 ? lo : glm::vec2(hi.x, lo.y);
+  const glm::vec2 to = diagonal == 1 ? hi : glm::vec2(lo.x, hi.y);
+  const size_t n = ring.size();
+  size_t a = n, b = n;
+  for (size_t i = 0; i < n; ++i) {
+    if (ring[i] == from) a = i;
+    if (ring[i] == to) b = i;
+  }
+  if (a == n || b == n || a == b) return false;
+  // Each half: the ring from one diagonal corner to the other, counter-clockwise.
+  std::vector<glm::vec2> half;
+  std::vector<uint32_t> original;
+  std::vector<std::array<uint32_t, 3>> halfTriangles;
+  for (const auto& [start, end] : {std::pair{a, b}, std::pair{b, a}}) {
+    half.clear();
+    original.clear();
+    for (size_t i = start;; i = (i + 1) % n) {
+      half.push_back(ring[i]);
+      original.push_back(uint32_t(i));
+      if (i == end) break;
+    }
+    if (!triangulateRectangleRing(half, lo, hi, halfTriangles)) return triangles.clear(), false;
+    for (const auto& t : halfTriangles)
+      triangles.push_back({original[t[0]], original[t[1]], original[t[2]]});
+  }
+  return true;
+}
+
 }  // namespace tessera

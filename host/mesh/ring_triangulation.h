@@ -27,4 +27,17 @@ namespace tessera {
 bool triangulateRectangleRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, glm::vec2 hi,
                               std::vector<std::array<uint32_t, 3>>& triangles);
 
+// The same, keeping every edge along one diagonal of the rectangle: `diagonal` 1 (the main,
+// lo–hi: every edge has Δu·Δv ≥ 0) or 2 (the anti-diagonal, (hi.x, lo.y)–(lo.x, hi.y): Δu·Δv ≤
+// 0), as a rule-T leaf's bound may require (gpu::kTolerance*Diagonal, docs/quadtree.md, "One
+// diagonal"); 0 = any, triangulateRectangleRing itself. The ring is cut along that diagonal
+// (both its corners must be in the ring) and each half, whose points lie on two sides that
+// meet at a corner, is triangulated alone: every edge inside a half joins two points that are
+// ordered the same way in u and in v (opposite ways for the anti-diagonal). Still n − 2
+// triangles. Returns false, `triangles` empty, where triangulateRectangleRing would or a
+// corner of the diagonal is missing.
+bool triangulateRectangleRingAlong(const std::vector<glm::vec2>& ring, glm::vec2 lo,
+                                   glm::vec2 hi, uint32_t diagonal,
+                                   std::vector<std::array<uint32_t, 3>>& triangles);
+
 }  // namespace tessera

@@ -245,6 +245,7 @@ class GroupStreamer {
     s.evaluateMs += step.elapsedMs();
     requireFiniteSamples(param, samples);
     s.degenerateTrianglesDropped += param.droppedTriangles;
+    s.diagonalFans += param.diagonalFans;
     emitChunk(param, samples, end, s);
     stats.seamVertices = std::max(stats.seamVertices, seams_.size());
     seams_.forgetBefore(end);

@@ -99,6 +99,7 @@ Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, const 
   // are flipped away (zero_area.h).
   std::vector<uint32_t> remap = weldIdenticalPositions(mesh.positions);
   result.stats.degenerateTrianglesDropped = param.droppedTriangles;
+  result.stats.diagonalFans = param.diagonalFans;
   mesh.indices.reserve(param.indices.size());
   for (size_t k = 0; k < param.indices.size(); k += 3) {
     uint32_t a = remap[param.indices[k]], b = remap[param.indices[k + 1]],

@@ -30,6 +30,8 @@ struct TessellationStats {
   size_t patches = 0, leaves = 0, triangles = 0, vertices = 0;
   size_t degenerateTrianglesDropped = 0;  // zero-area triangles at collapsed edges,
                                           // back-to-back pairs and caps (docs/watertight.md)
+  size_t diagonalFans = 0;  // rule-T leaves proven for one diagonal that kept a fan (their
+                            // bound is then only the any-triangle one: ParamMesh::diagonalFans)
   uint32_t depth = 0;
   double treeMs = 0, triangulateMs = 0, evaluateMs = 0, totalMs = 0;
   std::vector<LevelStats> levels;

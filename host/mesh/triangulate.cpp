@@ -540,7 +540,7 @@ class Triangulator {
   // vertex is met once, or twice in a row (a collapsed side's two corners, whose triangle
   // collapses and is dropped as in the fan): otherwise the fan, whose triangles each hold one
   // ring edge, is kept.
-  bool triangulateRing(uint32_t patch, const gpu::vec4& r) {
+  bool triangulateRing(uint32_t patch, const gpu::vec4& r, uint32_t diagonal) {
     const size_t n = ring_.size();
     ringUv_.resize(n);
     ringIndex_.resize(n);
@@ -554,7 +554,8 @@ class Triangulator {
     size_t repeats = 0;
     for (size_t k = 0; k < n; ++k) repeats += ring_[k].index == ring_[(k + 1) % n].index;
     if (distinct + repeats != n) return false;
-    if (!triangulateRectangleRing(ringUv_, {r.x, r.y}, {r.z, r.w}, ringTriangles_)) return false;
+    if (!triangulateRectangleRingAlong(ringUv_, {r.x, r.y}, {r.z, r.w}, diagonal, ringTriangles_))
+      return false;
     for (const auto& t : ringTriangles_) emit(patch, ring_[t[0]], ring_[t[1]], ring_[t[2]]);
     return true;
   }
@@ -578,12 +579,16 @@ class Triangulator {
     const bool folded = touchesFold_ && dropFoldedBack(ring_);
     if (touchesMerge_) dropRepeats(ring_);
     if (ring_.size() < 3) return;
-    if (ring_.size() == 4 && !folded) {
+    if (ring_.size() == 4 && !folded && leaf.diagonal != gpu::kToleranceAntiDiagonal) {
       emit(p, ring_[0], ring_[1], ring_[2]);
       emit(p, ring_[0], ring_[2], ring_[3]);
       return;
     }
-    if (!folded && provenAnyTriangulation(leaf.cause) && triangulateRing(p, r)) return;
+    if (!folded && provenAnyTriangulation(leaf.cause) && triangulateRing(p, r, leaf.diagonal))
+      return;
+    // The fan's triangles need not keep to one diagonal: such a leaf's bound is then only
+    // the any-triangle one (counted, docs/quadtree.md, "One diagonal").
+    if (leaf.diagonal != gpu::kToleranceAnyDiagonal) ++mesh_.diagonalFans;
     float us = leaf.split.x, vs = leaf.split.y;
     if (!(us > r.x && us < r.z && vs > r.y && vs < r.w)) {
       us = 0.5f * (r.x + r.z);

@@ -46,6 +46,10 @@ struct ParamMesh {
   std::vector<uint32_t> trianglePatch;
   std::vector<glm::vec2> cornerUv;  // 3 per triangle
   size_t droppedTriangles = 0;    // collapsed by welding (two corners at one vertex)
+  // Rule-T leaves whose bound holds for one diagonal (QuadLeaf::diagonal) that kept the fan
+  // around a centre vertex (a fold or a recurring vertex in the ring): their bound is only the
+  // any-triangle one then. None on the tea set and the random patches of the tests.
+  size_t diagonalFans = 0;
   size_t sharedEdgeGroups = 0;    // patch boundaries found shared
   // Per vertex, when TriangulationScope::seamKeys asks: how another run over other leaves of
   // the same patches names this vertex (streamed_tessellation.h).

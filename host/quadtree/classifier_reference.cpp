@@ -261,6 +261,9 @@ SecondBounds polynomialBounds(const HomogeneousNet& net) {
   return b;
 }
 
+// gridNumerator's W for the grid estimate: the smaller of the two diagonals'.
+constexpr uint32_t kBetterDiagonal = 3;
+
 // W(C) of lib/tolerance_bound.h's quadraticPartBound, in double.
 double quadraticPartBound(const dvec3& ss, const dvec3& st, const dvec3& tt) {
   return std::max({glm::length(ss + tt + 2.0 * st), glm::length(ss + tt - 2.0 * st),
@@ -268,12 +271,32 @@ double quadraticPartBound(const dvec3& ss, const dvec3& st, const dvec3& tt) {
                    glm::length(tt - st)});
 }
 
+// W₁(C) of lib/tolerance_bound.h's diagonalQuadraticPartBound (triangles along the main
+// diagonal; with −st the anti-diagonal's W₂), in double.
+double diagonalQuadraticPartBound(const dvec3& ss, const dvec3& st, const dvec3& tt) {
+  return std::max({glm::length(ss + tt + 2.0 * st), glm::length(ss + tt), glm::length(ss + st),
+                   glm::length(tt + st), glm::length(ss), glm::length(tt)});
+}
+
+// W of the diagonal asked for (gpu::kTolerance*Diagonal); for the grid estimate, the better one.
+double quadraticPartBound(const dvec3& ss, const dvec3& st, const dvec3& tt, uint32_t diagonal) {
+  if (diagonal == gpu::kToleranceMainDiagonal) return diagonalQuadraticPartBound(ss, st, tt);
+  if (diagonal == gpu::kToleranceAntiDiagonal) return diagonalQuadraticPartBound(ss, -st, tt);
+  return quadraticPartBound(ss, st, tt);
+}
+
 // 8·k_u²·k_v² × the bound of a child of the node split k_u × k_v, the spreads counted by
-// spreadShare (toleranceGridNumerator; 1 for the node's own bound).
-double gridNumerator(const SecondBounds& m, double uu, double uv, double vv, double spreadShare) {
+// spreadShare (toleranceGridNumerator: the better diagonal's W), or with spreadShare 1 the
+// node's own bound for triangles along `diagonal`.
+double gridNumerator(const SecondBounds& m, double uu, double uv, double vv, double spreadShare,
+                     uint32_t diagonal) {
   const double plain = m.ss * vv + 2.0 * m.st * uv + m.tt * uu;
-  const double centred = quadraticPartBound(vv * m.css, uv * m.cst, uu * m.ctt) +
-                         spreadShare * (m.mss * vv + 2.0 * m.mst * uv + m.mtt * uu);
+  const dvec3 ss = vv * m.css, st = uv * m.cst, tt = uu * m.ctt;
+  const double w = diagonal == kBetterDiagonal
+                       ? std::min(diagonalQuadraticPartBound(ss, st, tt),
+                                  diagonalQuadraticPartBound(ss, -st, tt))
+                       : quadraticPartBound(ss, st, tt, diagonal);
+  const double centred = w + spreadShare * (m.mss * vv + 2.0 * m.mst * uv + m.mtt * uu);
   return std::min(plain, centred);
 }
 
@@ -322,7 +345,8 @@ uint32_t toleranceGridCounts(const SecondBounds& m, double tolerance, uint32_t c
     for (uint32_t kv = 1; kv <= cap && ku * kv <= bestCount; ++kv) {
       if (ku * kv < 2) continue;
       const double fu = ku, fv = kv;
-      const double estimate = gridNumerator(m, fu * fu, fu * fv, fv * fv, m.spreadShare) /
+      const double estimate = gridNumerator(m, fu * fu, fu * fv, fv * fv, m.spreadShare,
+                                            kBetterDiagonal) /
                               (fu * fu * fv * fv) / 8.0;
       if (!(estimate <= tolerance)) continue;
       if (ku * kv < bestCount || estimate < bestEstimate) {
@@ -339,13 +363,20 @@ gpu::NodeDecision toleranceDecision(const PatchContext& p, const gpu::QuadNode& 
                                     const QuadtreeOptions& o) {
   Rect r{node.rect.x, node.rect.y, node.rect.z, node.rect.w};
   const SecondBounds m = toleranceBounds(p, r);
-  const double a = m.ss + m.st, b = m.tt + m.st, bound = gridNumerator(m, 1, 1, 1, 1.0) / 8.0;
+  const double a = m.ss + m.st, b = m.tt + m.st;
+  const double bound = gridNumerator(m, 1, 1, 1, 1.0, gpu::kToleranceAnyDiagonal) / 8.0;
+  const double boundMain = gridNumerator(m, 1, 1, 1, 1.0, gpu::kToleranceMainDiagonal) / 8.0;
+  const double boundAnti = gridNumerator(m, 1, 1, 1, 1.0, gpu::kToleranceAntiDiagonal) / 8.0;
   gpu::NodeDecision d{};
   d.split = gpu::vec4(float(r.u(0.5)), float(r.v(0.5)), 0.0f, 0.0f);
   d.linearity = float(a + b > 0.0 ? a / (a + b) : 0.5);
   d.flatness = float(bound);
   if (bound <= o.tolerance) {
     d.cause = gpu::kCauseWithinTolerance;
+  } else if (std::min(boundMain, boundAnti) <= o.tolerance) {
+    d.cause = gpu::kCauseWithinTolerance;
+    d.pad = boundAnti < boundMain ? gpu::kToleranceAntiDiagonal : gpu::kToleranceMainDiagonal;
+    d.flatness = float(std::min(boundMain, boundAnti));
   } else if (node.level >= o.maxDepth) {
     d.cause = gpu::kCauseMaxDepth;
   } else if (std::min(r.u1 - r.u0, r.v1 - r.v0) < o.minSize) {

@@ -253,7 +253,9 @@ void buildGroupTree(const PatchSet& patches, uint32_t firstPatch, const Quadtree
         cause = gpu::kCauseMinSize;
       if (!counts.splits() || cause == gpu::kCauseMinSize) {
         result.leaves.push_back({n.rect, firstPatch + n.patchIndex, level, cause, batch.paths[i],
-                                 d.linearity, d.flatness, gpu::vec2(d.split.x, d.split.y)});
+                                 d.linearity, d.flatness, gpu::vec2(d.split.x, d.split.y),
+                                 cause == gpu::kCauseWithinTolerance ? d.pad
+                                                                     : gpu::kToleranceAnyDiagonal});
         result.depth = std::max(result.depth, level);
         ++stats.leaves;
         continue;

@@ -85,6 +85,9 @@ struct QuadLeaf {
   float flatness;   // rule T: the node's proven deviation bound, in the units of the patches
                     // the tree was built on (× QuadtreeResult::boundScale: model units)
   gpu::vec2 split;  // (us, vs) the classification chose (rule T: the centre, a fallback fan apex)
+  uint32_t diagonal = gpu::kToleranceAnyDiagonal;  // rule T: the diagonal the leaf's bound
+                                                   // holds for (NodeDecision.pad), which its
+                                                   // triangles keep to (ring_triangulation.h)
 };
 
 

@@ -378,6 +378,33 @@ float quadraticPartBound(vec3 ss, vec3 st, vec3 tt) {
   return w;
 }
 
+// W₁(C), the same for triangles whose edges all have d_s·d_t ≥ 0 (they keep to the diagonal
+// (0,0)–(1,1): Σ_st ≥ 0): max over τ ∈ [0, 1] of the two curves, by their control points
+// C_ss, C_ss + C_st, C_ss + 2·C_st + C_tt and C_tt, C_tt + C_st, and ‖C_ss + C_tt‖ (the
+// corner Σ = diag(¼, ¼) of that set). With −C_st: the other diagonal's W₂ (docs/quadtree.md,
+// "One diagonal"). Both are at most W(C).
+float diagonalQuadraticPartBound(vec3 ss, vec3 st, vec3 tt) {
+  PRECISE vec3 sum = ss + tt;
+  PRECISE vec3 twoSt = 2.0f * st;
+  PRECISE vec3 p = sum + twoSt;
+  PRECISE vec3 sp = ss + st;
+  PRECISE vec3 tp = tt + st;
+  PRECISE float w = max(toleranceNorm(p), toleranceNorm(sum));
+  w = max(w, max(toleranceNorm(sp), toleranceNorm(tp)));
+  w = max(w, max(toleranceNorm(ss), toleranceNorm(tt)));
+  return w;
+}
+
+// The smaller of W₁ and W₂ (the better diagonal), and in `diagonal` which
+// (kToleranceMainDiagonal on ties).
+float betterDiagonalBound(vec3 ss, vec3 st, vec3 tt, OUT(uint) diagonal) {
+  float mainW = diagonalQuadraticPartBound(ss, st, tt);
+  PRECISE vec3 negated = -st;
+  float antiW = diagonalQuadraticPartBound(ss, negated, tt);
+  diagonal = antiW < mainW ? kToleranceAntiDiagonal : kToleranceMainDiagonal;
+  return antiW < mainW ? antiW : mainW;
+}
+
 // 8·k_u²·k_v² × the bound, before its guards, of a child of the node split k_u × k_v (uu =
 // k_u², uv = k_u·k_v, vv = k_v²): the smaller of (M_ss·k_v² + 2·M_st·k_u·k_v + M_tt·k_u²) —
 // every term scales by 1/k² in the child — and the centred form W(C_ss·k_v², C_st·k_u·k_v,
@@ -390,7 +417,8 @@ float toleranceGridNumerator(IN(ToleranceTerms) t, float uu, float uv, float vv,
   PRECISE vec3 ss = vv * vec3(t.ss);
   PRECISE vec3 st = uv * vec3(t.st);
   PRECISE vec3 tt = uu * vec3(t.tt);
-  PRECISE float w = quadraticPartBound(ss, st, tt);
+  uint diagonal;
+  PRECISE float w = betterDiagonalBound(ss, st, tt, diagonal);
   PRECISE float twoSpreadSt = 2.0f * t.spread.y;
   PRECISE float rest = (t.spread.x * vv + twoSpreadSt * uv) + t.spread.z * uu;
   PRECISE float guard = plain * kToleranceCentredGuard;
@@ -444,6 +472,18 @@ uint toleranceGridCounts(IN(ToleranceTerms) t, float tolerance, uint cap) {
   return best;
 }
 
+// The node's guarded bound from the centred form's W (W(C), or one diagonal's), its spread
+// term and absolute guard, and the plain sum M_ss + 2·M_st + M_tt: the smaller form, /8, times
+// 1 + 2⁻¹⁰, plus the coordinates' guard.
+float toleranceGuardedBound(float w, float rest, float guard, float sum, float coordinateGuard) {
+  PRECISE float centred = (w + rest) + guard;
+  PRECISE float tighter = centred < sum ? centred : sum;
+  PRECISE float scaled = tighter * 0.125f;
+  PRECISE float guarded = scaled * kToleranceRelativeGuard;
+  PRECISE float bound = guarded + coordinateGuard;
+  return bound;
+}
+
 // The decision of rule T from the node's terms. Every triangle with its corners in the leaf
 // (its two triangles, its ring's triangles, a fan) is within both (A + B)/8, A = M_ss + M_st
 // and B = M_tt + M_st, and (W(C) + m_ss + 2·m_st + m_tt)/8 of the surface (docs/quadtree.md);
@@ -456,14 +496,13 @@ NodeDecision toleranceDecision(IN(ToleranceTerms) t, IN(QuadNode) node, IN(Class
   PRECISE float b = t.bounds.z + t.bounds.y;
   PRECISE float sum = a + b;
   PRECISE float w = quadraticPartBound(vec3(t.ss), vec3(t.st), vec3(t.tt));
+  uint diagonal;
+  PRECISE float wDiagonal = betterDiagonalBound(vec3(t.ss), vec3(t.st), vec3(t.tt), diagonal);
   PRECISE float twoSpreadSt = 2.0f * t.spread.y;
   PRECISE float rest = (t.spread.x + twoSpreadSt) + t.spread.z;
   PRECISE float guard = sum * kToleranceCentredGuard;
-  PRECISE float centred = (w + rest) + guard;
-  PRECISE float tighter = centred < sum ? centred : sum;
-  PRECISE float scaled = tighter * 0.125f;
-  PRECISE float guarded = scaled * kToleranceRelativeGuard;
-  PRECISE float bound = guarded + t.bounds.w;
+  PRECISE float bound = toleranceGuardedBound(w, rest, guard, sum, t.bounds.w);
+  PRECISE float boundDiagonal = toleranceGuardedBound(wDiagonal, rest, guard, sum, t.bounds.w);
   float us = toleranceMidpoint(r.x, r.z);
   float vs = toleranceMidpoint(r.y, r.w);
   PRECISE float share = sum > 0.0f ? a / sum : 0.5f;
@@ -474,6 +513,10 @@ NodeDecision toleranceDecision(IN(ToleranceTerms) t, IN(QuadNode) node, IN(Class
   d.pad = 0u;
   if (bound <= params.tolerance) {
     d.cause = kCauseWithinTolerance;
+  } else if (boundDiagonal <= params.tolerance) {
+    d.cause = kCauseWithinTolerance;
+    d.flatness = boundDiagonal;
+    d.pad = diagonal;
   } else if (node.level >= params.maxDepth) {
     d.cause = kCauseMaxDepth;
   } else if (min(r.z - r.x, r.w - r.y) < params.minSize) {
