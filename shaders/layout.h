@@ -145,7 +145,8 @@ struct NodeDecision {
   uint cause;       // kCause*
   // Rules B-D: the tests' values. Rule T: linearity = A/(A + B), the u share of the bound
   // (A = M_ss + M_st, B = M_tt + M_st), and flatness = the node's proven deviation bound
-  // (A + B)/8 with its fp32 guard (lib/tolerance_bound.h); split = the node's midpoint.
+  // with its fp32 guard (lib/tolerance_bound.h: for a leaf kept to one diagonal, that
+  // diagonal's); split = the node's midpoint.
   float linearity;  // largest 1 − Ti·Tj over the 4 edges (0 where a tangent is missing)
   float flatness;   // largest 1 − Ni·Nj over the 8 normal pairs (0 where a normal is missing)
   uint pad;         // rule T, kCauseSplitGrid: the child counts k_u | k_v << 8; a

@@ -370,13 +370,14 @@ gpu::NodeDecision toleranceDecision(const PatchContext& p, const gpu::QuadNode& 
   gpu::NodeDecision d{};
   d.split = gpu::vec4(float(r.u(0.5)), float(r.v(0.5)), 0.0f, 0.0f);
   d.linearity = float(a + b > 0.0 ? a / (a + b) : 0.5);
-  d.flatness = float(bound);
-  if (bound <= o.tolerance) {
+  // The better diagonal's bound where it is smaller (the leaf keeps to that diagonal).
+  const double boundDiagonal = std::min(boundMain, boundAnti);
+  const bool oneDiagonal = boundDiagonal < bound;
+  d.flatness = float(oneDiagonal ? boundDiagonal : bound);
+  if (std::min(bound, boundDiagonal) <= o.tolerance) {
     d.cause = gpu::kCauseWithinTolerance;
-  } else if (std::min(boundMain, boundAnti) <= o.tolerance) {
-    d.cause = gpu::kCauseWithinTolerance;
-    d.pad = boundAnti < boundMain ? gpu::kToleranceAntiDiagonal : gpu::kToleranceMainDiagonal;
-    d.flatness = float(std::min(boundMain, boundAnti));
+    if (oneDiagonal)
+      d.pad = boundAnti < boundMain ? gpu::kToleranceAntiDiagonal : gpu::kToleranceMainDiagonal;
   } else if (node.level >= o.maxDepth) {
     d.cause = gpu::kCauseMaxDepth;
   } else if (std::min(r.u1 - r.u0, r.v1 - r.v0) < o.minSize) {

@@ -487,7 +487,9 @@ float toleranceGuardedBound(float w, float rest, float guard, float sum, float c
 // The decision of rule T from the node's terms. Every triangle with its corners in the leaf
 // (its two triangles, its ring's triangles, a fan) is within both (A + B)/8, A = M_ss + M_st
 // and B = M_tt + M_st, and (W(C) + m_ss + 2·m_st + m_tt)/8 of the surface (docs/quadtree.md);
-// the bound is the smaller, guarded. Not within δ: k_u × k_v equal children where counts
+// the bound is the smaller, guarded; smaller again, with W₁ or W₂ for W, for triangles that
+// keep to one diagonal: the node's bound is that one where it is smaller, and a leaf then
+// names the diagonal in `pad` for the triangulator. Not within δ: k_u × k_v equal children where counts
 // within the cap reach δ (toleranceGridCounts); else split at the midpoint along u where
 // A ≥ B/2, v where B ≥ A/2 (both when neither holds: a NaN bound).
 NodeDecision toleranceDecision(IN(ToleranceTerms) t, IN(QuadNode) node, IN(ClassifyPush) params) {
@@ -509,14 +511,14 @@ NodeDecision toleranceDecision(IN(ToleranceTerms) t, IN(QuadNode) node, IN(Class
   NodeDecision d;
   d.split = vec4(us, vs, 0.0f, 0.0f);
   d.linearity = share;
-  d.flatness = bound;
+  // The node's bound: the better diagonal's where it is smaller (the leaf's triangles then keep
+  // to that diagonal), else the one for any triangles.
+  bool oneDiagonal = boundDiagonal < bound;
+  d.flatness = oneDiagonal ? boundDiagonal : bound;
   d.pad = 0u;
-  if (bound <= params.tolerance) {
+  if (d.flatness <= params.tolerance) {
     d.cause = kCauseWithinTolerance;
-  } else if (boundDiagonal <= params.tolerance) {
-    d.cause = kCauseWithinTolerance;
-    d.flatness = boundDiagonal;
-    d.pad = diagonal;
+    d.pad = oneDiagonal ? diagonal : kToleranceAnyDiagonal;
   } else if (node.level >= params.maxDepth) {
     d.cause = kCauseMaxDepth;
   } else if (min(r.z - r.x, r.w - r.y) < params.minSize) {
