@@ -579,7 +579,11 @@ class Triangulator {
     const bool folded = touchesFold_ && dropFoldedBack(ring_);
     if (touchesMerge_) dropRepeats(ring_);
     if (ring_.size() < 3) return;
-    if (ring_.size() == 4 && !folded && leaf.diagonal != gpu::kToleranceAntiDiagonal) {
+    // Four entries are the four corners unless a merge took one: a leaf kept to a diagonal then
+    // goes through triangulateRing, which finds that diagonal's corners or keeps the fan.
+    const bool cornerDiagonal = leaf.diagonal == gpu::kToleranceAnyDiagonal ||
+                                (leaf.diagonal == gpu::kToleranceMainDiagonal && !touchesMerge_);
+    if (ring_.size() == 4 && !folded && cornerDiagonal) {
       emit(p, ring_[0], ring_[1], ring_[2]);
       emit(p, ring_[0], ring_[2], ring_[3]);
       return;
