@@ -171,3 +171,20 @@ TEST_CASE("warnings: fp32 output that cannot hold the accuracy asked for", "[war
   CHECK(fine[0].message.find("patches 0, 1, 2, 3, 4 and 27 more are not proven within the "
                              "tolerance 1e-06: rule T reached") == 0);
 }
+
+TEST_CASE("result warnings: rule T leaves fanned off their diagonal are counted",
+          "[warnings][tolerance]") {
+  // No tea-set leaf falls back to a fan (tests/test_tolerance_mode.cpp requires none), so the
+  // count is set by hand: the warning reads the statistic the triangulator keeps.
+  const std::vector<BezierPatch> teapot = readBpt(TESSERA_SOURCE_DIR "/data/teapot.bpt");
+  Backend cpu = makeMirrorBackend();
+  const QuadtreeOptions o = ruleOptions(SplitRule::Tolerance, teapot);
+  Tessellation t = tessellate(teapot, o, cpu);
+  REQUIRE(t.stats.diagonalFans == 0);
+  CHECK(codes(findResultWarnings(t, teapot, nullptr, o.tolerance)).empty());
+  t.stats.diagonalFans = 3;
+  const std::vector<ResultWarning> w = findResultWarnings(t, teapot, nullptr, o.tolerance);
+  REQUIRE(codes(w) == "diagonal-fan ");
+  CHECK(w[0].message.find("3 leaves proven for one diagonal had to be triangulated by a fan") == 0);
+  CHECK(codes(findResultWarnings(t, teapot, nullptr, 0.0)).empty());  // rules A-D, pixels
+}

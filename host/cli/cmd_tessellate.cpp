@@ -327,7 +327,7 @@ int run(const TessellateArgs& a) {
                    leaves.largestBound <= options.tolerance ? "" : " — ABOVE the tolerance",
                    leaves.culled, leaves.eyePlane);
     } else if (ruleT) {
-      printProvenLine(to, largestLeafBound(t.tree), options.tolerance);
+      printProvenLine(to, largestLeafBound(t.tree), options.tolerance, t.stats.diagonalFans);
     }
     if (deviation)
       std::fprintf(to,

@@ -80,7 +80,7 @@ int tessellateStreamedToFile(const StreamedJob& job, const std::vector<BezierPat
                  streamed.groups, streamed.patchesPerGroup,
                  formatByteSize(streamed.largestGroupBytes).c_str(), streamed.seamVertices);
     printCountsLine(to, s);
-    if (ruleT) printProvenLine(to, streamed.largestLeafBound, options.tolerance);
+    if (ruleT) printProvenLine(to, streamed.largestLeafBound, options.tolerance, s.diagonalFans);
     if (bound && job.lowerBound) printLowerBoundLine(to, *bound, s.triangles);
     printTimesLine(to, s);
     if (chosen.context) printSetup(to, chosen.context->timings());

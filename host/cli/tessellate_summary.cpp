@@ -15,9 +15,14 @@ void printCountsLine(FILE* to, const TessellationStats& s) {
                s.depth, s.leaves, s.triangles, s.vertices, s.degenerateTrianglesDropped);
 }
 
-void printProvenLine(FILE* to, double bound, double tolerance) {
-  std::fprintf(to, "proven within %.4g of the surface (largest leaf bound; tolerance %.4g)%s\n",
+void printProvenLine(FILE* to, double bound, double tolerance, size_t fannedLeaves) {
+  std::fprintf(to, "proven within %.4g of the surface (largest leaf bound; tolerance %.4g)%s",
                bound, tolerance, bound <= tolerance ? "" : " — ABOVE the tolerance");
+  // A leaf proven for one diagonal but fanned holds only its any-triangle bound.
+  if (fannedLeaves > 0)
+    std::fprintf(to, ", except %zu leaves fanned off their diagonal (warning diagonal-fan)",
+                 fannedLeaves);
+  std::fprintf(to, "\n");
 }
 
 void printLowerBoundLine(FILE* to, const TriangleLowerBound& bound, size_t triangles) {

@@ -15,8 +15,9 @@ void printRunLine(FILE* to, const std::string& input, const TessellationStats& s
                   const std::string& device);
 // "depth …, leaves …, triangles …, vertices … (… zero-area dropped)"
 void printCountsLine(FILE* to, const TessellationStats& s);
-// Rule T in model units: "proven within <bound> of the surface (…)".
-void printProvenLine(FILE* to, double bound, double tolerance);
+// Rule T in model units: "proven within <bound> of the surface (…)", and the leaves that are
+// not (TessellationStats::diagonalFans).
+void printProvenLine(FILE* to, double bound, double tolerance, size_t fannedLeaves);
 // "lower bound at δ …: … triangles (…); this mesh has …x that (… ms)"
 void printLowerBoundLine(FILE* to, const TriangleLowerBound& bound, size_t triangles);
 // "time: tree …, triangulation …, vertices …, total … ms"

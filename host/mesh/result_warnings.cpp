@@ -171,6 +171,14 @@ std::vector<ResultWarning> findResultWarnings(const Tessellation& t,
                                  ": rule T reached the depth or size limit with a bound of up to " +
                                  number(worst) + " (there the mesh may be farther off)"});
   }
+  if (tolerance > 0 && t.stats.diagonalFans > 0)
+    warnings.push_back(
+        {"diagonal-fan", std::to_string(t.stats.diagonalFans) +
+                             (t.stats.diagonalFans == 1 ? " leaf" : " leaves") +
+                             " proven for one diagonal had to be triangulated by a fan (a folded "
+                             "or repeated ring): there the mesh is proven only within the leaf's "
+                             "any-triangle bound, which may be above the tolerance " +
+                             number(tolerance)});
   for (ResultWarning& w : fp32OutputWarning(t, patches, tolerance))
     warnings.push_back(std::move(w));
   return warnings;

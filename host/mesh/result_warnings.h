@@ -12,7 +12,7 @@ namespace tessera {
 
 struct ResultWarning {
   std::string code;     // "no-triangles", "zero-normals", "flattened-patch", "large-deviation",
-                        // "unproven-patch", "fp32-output"
+                        // "unproven-patch", "diagonal-fan", "fp32-output"
   std::string message;  // one line naming the cause
 };
 
@@ -53,6 +53,9 @@ double fp32RoundingBound(double m);
 //   unproven-patch   rule T (`tolerance` > 0): patches with a leaf whose bound is above δ (it
 //                    reached the depth or size limit first: a corner weight of 10⁻²⁰ crowds
 //                    the surface into u, v ≲ 10⁻²⁰ there), named;
+//   diagonal-fan     rule T: leaves whose bound holds for one diagonal's triangles but that
+//                    the triangulator had to fan (TessellationStats::diagonalFans; docs/
+//                    quadtree.md, "One diagonal"), counted;
 //   fp32-output      as above.
 // `tolerance` is rule T's δ in model units, 0 for the other rules (and for a tolerance in
 // pixels).
