@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <stdexcept>
+#include <vector>
 
 #include "geometry/bernstein.h"
 #include "geometry/bezier.h"
@@ -308,4 +310,31 @@ TEST_CASE("Bezier: invalid degrees, counts and parameters throw invalid_argument
   CHECK_THROWS_AS(validatePatch(BezierPatch{2, 3, std::vector<glm::dvec3>(16)}),
                   std::invalid_argument);
   CHECK_THROWS_AS(bernsteinDerivative(8, 1, 0.5, nullptr), std::invalid_argument);
+}
+
+TEST_CASE("Bernstein: every partial at once equals each partial alone, bit for bit",
+          "[bezier]") {
+  // tensorPartials shares one table of u-differences between the partials; the values must be
+  // tensorPartial's exactly (the derivative evaluators moved to it, and the meshes keep their bytes).
+  std::mt19937 rng(20261127);
+  std::uniform_real_distribution<double> coord(-3.0, 3.0), param(0.0, 1.0);
+  size_t compared = 0;
+  for (int n = 1; n <= kMaxDegree; ++n)
+    for (int m = 1; m <= kMaxDegree; ++m) {
+      std::vector<glm::dvec4> net((n + 1) * (m + 1));
+      for (glm::dvec4& p : net) p = {coord(rng), coord(rng), coord(rng), 0.5 + 0.25 * coord(rng)};
+      net[1] = net[0];  // a collapsed edge start: exact zeros must stay exact
+      const BernsteinTriangle bu = bernsteinTriangle(n, param(rng));
+      const BernsteinTriangle bv = bernsteinTriangle(m, param(rng));
+      glm::dvec4 all[4][4];
+      tensorPartials<glm::dvec4, 3>(net.data(), n, m, bu, bv, all);
+      for (int a = 0; a <= 3; ++a)
+        for (int b = 0; a + b <= 3; ++b) {
+          const glm::dvec4 alone = tensorPartial(net.data(), n, m, a, b, bu, bv);
+          INFO("degree " << n << "x" << m << ", partial " << a << "," << b);
+          REQUIRE(std::memcmp(&alone, &all[a][b], sizeof alone) == 0);
+          ++compared;
+        }
+    }
+  CHECK(compared == 49 * 10);
 }

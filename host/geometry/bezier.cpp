@@ -136,20 +136,19 @@ SurfaceDerivatives patchDerivatives(const BezierPatch& patch, double u, double v
   checkPatch(patch, "patchDerivatives");
   const BernsteinTriangle bu = bernsteinTriangle(patch.degreeU, u);
   const BernsteinTriangle bv = bernsteinTriangle(patch.degreeV, v);
-  const int n = patch.degreeU, m = patch.degreeV;
-  const glm::dvec3* net = patch.cp.data();
-  auto partial = [&](int a, int b) { return tensorPartial(net, n, m, a, b, bu, bv); };
+  glm::dvec3 partial[4][4];  // a + b ≤ 3
+  tensorPartials<glm::dvec3, 3>(patch.cp.data(), patch.degreeU, patch.degreeV, bu, bv, partial);
   SurfaceDerivatives d;
-  d.p = partial(0, 0);
-  d.pu = partial(1, 0);
-  d.pv = partial(0, 1);
-  d.puu = partial(2, 0);
-  d.puv = partial(1, 1);
-  d.pvv = partial(0, 2);
-  d.puuu = partial(3, 0);
-  d.puuv = partial(2, 1);
-  d.puvv = partial(1, 2);
-  d.pvvv = partial(0, 3);
+  d.p = partial[0][0];
+  d.pu = partial[1][0];
+  d.pv = partial[0][1];
+  d.puu = partial[2][0];
+  d.puv = partial[1][1];
+  d.pvv = partial[0][2];
+  d.puuu = partial[3][0];
+  d.puuv = partial[2][1];
+  d.puvv = partial[1][2];
+  d.pvvv = partial[0][3];
   return d;
 }
 

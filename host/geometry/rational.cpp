@@ -140,9 +140,7 @@ SurfaceDerivatives rationalPatchDerivatives(const RationalBezierPatch& patch, do
   const BernsteinTriangle bv = bernsteinTriangle(patch.degreeV, v);
   constexpr int kOrder = 3;
   glm::dvec4 h[kOrder + 1][kOrder + 1];  // homogeneous partials, a + b ≤ 3
-  for (int a = 0; a <= kOrder; ++a)
-    for (int b = 0; a + b <= kOrder; ++b)
-      h[a][b] = tensorPartial(patch.cpw.data(), patch.degreeU, patch.degreeV, a, b, bu, bv);
+  tensorPartials<glm::dvec4, kOrder>(patch.cpw.data(), patch.degreeU, patch.degreeV, bu, bv, h);
   checkDenominator(h[0][0].w, "rationalPatchDerivatives", u, v);
 
   // S^(a,b) = (A^(a,b) − Σ_{(i,j)≠(0,0)} C(a,i) C(b,j) w^(i,j) S^(a−i,b−j)) / w
