@@ -2,6 +2,8 @@
 
 #include <limits>
 
+#include "shaders/layout.h"
+
 namespace tessera {
 namespace {
 
@@ -92,11 +94,12 @@ bool triangulateRectangleRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, 
 bool triangulateRectangleRingAlong(const std::vector<glm::vec2>& ring, glm::vec2 lo,
                                    glm::vec2 hi, uint32_t diagonal,
                                    std::vector<std::array<uint32_t, 3>>& triangles) {
-  if (diagonal == 0) return triangulateRectangleRing(ring, lo, hi, triangles);
+  if (diagonal == gpu::kToleranceAnyDiagonal) return triangulateRectangleRing(ring, lo, hi, triangles);
   triangles.clear();
-  if (diagonal > 2) return false;
-  const glm::vec2 from = diagonal == 1 ? lo : glm::vec2(hi.x, lo.y);
-  const glm::vec2 to = diagonal == 1 ? hi : glm::vec2(lo.x, hi.y);
+  const bool mainDiagonal = diagonal == gpu::kToleranceMainDiagonal;
+  if (!mainDiagonal && diagonal != gpu::kToleranceAntiDiagonal) return false;
+  const glm::vec2 from = mainDiagonal ? lo : glm::vec2(hi.x, lo.y);
+  const glm::vec2 to = mainDiagonal ? hi : glm::vec2(lo.x, hi.y);
   const size_t n = ring.size();
   size_t a = n, b = n;
   for (size_t i = 0; i < n; ++i) {
