@@ -50,6 +50,7 @@ TEST_CASE("stats: the tolerance member is null for rules A-D and filled for rule
   REQUIRE(tol["relative"] == true);
   REQUIRE(tol["diagonal"].get<double>() == Approx(controlPointDiagonal(model)).epsilon(1e-12));
   REQUIRE(tol["largestLeafBound"] == largest);
+  REQUIRE(tol["diagonalFans"] == 0);
   REQUIRE(tol["provenWithin"] == (largest <= resolved));
   for (size_t p = 0; p < patches.size(); ++p)
     REQUIRE(report["patches"][p]["largestLeafBound"] == expected[p]);
@@ -60,6 +61,18 @@ TEST_CASE("stats: the tolerance member is null for rules A-D and filled for rule
   REQUIRE(report["tolerance"]["relative"] == false);
   REQUIRE(report["tolerance"]["provenWithin"] == (largest <= 0.5));
   addToleranceReport(report, t, parseTolerance("1e-9"), 1e-9);
+  REQUIRE(report["tolerance"]["provenWithin"] == false);
+
+  // A leaf proven for one diagonal but fanned holds only its any-triangle bound, which may pass
+  // δ: the report counts such leaves and then proves nothing, whatever the largest leaf bound.
+  REQUIRE(largest <= 0.5);
+  t.stats.diagonalFans = 3;
+  addToleranceReport(report, t, parseTolerance("0.5"), 0.5);
+  REQUIRE(report["tolerance"]["diagonalFans"] == 3);
+  REQUIRE(report["tolerance"]["provenWithin"] == false);
+  addToleranceBound(report, parseTolerance("0.5"), 0.5, largest, 0);
+  REQUIRE(report["tolerance"]["provenWithin"] == true);
+  addToleranceBound(report, parseTolerance("0.5"), 0.5, largest, 1);
   REQUIRE(report["tolerance"]["provenWithin"] == false);
 
   options.rule = SplitRule::Tolerance;

@@ -55,7 +55,9 @@ int tessellateStreamedToFile(const StreamedJob& job, const std::vector<BezierPat
     else addUncomputedLowerBound(report);
     report["patches"] = nullptr;
     report["tolerance"] = nullptr;
-    if (ruleT) addToleranceBound(report, job.toleranceSpec, options.tolerance, streamed.largestLeafBound);
+    if (ruleT)
+      addToleranceBound(report, job.toleranceSpec, options.tolerance, streamed.largestLeafBound,
+                        s.diagonalFans);
     addWarnings(report, {});
     report["streamed"] = {
         {"groups", streamed.groups},

@@ -200,11 +200,12 @@ void addToleranceReport(nlohmann::json& report, const Tessellation& t, const Tol
   // eye-plane ones unproven (mesh/screen_tolerance.h); they are counted instead.
   const ScreenLeafCounts screen = screenLeafCounts(t.tree);
   const double bound = spec.pixels ? screen.largestBound : largestLeafBound(t.tree);
-  addToleranceBound(report, spec, resolved, bound, spec.pixels ? &screen : nullptr);
+  addToleranceBound(report, spec, resolved, bound, t.stats.diagonalFans,
+                    spec.pixels ? &screen : nullptr);
 }
 
 void addToleranceBound(nlohmann::json& report, const ToleranceSpec& spec, double resolved,
-                       double bound, const ScreenLeafCounts* screen) {
+                       double bound, size_t diagonalFans, const ScreenLeafCounts* screen) {
   report["tolerance"] = {
       {"requested", resolved},
       {"given", spec.text},
@@ -212,7 +213,8 @@ void addToleranceBound(nlohmann::json& report, const ToleranceSpec& spec, double
       {"pixels", spec.pixels},
       {"diagonal", spec.relative ? nlohmann::json(resolved / spec.value) : nlohmann::json()},
       {"largestLeafBound", bound},
-      {"provenWithin", bound <= resolved},
+      {"diagonalFans", diagonalFans},
+      {"provenWithin", bound <= resolved && diagonalFans == 0},
       {"culledLeaves", screen ? nlohmann::json(screen->culled) : nlohmann::json()},
       {"eyePlaneLeaves", screen ? nlohmann::json(screen->eyePlane) : nlohmann::json()}};
 }

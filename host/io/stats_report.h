@@ -77,14 +77,17 @@ double largestLeafBound(const QuadtreeResult& tree);
 
 // Fills the report's "tolerance" member (null in every report until then, i.e. for rules A–D)
 // for a rule-T run at δ = `resolved` model units given as `spec`: requested, given, relative,
-// diagonal, largestLeafBound, provenWithin (largestLeafBound ≤ requested); and
-// patches[].largestLeafBound. docs/stats_schema.md.
+// diagonal, largestLeafBound, diagonalFans, provenWithin (largestLeafBound ≤ requested and no
+// diagonal fan); and patches[].largestLeafBound. docs/stats_schema.md.
 void addToleranceReport(nlohmann::json& report, const Tessellation& tessellation,
                         const ToleranceSpec& spec, double resolved);
 // The "tolerance" member alone, from the largest leaf bound `bound` (model units, or pixels
-// with `screen`'s counts): for a streamed run, which holds no tree.
+// with `screen`'s counts) and the count of leaves proven for one diagonal that the triangulator
+// fanned (TessellationStats::diagonalFans: they hold only their any-triangle bound, so the run
+// is not proven within δ): for a streamed run, which holds no tree.
 void addToleranceBound(nlohmann::json& report, const ToleranceSpec& spec, double resolved,
-                       double bound, const ScreenLeafCounts* screen = nullptr);
+                       double bound, size_t diagonalFans,
+                       const ScreenLeafCounts* screen = nullptr);
 
 // The quad-tree options as a JSON object, for the report's optional "run" section.
 nlohmann::json optionsToJson(const QuadtreeOptions& options);
