@@ -211,9 +211,50 @@ TEST_CASE("public API: a tolerance is kept at every sampled point of every trian
                          << ": " << mesh.triangleCount() << " triangles, worst " << worst);
       REQUIRE(worst <= tolerance + 1e-6);  // fp32 positions
       REQUIRE(worst > tolerance / 50);     // and the grid is not absurdly fine
+      // The mesh says what it proved, and the measured deviation is under it.
+      REQUIRE(mesh.proof.has_value());
+      INFO("proven bound " << mesh.proof->largestBound);
+      REQUIRE(mesh.proof->tolerance == tolerance);
+      REQUIRE(mesh.proof->proven);
+      REQUIRE(mesh.proof->largestBound <= tolerance * (1 + 1e-12));
+      REQUIRE(worst <= mesh.proof->largestBound + 1e-6);
     }
     }
   }
+}
+
+TEST_CASE("public API: the mesh says what it proved, and what it could not", "[api]") {
+  tessera::Tessellator tessellator({tessera::Device::Cpu});
+  const std::vector<tessera::Patch> teapot = tessera::loadPatches(kTeapot);
+  tessera::RuleOptions rule;  // B: angles, no distance proven
+  REQUIRE_FALSE(tessellator.tessellate(teapot, rule).proof.has_value());
+  rule.rule = tessera::Rule::T;
+  rule.tolerance = 0.01;
+  const tessera::Mesh byRule = tessellator.tessellate(teapot, rule);
+  REQUIRE(byRule.proof.has_value());
+  REQUIRE(byRule.proof->proven);
+  REQUIRE(byRule.proof->largestBound <= 0.01);
+  REQUIRE(byRule.proof->largestBound > 0.005);  // a leaf's bound is not absurdly small
+
+  // The depth limit stops leaves above the tolerance: the mesh is made, and says so.
+  tessera::ToleranceOptions shallow;
+  shallow.maxDepth = 3;
+  const tessera::Mesh stopped = tessellator.tessellateToTolerance(teapot, 1e-4, shallow);
+  REQUIRE(stopped.triangleCount() > 0);
+  REQUIRE(stopped.proof.has_value());
+  INFO("depth 3 at 1e-4: largest bound " << stopped.proof->largestBound);
+  REQUIRE_FALSE(stopped.proof->proven);
+  REQUIRE(stopped.proof->largestBound > 1e-4);
+
+  // Uniform grids past maxPerDirection are refused, not silently coarser than asked.
+  tessera::ToleranceOptions grids;
+  grids.method = tessera::ToleranceMethod::UniformGrids;
+  grids.maxPerDirection = 8;
+  REQUIRE_THROWS_AS(tessellator.tessellateToTolerance(teapot, 1e-4, grids), tessera::LimitError);
+  grids.maxPerDirection = 1024;
+  const tessera::Mesh fine = tessellator.tessellateToTolerance(teapot, 1e-4, grids);
+  REQUIRE(fine.proof->proven);
+  REQUIRE(fine.proof->largestBound <= 1e-4 * (1 + 1e-12));
 }
 
 TEST_CASE("public API: RuleOptions' default depth is the rule's own, rule T's deeper",
@@ -295,6 +336,11 @@ TEST_CASE("public API: a pixel tolerance holds on screen, and far views need few
   REQUIRE(measured < mesh.triangleCount());  // part of it is off-screen
   REQUIRE(worst <= 0.5);
   REQUIRE(worst > 0.5 / 20);
+  REQUIRE(mesh.proof.has_value());
+  INFO("proven bound " << mesh.proof->largestBound << " px");
+  REQUIRE(mesh.proof->tolerance == 0.5);
+  REQUIRE(mesh.proof->proven);
+  REQUIRE(worst <= mesh.proof->largestBound + 1e-3);  // fp32 positions, in pixels
 
   const tessera::View ok =
       tessera::lookAtView({5, 5, 5}, {0, 0, 0}, {0, 0, 1}, 45, 64, 64, 0.1, 10);

@@ -10,6 +10,7 @@
 #include "geometry/rational.h"
 #include "mesh/screen_tolerance.h"
 #include "mesh/tessellate.h"
+#include "quadtree/tolerance.h"
 #include "vk/context.h"
 #include "vk/errors.h"
 
@@ -19,7 +20,8 @@ namespace {
 // Rule A with each patch's grid from Filip's bound at `tolerance` (host/division/count.h), the
 // grids made watertight across patches by meshFromTree (as bench/bench_occt.cpp's countedGrids).
 Tessellation countedGrids(const std::vector<BezierPatch>& patches, double tolerance,
-                          int maxPerDirection, size_t maxNodes, Backend& backend) {
+                          int maxPerDirection, size_t maxNodes, Backend& backend,
+                          double& largestBound) {
   for (size_t i = 0; i < patches.size(); ++i)
     validateTessellationPatch(patches[i], "patch " + std::to_string(i));
   // Counted and meshed in the local frame, as tessellate() works (model_frame.h).
@@ -33,8 +35,24 @@ Tessellation countedGrids(const std::vector<BezierPatch>& patches, double tolera
   const PatchSet set = toPatchSet(local);
   QuadtreeResult tree;
   size_t cells = 0;
+  largestBound = 0;
   for (size_t p = 0; p < local.size(); ++p) {
     const Divisions d = patchDivisions(toRationalPatch(local[p]), counting);
+    if (d.status == DivisionStatus::Unbounded)
+      throw std::invalid_argument("patch " + std::to_string(p) +
+                                  ": its weights vanish on the patch, so the surface runs off "
+                                  "to infinity and no uniform grid is within any tolerance");
+    if (d.status == DivisionStatus::Capped)
+      throw LimitError("tolerance " + std::to_string(tolerance) + ": patch " + std::to_string(p) +
+                       " needs more than maxPerDirection = " + std::to_string(maxPerDirection) +
+                       " cells a side (" + std::to_string(d.realU) + " x " +
+                       std::to_string(d.realV) + ")");
+    // Filip's bound of the grid (docs/rational_division.md), local units → model units.
+    const double nu = d.nu, nv = d.nv;
+    largestBound = std::max(largestBound, frame.scale *
+                                              (d.bounds.uu / (nu * nu) +
+                                               2.0 * d.bounds.uv / (nu * nv) +
+                                               d.bounds.vv / (nv * nv)) / 8.0);
     cells += size_t(d.nu) * size_t(d.nv);
     if (cells > maxNodes)
       throw LimitError("tolerance " + std::to_string(tolerance) + ": the grids reach " +
@@ -66,6 +84,20 @@ auto translatingErrors(Work&& work) -> decltype(work()) {
   } catch (const vk::VulkanError& e) {
     throw DeviceError(std::string("the Vulkan device failed: ") + e.what());
   }
+}
+
+// What rule T's tree proves (Mesh::proof): its largest leaf bound in model units; a leaf
+// fanned off its one diagonal holds only its any-triangle bound, so it proves nothing.
+ToleranceProof treeProof(const Tessellation& t, double tolerance) {
+  const double bound = largestLeafBound(t.tree);
+  return {tolerance, bound, bound <= tolerance && t.stats.diagonalFans == 0};
+}
+
+// In pixels: over the leaves in view; culled leaves are unseen, eye-plane ones unproven.
+ToleranceProof screenProof(const Tessellation& t, double pixels) {
+  const ScreenLeafCounts counts = screenLeafCounts(t.tree);
+  return {pixels, counts.largestBound,
+          counts.largestBound <= pixels && counts.eyePlane == 0 && t.stats.diagonalFans == 0};
 }
 
 }  // namespace
@@ -128,11 +160,11 @@ Mesh Tessellator::tessellate(const std::vector<Patch>& patches, const RuleOption
   const std::vector<BezierPatch> internal = api::toBezierPatches(patches);
   const QuadtreeOptions quadtree = api::toQuadtreeOptions(options);
   return translatingErrors([&] {
-    return api::toMesh(impl_
-                           ->withFallback([&](Backend& backend) {
-                             return tessera::tessellate(internal, quadtree, backend);
-                           })
-                           .mesh);
+    const Tessellation t = impl_->withFallback(
+        [&](Backend& backend) { return tessera::tessellate(internal, quadtree, backend); });
+    Mesh mesh = api::toMesh(t.mesh);
+    if (quadtree.rule == SplitRule::Tolerance) mesh.proof = treeProof(t, quadtree.tolerance);
+    return mesh;
   });
 }
 
@@ -158,12 +190,17 @@ Mesh Tessellator::tessellateToTolerance(const std::vector<Patch>& patches, doubl
     throw ArgumentError("maxPerDirection must be 1..4096, got " + std::to_string(maxPerDirection));
   const std::vector<BezierPatch> internal = api::toBezierPatches(patches);
   return translatingErrors([&] {
-    return api::toMesh(impl_
-                           ->withFallback([&](Backend& backend) {
-                             return countedGrids(internal, tolerance, maxPerDirection,
-                                                 options.maxNodes, backend);
-                           })
-                           .mesh);
+    double largestBound = 0;
+    Mesh mesh = api::toMesh(impl_
+                                ->withFallback([&](Backend& backend) {
+                                  return countedGrids(internal, tolerance, maxPerDirection,
+                                                      options.maxNodes, backend, largestBound);
+                                })
+                                .mesh);
+    // Each grid's counts solve its bound = tolerance and are rounded up (a capped or unbounded
+    // grid threw above), so the grids are proven by construction; the bound is as computed.
+    mesh.proof = ToleranceProof{tolerance, largestBound, true};
+    return mesh;
   });
 }
 
@@ -205,11 +242,12 @@ Mesh Tessellator::tessellateToPixelTolerance(const std::vector<Patch>& patches, 
   quadtree.nodeBudget = options.maxNodes;
   const std::vector<BezierPatch> internal = api::toBezierPatches(patches);
   return translatingErrors([&] {
-    return api::toMesh(impl_
-                           ->withFallback([&](Backend& backend) {
-                             return tessellateScreenTolerance(internal, quadtree, screen, backend);
-                           })
-                           .mesh);
+    const Tessellation t = impl_->withFallback([&](Backend& backend) {
+      return tessellateScreenTolerance(internal, quadtree, screen, backend);
+    });
+    Mesh mesh = api::toMesh(t.mesh);
+    mesh.proof = screenProof(t, pixels);
+    return mesh;
   });
 }
 

@@ -178,12 +178,6 @@ nlohmann::json statsToJson(const Tessellation& t, const PatchDeviation* deviatio
   return report;
 }
 
-double largestLeafBound(const QuadtreeResult& tree) {
-  double largest = 0;
-  for (const QuadLeaf& leaf : tree.leaves) largest = std::max(largest, double(leaf.flatness));
-  return largest * tree.boundScale;
-}
-
 void addToleranceReport(nlohmann::json& report, const Tessellation& t, const ToleranceSpec& spec,
                         double resolved) {
   nlohmann::json& patches = report["patches"];

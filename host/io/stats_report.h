@@ -70,11 +70,6 @@ nlohmann::json statsToJson(const TessellationStats& stats);
 nlohmann::json statsToJson(const Tessellation& tessellation,
                            const PatchDeviation* deviation = nullptr);
 
-// Rule T: the largest proven deviation bound over the tree's leaves, in model units (each
-// rule-T leaf keeps its bound in QuadLeaf::flatness, in units of tree.boundScale); 0 for a tree
-// without leaves.
-double largestLeafBound(const QuadtreeResult& tree);
-
 // Fills the report's "tolerance" member (null in every report until then, i.e. for rules A–D)
 // for a rule-T run at δ = `resolved` model units given as `spec`: requested, given, relative,
 // diagonal, largestLeafBound, diagonalFans, provenWithin (largestLeafBound ≤ requested and no

@@ -87,4 +87,10 @@ std::string describeTolerance(const ToleranceSpec& spec, double resolved) {
   return text;
 }
 
+double largestLeafBound(const QuadtreeResult& tree) {
+  double largest = 0;
+  for (const QuadLeaf& leaf : tree.leaves) largest = std::max(largest, double(leaf.flatness));
+  return largest * tree.boundScale;
+}
+
 }  // namespace tessera

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geometry/patch.h"
+#include "quadtree/quadtree.h"
 
 namespace tessera {
 
@@ -39,5 +40,10 @@ double resolveTolerance(const ToleranceSpec& spec, const std::vector<BezierPatch
 
 // "0.007 (0.1% of the diagonal 7.2)", "0.01" or "1 px": for summaries and messages.
 std::string describeTolerance(const ToleranceSpec& spec, double resolved);
+
+// Rule T: the largest proven deviation bound over the tree's leaves, in model units (each
+// rule-T leaf keeps its bound in QuadLeaf::flatness, in units of tree.boundScale); 0 for a tree
+// without leaves.
+double largestLeafBound(const QuadtreeResult& tree);
 
 }  // namespace tessera

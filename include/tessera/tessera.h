@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -104,6 +105,19 @@ View lookAtView(const std::array<double, 3>& eye, const std::array<double, 3>& t
                 const std::array<double, 3>& up, double fovYDegrees, int width, int height,
                 double nearDistance, double farDistance);
 
+// What a tolerance call proved of its mesh: tessellateToTolerance, tessellateToPixelTolerance
+// and tessellate with Rule::T fill Mesh::proof; rules A–D prove no distance and leave it empty.
+struct ToleranceProof {
+  double tolerance = 0;     // the tolerance asked: model units, or pixels for a pixel tolerance
+  double largestBound = 0;  // the largest proven distance bound over the mesh's triangles, in
+                            // the same units (pixels: over the triangles in view)
+  bool proven = false;      // every triangle proven within the tolerance. False where the depth
+                            // limit (maxDepth) stopped a leaf above it, where the triangulator
+                            // had to fan a leaf proven for one diagonal only (docs/quadtree.md,
+                            // "One diagonal"), or, in pixels, where the near plane cuts the
+                            // surface through the eye
+};
+
 // An indexed triangle mesh in fp32. Per vertex: positions and normals (3 floats each), uvs
 // (2 floats: the vertex's (u, v) on its patch), patchIds (the index of its patch in the input).
 // indices: 3 per triangle, counter-clockwise seen from the side the normals point to.
@@ -114,6 +128,7 @@ struct Mesh {
   std::vector<float> uvs;
   std::vector<uint32_t> patchIds;
   std::vector<uint32_t> indices;
+  std::optional<ToleranceProof> proof;  // tolerance calls only (above)
 
   size_t vertexCount() const { return positions.size() / 3; }
   size_t triangleCount() const { return indices.size() / 3; }
@@ -154,9 +169,12 @@ class Tessellator {
 
   // Tessellation to a tolerance in model units (relativeTolerance for one relative to the
   // model's size): every triangle stays within `tolerance` of the surface at the same (u, v),
-  // by options.method (ToleranceMethod above). Throws ArgumentError for a tolerance that is
-  // not finite and > 0 or a bad option, LimitError past maxNodes (or a grid capped at
-  // maxPerDirection), DeviceError as tessellate.
+  // by options.method (ToleranceMethod above); Mesh::proof says what was proven (Adaptive
+  // stops at maxDepth, so check proof->proven). Throws ArgumentError for a tolerance that is
+  // not finite and > 0, a bad option, or (UniformGrids) a patch whose weights vanish on it (the
+  // surface runs off to infinity: no grid is within any tolerance); LimitError past maxNodes or
+  // (UniformGrids) where a grid would need more than maxPerDirection cells a side; DeviceError
+  // as tessellate.
   Mesh tessellateToTolerance(const std::vector<Patch>& patches, double tolerance,
                              const ToleranceOptions& options = {});
 
