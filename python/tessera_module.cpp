@@ -22,13 +22,23 @@ py::array_t<T> toArray(const std::vector<T>& values, std::vector<py::ssize_t> sh
 struct PyMesh {
   py::array_t<float> positions, normals, uvs;
   py::array_t<uint32_t> patch_ids, indices;
+  py::object proof;  // None, or a dict of tessera::ToleranceProof's members
 };
+
+py::object proofToPython(const std::optional<tessera::ToleranceProof>& proof) {
+  if (!proof) return py::none();
+  py::dict d;
+  d["tolerance"] = proof->tolerance;
+  d["largest_bound"] = proof->largestBound;
+  d["proven"] = proof->proven;
+  return d;
+}
 
 PyMesh toPython(const tessera::Mesh& mesh) {
   const auto n = static_cast<py::ssize_t>(mesh.vertexCount());
   const auto m = static_cast<py::ssize_t>(mesh.triangleCount());
   return {toArray(mesh.positions, {n, 3}), toArray(mesh.normals, {n, 3}), toArray(mesh.uvs, {n, 2}),
-          toArray(mesh.patchIds, {n}), toArray(mesh.indices, {m, 3})};
+          toArray(mesh.patchIds, {n}), toArray(mesh.indices, {m, 3}), proofToPython(mesh.proof)};
 }
 
 tessera::Rule parseRule(const std::string& name) {
@@ -120,6 +130,9 @@ PYBIND11_MODULE(tessera, m) {
       .def_readonly("uvs", &PyMesh::uvs, "float32 (N, 2): each vertex's (u, v) on its patch")
       .def_readonly("patch_ids", &PyMesh::patch_ids, "uint32 (N,)")
       .def_readonly("indices", &PyMesh::indices, "uint32 (M, 3), counter-clockwise")
+      .def_readonly("proof", &PyMesh::proof,
+                    "tolerance calls: {'tolerance', 'largest_bound', 'proven'} (docs/api.md, "
+                    "'What was proven'); None for rules A-D")
       .def("__repr__", [](const PyMesh& mesh) {
         return "<tessera.Mesh " + std::to_string(mesh.indices.shape(0)) + " triangles, " +
                std::to_string(mesh.positions.shape(0)) + " vertices>";

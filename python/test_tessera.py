@@ -47,6 +47,10 @@ weights[:, 1, 1] = 2.0
 coarse = t.tessellate_to_tolerance(points, 0.05, weights=weights)
 fine = t.tessellate_to_tolerance(points, 0.005, weights=weights)
 assert 0 < coarse.indices.shape[0] < fine.indices.shape[0]
+# Each says what it proved; the split rules prove no distance.
+assert fine.proof["proven"] and fine.proof["tolerance"] == 0.005
+assert 0.0025 < fine.proof["largest_bound"] <= 0.005
+assert mesh.proof is None
 # The uniform grids by name: sized by the whole patch's rational bound, they spend more than the
 # tree at the same tolerance (31,125 against 4,447 triangles). A relative tolerance is of the
 # diagonal of the control points' bounding box (the teapot's box, from the points themselves).
