@@ -5,6 +5,9 @@ include(CMakePackageConfigHelpers)
 
 set(TESSERA_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/tessera)
 install(TARGETS tessera_lib EXPORT tesseraTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+if(TARGET tessera_cad_lib)  # the component cad: libtessera_cad.a (cmake/library.cmake)
+  install(TARGETS tessera_cad_lib EXPORT tesseraTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+endif()
 install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/include/tessera
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h")
 if(TESSERA_BUILD_CLI)
@@ -30,3 +33,11 @@ string(REGEX REPLACE "/$" "" TESSERA_PC_TO_PREFIX "${TESSERA_PC_TO_PREFIX}")
 configure_file(${CMAKE_CURRENT_SOURCE_DIR}/cmake/tessera.pc.in
   ${CMAKE_CURRENT_BINARY_DIR}/tessera.pc @ONLY)
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/tessera.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+if(TARGET tessera_cad_lib)
+  # tessera-cad.pc: libtessera_cad.a and OCCT's libraries by file, then tessera's.
+  string(JOIN " " TESSERA_PC_OCCT_FILES ${TESSERA_CAD_OCCT_FILES})
+  configure_file(${CMAKE_CURRENT_SOURCE_DIR}/cmake/tessera-cad.pc.in
+    ${CMAKE_CURRENT_BINARY_DIR}/tessera-cad.pc @ONLY)
+  install(FILES ${CMAKE_CURRENT_BINARY_DIR}/tessera-cad.pc
+    DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+endif()

@@ -36,3 +36,26 @@ target_compile_features(tessera_lib INTERFACE cxx_std_17)
 # the package config needs no find_dependency for it.
 target_link_libraries(tessera_lib INTERFACE Threads::Threads ${CMAKE_DL_LIBS})
 add_library(tessera::tessera ALIAS tessera_lib)
+
+# The CAD API (include/tessera/cad.h), tessera::cad: libtessera_cad.a, the CAD reader
+# (host/cad/) and its entry point (host/api/cad/), apart from libtessera.a so that only its
+# users link Open CASCADE. Its interface: tessera::tessera and OCCT's libraries by file, as
+# third_party/ found them (no OCCT header is public).
+if(TESSERA_HAVE_CAD)
+  # The layer's own archive keeps another name: libtessera_cad.a is the installed one.
+  set_target_properties(tessera_cad PROPERTIES POSITION_INDEPENDENT_CODE ON
+    OUTPUT_NAME tessera_cad_layer)
+  file(GLOB TESSERA_CAD_API_SOURCES CONFIGURE_DEPENDS
+    ${CMAKE_CURRENT_SOURCE_DIR}/host/api/cad/*.cpp)
+  add_library(tessera_cad_api OBJECT ${TESSERA_CAD_API_SOURCES})
+  target_link_libraries(tessera_cad_api PUBLIC tessera_cad tessera_vulkan tessera_io tessera_core)
+  set_target_properties(tessera_cad_api PROPERTIES POSITION_INDEPENDENT_CODE ON)
+
+  add_library(tessera_cad_lib STATIC
+    $<TARGET_OBJECTS:tessera_cad_api> $<TARGET_OBJECTS:tessera_cad>)
+  set_target_properties(tessera_cad_lib PROPERTIES OUTPUT_NAME tessera_cad EXPORT_NAME cad
+    LINKER_LANGUAGE CXX)
+  get_target_property(TESSERA_CAD_OCCT_FILES tessera_occt_exchange INTERFACE_LINK_LIBRARIES)
+  target_link_libraries(tessera_cad_lib INTERFACE tessera_lib ${TESSERA_CAD_OCCT_FILES})
+  add_library(tessera::cad ALIAS tessera_cad_lib)
+endif()

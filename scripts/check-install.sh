@@ -73,3 +73,25 @@ if [[ ${counts[0]} -eq 0 || ${counts[0]} != "${counts[1]}" ]]; then
   exit 1
 fi
 echo "check-install: OK (installed to a prefix, find_package and pkg-config builds agree: ${counts[0]} triangles)"
+
+# The CAD component, where Tessera was built with Open CASCADE: find_package(tessera COMPONENTS
+# cad) and pkg-config tessera-cad, on a model of FreeCAD's IDF library (scripts/deps.sh).
+if [[ -f $(dirname "$pc")/tessera-cad.pc ]]; then
+  model=/usr/share/freecad/Mod/Idf/Idflibs/SOT23.stp
+  cmake -S examples/cad_consumer -B "$work/cad-build" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
+  cmake --build "$work/cad-build" >/dev/null
+  c++ -std=c++17 -O2 examples/cad_consumer/main.cpp -o "$work/cad-consumer-pc" \
+    $(pkg-config --cflags --libs tessera-cad)
+  cad_counts=()
+  for consumer in "$work/cad-build/cad_consumer" "$work/cad-consumer-pc"; do
+    out=$("$consumer" "$model")
+    echo "check-install: $(basename "$consumer"): ${out%%$'\n'*}"
+    [[ $out =~ :\ ([0-9]+)\ triangles ]] || { echo "check-install: no triangle count in: $out" >&2; exit 1; }
+    cad_counts+=("${BASH_REMATCH[1]}")
+  done
+  if [[ ${cad_counts[0]} -eq 0 || ${cad_counts[0]} != "${cad_counts[1]}" ]]; then
+    echo "check-install: the two CAD builds disagree or made nothing: ${cad_counts[*]}" >&2
+    exit 1
+  fi
+  echo "check-install: OK (the cad component: ${cad_counts[0]} triangles on $(basename "$model"))"
+fi

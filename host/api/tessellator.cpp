@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "api/convert.h"
+#include "api/tessellator_access.h"
 #include "division/count.h"
 #include "eval/patch_set.h"
 #include "geometry/rational.h"
@@ -154,6 +155,20 @@ bool Tessellator::usesVulkan() const { return impl_->context != nullptr; }
 
 std::string Tessellator::deviceName() const {
   return impl_->context ? impl_->context->info().name : "cpu";
+}
+
+void TessellatorAccess::run(Tessellator& tessellator,
+                            const std::function<void(Backend&, vk::Context*)>& work) {
+  Tessellator::Impl& impl = *tessellator.impl_;
+  translatingErrors([&] {
+    try {
+      work(impl.backend, impl.context.get());
+    } catch (const vk::VulkanError&) {
+      if (impl.options.device != Device::Auto || !impl.context) throw;
+      impl.useCpu();
+      work(impl.backend, nullptr);
+    }
+  });
 }
 
 Mesh Tessellator::tessellate(const std::vector<Patch>& patches, const RuleOptions& options) {

@@ -13,8 +13,7 @@
 #include "io/stats_report.h"
 #include "vk/context.h"
 #ifdef TESSERA_HAVE_CAD
-#include "cad/cad_file.h"
-#include "cad/to_trimmed.h"
+#include "cad/mesh_cad_file.h"
 #endif
 
 namespace tessera::cli {
@@ -32,44 +31,11 @@ bool isCadInput(const std::string& path) {
 #ifdef TESSERA_HAVE_CAD
 
 CadResult runCadJob(const CadJob& job, ChosenBackend& chosen) {
-  CadResult result;
-  Stopwatch clock;
-  const CadFile file = readCadFile(job.input);
-  result.readMs = clock.elapsedMs();
-  // defaultCadTolerance is 0.1% of the diagonal: the diagonal itself, for relative tolerances.
-  result.diagonal = defaultCadTolerance(file.shape) / 1e-3;
-  result.delta = job.tolerance.relative ? job.tolerance.value * result.diagonal
-                                        : job.tolerance.value;
-  clock.restart();
-  CadImport import = toTrimmedModel(file, result.delta);
-  result.importMs = clock.elapsedMs();
-  result.faces = size_t(import.faces.Extent());
-  result.edges = size_t(import.edges.Extent());
-  result.sharedPoints = import.model.sharedPoints.size();
-  result.maxChordDeviation = import.maxChordDeviation;
-  for (const CadFaceFailure& f : import.failures) result.failures.push_back(f.message);
-  for (const CadEdgeWarning& w : import.warnings) result.warnings.push_back(w.message);
-  if (!import.failures.empty() && !job.skipBadFaces) {
-    std::string reason = std::to_string(import.failures.size()) + " of " +
-                         std::to_string(result.faces) + " faces could not be converted (" +
-                         "--skip-bad-faces meshes the others):";
-    for (const CadFaceFailure& f : import.failures) reason += "\n  " + f.label + ": " + f.reason;
-    throw InputError(InputErrorKind::Syntax, job.input, 0, reason);
-  }
-  TrimmedMeshOptions options;
-  options.tolerance = result.delta;
-  clock.restart();
   // The quad-trees' trim pass on the same device as the trees (null: the CPU mirror).
   const std::unique_ptr<TrimClassifier> trim =
       chosen.context ? makeVulkanTrimClassifier(*chosen.context) : nullptr;
-  result.mesh = meshTrimmedModel(import.model, options, chosen.backend, trim.get());
-  result.meshMs = clock.elapsedMs();
-  // The faces' indices in the model (TrimmedFace::faceIndex), not their place in the list of
-  // faces that converted: what the glb's primitives and the stats name.
-  for (uint32_t& face : result.mesh.triangleFace) face = import.model.faces[face].faceIndex;
-  // A face the gap refinement left over δ is said, never passed off as within δ.
-  result.faceWarnings = unfinishedRefinementWarnings(result.mesh, result.delta);
-  return result;
+  return meshCadFile(job.input, job.tolerance, job.skipBadFaces, "--skip-bad-faces",
+                     chosen.backend, trim.get());
 }
 
 #else

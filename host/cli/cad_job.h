@@ -11,6 +11,7 @@
 #include "cli/cli_support.h"
 #include "quadtree/tolerance.h"
 #include "trim/mesher.h"
+#include "cad/mesh_cad_file.h"  // OCCT-free: the result type exists in every build
 
 namespace tessera::cli {
 
@@ -23,18 +24,8 @@ struct CadJob {
   bool skipBadFaces = false;  // write the faces that converted when some did not
 };
 
-struct CadResult {
-  TrimmedMesh mesh;
-  double delta = 0;          // δ in model units
-  double diagonal = 0;       // the model's bounding-box diagonal
-  size_t faces = 0;          // in the model
-  size_t edges = 0, sharedPoints = 0;
-  std::vector<std::string> failures;  // faces that did not convert, one message each
-  std::vector<std::string> warnings;  // edges off their faces' surfaces beyond tolerance
-  std::vector<std::string> faceWarnings;  // faces whose gap refinement ran out of rounds over δ
-  double maxChordDeviation = 0;       // measured over every edge's discretisation
-  double readMs = 0, importMs = 0, meshMs = 0;
-};
+// What a CAD run gives: the mesh, δ, counts, failures and warnings (cad/mesh_cad_file.h).
+using CadResult = CadMeshRun;
 
 // Reads and meshes the model on chosen's backend. A face that does not convert is an
 // InputError naming the file and every failed face, unless job.skipBadFaces (then the faces

@@ -189,6 +189,7 @@ class Tessellator {
                                   const View& view, const ToleranceOptions& options = {});
 
  private:
+  friend struct TessellatorAccess;  // the library's own entry points (tessera/cad.h)
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

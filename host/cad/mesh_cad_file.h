@@ -1,0 +1,38 @@
+// A CAD file meshed at one δ, as the CLI (`tessera tessellate model.step`) and the public API
+// (include/tessera/cad.h) both run it: read (cad_file.h), faces and edges converted
+// (to_trimmed.h), trimmed faces meshed watertight across faces (trim/mesher.h).
+// It declares no Open CASCADE type, so the CLI includes it in every build; tessera_cad defines
+// meshCadFile.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "quadtree/tolerance.h"
+#include "trim/mesher.h"
+
+namespace tessera {
+
+struct CadMeshRun {
+  TrimmedMesh mesh;  // triangleFace: TrimmedFace::faceIndex, the face's index in the model
+  // mesh.mesh.patchIds are positions in the list of faces that converted: their faceIndex.
+  std::vector<uint32_t> faceIndexOfPosition;
+  double delta = 0;          // δ in model units
+  double diagonal = 0;       // the model's bounding-box diagonal
+  size_t faces = 0;          // in the model
+  size_t edges = 0, sharedPoints = 0;
+  std::vector<std::string> failures;  // faces that did not convert, one message each
+  std::vector<std::string> warnings;  // edges off their faces' surfaces beyond tolerance
+  std::vector<std::string> faceWarnings;  // faces whose gap refinement ran out of rounds over δ
+  double maxChordDeviation = 0;       // measured over every edge's discretisation
+  double readMs = 0, importMs = 0, meshMs = 0;
+};
+
+// Reads and meshes `path` at `tolerance` (model units, or a share of the model's diagonal; not
+// pixels: std::invalid_argument) on `backend`, its trees' trim pass on `trim` (null: the CPU
+// mirror). A face that does not convert is an InputError naming the file and every failed
+// face, unless skipBadFaces (then they are listed in CadMeshRun::failures and the others
+// meshed); `skipHint` names how the caller asks for that ("--skip-bad-faces").
+CadMeshRun meshCadFile(const std::string& path, const ToleranceSpec& tolerance, bool skipBadFaces,
+                       const std::string& skipHint, Backend& backend, TrimClassifier* trim);
+
+}  // namespace tessera

@@ -1,0 +1,51 @@
+// CAD models (docs/cad.md): STEP (.step, .stp), IGES (.iges, .igs) and Open CASCADE's .brep,
+// read through Open CASCADE; every face (NURBS or analytic, trimmed by its loops) meshed at one
+// tolerance, watertight across the faces' shared edges. Link tessera::cad
+// (find_package(tessera COMPONENTS cad), or pkg-config tessera-cad): it brings Open CASCADE's
+// libraries; this header names none of its types.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "tessera/tessera.h"
+
+namespace tessera {
+
+struct CadOptions {
+  double tolerance = 0;              // δ in model units (> 0); 0: relativeTolerance below
+  double relativeTolerance = 0.001;  // δ as this share of the model's bounding-box diagonal
+                                     // when tolerance is 0 (0.1%, the CLI's default); (0, 1]
+  // Mesh the faces that convert when some do not (each named in CadMesh::skippedFaces); off,
+  // such a model is an InputError naming the file and every failed face.
+  bool skipBadFaces = false;
+};
+
+struct CadMesh {
+  // Per vertex: position, normal, uv (on the first face that uses it) and patchIds = that
+  // face's index; vertices on an edge shared by two faces are one vertex (watertight).
+  Mesh mesh;
+  std::vector<uint32_t> triangleFaces;  // per triangle: its face's index in the model (faces
+                                        // in Open CASCADE's TopExp order, from 0)
+  size_t faces = 0;                     // faces in the model
+  size_t facesMeshed = 0;               // those that converted and were meshed
+  double tolerance = 0;                 // δ used, model units
+  // Measured over every triangle: the largest distance to its face's surface and the largest
+  // parametric deviation (against the surface at the same mix of uv). Within δ plus the
+  // file's own edge gaps (warnings), docs/trimmed_faces.md.
+  double maxDeviation = 0, maxParametricDeviation = 0;
+  std::vector<std::string> skippedFaces;  // with skipBadFaces: "<file>: face 3 (#345 ...): why"
+  std::vector<std::string> warnings;      // edges off their faces beyond the file's tolerance,
+                                          // faces whose refinement ended over δ
+};
+
+// Reads and meshes `path` on the tessellator's device (the trees and their trim pass; the
+// cuts along the trim curves run on the CPU's cores). Throws InputError naming the file (and
+// the faces) for an unreadable file, an unknown extension or faces that fail to convert
+// (unless skipBadFaces), ArgumentError for a bad tolerance, DeviceError as
+// Tessellator::tessellate.
+CadMesh tessellateCadFile(Tessellator& tessellator, const std::string& path,
+                          const CadOptions& options = {});
+
+}  // namespace tessera
