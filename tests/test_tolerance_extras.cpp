@@ -11,6 +11,9 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
 
 #include "io/bpt_reader.h"
 #include "mesh/shared_edges.h"
@@ -42,8 +45,9 @@ bool hasFoldedSide(const BezierPatch& patch, const PatchTopology& topology, uint
   return false;
 }
 
-// The extra ring vertices of every leaf, found from the leaves' rectangles (as the
-// triangulator's line indices do, without its near-point merges: none on the tea set).
+// The extra ring vertices of every leaf, found from the leaves' rectangles as the
+// triangulator's line indices find them; of its near-point merges (near_points.h) only those
+// of a shared side's two parametrisations, the only ones on the tea set.
 ExtraVertices extraVertices(const std::vector<QuadLeaf>& leaves, const PatchTopology& topology,
                             size_t patchCount) {
   // (patch, line) → sorted corners on it; a line v = c keyed with u = 0, a line u = c with 1.
