@@ -4,6 +4,9 @@
 #include <pybind11/stl.h>
 
 #include <tessera/tessera.h>
+#ifdef TESSERA_HAVE_CAD
+#include <tessera/cad.h>
+#endif
 
 #include <cstring>
 
@@ -112,6 +115,65 @@ tessera::RuleOptions ruleOptions(const std::string& rule, float linearity, float
 
 }  // namespace
 
+#ifdef TESSERA_HAVE_CAD
+// tessera/cad.h: Tessellator.tessellate_cad and its result, tessera.CadMesh.
+struct PyCadMesh {
+  PyMesh mesh;
+  py::array_t<uint32_t> triangle_faces;
+  size_t faces = 0, faces_meshed = 0;
+  double tolerance = 0, max_deviation = 0, max_parametric_deviation = 0;
+  std::vector<std::string> skipped_faces, warnings;
+};
+
+void defineCad(py::module_& m, py::class_<tessera::Tessellator>& tessellator) {
+  py::class_<PyCadMesh>(m, "CadMesh", "A CAD model's mesh and what was measured (docs/api.md)")
+      .def_readonly("mesh", &PyCadMesh::mesh, "the Mesh; patch_ids: a face each vertex is on")
+      .def_readonly("triangle_faces", &PyCadMesh::triangle_faces, "uint32 (M,): each triangle's face")
+      .def_readonly("faces", &PyCadMesh::faces)
+      .def_readonly("faces_meshed", &PyCadMesh::faces_meshed)
+      .def_readonly("tolerance", &PyCadMesh::tolerance, "δ used, model units")
+      .def_readonly("max_deviation", &PyCadMesh::max_deviation, "measured distance to the faces")
+      .def_readonly("max_parametric_deviation", &PyCadMesh::max_parametric_deviation)
+      .def_readonly("skipped_faces", &PyCadMesh::skipped_faces)
+      .def_readonly("warnings", &PyCadMesh::warnings)
+      .def("__repr__", [](const PyCadMesh& c) {
+        return "<tessera.CadMesh " + std::to_string(c.mesh.indices.shape(0)) + " triangles, " +
+               std::to_string(c.faces_meshed) + " of " + std::to_string(c.faces) + " faces>";
+      });
+  tessellator.def(
+      "tessellate_cad",
+      [](tessera::Tessellator& self, const py::object& path, double tolerance,
+         double relativeTolerance, bool skipBadFaces) {
+        const std::string file = py::str(py::module_::import("os").attr("fspath")(path));
+        tessera::CadOptions options;
+        options.tolerance = tolerance;
+        options.relativeTolerance = relativeTolerance;
+        options.skipBadFaces = skipBadFaces;
+        tessera::CadMesh cad;
+        {
+          py::gil_scoped_release unlocked;
+          cad = tessera::tessellateCadFile(self, file, options);
+        }
+        PyCadMesh out;
+        out.mesh = toPython(cad.mesh);
+        out.triangle_faces =
+            toArray(cad.triangleFaces, {static_cast<py::ssize_t>(cad.triangleFaces.size())});
+        out.faces = cad.faces;
+        out.faces_meshed = cad.facesMeshed;
+        out.tolerance = cad.tolerance;
+        out.max_deviation = cad.maxDeviation;
+        out.max_parametric_deviation = cad.maxParametricDeviation;
+        out.skipped_faces = cad.skippedFaces;
+        out.warnings = cad.warnings;
+        return out;
+      },
+      py::arg("path"), py::arg("tolerance") = 0.0, py::arg("relative_tolerance") = 0.001,
+      py::arg("skip_bad_faces") = false,
+      "A STEP, IGES or .brep model meshed watertight at `tolerance` (model units), or when 0 at "
+      "`relative_tolerance` of its diagonal");
+}
+#endif
+
 PYBIND11_MODULE(tessera, m) {
   m.doc() = "Tessera: free-form surfaces to triangle meshes on Vulkan or the CPU (docs/python.md)";
   m.attr("__version__") = tessera::version();
@@ -138,8 +200,9 @@ PYBIND11_MODULE(tessera, m) {
                std::to_string(mesh.positions.shape(0)) + " vertices>";
       });
 
-  py::class_<tessera::Tessellator>(m, "Tessellator",
-                                   "Keeps the device open: make one, tessellate many times")
+  py::class_<tessera::Tessellator> tessellator(
+      m, "Tessellator", "Keeps the device open: make one, tessellate many times");
+  tessellator
       .def(py::init([](const std::string& device, const std::string& deviceName) {
              return tessera::Tessellator({parseDevice(device), deviceName});
            }),
@@ -189,6 +252,9 @@ PYBIND11_MODULE(tessera, m) {
           py::arg("max_depth") = 30u,
           "Every triangle within `tolerance` (model units) of the surface: method 'adaptive' "
           "(rule T's quad-tree) or 'uniform' (a grid per patch from Filip's bound)");
+#ifdef TESSERA_HAVE_CAD
+  defineCad(m, tessellator);
+#endif
 
   m.def(
       "relative_tolerance",

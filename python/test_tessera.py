@@ -1,4 +1,5 @@
-"""The Python module against the C++ path: python3 test_tessera.py <teapot.bpt> <tessera CLI>.
+"""The Python module against the C++ path:
+  python3 test_tessera.py <teapot.bpt> <tessera CLI> cad|no-cad
 
 Run by CTest with PYTHONPATH=<build>/python. Exits non-zero on the first failed check."""
 import re
@@ -10,7 +11,7 @@ import numpy as np
 
 import tessera
 
-teapot, cli = sys.argv[1], sys.argv[2]
+teapot, cli, cad = sys.argv[1], sys.argv[2], sys.argv[3]
 
 # The file path on the CPU: the triangle and vertex counts the CLI reports for the same work.
 t = tessera.Tessellator(device="cpu")
@@ -58,6 +59,27 @@ uniform = t.tessellate_to_tolerance(points, 0.05, weights=weights, method="unifo
 assert 0 < coarse.indices.shape[0] < uniform.indices.shape[0]
 diagonal = float(np.linalg.norm(points.reshape(-1, 3).max(0) - points.reshape(-1, 3).min(0)))
 assert abs(tessera.relative_tolerance(points, 0.001) - 0.001 * diagonal) <= 1e-12 * diagonal
+
+# A CAD model where Tessera has its CAD input (tessera/cad.h): the CLI's triangle count.
+assert hasattr(t, "tessellate_cad") == (cad == "cad")
+if cad == "cad":
+    model = "/usr/share/freecad/Mod/Idf/Idflibs/SOT23.stp"
+    part = t.tessellate_cad(model)
+    assert part.faces == part.faces_meshed > 0 and not part.skipped_faces
+    assert part.triangle_faces.shape == (part.mesh.indices.shape[0],)
+    assert part.triangle_faces.dtype == np.uint32 and part.triangle_faces.max() < part.faces
+    assert 0 < part.max_deviation <= part.tolerance
+    cli_out = subprocess.run([cli, "tessellate", model, "--backend", "cpu"], check=True, capture_output=True,
+                             text=True).stdout
+    assert re.search(r"triangles %d," % part.mesh.indices.shape[0], cli_out), cli_out
+    finer = t.tessellate_cad(model, tolerance=part.tolerance / 4)
+    assert finer.tolerance == part.tolerance / 4
+    assert finer.mesh.indices.shape[0] > part.mesh.indices.shape[0]
+    try:
+        t.tessellate_cad("no_such_model.step")
+        raise AssertionError("a missing CAD file was read")
+    except tessera.InputError:
+        pass
 
 # Typed errors.
 for call, error in [
