@@ -368,7 +368,7 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
       TrimmedMeshTimings fastestTimings;
       const bench::Timing time = bench::timeRepeated(bench::kMinRuns, [&] {
         const Stopwatch clock;
-        import = toTrimmedModel(file, options.tolerance);
+        import = toTrimmedModel(file, options.tolerance, options.threads);
         const double convertMs = clock.elapsedMs();
         mesh = meshTrimmedModel(import.model, options, *backends[b].backend, backends[b].trim);
         if (clock.elapsedMs() < fastest)

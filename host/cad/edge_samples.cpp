@@ -14,6 +14,7 @@ namespace {
 
 constexpr int kChecksPerSegment = 15;
 constexpr int kMaxDepth = 24;
+constexpr uint32_t kUnsharedSample = UINT32_MAX;  // an interior id until shareInteriorSamples
 
 glm::dvec3 toGlm(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 
@@ -60,7 +61,7 @@ uint32_t vertexId(const TopoDS_Vertex& v, const TopTools_IndexedMapOfShape& vert
 }  // namespace
 
 EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta,
-                           const TopTools_IndexedMapOfShape& vertices, SharedPoints& points) {
+                           const TopTools_IndexedMapOfShape& vertices) {
   const TopoDS_Edge edge = TopoDS::Edge(shape.Oriented(TopAbs_FORWARD));
   EdgeSamples samples;
   double first, last;
@@ -68,6 +69,7 @@ EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta,
   TopoDS_Vertex v0, v1;
   TopExp::Vertices(edge, v0, v1);  // FORWARD: v0 at `first`, v1 at `last`
   const uint32_t id0 = vertexId(v0, vertices), id1 = vertexId(v1, vertices);
+  samples.tolerance = BRep_Tool::Tolerance(edge);
 
   if (BRep_Tool::Degenerated(edge)) {
     samples.degenerated = true;
@@ -95,18 +97,25 @@ EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta,
       refine(curve, first + (last - first) * k / 4.0, first + (last - first) * (k + 1) / 4.0,
              delta, 0, samples.params, samples.maxChordDeviation);
   }
-  const double tolerance = BRep_Tool::Tolerance(edge);
-  samples.pointIds.push_back(id0);
+  // The ends at the range's own ends (the last parameter can be an ulp from `last`).
   samples.curvePoints.push_back(toGlm(curve.Value(first)));
-  for (size_t k = 1; k + 1 < samples.params.size(); ++k) {
-    samples.pointIds.push_back(static_cast<uint32_t>(points.positions.size()));
+  for (size_t k = 1; k + 1 < samples.params.size(); ++k)
     samples.curvePoints.push_back(toGlm(curve.Value(samples.params[k])));
-    points.positions.push_back(samples.curvePoints.back());
-    points.tolerances.push_back(tolerance);
-  }
-  samples.pointIds.push_back(id1);
   samples.curvePoints.push_back(toGlm(curve.Value(last)));
+  // The interior ids come with shareInteriorSamples.
+  samples.pointIds.assign(samples.params.size(), kUnsharedSample);
+  samples.pointIds.front() = id0;
+  samples.pointIds.back() = id1;
   return samples;
+}
+
+void shareInteriorSamples(EdgeSamples& samples, SharedPoints& points) {
+  if (samples.degenerated) return;
+  for (size_t k = 1; k + 1 < samples.params.size(); ++k) {
+    samples.pointIds[k] = static_cast<uint32_t>(points.positions.size());
+    points.positions.push_back(samples.curvePoints[k]);
+    points.tolerances.push_back(samples.tolerance);
+  }
 }
 
 }  // namespace tessera

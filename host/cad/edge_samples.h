@@ -18,6 +18,7 @@ struct EdgeSamples {
   std::vector<glm::dvec3> curvePoints;
   bool degenerated = false;        // a pole: every id is the vertex's
   double maxChordDeviation = 0.0;  // exact for circles, measured otherwise (discretiseEdge)
+  double tolerance = 0.0;          // the edge's OCCT tolerance, its interior points' tolerance
 };
 
 struct SharedPoints {
@@ -32,8 +33,13 @@ struct SharedPoints {
 // wiggle between samples of a segment can escape it (docs/cad.md). A degenerated edge (a
 // point in 3D, a segment in uv) gets 8 segments, all at its vertex's point.
 // The edge is taken FORWARD. The vertex with index k in `vertices` is shared point k − 1 (the
-// vertices come first in SharedPoints); the edge's interior samples are appended to `points`.
+// vertices come first in SharedPoints). The interior samples' ids are left to
+// shareInteriorSamples: reading the shape only, discretiseEdge may run for several edges at once.
 EdgeSamples discretiseEdge(const TopoDS_Shape& edge, double delta,
-                           const TopTools_IndexedMapOfShape& vertices, SharedPoints& points);
+                           const TopTools_IndexedMapOfShape& vertices);
+
+// Appends the edge's interior samples to `points` and gives them their ids: called edge by edge
+// in the edges' order, so the numbering is the same whatever the threads that discretised them.
+void shareInteriorSamples(EdgeSamples& samples, SharedPoints& points);
 
 }  // namespace tessera

@@ -21,8 +21,11 @@ CadMeshRun meshCadFile(const std::string& path, const ToleranceSpec& tolerance, 
   // defaultCadTolerance is 0.1% of the diagonal: the diagonal itself, for relative tolerances.
   result.diagonal = defaultCadTolerance(file.shape) / 1e-3;
   result.delta = tolerance.relative ? tolerance.value * result.diagonal : tolerance.value;
+  TrimmedMeshOptions options;
+  options.tolerance = result.delta;
   clock.restart();
-  CadImport import = toTrimmedModel(file, result.delta);
+  // The import takes the mesher's thread count (0: all cores).
+  CadImport import = toTrimmedModel(file, result.delta, options.threads);
   result.importMs = clock.elapsedMs();
   result.faces = size_t(import.faces.Extent());
   result.edges = size_t(import.edges.Extent());
@@ -37,8 +40,6 @@ CadMeshRun meshCadFile(const std::string& path, const ToleranceSpec& tolerance, 
     for (const CadFaceFailure& f : import.failures) reason += "\n  " + f.label + ": " + f.reason;
     throw InputError(InputErrorKind::Syntax, path, 0, reason);
   }
-  TrimmedMeshOptions options;
-  options.tolerance = result.delta;
   clock.restart();
   result.mesh = meshTrimmedModel(import.model, options, backend, trim);
   result.meshMs = clock.elapsedMs();

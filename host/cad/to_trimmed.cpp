@@ -17,11 +17,14 @@
 #include <TopoDS_Iterator.hxx>
 #include <TopoDS_Wire.hxx>
 #include <algorithm>
-#include <set>
 #include <cmath>
+#include <exception>
+#include <mutex>
+#include <set>
 
 #include "cad/face_surface.h"
 #include "cad/detail/number_text.h"
+#include "common/parallel_for.h"
 #include "tessera/errors.h"
 
 namespace tessera {
@@ -40,6 +43,17 @@ double signedArea(const std::vector<glm::dvec2>& uv) {
 struct RawLoop {
   std::vector<gp_Pnt2d> uv;
   std::vector<uint32_t> pointIds;
+};
+
+// What one face's conversion gives, kept apart per face so faces convert on several threads
+// and are then added to the CadImport in face order: the same import whatever the threads.
+struct FaceOutcome {
+  bool converted = false;
+  TrimmedFace face;
+  std::array<double, 4> bounds{};
+  std::vector<CadEdgeWarning> warnings;
+  size_t loopsReversed = 0;
+  CadFaceFailure failure;  // when not converted
 };
 
 // The first and last shared point of `edge` in the direction the wire uses it.
@@ -81,7 +95,13 @@ std::vector<TopoDS_Edge> orderedEdges(const TopoDS_Wire& wire, const TopoDS_Face
   std::reverse(edges.begin(), edges.end());
   if (vertexOrderHolds && chained()) return edges;
   edges.clear();
-  for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next()) edges.push_back(it.Current());
+  {
+    // OCCT 7.6.3's explorer only reads the shape (its Init no longer calls BRepTools::Update,
+    // which writes the edges' uv points), but older and other versions write: one at a time.
+    static std::mutex explorerMutex;
+    const std::lock_guard<std::mutex> lock(explorerMutex);
+    for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next()) edges.push_back(it.Current());
+  }
   int edgeCount = 0;
   for (TopExp_Explorer e(wire, TopAbs_EDGE); e.More(); e.Next()) ++edgeCount;
   if (int(edges.size()) != edgeCount)
@@ -109,7 +129,7 @@ bool storesPcurve(const TopoDS_Edge& edge, const TopoDS_Face& face) {
 // share their vertex point once. `basis` is the face's surface (faceBasisSurface).
 RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
                  const Handle(Geom_Surface)& basis, uint32_t faceIndex, const std::string& label,
-                 const std::string& path, CadImport& in) {
+                 const std::string& path, const CadImport& in, FaceOutcome& outcome) {
   RawLoop loop;
   const Handle(Geom_Plane) plane = Handle(Geom_Plane)::DownCast(basis);
   uint32_t firstId = 0, lastId = 0;
@@ -155,7 +175,7 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
     }
     const double tolerance = BRep_Tool::Tolerance(edge);
     if (!samples.degenerated && gap > tolerance + 1e-3 * in.delta)
-      in.warnings.push_back({faceIndex, static_cast<uint32_t>(index - 1), gap, tolerance,
+      outcome.warnings.push_back({faceIndex, static_cast<uint32_t>(index - 1), gap, tolerance,
                              path + ": " + label + ": edge " + std::to_string(index - 1) +
                                  ": its 3D curve and pcurve are " + cad_detail::numberText(gap) +
                                  " apart, beyond its tolerance " + cad_detail::numberText(tolerance)});
@@ -166,8 +186,10 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
   return loop;
 }
 
+// Reads the shape and `in` (its maps, edge samples and shared points) only: faces convert on
+// several threads at once.
 TrimmedFace convertFace(const TopoDS_Face& sourceFace, uint32_t faceIndex, const std::string& label,
-                        const std::string& path, CadImport& in, std::array<double, 4>& bounds) {
+                        const std::string& path, const CadImport& in, FaceOutcome& outcome) {
   // Loops in the surface's own orientation: outer counter-clockwise, holes clockwise; the
   // face's orientation goes to `reversed` (trimmed_face.h).
   const TopoDS_Face face = TopoDS::Face(sourceFace.Oriented(TopAbs_FORWARD));
@@ -178,14 +200,15 @@ TrimmedFace convertFace(const TopoDS_Face& sourceFace, uint32_t faceIndex, const
   const Handle(Geom_Surface) basis = faceBasisSurface(face);
   std::vector<RawLoop> raw;
   for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next())
-    raw.push_back(wireLoop(TopoDS::Wire(w.Current()), face, basis, faceIndex, label, path, in));
+    raw.push_back(wireLoop(TopoDS::Wire(w.Current()), face, basis, faceIndex, label, path, in,
+                           outcome));
   if (raw.empty()) throw CadFaceError("the face has no wire");
   double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300;
   for (const RawLoop& loop : raw)
     for (const gp_Pnt2d& uv : loop.uv)
       u0 = std::min(u0, uv.X()), u1 = std::max(u1, uv.X()), v0 = std::min(v0, uv.Y()), v1 = std::max(v1, uv.Y());
   CadSurface surface = convertFaceSurface(basis, u0, u1, v0, v1);
-  bounds = {u0, u1, v0, v1};
+  outcome.bounds = {u0, u1, v0, v1};
   for (const RawLoop& loop : raw) {
     TrimLoop mapped;
     mapped.pointIds = loop.pointIds;
@@ -204,10 +227,54 @@ TrimmedFace convertFace(const TopoDS_Face& sourceFace, uint32_t faceIndex, const
     if ((areas[k] > 0.0) != wantPositive) {
       std::reverse(out.loops[k].uv.begin(), out.loops[k].uv.end());
       std::reverse(out.loops[k].pointIds.begin(), out.loops[k].pointIds.end());
-      ++in.loopsReversed;
+      ++outcome.loopsReversed;
     }
   }
   return out;
+}
+
+// One face, its failure caught: the message names the file, the face and its entity.
+FaceOutcome faceOutcome(const CadFile& file, const CadImport& in, int k) {
+  const TopoDS_Face& face = TopoDS::Face(in.faces(k));
+  const uint32_t index = static_cast<uint32_t>(k - 1);
+  std::string label = "face " + std::to_string(index);
+  const std::string entity = faceEntityLabel(file, face);
+  if (!entity.empty()) label += " (" + entity + ")";
+  FaceOutcome outcome;
+  std::string reason;
+  try {
+    outcome.face = convertFace(face, index, label, file.path, in, outcome);
+    outcome.face.faceIndex = index;
+    outcome.face.label = label;
+    outcome.converted = true;
+    return outcome;
+  } catch (const CadFaceError& e) {
+    reason = e.what();
+  } catch (const Standard_Failure& e) {
+    reason = std::string("Open CASCADE: ") + e.DynamicType()->Name() + ": " + e.GetMessageString();
+  } catch (const std::exception& e) {
+    reason = e.what();
+  }
+  outcome = FaceOutcome();  // a failed face's warnings go with its failure
+  outcome.failure = {index, label, reason, file.path + ": " + label + ": " + reason};
+  return outcome;
+}
+
+// Runs item(i) for i in [0, count) on `threads` threads, a few items per turn (their costs
+// differ). Throws what the lowest item that threw threw, as a loop in order would have.
+void forEachItem(size_t count, unsigned threads, const std::function<void(size_t)>& item) {
+  std::vector<std::exception_ptr> errors(count);
+  parallelForChunks(count, 4, threads, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
+      try {
+        item(i);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    }
+  });
+  for (const std::exception_ptr& error : errors)
+    if (error) std::rethrow_exception(error);
 }
 
 }  // namespace
@@ -219,7 +286,7 @@ double defaultCadTolerance(const TopoDS_Shape& shape) {
   return 1e-3 * std::sqrt(box.SquareExtent());
 }
 
-CadImport toTrimmedModel(const CadFile& file, double delta) {
+CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads) {
   if (!(delta > 0.0) || !std::isfinite(delta))
     throw ArgumentError("the CAD edge tolerance must be a positive distance, not " +
                         std::to_string(delta));
@@ -236,43 +303,32 @@ CadImport toTrimmedModel(const CadFile& file, double delta) {
     points.positions.push_back({p.X(), p.Y(), p.Z()});
     points.tolerances.push_back(BRep_Tool::Tolerance(v));
   }
-  for (int k = 1; k <= in.edges.Extent(); ++k) {
-    in.edgeSamples.push_back(discretiseEdge(in.edges(k), delta, in.vertices, points));
-    in.maxChordDeviation = std::max(in.maxChordDeviation, in.edgeSamples.back().maxChordDeviation);
+  // Edges on all threads (each reads its own edge), their interior points numbered in edge order.
+  in.edgeSamples.resize(size_t(in.edges.Extent()));
+  forEachItem(in.edgeSamples.size(), threads, [&](size_t e) {
+    in.edgeSamples[e] = discretiseEdge(in.edges(int(e) + 1), delta, in.vertices);
+  });
+  for (EdgeSamples& samples : in.edgeSamples) {
+    shareInteriorSamples(samples, points);
+    in.maxChordDeviation = std::max(in.maxChordDeviation, samples.maxChordDeviation);
   }
   in.model.sharedPoints = std::move(points.positions);
   in.pointTolerances = std::move(points.tolerances);
 
-  for (int k = 1; k <= in.faces.Extent(); ++k) {
-    const TopoDS_Face& face = TopoDS::Face(in.faces(k));
-    const uint32_t index = static_cast<uint32_t>(k - 1);
-    std::string label = "face " + std::to_string(index);
-    const std::string entity = faceEntityLabel(file, face);
-    if (!entity.empty()) label += " (" + entity + ")";
-    std::string reason;
-    try {
-      const size_t warningsBefore = in.warnings.size();
-      TrimmedFace converted;
-      std::array<double, 4> bounds{};
-      try {
-        converted = convertFace(face, index, label, file.path, in, bounds);
-      } catch (...) {
-        in.warnings.resize(warningsBefore);  // a failed face's warnings go with its failure
-        throw;
-      }
-      converted.faceIndex = index;
-      converted.label = label;
-      in.model.faces.push_back(std::move(converted));
-      in.uvBounds.push_back(bounds);
+  // Faces on all threads: each reads the shape and the edges' samples, writes its own outcome
+  // (OCCT's calls here only read: docs/cad.md, "Threads"); then added in face order.
+  std::vector<FaceOutcome> outcomes(size_t(in.faces.Extent()));
+  forEachItem(outcomes.size(), threads,
+              [&](size_t f) { outcomes[f] = faceOutcome(file, in, int(f) + 1); });
+  for (FaceOutcome& outcome : outcomes) {
+    if (!outcome.converted) {
+      in.failures.push_back(std::move(outcome.failure));
       continue;
-    } catch (const CadFaceError& e) {
-      reason = e.what();
-    } catch (const Standard_Failure& e) {
-      reason = std::string("Open CASCADE: ") + e.DynamicType()->Name() + ": " + e.GetMessageString();
-    } catch (const std::exception& e) {
-      reason = e.what();
     }
-    in.failures.push_back({index, label, reason, file.path + ": " + label + ": " + reason});
+    in.model.faces.push_back(std::move(outcome.face));
+    in.uvBounds.push_back(outcome.bounds);
+    in.warnings.insert(in.warnings.end(), outcome.warnings.begin(), outcome.warnings.end());
+    in.loopsReversed += outcome.loopsReversed;
   }
   return in;
 }

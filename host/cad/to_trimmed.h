@@ -54,6 +54,8 @@ double defaultCadTolerance(const TopoDS_Shape& shape);
 
 // Converts every face; a face that fails is listed in failures (with the file's path and the
 // face's index and entity) and the rest go on. Throws ArgumentError unless delta > 0.
-CadImport toTrimmedModel(const CadFile& file, double delta);
+// Edges, then faces, are converted on `threads` threads (0: all cores, as
+// TrimmedMeshOptions::threads); the import is the same, bit for bit, whatever the count.
+CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads = 0);
 
 }  // namespace tessera
