@@ -15,12 +15,14 @@
 // box grown by 1%), the largest over the corpus, as a
 // multiple of δ. A point the projection cannot place is counted, not guessed.
 // Usage: bench_cad [relative tolerances = 0.001,0.0001] [--dir folder] [--json file] [--cpu]
-//        [--model name-part] [--detail] [--tessera-only] [--tessera-scale s]
+//        [--model name-part] [--detail] [--tessera-only] [--tessera-scale s] [--threads n]
 // --cpu leaves Vulkan out; --model keeps the models whose file name contains the text;
 // --detail prints each model's worst faces (distance, unprojected samples) for both meshers;
 // --tessera-only runs Tessera alone, unmeasured (for profiling its stages).
 // --tessera-scale s meshes Tessera at s·δ while OCCT keeps δ, distances still over δ: set s to
 // OCCT's measured distance / Tessera's to compare triangles at equal measured deviation.
+// --threads n gives Tessera's import and per-face stages n threads (TrimmedMeshOptions::threads,
+// default 0: all cores; 1: serial); the CPU backend's tree keeps all cores.
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
@@ -40,6 +42,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -287,13 +290,23 @@ Models readCorpus(const std::string& folder, const std::string& filter) {
   return m;
 }
 
+// The CPU time of every thread of the process so far: a stage's thread time, which a loaded
+// machine moves much less than its wall time.
+double processCpuMs() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
+}
+
 // Tessera's time split by stage, summed over the corpus (each model's fastest run).
 struct Stages {
-  double convertMs = 0;  // toTrimmedModel: faces to Bézier pieces, edges discretised
+  double convertMs = 0;     // toTrimmedModel: faces to Bézier pieces, edges discretised
+  double convertCpuMs = 0;  // the same, the process's CPU time (all its threads)
   TrimmedMeshTimings mesh;
 
-  void add(double convert, const TrimmedMeshTimings& t) {
+  void add(double convert, double convertCpu, const TrimmedMeshTimings& t) {
     convertMs += convert;
+    convertCpuMs += convertCpu;
     mesh.treeMs += t.treeMs, mesh.trimMs += t.trimMs, mesh.triangulateMs += t.triangulateMs;
     mesh.evaluateMs += t.evaluateMs, mesh.assembleMs += t.assembleMs, mesh.cutMs += t.cutMs;
     mesh.emitMs += t.emitMs, mesh.totalMs += t.totalMs;
@@ -302,7 +315,8 @@ struct Stages {
     mesh.trees += t.trees, mesh.leaves += t.leaves, mesh.trimmedAwayLeaves += t.trimmedAwayLeaves;
   }
   nlohmann::json json() const {
-    return {{"convertMs", convertMs},         {"treeMs", mesh.treeMs},
+    return {{"convertMs", convertMs},         {"convertCpuMs", convertCpuMs},
+            {"treeMs", mesh.treeMs},
             {"trimMs", mesh.trimMs},          {"triangulateMs", mesh.triangulateMs},
             {"evaluateMs", mesh.evaluateMs},  {"assembleMs", mesh.assembleMs},
             {"cutMs", mesh.cutMs},            {"emitMs", mesh.emitMs},
@@ -321,6 +335,7 @@ struct TesseraBackend {
 
 bool tesseraOnly = false;
 double tesseraScale = 1.0;
+unsigned tesseraThreads = 0;
 
 void runTolerance(bench::Report& report, const Models& models, double relative,
                   std::vector<TesseraBackend>& backends) {
@@ -359,22 +374,25 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
     for (size_t b = 0; b < backends.size(); ++b) {
       TrimmedMeshOptions options;
       options.tolerance = tesseraScale * delta;
+      options.threads = tesseraThreads;
       options.measureGeometric = false;  // measured below by the bench's own code
       // Rule T proves the kept quad-tree triangles; the gap ones are measured (refinement).
       options.measureKeptTriangles = false;
       CadImport import;
       TrimmedMesh mesh;
-      double fastest = 1e300, fastestConvertMs = 0;
+      double fastest = 1e300, fastestConvertMs = 0, fastestConvertCpuMs = 0;
       TrimmedMeshTimings fastestTimings;
       const bench::Timing time = bench::timeRepeated(bench::kMinRuns, [&] {
         const Stopwatch clock;
+        const double cpuBefore = processCpuMs();
         import = toTrimmedModel(file, options.tolerance, options.threads);
-        const double convertMs = clock.elapsedMs();
+        const double convertMs = clock.elapsedMs(), convertCpuMs = processCpuMs() - cpuBefore;
         mesh = meshTrimmedModel(import.model, options, *backends[b].backend, backends[b].trim);
         if (clock.elapsedMs() < fastest)
-          fastest = clock.elapsedMs(), fastestConvertMs = convertMs, fastestTimings = mesh.timings;
+          fastest = clock.elapsedMs(), fastestConvertMs = convertMs,
+          fastestConvertCpuMs = convertCpuMs, fastestTimings = mesh.timings;
       });
-      stages[b].add(fastestConvertMs, fastestTimings);
+      stages[b].add(fastestConvertMs, fastestConvertCpuMs, fastestTimings);
       if (b == 0) {
         faces += import.model.faces.size() + import.failures.size();
         failedFaces += import.failures.size();
@@ -441,11 +459,13 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
     table.cases.back().extra["stages"] = stages[b].json();
     const TrimmedMeshTimings& t = stages[b].mesh;
     std::fprintf(stderr,
-                 "  %s stages (ms, fastest run of each model, summed): convert %.1f, tree %.1f "
+                 "  %s stages (ms, fastest run of each model, summed): convert %.1f (thread time "
+                 "%.1f), tree %.1f "
                  "(trim %.1f), triangulate %.1f, evaluate %.1f, assemble %.1f, cut %.1f (thread "
                  "time: classify %.1f, gap %.1f, refine %.1f, measure %.1f), emit %.1f, mesh "
                  "total %.1f; %zu trees, %zu leaves, %zu trimmed away\n",
-                 backends[b].name.c_str(), stages[b].convertMs, t.treeMs, t.trimMs,
+                 backends[b].name.c_str(), stages[b].convertMs, stages[b].convertCpuMs, t.treeMs,
+                 t.trimMs,
                  t.triangulateMs, t.evaluateMs, t.assembleMs, t.cutMs, t.classifyCpuMs,
                  t.gapCpuMs, t.refineCpuMs, t.measureCpuMs, t.emitMs, t.totalMs,
                  t.trees, t.leaves, t.trimmedAwayLeaves);
@@ -484,6 +504,8 @@ int main(int argc, char** argv) {
       tesseraOnly = true;
     else if (arg == "--tessera-scale" && i + 1 < argc)
       tesseraScale = std::stod(argv[++i]);
+    else if (arg == "--threads" && i + 1 < argc)
+      tesseraThreads = unsigned(std::stoul(argv[++i]));
     else
       relatives = parseList(arg);
   }
@@ -497,6 +519,7 @@ int main(int argc, char** argv) {
   report.note("models", models.paths.size());
   report.note("occtVersion", OCC_VERSION_COMPLETE);
   report.note("tesseraScale", tesseraScale);
+  report.note("tesseraThreads", tesseraThreads);
 
   Backend cpu = makeMirrorBackend();
   const std::unique_ptr<TrimClassifier> cpuTrim = makeMirrorTrimClassifier();
