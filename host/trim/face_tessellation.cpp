@@ -92,8 +92,9 @@ void tessellateGroup(const TrimmedModel& model, const FaceGroup& group, const Mo
   out.treeMs += step.elapsedMs();
 
   step.restart();
+  // Faces of very different sizes: taken a face at a time from a shared counter.
   std::vector<ParamMesh> params(faceCount);
-  parallelFor(faceCount, threads, [&](size_t begin, size_t end) {
+  parallelForChunks(faceCount, 1, threads, [&](size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k)
       if (!faceTrees[k].leaves.empty())
         params[k] = triangulateLeaves(faceTrees[k].leaves, group.facePatches[k]);
@@ -115,7 +116,7 @@ void tessellateGroup(const TrimmedModel& model, const FaceGroup& group, const Mo
   out.evaluateMs += step.elapsedMs();
 
   step.restart();
-  parallelFor(faceCount, threads, [&](size_t begin, size_t end) {
+  parallelForChunks(faceCount, 1, threads, [&](size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k) {
       const std::vector<gpu::EvalSample> faceSamples(samples.begin() + long(firstQuery[k]),
                                                      samples.begin() + long(firstQuery[k + 1]));

@@ -286,10 +286,12 @@ TrimmedMesh meshTrimmedModel(const TrimmedModel& model, const TrimmedMeshOptions
   timings.leaves = tessellations.leaves;
   timings.trimmedAwayLeaves = tessellations.trimmedAwayLeaves;
 
-  // Steps 2–4 and the stats, faces in parallel (each face's work is its own).
+  // Steps 2–4 and the stats, faces in parallel (each face's work is its own), a face at a time
+  // from a shared counter: one face can cost as much as a hundred others (a B-spline face's
+  // refinement), and even shares left a thread idle behind the one that drew it.
   Stopwatch step;
   std::vector<FaceMesh> faces(model.faces.size());
-  parallelFor(model.faces.size(), options.threads, [&](size_t begin, size_t end) {
+  parallelForChunks(model.faces.size(), 1, options.threads, [&](size_t begin, size_t end) {
     for (size_t f = begin; f < end; ++f) {
       faces[f] = meshFace(model, f, tessellations.faces[f], options);
       tessellations.faces[f] = Tessellation();  // its memory back early
