@@ -66,6 +66,14 @@ TEST_CASE("public CAD API: a STEP model is the CLI's mesh, faces named, closed",
   REQUIRE(finer.tolerance == fine.tolerance);
   REQUIRE(finer.mesh.triangleCount() > cad.mesh.triangleCount());
   REQUIRE(finer.maxDeviation <= fine.tolerance);
+
+  // One thread: the same mesh (the import and the cuts join their faces in order).
+  tessera::CadOptions serial;
+  serial.threads = 1;
+  const tessera::CadMesh one = tessera::tessellateCadFile(tessellator, kSot23, serial);
+  REQUIRE(one.mesh.indices == cad.mesh.indices);
+  REQUIRE(one.mesh.positions == cad.mesh.positions);
+  REQUIRE(one.triangleFaces == cad.triangleFaces);
 }
 
 TEST_CASE("public CAD API: errors are typed and name the file", "[cad][api]") {

@@ -10,7 +10,8 @@
 namespace tessera {
 
 CadMeshRun meshCadFile(const std::string& path, const ToleranceSpec& tolerance, bool skipBadFaces,
-                       const std::string& skipHint, Backend& backend, TrimClassifier* trim) {
+                       const std::string& skipHint, Backend& backend, TrimClassifier* trim,
+                       unsigned threads) {
   if (tolerance.pixels)
     throw std::invalid_argument("a CAD model takes a tolerance in model units or a share of its "
                                 "size, not pixels");
@@ -23,6 +24,7 @@ CadMeshRun meshCadFile(const std::string& path, const ToleranceSpec& tolerance, 
   result.delta = tolerance.relative ? tolerance.value * result.diagonal : tolerance.value;
   TrimmedMeshOptions options;
   options.tolerance = result.delta;
+  options.threads = threads;
   clock.restart();
   // The import takes the mesher's thread count (0: all cores).
   CadImport import = toTrimmedModel(file, result.delta, options.threads);

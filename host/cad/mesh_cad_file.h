@@ -31,8 +31,10 @@ struct CadMeshRun {
 // pixels: std::invalid_argument) on `backend`, its trees' trim pass on `trim` (null: the CPU
 // mirror). A face that does not convert is an InputError naming the file and every failed
 // face, unless skipBadFaces (then they are listed in CadMeshRun::failures and the others
-// meshed); `skipHint` names how the caller asks for that ("--skip-bad-faces").
+// meshed); `skipHint` names how the caller asks for that ("--skip-bad-faces"). `threads`: the
+// CPU threads of the import and the cuts (0: all cores); the mesh is the same whatever it is.
 CadMeshRun meshCadFile(const std::string& path, const ToleranceSpec& tolerance, bool skipBadFaces,
-                       const std::string& skipHint, Backend& backend, TrimClassifier* trim);
+                       const std::string& skipHint, Backend& backend, TrimClassifier* trim,
+                       unsigned threads = 0);
 
 }  // namespace tessera

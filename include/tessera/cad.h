@@ -20,6 +20,9 @@ struct CadOptions {
   // Mesh the faces that convert when some do not (each named in CadMesh::skippedFaces); off,
   // such a model is an InputError naming the file and every failed face.
   bool skipBadFaces = false;
+  // CPU threads for converting the faces and cutting them along their trims; 0: all cores.
+  // The mesh is the same, bit for bit, whatever the count.
+  unsigned threads = 0;
 };
 
 struct CadMesh {

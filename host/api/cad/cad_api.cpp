@@ -35,7 +35,7 @@ CadMesh tessellateCadFile(Tessellator& tessellator, const std::string& path,
     const std::unique_ptr<TrimClassifier> trim =
         context ? makeVulkanTrimClassifier(*context) : nullptr;
     run = meshCadFile(path, tolerance, options.skipBadFaces, "CadOptions::skipBadFaces", backend,
-                      trim.get());
+                      trim.get(), options.threads);
   });
   CadMesh out;
   out.mesh = api::toMesh(run.mesh.mesh);
