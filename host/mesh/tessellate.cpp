@@ -142,8 +142,15 @@ Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeO
   // set through the general ones (a bicubic patch is a general patch too): toPatchSet.
   const Stopwatch treeStep;
   const PatchSet gpuPatches = toPatchSet(local);
-  // The evaluator's setup (a pipeline build) overlaps the quad-tree.
-  backend.evaluator->prepare(gpuPatches);
+  // The evaluator's setup (a pipeline build) overlaps the quad-tree from its first level on:
+  // started before it, it would take cores from the classifier's own pipeline builds, which
+  // the first level waits for (lavapipe builds on the calling threads; bench/README.md).
+  bool evaluatorPrepared = false;
+  localOptions.onLevel = [&, outer = options.onLevel](const LevelStats& level) {
+    if (!evaluatorPrepared) backend.evaluator->prepare(gpuPatches);
+    evaluatorPrepared = true;
+    if (outer) outer(level);
+  };
   QuadtreeResult tree = buildQuadtree(gpuPatches, localOptions, *backend.classifier);
   tree.boundScale = frame.scale;
   const double treeMs = treeStep.elapsedMs();
