@@ -2,8 +2,10 @@
 // Evaluates position, Pu, Pv, unit normal and κ for a batch of (patch, u, v) queries.
 // The arithmetic lives in lib/bicubic_eval.h, shared with the fp32 mirror.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
 #include "layout.h"
 #include "lib/shared_glsl_cpp.h"
+#define BICUBIC_EVAL_UNROLL [[unroll]]  // constant trip counts: lib/bicubic_eval.h
 #include "lib/bicubic_eval.h"
 #include "lib/dispatch.glsl"
 
