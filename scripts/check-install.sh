@@ -61,18 +61,25 @@ if grep -E "^(CMAKE_BUILD_TYPE:STRING=.+|SPIRV_VAL:)" "$work/parent/build/CMakeC
   exit 1
 fi
 
-counts=()
-for consumer in "$work/cmake-build/consumer" "$work/consumer-pc"; do
-  out=$("$consumer" data/teapot.bpt)
-  echo "check-install: $(basename "$consumer"): ${out%%$'\n'*}"
-  [[ $out =~ :\ ([0-9]+)\ triangles ]] || { echo "check-install: no triangle count in: $out" >&2; exit 1; }
-  counts+=("${BASH_REMATCH[1]}")
-done
-if [[ ${counts[0]} -eq 0 || ${counts[0]} != "${counts[1]}" ]]; then
-  echo "check-install: the two builds disagree or made nothing: ${counts[*]}" >&2
-  exit 1
-fi
-echo "check-install: OK (installed to a prefix, find_package and pkg-config builds agree: ${counts[0]} triangles)"
+# Runs the CMake-built and pkg-config-built consumer ($1, $2) on $3, checks that both print the
+# same triangle count, > 0, and leaves it in $agreed.
+same_triangles() {
+  local counts=() consumer out
+  for consumer in "$1" "$2"; do
+    out=$("$consumer" "$3")
+    echo "check-install: $(basename "$consumer"): ${out%%$'\n'*}"
+    [[ $out =~ :\ ([0-9]+)\ triangles ]] || { echo "check-install: no triangle count in: $out" >&2; exit 1; }
+    counts+=("${BASH_REMATCH[1]}")
+  done
+  if [[ ${counts[0]} -eq 0 || ${counts[0]} != "${counts[1]}" ]]; then
+    echo "check-install: the two builds disagree or made nothing on $3: ${counts[*]}" >&2
+    exit 1
+  fi
+  agreed=${counts[0]}
+}
+
+same_triangles "$work/cmake-build/consumer" "$work/consumer-pc" data/teapot.bpt
+echo "check-install: OK (installed to a prefix, find_package and pkg-config builds agree: $agreed triangles)"
 
 # The CAD component, where Tessera was built with Open CASCADE: find_package(tessera COMPONENTS
 # cad) and pkg-config tessera-cad, on a model of FreeCAD's IDF library (scripts/deps.sh).
@@ -82,16 +89,6 @@ if [[ -f $(dirname "$pc")/tessera-cad.pc ]]; then
   cmake --build "$work/cad-build" >/dev/null
   c++ -std=c++17 -O2 examples/cad_consumer/main.cpp -o "$work/cad-consumer-pc" \
     $(pkg-config --cflags --libs tessera-cad)
-  cad_counts=()
-  for consumer in "$work/cad-build/cad_consumer" "$work/cad-consumer-pc"; do
-    out=$("$consumer" "$model")
-    echo "check-install: $(basename "$consumer"): ${out%%$'\n'*}"
-    [[ $out =~ :\ ([0-9]+)\ triangles ]] || { echo "check-install: no triangle count in: $out" >&2; exit 1; }
-    cad_counts+=("${BASH_REMATCH[1]}")
-  done
-  if [[ ${cad_counts[0]} -eq 0 || ${cad_counts[0]} != "${cad_counts[1]}" ]]; then
-    echo "check-install: the two CAD builds disagree or made nothing: ${cad_counts[*]}" >&2
-    exit 1
-  fi
-  echo "check-install: OK (the cad component: ${cad_counts[0]} triangles on $(basename "$model"))"
+  same_triangles "$work/cad-build/cad_consumer" "$work/cad-consumer-pc" "$model"
+  echo "check-install: OK (the cad component: $agreed triangles on $(basename "$model"))"
 fi
