@@ -11,8 +11,10 @@
 #include <set>
 
 #include "cad/mesh_cad_file.h"
+#include "gpu_test_context.h"
 #include "mesh/tessellate.h"
 #include "mesh_checks.h"
+#include "trim/trim_classifier.h"
 
 namespace {
 const std::string kSot23 = "/usr/share/freecad/Mod/Idf/Idflibs/SOT23.stp";
@@ -97,12 +99,19 @@ TEST_CASE("public CAD API: errors are typed and name the file", "[cad][api]") {
 TEST_CASE("public CAD API: Vulkan gives the CPU's mesh", "[cad][api][gpu]") {
   tessera::Tessellator gpu({tessera::Device::Vulkan});
   REQUIRE(gpu.usesVulkan());
-  INFO("device: " << gpu.deviceName());
+  WARN("public CAD API on " << gpu.deviceName());
   tessera::Tessellator cpu({tessera::Device::Cpu});
   const tessera::CadMesh a = tessera::tessellateCadFile(gpu, kSot23);
   const tessera::CadMesh b = tessera::tessellateCadFile(cpu, kSot23);
   REQUIRE(a.triangleFaces.size() == a.mesh.triangleCount());
   REQUIRE(a.maxDeviation <= a.tolerance);
+  // The same run on the tests' context, whose validation layer is on: no message.
+  tessera::Backend vulkan = tessera::makeVulkanBackend(tessera::test::gpuContext());
+  const auto trim = tessera::makeVulkanTrimClassifier(tessera::test::gpuContext());
+  const tessera::CadMeshRun validated =
+      tessera::meshCadFile(kSot23, tessera::ToleranceSpec{}, false, "", vulkan, trim.get());
+  tessera::test::requireValidationClean();
+  REQUIRE(validated.mesh.mesh.triangleCount() == a.mesh.triangleCount());
   if (gpu.deviceName().find("llvmpipe") != std::string::npos) {
     REQUIRE(a.mesh.indices == b.mesh.indices);  // the trees and trim pass bit for bit
     REQUIRE(a.mesh.positions == b.mesh.positions);
