@@ -134,7 +134,7 @@ struct Tessellator::Impl {
 
   // `run(backend)`; under Device::Auto a Vulkan failure moves to the CPU and runs it again.
   template <class Run>
-  Tessellation withFallback(Run&& run) {
+  decltype(auto) withFallback(Run&& run) {
     try {
       return run(backend);
     } catch (const vk::VulkanError&) {
@@ -160,14 +160,9 @@ std::string Tessellator::deviceName() const {
 void TessellatorAccess::run(Tessellator& tessellator,
                             const std::function<void(Backend&, vk::Context*)>& work) {
   Tessellator::Impl& impl = *tessellator.impl_;
+  // The context is read at each try: after a fallback it is null (the CPU).
   translatingErrors([&] {
-    try {
-      work(impl.backend, impl.context.get());
-    } catch (const vk::VulkanError&) {
-      if (impl.options.device != Device::Auto || !impl.context) throw;
-      impl.useCpu();
-      work(impl.backend, nullptr);
-    }
+    impl.withFallback([&](Backend& backend) { work(backend, impl.context.get()); });
   });
 }
 
