@@ -8,8 +8,15 @@ install(TARGETS tessera_lib EXPORT tesseraTargets ARCHIVE DESTINATION ${CMAKE_IN
 if(TARGET tessera_cad_lib)  # the component cad: libtessera_cad.a (cmake/library.cmake)
   install(TARGETS tessera_cad_lib EXPORT tesseraTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 endif()
+# cad.h only with its library: a header whose symbols no installed archive defines would
+# compile and then fail at link time.
+if(TARGET tessera_cad_lib)
+  set(TESSERA_HEADERS_LEFT_OUT "")
+else()
+  set(TESSERA_HEADERS_LEFT_OUT PATTERN "cad.h" EXCLUDE)
+endif()
 install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/include/tessera
-  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h")
+  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h" ${TESSERA_HEADERS_LEFT_OUT})
 if(TESSERA_BUILD_CLI)
   install(TARGETS tessera RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endif()

@@ -83,7 +83,10 @@ echo "check-install: OK (installed to a prefix, find_package and pkg-config buil
 
 # The CAD component, where Tessera was built with Open CASCADE: find_package(tessera COMPONENTS
 # cad) and pkg-config tessera-cad, on a model of FreeCAD's IDF library (scripts/deps.sh).
+# Without the component, its header is not installed either.
+cad_header=$prefix/include/tessera/cad.h
 if [[ -f $(dirname "$pc")/tessera-cad.pc ]]; then
+  [[ -f $cad_header ]] || { echo "check-install: tessera-cad.pc but no $cad_header" >&2; exit 1; }
   model=/usr/share/freecad/Mod/Idf/Idflibs/SOT23.stp
   cmake -S examples/cad_consumer -B "$work/cad-build" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
   cmake --build "$work/cad-build" >/dev/null
@@ -91,4 +94,8 @@ if [[ -f $(dirname "$pc")/tessera-cad.pc ]]; then
     $(pkg-config --cflags --libs tessera-cad)
   same_triangles "$work/cad-build/cad_consumer" "$work/cad-consumer-pc" "$model"
   echo "check-install: OK (the cad component: $agreed triangles on $(basename "$model"))"
+fi
+if [[ ! -f $(dirname "$pc")/tessera-cad.pc && -f $cad_header ]]; then
+  echo "check-install: $cad_header installed without the cad component" >&2
+  exit 1
 fi
