@@ -5,6 +5,7 @@
 
 #include "geometry/bezier.h"
 #include "geometry/bicubic.h"
+#include "geometry/rational.h"
 
 namespace tessera {
 namespace {
@@ -16,12 +17,12 @@ SurfaceDerivatives derivativesAt(const BezierPatch& patch, glm::dvec2 uv) {
 
 glm::dvec2 clampToDomain(glm::dvec2 uv) { return glm::clamp(uv, glm::dvec2(0.0), glm::dvec2(1.0)); }
 
-}  // namespace
-
-ClosestPoint closestPointOnPatch(const BezierPatch& patch, const glm::dvec3& target,
-                                 glm::dvec2 start, int iterations) {
+// The search, with `derivativesAt(uv)` giving at least the partials up to second order.
+template <class Derivatives>
+ClosestPoint closestPoint(Derivatives derivativesAt, const glm::dvec3& target, glm::dvec2 start,
+                          int iterations) {
   glm::dvec2 uv = clampToDomain(start);
-  SurfaceDerivatives d = derivativesAt(patch, uv);
+  SurfaceDerivatives d = derivativesAt(uv);
   double best = glm::length(d.p - target);
   double damping = 0.0;
   for (int it = 0; it < iterations && best > 0.0; ++it) {
@@ -44,7 +45,7 @@ ClosestPoint closestPointOnPatch(const BezierPatch& patch, const glm::dvec3& tar
         // Converged: the step no longer moves the parameter measurably (Newton's last steps
         // are tiny), so further damped trials could only waste evaluations.
         if (glm::length(next - uv) < 1e-12) return {uv, d.p, best};
-        const SurfaceDerivatives trial = derivativesAt(patch, next);
+        const SurfaceDerivatives trial = derivativesAt(next);
         const double distance = glm::length(trial.p - target);
         if (distance < best) {
           best = distance;
@@ -60,6 +61,21 @@ ClosestPoint closestPointOnPatch(const BezierPatch& patch, const glm::dvec3& tar
     if (!improved) break;  // a (local) minimum within the domain, or on its boundary
   }
   return {uv, d.p, best};
+}
+
+}  // namespace
+
+ClosestPoint closestPointOnPatch(const BezierPatch& patch, const glm::dvec3& target,
+                                 glm::dvec2 start, int iterations) {
+  return closestPoint([&](glm::dvec2 uv) { return derivativesAt(patch, uv); }, target, start,
+                      iterations);
+}
+
+ClosestPoint closestPointOnPatch(const RationalBezierPatch& patch, const glm::dvec3& target,
+                                 glm::dvec2 start, int iterations) {
+  return closestPoint(
+      [&](glm::dvec2 uv) { return rationalPatchSecondDerivatives(patch, uv.x, uv.y); }, target,
+      start, iterations);
 }
 
 }  // namespace tessera

@@ -23,5 +23,9 @@ struct ClosestPoint {
 // parametric guess) it finds the nearby foot point, not necessarily the global one.
 ClosestPoint closestPointOnPatch(const BezierPatch& patch, const glm::dvec3& target,
                                  glm::dvec2 start, int iterations = 12);
+// The same for a patch already in homogeneous form: toRationalPatch(patch) gives the same
+// result bit for bit, without converting the patch at every step.
+ClosestPoint closestPointOnPatch(const RationalBezierPatch& patch, const glm::dvec3& target,
+                                 glm::dvec2 start, int iterations = 12);
 
 }  // namespace tessera

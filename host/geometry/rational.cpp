@@ -134,19 +134,25 @@ glm::dvec3 rationalPatchPoint(const RationalBezierPatch& patch, double u, double
   return xyz(h) / h.w;
 }
 
-SurfaceDerivatives rationalPatchDerivatives(const RationalBezierPatch& patch, double u, double v) {
-  checkPatch(patch, "rationalPatchDerivatives");
+namespace {
+
+// Partials up to Order (2 or 3) of the projected surface; those up to second order are the
+// same doubles either way (tensorPartials' lower partials and eq. 4.20's lower terms do not
+// depend on Order).
+template <int Order>
+SurfaceDerivatives projectedPartials(const RationalBezierPatch& patch, double u, double v,
+                                     const char* where) {
+  checkPatch(patch, where);
   const BernsteinTriangle bu = bernsteinTriangle(patch.degreeU, u);
   const BernsteinTriangle bv = bernsteinTriangle(patch.degreeV, v);
-  constexpr int kOrder = 3;
-  glm::dvec4 h[kOrder + 1][kOrder + 1];  // homogeneous partials, a + b ≤ 3
-  tensorPartials<glm::dvec4, kOrder>(patch.cpw.data(), patch.degreeU, patch.degreeV, bu, bv, h);
-  checkDenominator(h[0][0].w, "rationalPatchDerivatives", u, v);
+  glm::dvec4 h[Order + 1][Order + 1];  // homogeneous partials, a + b ≤ Order
+  tensorPartials<glm::dvec4, Order>(patch.cpw.data(), patch.degreeU, patch.degreeV, bu, bv, h);
+  checkDenominator(h[0][0].w, where, u, v);
 
   // S^(a,b) = (A^(a,b) − Σ_{(i,j)≠(0,0)} C(a,i) C(b,j) w^(i,j) S^(a−i,b−j)) / w
   // (The NURBS Book, eq. 4.20); every S on the right has a smaller total order.
-  glm::dvec3 s[kOrder + 1][kOrder + 1];
-  for (int total = 0; total <= kOrder; ++total)
+  glm::dvec3 s[Order + 1][Order + 1];
+  for (int total = 0; total <= Order; ++total)
     for (int a = total; a >= 0; --a) {
       const int b = total - a;
       glm::dvec3 numerator = xyz(h[a][b]);
@@ -164,11 +170,26 @@ SurfaceDerivatives rationalPatchDerivatives(const RationalBezierPatch& patch, do
   d.puu = s[2][0];
   d.puv = s[1][1];
   d.pvv = s[0][2];
-  d.puuu = s[3][0];
-  d.puuv = s[2][1];
-  d.puvv = s[1][2];
-  d.pvvv = s[0][3];
+  if constexpr (Order >= 3) {
+    d.puuu = s[3][0];
+    d.puuv = s[2][1];
+    d.puvv = s[1][2];
+    d.pvvv = s[0][3];
+  } else {
+    d.puuu = d.puuv = d.puvv = d.pvvv = glm::dvec3(0.0);
+  }
   return d;
+}
+
+}  // namespace
+
+SurfaceDerivatives rationalPatchDerivatives(const RationalBezierPatch& patch, double u, double v) {
+  return projectedPartials<3>(patch, u, v, "rationalPatchDerivatives");
+}
+
+SurfaceDerivatives rationalPatchSecondDerivatives(const RationalBezierPatch& patch, double u,
+                                                  double v) {
+  return projectedPartials<2>(patch, u, v, "rationalPatchSecondDerivatives");
 }
 
 }  // namespace tessera

@@ -129,6 +129,8 @@ glm::dvec3 FaceSurface::point(glm::dvec2 uv) const {
 
 double FaceSurface::distance(const glm::dvec3& target, glm::dvec2 guess) const {
   const size_t piece = pieceAt(guess);
+  if (rational_[piece])  // the homogeneous form converted once (the constructor)
+    return closestPointOnPatch(*rational_[piece], target, localUv(piece, guess)).distance;
   return closestPointOnPatch(face_->pieces[piece].patch, target, localUv(piece, guess)).distance;
 }
 
