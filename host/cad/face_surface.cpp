@@ -12,6 +12,9 @@
 #include <TColStd_Array1OfReal.hxx>
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <iterator>
+#include <unordered_map>
 
 #include "bspline/bspline.h"
 #include "cad/detail/number_text.h"
@@ -136,31 +139,52 @@ void wholePeriodCut(CadSurface& f, bool alongU, bool alongV, double u0, double v
 
 }  // namespace
 
-glm::dvec2 CadSurface::mapUv(const gp_Pnt2d& uv) const {
-  if (!reparametrised) return {uv.X(), uv.Y()};
+double CadSurface::mapParameter(double t, bool alongU) const {
+  if (!reparametrised) return t;
   // Gauss–Newton on |N(u', vRef) − S(u, vRef)|² (and likewise for v): vRef is a knot, which
   // both parametrisations share, so the iso-lines are the same curve.
-  auto solve = [&](double t, bool alongU) {
-    const gp_Pnt target = alongU ? original->Value(t, vRef) : original->Value(uRef, t);
-    double lo, hi, c0, c1;
-    if (alongU) nurbs->Bounds(lo, hi, c0, c1); else nurbs->Bounds(c0, c1, lo, hi);
-    const double width = hi - lo;
-    double x = t;
-    for (int iteration = 0; iteration < 40; ++iteration) {
-      gp_Pnt p;
-      gp_Vec du, dv;
-      nurbs->D1(alongU ? x : uRef, alongU ? vRef : x, p, du, dv);
-      const gp_Vec d = alongU ? du : dv;
-      const double dd = d.SquareMagnitude();
-      if (dd == 0.0) break;
-      // A step never leaves the domain by more than its width (the map fixes the ends).
-      const double step = gp_Vec(p, target).Dot(d) / dd;
-      x = std::clamp(x + step, lo - width, hi + width);
-      if (std::abs(step) <= 1e-15 * std::max(1.0, std::abs(x))) break;
-    }
-    return x;
+  const gp_Pnt target = alongU ? original->Value(t, vRef) : original->Value(uRef, t);
+  double lo, hi, c0, c1;
+  if (alongU) nurbs->Bounds(lo, hi, c0, c1); else nurbs->Bounds(c0, c1, lo, hi);
+  const double width = hi - lo;
+  double x = t;
+  for (int iteration = 0; iteration < 40; ++iteration) {
+    gp_Pnt p;
+    gp_Vec du, dv;
+    nurbs->D1(alongU ? x : uRef, alongU ? vRef : x, p, du, dv);
+    const gp_Vec d = alongU ? du : dv;
+    const double dd = d.SquareMagnitude();
+    if (dd == 0.0) break;
+    // A step never leaves the domain by more than its width (the map fixes the ends).
+    const double step = gp_Vec(p, target).Dot(d) / dd;
+    x = std::clamp(x + step, lo - width, hi + width);
+    if (std::abs(step) <= 1e-15 * std::max(1.0, std::abs(x))) break;
+  }
+  return x;
+}
+
+glm::dvec2 CadSurface::mapUv(const gp_Pnt2d& uv) const {
+  return {mapParameter(uv.X(), true), mapParameter(uv.Y(), false)};
+}
+
+std::vector<glm::dvec2> CadSurface::mapUvs(const std::vector<gp_Pnt2d>& uvs) const {
+  std::vector<glm::dvec2> mapped;
+  mapped.reserve(uvs.size());
+  if (!reparametrised) {
+    for (const gp_Pnt2d& uv : uvs) mapped.push_back({uv.X(), uv.Y()});
+    return mapped;
+  }
+  // Keyed by the bits, so −0 and +0 (equal as doubles) keep their own solves.
+  std::unordered_map<uint64_t, double> solved[2];
+  const auto solve = [&](double t, bool alongU) {
+    uint64_t bits;
+    std::memcpy(&bits, &t, sizeof bits);
+    const auto [it, fresh] = solved[alongU ? 0 : 1].try_emplace(bits, 0.0);
+    if (fresh) it->second = mapParameter(t, alongU);
+    return it->second;
   };
-  return {solve(uv.X(), true), solve(uv.Y(), false)};
+  for (const gp_Pnt2d& uv : uvs) mapped.push_back({solve(uv.X(), true), solve(uv.Y(), false)});
+  return mapped;
 }
 
 Handle(Geom_Surface) faceBasisSurface(const TopoDS_Face& face) {
@@ -245,12 +269,17 @@ CadSurface convertFaceSurface(const Handle(Geom_Surface)& basis, double u0, doub
     result.reparametrised = true;
     result.uRef = longestIsoKnot(result, true);
     result.vRef = longestIsoKnot(result, false);
+    // The grid has 6 distinct u and 6 distinct v: 12 solves, not 72.
+    double mappedU[std::size(fractions)], mappedV[std::size(fractions)];
+    for (size_t k = 0; k < std::size(fractions); ++k) {
+      mappedU[k] = result.mapParameter(n0 + (n1 - n0) * fractions[k], true);
+      mappedV[k] = result.mapParameter(m0 + (m1 - m0) * fractions[k], false);
+    }
     double gap = 0.0;
-    for (double fu : fractions)
-      for (double fv : fractions) {
-        const double u = n0 + (n1 - n0) * fu, v = m0 + (m1 - m0) * fv;
-        const glm::dvec2 mapped = result.mapUv(gp_Pnt2d(u, v));
-        gap = std::max(gap, result.nurbs->Value(mapped.x, mapped.y).Distance(basis->Value(u, v)));
+    for (size_t i = 0; i < std::size(fractions); ++i)
+      for (size_t j = 0; j < std::size(fractions); ++j) {
+        const double u = n0 + (n1 - n0) * fractions[i], v = m0 + (m1 - m0) * fractions[j];
+        gap = std::max(gap, result.nurbs->Value(mappedU[i], mappedV[j]).Distance(basis->Value(u, v)));
       }
     if (gap > 1e-9 * scale)
       throw CadFaceError("the NURBS form's parameters are not a separable change of the face's (off by " +

@@ -41,6 +41,11 @@ struct CadSurface {
 
   // The face's (u, v) (its pcurves' parameters) → the pieces' (u', v').
   glm::dvec2 mapUv(const gp_Pnt2d& uv) const;
+  // One coordinate of mapUv: u' = f(u) (alongU) or v' = g(v); the change is separable.
+  double mapParameter(double t, bool alongU) const;
+  // mapUv of every point, each distinct coordinate solved once (a circle's points share their v
+  // on a cylinder, a line's their u): the same doubles as mapUv point by point.
+  std::vector<glm::dvec2> mapUvs(const std::vector<gp_Pnt2d>& uvs) const;
 };
 
 // The face's surface (located, BRep_Tool::Surface) without its Geom_RectangularTrimmedSurface

@@ -209,10 +209,15 @@ TrimmedFace convertFace(const TopoDS_Face& sourceFace, uint32_t faceIndex, const
       u0 = std::min(u0, uv.X()), u1 = std::max(u1, uv.X()), v0 = std::min(v0, uv.Y()), v1 = std::max(v1, uv.Y());
   CadSurface surface = convertFaceSurface(basis, u0, u1, v0, v1);
   outcome.bounds = {u0, u1, v0, v1};
+  std::vector<gp_Pnt2d> all;  // every loop's points, mapped together (mapUvs shares solves)
+  for (const RawLoop& loop : raw) all.insert(all.end(), loop.uv.begin(), loop.uv.end());
+  const std::vector<glm::dvec2> mappedUvs = surface.mapUvs(all);
+  size_t next = 0;
   for (const RawLoop& loop : raw) {
     TrimLoop mapped;
     mapped.pointIds = loop.pointIds;
-    for (const gp_Pnt2d& uv : loop.uv) mapped.uv.push_back(surface.mapUv(uv));
+    mapped.uv.assign(mappedUvs.begin() + ptrdiff_t(next), mappedUvs.begin() + ptrdiff_t(next + loop.uv.size()));
+    next += loop.uv.size();
     out.loops.push_back(std::move(mapped));
   }
   out.pieces = std::move(surface.pieces);
