@@ -15,8 +15,11 @@ namespace tessera {
 namespace {
 
 // B_i,d(t) for i = 0..degree by the recurrence of bernsteinTriangle, in place (each value is
-// the same expression of the same operands, so the same double).
+// the same expression of the same operands, so the same double). Degree ≥ 0: fixed at compile
+// time (the loops unroll and the row stays in registers), −1: `degree` at run time.
+template <int Degree = -1>
 std::array<double, kMaxDegree + 1> bernsteinRow(int degree, double t) {
+  if constexpr (Degree >= 0) degree = Degree;
   std::array<double, kMaxDegree + 1> b{};
   const double s = 1.0 - t;
   b[0] = 1.0;
@@ -30,9 +33,13 @@ std::array<double, kMaxDegree + 1> bernsteinRow(int degree, double t) {
 
 // Σ_i B_i,n(u) Σ_j B_j,m(v) net[i·(m+1) + j], summed in tensorPartial's order (a = b = 0:
 // its factor is 1·1), without its copies of the whole net: the deviation measure's hot path.
-template <class Point>
-Point tensorPoint(const Point* net, int n, int m, double u, double v) {
-  const std::array<double, kMaxDegree + 1> bu = bernsteinRow(n, u), bv = bernsteinRow(m, v);
+// N, M ≥ 0 fix the degrees at compile time, the same operations in the same order (the build
+// contracts no multiply-add, -ffp-contract=off), so the same doubles as the run-time loop.
+template <int N, int M, class Point>
+Point tensorPointOfDegree(const Point* net, int n, int m, double u, double v) {
+  if constexpr (N >= 0) n = N;
+  if constexpr (M >= 0) m = M;
+  const std::array<double, kMaxDegree + 1> bu = bernsteinRow<N>(n, u), bv = bernsteinRow<M>(m, v);
   Point sum(0.0);
   for (int i = 0; i <= n; ++i) {
     Point row(0.0);
@@ -40,6 +47,28 @@ Point tensorPoint(const Point* net, int n, int m, double u, double v) {
     sum += bu[i] * row;
   }
   return sum;
+}
+
+// The degrees of the import's pieces (planes 1×1, cylinders and cones 2×1 or 1×2, spheres and
+// tori 2×2, bicubic B-splines 3×3) at fixed degree; any other at run time.
+template <class Point>
+Point tensorPoint(const Point* net, int n, int m, double u, double v) {
+  switch (n * (kMaxDegree + 1) + m) {
+    case 1 * (kMaxDegree + 1) + 1: return tensorPointOfDegree<1, 1>(net, n, m, u, v);
+    case 2 * (kMaxDegree + 1) + 1: return tensorPointOfDegree<2, 1>(net, n, m, u, v);
+    case 1 * (kMaxDegree + 1) + 2: return tensorPointOfDegree<1, 2>(net, n, m, u, v);
+    case 2 * (kMaxDegree + 1) + 2: return tensorPointOfDegree<2, 2>(net, n, m, u, v);
+    case 3 * (kMaxDegree + 1) + 3: return tensorPointOfDegree<3, 3>(net, n, m, u, v);
+    default: return tensorPointOfDegree<-1, -1>(net, n, m, u, v);
+  }
+}
+
+// FaceSurface::localUv, here so that point() inlines it: called, its result went through the
+// stack as two scalars and came back as one vector load that waited on both stores (a quarter
+// of point()'s time in perf).
+inline glm::dvec2 localUvOf(const BezierPatchPiece& p, glm::dvec2 uv) {
+  return glm::clamp(glm::dvec2((uv.x - p.u0) / (p.u1 - p.u0), (uv.y - p.v0) / (p.v1 - p.v0)),
+                    0.0, 1.0);
 }
 
 }  // namespace
@@ -100,9 +129,7 @@ size_t FaceSurface::pieceAt(glm::dvec2 uv) const {
 }
 
 glm::dvec2 FaceSurface::localUv(size_t piece, glm::dvec2 uv) const {
-  const BezierPatchPiece& p = face_->pieces[piece];
-  return glm::clamp(glm::dvec2((uv.x - p.u0) / (p.u1 - p.u0), (uv.y - p.v0) / (p.v1 - p.v0)),
-                    0.0, 1.0);
+  return localUvOf(face_->pieces[piece], uv);
 }
 
 glm::dvec2 FaceSurface::faceUv(size_t piece, glm::dvec2 local) const {
@@ -112,7 +139,7 @@ glm::dvec2 FaceSurface::faceUv(size_t piece, glm::dvec2 local) const {
 
 glm::dvec3 FaceSurface::point(glm::dvec2 uv) const {
   const size_t piece = pieceAt(uv);
-  const glm::dvec2 local = localUv(piece, uv);
+  const glm::dvec2 local = localUvOf(face_->pieces[piece], uv);
   // The pieces passed validateTessellationPatch (degrees ≤ kMaxDegree, finite, weights ≥ 0)
   // before the mesher measures them; a face built otherwise takes patchPoint's checked path.
   if (!checked_) return patchPoint(face_->pieces[piece].patch, local.x, local.y);
