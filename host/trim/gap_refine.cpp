@@ -1,5 +1,7 @@
 #include "trim/detail/gap_refine.h"
 
+#include "common/small_id_list.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -39,8 +41,7 @@ class EdgeUsers {
   }
   void add(uint32_t a, uint32_t b, uint32_t t) { users_[key(a, b)].push_back(t); }
   void replace(uint32_t a, uint32_t b, uint32_t from, uint32_t to) {
-    for (uint32_t& t : users_[key(a, b)])
-      if (t == from) t = to;
+    users_[key(a, b)].replace(from, to);
   }
   void erase(uint32_t a, uint32_t b) { users_.erase(key(a, b)); }
   // The edges with exactly two triangles, in increasing (smaller, larger) order: the order does
@@ -55,16 +56,16 @@ class EdgeUsers {
     for (uint64_t k : keys) edges.push_back({uint32_t(k >> 32), uint32_t(k)});
     return edges;
   }
-  std::vector<uint32_t> of(uint32_t a, uint32_t b) const {
+  SmallIdList of(uint32_t a, uint32_t b) const {
     const auto it = users_.find(key(a, b));
-    return it == users_.end() ? std::vector<uint32_t>{} : it->second;
+    return it == users_.end() ? SmallIdList() : it->second;
   }
 
  private:
   static uint64_t key(uint32_t a, uint32_t b) {
     return uint64_t(std::min(a, b)) << 32 | uint64_t(std::max(a, b));
   }
-  std::unordered_map<uint64_t, std::vector<uint32_t>> users_;
+  std::unordered_map<uint64_t, SmallIdList> users_;
 };
 
 // The position of the triangle's side k (its corners k, k + 1) and the rotation that puts it first.
@@ -204,10 +205,12 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
   const auto flipSliver = [&](uint32_t t, int longest) {
     const std::array<uint32_t, 3> v = rotated(triangles[t].v, longest);
     const uint32_t a = v[0], b = v[1], c = v[2];
-    std::vector<uint32_t> across = users.of(a, b);
-    across.erase(std::remove(across.begin(), across.end(), t), across.end());
-    if (across.size() != 1) return false;
-    const uint32_t s = across[0];
+    const SmallIdList sideUsers = users.of(a, b);
+    size_t others = 0;  // the triangles across: those of the side other than t
+    uint32_t s = 0;
+    for (size_t k = 0; k < sideUsers.size(); ++k)
+      if (sideUsers[k] != t) s = sideUsers[k], ++others;
+    if (others != 1) return false;
     const int k = sideOf(triangles[s].v, a, b);
     const uint32_t d = triangles[s].v[(k + 2) % 3];
     if (d == c) return false;
@@ -228,7 +231,9 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
     const glm::dvec2 uv = 0.5 * (vs[a].uv + vs[b].uv);
     vs.push_back({uv, surface.point(uv), -1});
     const uint32_t m = uint32_t(vs.size() - 1);
-    for (uint32_t u : users.of(a, b)) {
+    const SmallIdList sideUsers = users.of(a, b);  // a copy: the loop changes the map
+    for (size_t k = 0; k < sideUsers.size(); ++k) {
+      const uint32_t u = sideUsers[k];
       // (p, q, r) with p → q the side → (p, m, r) and (m, q, r): the same orientation.
       const std::array<uint32_t, 3> w = rotated(triangles[u].v, sideOf(triangles[u].v, a, b));
       const uint32_t p = w[0], q = w[1], r = w[2], n = uint32_t(triangles.size());
@@ -285,7 +290,7 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
       size_t passFlips = 0;
       for (const EdgeKey& edge : users.sharedEdges()) {
         if (isTrim(edge.first, edge.second)) continue;
-        const std::vector<uint32_t> ts = users.of(edge.first, edge.second);
+        const SmallIdList ts = users.of(edge.first, edge.second);
         if (ts.size() != 2 || !triangles[ts[0]].gap || !triangles[ts[1]].gap) continue;
         const uint32_t t = ts[0], s = ts[1];
         const std::array<uint32_t, 3> v = rotated(triangles[t].v,

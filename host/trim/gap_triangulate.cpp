@@ -8,6 +8,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "common/small_id_list.h"
 #include "trim/trim_cut.h"
 
 namespace tessera {
@@ -262,7 +263,7 @@ void flipTowardsDelaunay(const std::vector<glm::dvec2>& points,
   };
   std::unordered_set<Edge> constrained;
   for (const auto& e : fixed) constrained.insert(key(e.first, e.second));
-  std::unordered_map<Edge, std::vector<uint32_t>> users;  // edge → the triangles using it
+  std::unordered_map<Edge, SmallIdList> users;  // edge → the triangles using it
   users.reserve(3 * triangles.size());
   for (uint32_t t = 0; t < triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) users[key(triangles[t][k], triangles[t][(k + 1) % 3])].push_back(t);
@@ -271,8 +272,7 @@ void flipTowardsDelaunay(const std::vector<glm::dvec2>& points,
     if (ts.size() == 2 && !constrained.count(edge)) queue.push_back(edge);
   std::sort(queue.begin(), queue.end());  // a deterministic order, whatever the hashing
   const auto moveUser = [&](Edge edge, uint32_t from, uint32_t to) {
-    for (uint32_t& t : users[edge])
-      if (t == from) t = to;
+    users[edge].replace(from, to);
   };
   // Each flip lowers the triangulation's lifted volume, so this ends; the cap is a guard
   // against rounding cycling two nearly cocircular flips.
@@ -302,7 +302,7 @@ void flipTowardsDelaunay(const std::vector<glm::dvec2>& points,
     triangles[t0] = {c, a, d};
     triangles[t1] = {d, b, c};
     users.erase(found);
-    users[key(c, d)] = {t0, t1};
+    users[key(c, d)] = SmallIdList(t0, t1);
     moveUser(key(a, d), t1, t0);
     moveUser(key(b, c), t0, t1);
     for (Edge e : {key(a, c), key(a, d), key(b, c), key(b, d)})

@@ -11,6 +11,7 @@
 #include <unordered_map>
 
 #include "common/parallel_for.h"
+#include "common/small_id_list.h"
 #include "common/stopwatch.h"
 #include "quadtree/quadtree.h"
 #include "trim/detail/gap_refine.h"
@@ -41,12 +42,13 @@ class FaceBuilder {
   std::vector<FaceVertex> vertices;
 
   // The vertex of `key` within `weld` of uv, or a new one.
-  uint32_t vertex(std::map<int64_t, std::vector<uint32_t>>& keyed, int64_t key, glm::dvec2 uv,
+  uint32_t vertex(std::unordered_map<int64_t, SmallIdList>& keyed, int64_t key, glm::dvec2 uv,
                   const glm::dvec3& position, int64_t sharedId, double weld) {
-    for (uint32_t v : keyed[key])
-      if (glm::length(vertices[v].uv - uv) <= weld) return v;
+    SmallIdList& candidates = keyed[key];
+    for (size_t k = 0; k < candidates.size(); ++k)
+      if (glm::length(vertices[candidates[k]].uv - uv) <= weld) return candidates[k];
     vertices.push_back({uv, position, sharedId});
-    keyed[key].push_back(uint32_t(vertices.size() - 1));
+    candidates.push_back(uint32_t(vertices.size() - 1));
     return uint32_t(vertices.size() - 1);
   }
 };
@@ -146,7 +148,7 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
   FaceMesh out;
   Stopwatch step;
 
-  std::map<int64_t, std::vector<uint32_t>> meshKeyed, trimKeyed;
+  std::unordered_map<int64_t, SmallIdList> meshKeyed, trimKeyed;  // looked up, never walked
   const TrimSegmentIndex index(face.loops);
   std::vector<FaceTriangle> triangles;
   for (size_t t = 0; t < tess.mesh.triangleCount(); ++t) {
