@@ -265,6 +265,20 @@ FaceOutcome faceOutcome(const CadFile& file, const CadImport& in, int k) {
   return outcome;
 }
 
+// The shape's faces, edges and vertices in one depth-first walk: each map gets its shapes in
+// the order TopExp::MapShapes gives them (its explorer walks the same tree, depth first, with
+// the same composed orientations and locations, and stops at the type it maps), without
+// walking the shape three times (a tenth of the import's time, all before the threads start).
+void mapSubShapes(const TopoDS_Shape& shape, CadImport& in) {
+  switch (shape.ShapeType()) {
+    case TopAbs_FACE: in.faces.Add(shape); break;
+    case TopAbs_EDGE: in.edges.Add(shape); break;
+    case TopAbs_VERTEX: in.vertices.Add(shape); return;
+    default: break;
+  }
+  for (TopoDS_Iterator it(shape); it.More(); it.Next()) mapSubShapes(it.Value(), in);
+}
+
 // Runs item(i) for i in [0, count) on `threads` threads, a few items per turn (their costs
 // differ). Throws what the lowest item that threw threw, as a loop in order would have.
 void forEachItem(size_t count, unsigned threads, const std::function<void(size_t)>& item) {
@@ -297,9 +311,7 @@ CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads) {
                         std::to_string(delta));
   CadImport in;
   in.delta = delta;
-  TopExp::MapShapes(file.shape, TopAbs_FACE, in.faces);
-  TopExp::MapShapes(file.shape, TopAbs_EDGE, in.edges);
-  TopExp::MapShapes(file.shape, TopAbs_VERTEX, in.vertices);
+  mapSubShapes(file.shape, in);
 
   SharedPoints points;
   for (int k = 1; k <= in.vertices.Extent(); ++k) {
