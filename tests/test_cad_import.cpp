@@ -18,6 +18,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -66,10 +67,28 @@ using IdPair = std::pair<uint32_t, uint32_t>;
 IdPair unordered(uint32_t a, uint32_t b) { return {std::min(a, b), std::max(a, b)}; }
 
 // Everything the import promises, checked against OCCT's own answers; returns the figures.
+// The import numbers faces, edges and vertices in one walk of the shape: the order, and the
+// orientation and location each map keeps, must be TopExp::MapShapes's (face and edge indices
+// are the file's face and edge numbers in every message and in the outputs).
+void checkMapsAsTopExp(const CadImport& in, const TopoDS_Shape& shape) {
+  const std::pair<TopAbs_ShapeEnum, const TopTools_IndexedMapOfShape*> maps[] = {
+      {TopAbs_FACE, &in.faces}, {TopAbs_EDGE, &in.edges}, {TopAbs_VERTEX, &in.vertices}};
+  for (const auto& [type, map] : maps) {
+    TopTools_IndexedMapOfShape expected;
+    TopExp::MapShapes(shape, type, expected);
+    REQUIRE(map->Extent() == expected.Extent());
+    int mismatched = 0;
+    for (int k = 1; k <= expected.Extent(); ++k)
+      if (!(*map)(k).IsEqual(expected(k))) ++mismatched;
+    CHECK(mismatched == 0);
+  }
+}
+
 ImportFigures checkImport(const CadFile& file) {
   const double size = diagonal(file.shape);
   const double delta = defaultCadTolerance(file.shape);
   const CadImport in = toTrimmedModel(file, delta);
+  checkMapsAsTopExp(in, file.shape);
   ImportFigures figures;
   figures.delta = delta;
   figures.faces = in.faces.Extent();
@@ -120,6 +139,19 @@ ImportFigures checkImport(const CadFile& file) {
         figures.pieceGap = std::max(figures.pieceGap,
             glm::length(piecesPoint(face.pieces, surface.mapUv(uv)) - glm::dvec3(p.X(), p.Y(), p.Z())));
       }
+    // mapUvs (the import's, one solve per distinct coordinate) is mapUv point by point; the
+    // grid repeats every u and every v, and −0 is not +0.
+    std::vector<gp_Pnt2d> grid{gp_Pnt2d(-0.0, v0), gp_Pnt2d(0.0, v1)};
+    for (int i = 0; i <= 4; ++i)
+      for (int j = 0; j <= 4; ++j) grid.emplace_back(u0 + (u1 - u0) * i / 4.0, v0 + (v1 - v0) * j / 4.0);
+    const std::vector<glm::dvec2> mapped = surface.mapUvs(grid);
+    REQUIRE(mapped.size() == grid.size());
+    size_t mapDiffers = 0;
+    for (size_t k = 0; k < grid.size(); ++k) {
+      const glm::dvec2 one = surface.mapUv(grid[k]);
+      if (std::memcmp(&one, &mapped[k], sizeof one) != 0) ++mapDiffers;
+    }
+    CHECK(mapDiffers == 0);
     // Loops: closed chains of edge segments, outer counter-clockwise, holes clockwise, every
     // point's uv on the pieces at its shared point (within the OCCT tolerance of its edge).
     // Every loop point within the pieces' domain: a face cut at the wrong place of a periodic

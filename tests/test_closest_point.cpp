@@ -8,6 +8,7 @@
 
 #include "geometry/bezier.h"
 #include "geometry/closest_point.h"
+#include "geometry/rational.h"
 #include "mesh/deviation.h"
 #include "io/bpt_reader.h"
 #include "mesh/tessellate.h"
@@ -117,4 +118,32 @@ TEST_CASE("distance to the surface is at most the parametric deviation", "[devia
     REQUIRE(surface.perPatchMax[p] <= parametric.perPatchMax[p] + 1e-12);
   CHECK(surface.maxDeviation > 0);
   CHECK(surface.meanDeviation < parametric.meanDeviation);
+}
+
+TEST_CASE("closest point: a patch in homogeneous form gives the weighted patch's result bit for bit",
+          "[deviation]") {
+  // A quarter cylinder of radius 1 as a rational biquadratic-by-linear patch (weights 1, √½, 1).
+  BezierPatch cylinder;
+  cylinder.degreeU = 2, cylinder.degreeV = 1;
+  const double w = std::sqrt(0.5);
+  const glm::dvec3 arc[3] = {{1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 2; ++j) {
+      cylinder.cp.push_back(arc[i] + glm::dvec3(0, 0, 2.0 * j));
+      cylinder.weights.push_back(i == 1 ? w : 1.0);
+    }
+  const RationalBezierPatch homogeneous = toRationalPatch(cylinder);
+  std::mt19937 rng(99);
+  std::uniform_real_distribution<double> coord(-1.5, 1.5), param(0.0, 1.0);
+  for (int k = 0; k < 50; ++k) {
+    const glm::dvec3 target(coord(rng), coord(rng), 1.0 + coord(rng));
+    const glm::dvec2 start(param(rng), param(rng));
+    const ClosestPoint a = closestPointOnPatch(cylinder, target, start);
+    const ClosestPoint b = closestPointOnPatch(homogeneous, target, start);
+    CHECK(a.uv == b.uv);
+    CHECK(a.point == b.point);
+    CHECK(a.distance == b.distance);
+    // Off the cylinder's quarter, the distance is at least | |xy| − 1 |.
+    CHECK(b.distance >= std::abs(std::hypot(target.x, target.y) - 1.0) - 1e-9);
+  }
 }

@@ -130,6 +130,30 @@ TEST_CASE("Rational patch: quotient-rule derivatives vs finite differences", "[r
     }
 }
 
+TEST_CASE("Rational patch: second-order partials are the full derivatives' bit for bit",
+          "[rational]") {
+  std::mt19937 rng(1618);
+  std::uniform_real_distribution<double> param(0.0, 1.0);
+  for (int n = 1; n <= kMaxDegree; ++n)
+    for (int m = 1; m <= kMaxDegree; m += 2) {
+      const RationalBezierPatch p = randomRationalPatch(n, m, rng, 0.2);
+      for (int s = 0; s < 3; ++s) {
+        const double u = param(rng), v = param(rng);
+        const SurfaceDerivatives full = rationalPatchDerivatives(p, u, v);
+        const SurfaceDerivatives second = rationalPatchSecondDerivatives(p, u, v);
+        INFO("degree (" << n << ", " << m << ") at (" << u << ", " << v << ")");
+        CHECK(second.p == full.p);
+        CHECK(second.pu == full.pu);
+        CHECK(second.pv == full.pv);
+        CHECK(second.puu == full.puu);
+        CHECK(second.puv == full.puv);
+        CHECK(second.pvv == full.pvv);
+        for (const glm::dvec3& third : {second.puuu, second.puuv, second.puvv, second.pvvv})
+          CHECK(third == glm::dvec3(0.0));
+      }
+    }
+}
+
 TEST_CASE("Rational patch: equal weights reproduce the polynomial patch", "[rational]") {
   std::mt19937 rng(55);
   std::uniform_real_distribution<double> coord(-1.0, 1.0);

@@ -1,5 +1,6 @@
 #include "trim/detail/gap_refine.h"
 
+#include "common/edge_hash_map.h"
 #include "common/small_id_list.h"
 
 #include <algorithm>
@@ -33,7 +34,7 @@ constexpr double kFlipSliverGain = 2.0;
 class EdgeUsers {
  public:
   explicit EdgeUsers(const std::vector<FaceTriangle>& triangles) {
-    users_.reserve(3 * triangles.size());
+    users_.reserve(2 * triangles.size());  // about 3/2 edges a triangle
     for (uint32_t t = 0; t < triangles.size(); ++t) add(triangles[t].v, t);
   }
   void add(const std::array<uint32_t, 3>& v, uint32_t t) {
@@ -48,8 +49,9 @@ class EdgeUsers {
   // not depend on the hashing.
   std::vector<EdgeKey> sharedEdges() const {
     std::vector<uint64_t> keys;
-    for (const auto& [k, ts] : users_)
+    users_.forEach([&](uint64_t k, const SmallIdList& ts) {
       if (ts.size() == 2) keys.push_back(k);
+    });
     std::sort(keys.begin(), keys.end());
     std::vector<EdgeKey> edges;
     edges.reserve(keys.size());
@@ -57,15 +59,15 @@ class EdgeUsers {
     return edges;
   }
   SmallIdList of(uint32_t a, uint32_t b) const {
-    const auto it = users_.find(key(a, b));
-    return it == users_.end() ? SmallIdList() : it->second;
+    const SmallIdList* found = users_.find(key(a, b));
+    return found ? *found : SmallIdList();
   }
 
  private:
   static uint64_t key(uint32_t a, uint32_t b) {
     return uint64_t(std::min(a, b)) << 32 | uint64_t(std::max(a, b));
   }
-  std::unordered_map<uint64_t, SmallIdList> users_;
+  EdgeHashMap<SmallIdList> users_;
 };
 
 // The position of the triangle's side k (its corners k, k + 1) and the rotation that puts it first.
