@@ -98,6 +98,7 @@ EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta,
              delta, 0, samples.params, samples.maxChordDeviation);
   }
   // The ends at the range's own ends (the last parameter can be an ulp from `last`).
+  samples.curvePoints.reserve(samples.params.size());
   samples.curvePoints.push_back(toGlm(curve.Value(first)));
   for (size_t k = 1; k + 1 < samples.params.size(); ++k)
     samples.curvePoints.push_back(toGlm(curve.Value(samples.params[k])));

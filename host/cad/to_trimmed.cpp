@@ -199,9 +199,12 @@ TrimmedFace convertFace(const TopoDS_Face& sourceFace, uint32_t faceIndex, const
   // (BRepTools::UVBounds would compute every planar pcurve again), then mapped to the pieces'.
   const Handle(Geom_Surface) basis = faceBasisSurface(face);
   std::vector<RawLoop> raw;
-  for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next())
-    raw.push_back(wireLoop(TopoDS::Wire(w.Current()), face, basis, faceIndex, label, path, in,
-                           outcome));
+  // The face's wires are its children: the order TopExp_Explorer(face, TopAbs_WIRE) gives,
+  // without the explorer's stack allocated per face.
+  for (TopoDS_Iterator w(face); w.More(); w.Next())
+    if (w.Value().ShapeType() == TopAbs_WIRE)
+      raw.push_back(wireLoop(TopoDS::Wire(w.Value()), face, basis, faceIndex, label, path, in,
+                             outcome));
   if (raw.empty()) throw CadFaceError("the face has no wire");
   double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300;
   for (const RawLoop& loop : raw)
