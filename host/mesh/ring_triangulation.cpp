@@ -25,16 +25,32 @@ double boundaryPosition(glm::dvec2 s, uint32_t sides) {
   return s.y > 0.0 ? 4.0 - s.y : 0.0;
 }
 
-}  // namespace
+// The working arrays of one thread's calls, kept from call to call: the triangulator asks once
+// per leaf, and allocating them each time was most of the cost.
+struct RingWork {
+  std::vector<uint32_t> sides, prev, next;
+  std::vector<glm::dvec2> local;
+  std::vector<uint8_t> alive;
+  std::vector<glm::vec2> half;  // triangulateRectangleRingAlong's halves
+  std::vector<uint32_t> original;
+  std::vector<std::array<uint32_t, 3>> halfTriangles;
+};
 
-bool triangulateRectangleRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, glm::vec2 hi,
-                              std::vector<std::array<uint32_t, 3>>& triangles) {
+RingWork& ringWork() {
+  static thread_local RingWork work;
+  return work;
+}
+
+bool triangulateRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, glm::vec2 hi,
+                     std::vector<std::array<uint32_t, 3>>& triangles, RingWork& work) {
   triangles.clear();
   const size_t n = ring.size();
   if (n < 3 || !(lo.x < hi.x && lo.y < hi.y)) return false;
   const glm::dvec2 origin(lo), size = glm::dvec2(hi) - glm::dvec2(lo);
-  std::vector<uint32_t> sides(n);
-  std::vector<glm::dvec2> local(n);
+  std::vector<uint32_t>& sides = work.sides;
+  std::vector<glm::dvec2>& local = work.local;
+  sides.resize(n);
+  local.resize(n);
   uint32_t descents = 0;  // a counter-clockwise ring of distinct points wraps around once
   for (size_t i = 0; i < n; ++i) {
     sides[i] = sidesOf(ring[i], lo, hi);
@@ -47,8 +63,12 @@ bool triangulateRectangleRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, 
   }
   if (descents != 1) return false;
 
-  std::vector<uint32_t> prev(n), next(n);
-  std::vector<bool> alive(n, true);
+  std::vector<uint32_t>& prev = work.prev;
+  std::vector<uint32_t>& next = work.next;
+  std::vector<uint8_t>& alive = work.alive;
+  prev.resize(n);
+  next.resize(n);
+  alive.assign(n, 1);
   uint32_t onSide[4] = {0, 0, 0, 0};  // points left on each side
   for (size_t i = 0; i < n; ++i) {
     prev[i] = uint32_t((i + n - 1) % n);
@@ -78,7 +98,7 @@ bool triangulateRectangleRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, 
     if (best == n) return triangles.clear(), false;
     const uint32_t a = prev[best], c = next[best];
     triangles.push_back({a, uint32_t(best), c});
-    alive[best] = false;
+    alive[best] = 0;
     next[a] = c;
     prev[c] = a;
     for (int s = 0; s < 4; ++s) onSide[s] -= (sides[best] >> s) & 1u;
@@ -91,10 +111,18 @@ bool triangulateRectangleRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, 
   return true;
 }
 
+}  // namespace
+
+bool triangulateRectangleRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, glm::vec2 hi,
+                              std::vector<std::array<uint32_t, 3>>& triangles) {
+  return triangulateRing(ring, lo, hi, triangles, ringWork());
+}
+
 bool triangulateRectangleRingAlong(const std::vector<glm::vec2>& ring, glm::vec2 lo,
                                    glm::vec2 hi, uint32_t diagonal,
                                    std::vector<std::array<uint32_t, 3>>& triangles) {
-  if (diagonal == gpu::kToleranceAnyDiagonal) return triangulateRectangleRing(ring, lo, hi, triangles);
+  RingWork& work = ringWork();
+  if (diagonal == gpu::kToleranceAnyDiagonal) return triangulateRing(ring, lo, hi, triangles, work);
   triangles.clear();
   const bool mainDiagonal = diagonal == gpu::kToleranceMainDiagonal;
   if (!mainDiagonal && diagonal != gpu::kToleranceAntiDiagonal) return false;
@@ -108,9 +136,9 @@ bool triangulateRectangleRingAlong(const std::vector<glm::vec2>& ring, glm::vec2
   }
   if (a == n || b == n || a == b) return false;
   // Each half: the ring from one diagonal corner to the other, counter-clockwise.
-  std::vector<glm::vec2> half;
-  std::vector<uint32_t> original;
-  std::vector<std::array<uint32_t, 3>> halfTriangles;
+  std::vector<glm::vec2>& half = work.half;
+  std::vector<uint32_t>& original = work.original;
+  std::vector<std::array<uint32_t, 3>>& halfTriangles = work.halfTriangles;
   for (const auto& [start, end] : {std::pair{a, b}, std::pair{b, a}}) {
     half.clear();
     original.clear();
@@ -119,7 +147,7 @@ bool triangulateRectangleRingAlong(const std::vector<glm::vec2>& ring, glm::vec2
       original.push_back(uint32_t(i));
       if (i == end) break;
     }
-    if (!triangulateRectangleRing(half, lo, hi, halfTriangles)) return triangles.clear(), false;
+    if (!triangulateRing(half, lo, hi, halfTriangles, work)) return triangles.clear(), false;
     for (const auto& t : halfTriangles)
       triangles.push_back({original[t[0]], original[t[1]], original[t[2]]});
   }

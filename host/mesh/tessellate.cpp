@@ -101,6 +101,8 @@ Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, const 
   result.stats.degenerateTrianglesDropped = param.droppedTriangles;
   result.stats.diagonalFans = param.diagonalFans;
   mesh.indices.reserve(param.indices.size());
+  result.trianglePatch.reserve(param.trianglePatch.size());
+  result.cornerUv.reserve(param.cornerUv.size());
   for (size_t k = 0; k < param.indices.size(); k += 3) {
     uint32_t a = remap[param.indices[k]], b = remap[param.indices[k + 1]],
              c = remap[param.indices[k + 2]];

@@ -7,6 +7,7 @@
 #include <map>
 #include <unordered_map>
 
+#include "common/flat_hash_map.h"
 #include "geometry/bezier.h"
 #include "mesh/near_points.h"
 #include "mesh/ring_triangulation.h"
@@ -38,9 +39,67 @@ struct VertexKeyHash {
   }
 };
 
-// Per line (u = const or v = const inside a patch), the leaf corners on it, sorted; once near
-// points are merged (near_points.h), only those that are vertices of their own.
-using LineIndex = std::unordered_map<uint64_t, std::vector<LinePoint>>;
+struct PositionBitsHash {
+  size_t operator()(const std::array<uint64_t, 3>& k) const {
+    return size_t(k[0] * 0x9E3779B97F4A7C15ull ^ k[1] * 0xC2B2AE3D27D4EB4Full ^
+                  (k[2] ^ k[2] >> 29) * 0x165667B19E3779F9ull);
+  }
+};
+
+// The lines a node-based line index was sized for, per leaf (LineIndex::unorderedMapOrder).
+constexpr size_t kLineIndexReserve = 2;
+
+struct IdentityHash {
+  size_t operator()(uint64_t key) const { return size_t(key); }
+};
+
+// Per line (u = const or v = const inside a patch, keyed by lineKey), the leaf corners on it,
+// sorted; once near points are merged (near_points.h), only those that are vertices of their
+// own. Lines are numbered in the order they were first met.
+class LineIndex {
+ public:
+  explicit LineIndex(size_t expected) : numbers_(expected) {}
+
+  // The line's points, the line added if new.
+  std::vector<LinePoint>& operator[](uint64_t key) {
+    const auto [number, added] = numbers_.tryEmplace(key, uint32_t(keys_.size()));
+    if (added) {
+      keys_.push_back(key);
+      points_.emplace_back();
+    }
+    return points_[*number];
+  }
+
+  const std::vector<LinePoint>* find(uint64_t key) const {
+    const uint32_t* number = numbers_.find(key);
+    return number ? &points_[*number] : nullptr;
+  }
+
+  size_t size() const { return keys_.size(); }
+  uint64_t key(size_t line) const { return keys_[line]; }
+  std::vector<LinePoint>& points(size_t line) { return points_[line]; }
+
+  // The lines in the order a std::unordered_map<uint64_t, …> reserved for `reserved` entries
+  // and filled in this index's order walks them. Merging near points hands out position ids
+  // in the order the lines are walked (Triangulator::positionId), and a merge of two patch
+  // corners keeps the one with the smaller id: walked in this order, the merges stay those
+  // of the node-based index this class replaced, so meshes keep their bytes. Only asked for
+  // when a line has something to merge.
+  std::vector<uint32_t> unorderedMapOrder(size_t reserved) const {
+    std::unordered_map<uint64_t, uint32_t> order;
+    order.reserve(reserved);
+    for (uint32_t line = 0; line < keys_.size(); ++line) order.emplace(keys_[line], line);
+    std::vector<uint32_t> lines;
+    lines.reserve(keys_.size());
+    for (const auto& entry : order) lines.push_back(entry.second);
+    return lines;
+  }
+
+ private:
+  FlatHashMap<uint64_t, uint32_t, IdentityHash> numbers_;
+  std::vector<uint64_t> keys_;
+  std::vector<std::vector<LinePoint>> points_;
+};
 
 // The corners of a line merged into another point of it, sorted by t, with that point's t.
 using MovedCorners = std::vector<std::pair<float, float>>;
@@ -84,14 +143,13 @@ class Triangulator {
         patches_(patches),
         scope_(scope),
         ownTopology_(scope.topology ? PatchTopology{} : findSharedEdges(patches)),
-        topology_(scope.topology ? *scope.topology : ownTopology_) {
+        topology_(scope.topology ? *scope.topology : ownTopology_),
+        alongU_(leaves.size() / 4),
+        alongV_(leaves.size() / 4),
+        index_(leaves.size() * 3 / 2) {
     mesh_.sharedEdgeGroups = topology_.groupCount;
     sharedLines_.resize(topology_.groupCount);
     groupSide_.assign(topology_.groupCount, {0, -1});
-    // Sized up front: rehashing these maps was a third of the triangulation time.
-    alongU_.reserve(leaves_.size() * 2);
-    alongV_.reserve(leaves_.size() * 2);
-    index_.reserve(leaves_.size() * 3);
     mesh_.vertices.reserve(leaves_.size() * 3 / 2);
     mesh_.indices.reserve(leaves_.size() * 8);
     mesh_.trianglePatch.reserve(leaves_.size() * 8 / 3);
@@ -147,18 +205,27 @@ class Triangulator {
   // Near-coincident points from the two sides of each line become one vertex (merged_).
   // Sorts every line's points.
   void mergeNearPoints() {
-    for (auto* line : {&alongU_, &alongV_}) {
+    for (LineIndex* line : {&alongU_, &alongV_}) {
       const bool alongU = line == &alongU_;
-      for (auto& [key, points] : *line) {
-        const uint32_t patch = uint32_t(key >> 32);
-        const float fixed = fromBits(uint32_t(key));
+      // The pairs of every line first, then their merges in the walk order (LineIndex).
+      std::vector<std::vector<std::pair<float, float>>> pairs(line->size());
+      bool any = false;
+      for (size_t l = 0; l < line->size(); ++l) {
+        const uint32_t patch = uint32_t(line->key(l) >> 32);
+        const float fixed = fromBits(uint32_t(line->key(l)));
         const auto uvOf = [&](float t) { return alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t); };
         const auto distinct = [&](float a, float b) {
           return distinctOnModel(patch, uvOf(a), uvOf(b));
         };
-        const std::vector<std::pair<float, float>> pairs = nearPairs(points, distinct);
-        if (lineIsSide(patch, alongU, fixed)) continue;  // merged with the side's own points
-        for (const auto& [a, b] : pairs)
+        pairs[l] = nearPairs(line->points(l), distinct);
+        if (lineIsSide(patch, alongU, fixed)) pairs[l].clear();  // merged by the side's own rules
+        any = any || !pairs[l].empty();
+      }
+      if (!any) continue;
+      for (uint32_t l : line->unorderedMapOrder(kLineIndexReserve * leaves_.size())) {
+        const uint32_t patch = uint32_t(line->key(l) >> 32);
+        const float fixed = fromBits(uint32_t(line->key(l)));
+        for (const auto& [a, b] : pairs[l])
           merge(lineKeyOf(patch, alongU, fixed, a), lineKeyOf(patch, alongU, fixed, b));
       }
     }
@@ -187,10 +254,12 @@ class Triangulator {
   // ends at a merged point ends where that point's vertex is on the line (MovedCorners).
   void listRepresentatives() {
     if (merged_.empty()) return;
-    for (auto* line : {&alongU_, &alongV_}) {
+    for (LineIndex* line : {&alongU_, &alongV_}) {
       const bool alongU = line == &alongU_;
       auto& movedOn = alongU ? movedAlongU_ : movedAlongV_;
-      for (auto& [key, points] : *line) {
+      for (uint32_t l : line->unorderedMapOrder(kLineIndexReserve * leaves_.size())) {
+        const uint64_t key = line->key(l);
+        std::vector<LinePoint>& points = line->points(l);
         const uint32_t patch = uint32_t(key >> 32);
         const float fixed = fromBits(uint32_t(key));
         size_t kept = 0;
@@ -315,9 +384,9 @@ class Triangulator {
       double x = p[c] == 0.0 ? 0.0 : p[c];
       std::memcpy(&key[c], &x, sizeof x);
     }
-    const auto [it, inserted] = positions_.emplace(key, uint32_t(positions_.size()));
+    const auto [id, inserted] = positions_.tryEmplace(key, uint32_t(positions_.size()));
     if (inserted && scope_.seamKeys) positionPoints_.push_back(p);
-    return it->second;
+    return *id;
   }
 
   // A side that folds back over itself (side_fold.h) and is no other patch's: over the part
@@ -371,12 +440,12 @@ class Triangulator {
   }
 
   uint32_t addVertex(const VertexKey& key, uint32_t patch, float u, float v) {
-    auto [it, inserted] = index_.emplace(key, uint32_t(mesh_.vertices.size()));
+    const auto [index, inserted] = index_.tryEmplace(key, uint32_t(mesh_.vertices.size()));
     if (inserted) {
       mesh_.vertices.push_back({patch, u, v});
       if (scope_.seamKeys) mesh_.seamKeys.push_back(seamKeyOf(key));
     }
-    return it->second;
+    return *index;
   }
 
   SeamKey seamKeyOf(const VertexKey& key) const {
@@ -472,13 +541,12 @@ class Triangulator {
       }
     }
     const LineIndex& lines = alongU ? alongU_ : alongV_;
-    auto it = lines.find(lineKey(patch, fixed));
+    const std::vector<LinePoint>* points = lines.find(lineKey(patch, fixed));
     const auto& movedOn = alongU ? movedAlongU_ : movedAlongV_;
     if (!movedOn.empty())
       if (auto moved = movedOn.find(lineKey(patch, fixed)); moved != movedOn.end())
         t0 = movedTo(moved->second, t0), t1 = movedTo(moved->second, t1);
-    between(it == lines.end() ? nullptr : &it->second, std::min(t0, t1), std::max(t0, t1),
-            scratch_);
+    between(points, std::min(t0, t1), std::max(t0, t1), scratch_);
     if (t0 > t1) std::reverse(scratch_.begin(), scratch_.end());
     for (float t : scratch_) place(t);
   }
@@ -619,9 +687,10 @@ class Triangulator {
   bool silent_ = false;  // the leaf being triangulated is outside the scope
   bool touchesFold_ = false;  // the leaf being triangulated has a vertex on a folded side
   bool touchesMerge_ = false;  // ... or a vertex merged into a near one
-  std::map<std::array<uint64_t, 3>, uint32_t> positions_;
+  // Ids in the order positions are first met (ranksBefore compares them).
+  FlatHashMap<std::array<uint64_t, 3>, uint32_t, PositionBitsHash> positions_;
   std::vector<glm::dvec3> positionPoints_;  // by position id, for seam keys
-  std::unordered_map<VertexKey, uint32_t, VertexKeyHash> index_;
+  FlatHashMap<VertexKey, uint32_t, VertexKeyHash> index_;
   ParamMesh mesh_;
   std::vector<RingVertex> ring_;
   std::vector<glm::vec2> ringUv_;
