@@ -56,7 +56,9 @@ Tessellation meshFromQueries(const std::vector<BezierPatch>& patches, QuadtreeRe
                              const VertexEvaluation& evaluate, const ModelFrame& frame) {
   const Stopwatch total;
   Stopwatch step;
-  ParamMesh param = triangulateLeaves(tree.leaves, patches);
+  TriangulationScope onAllCores;
+  onAllCores.threads = 0;
+  ParamMesh param = triangulateLeaves(tree.leaves, patches, onAllCores);
   const double triangulateMs = step.elapsedMs();
 
   step.restart();

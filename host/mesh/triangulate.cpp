@@ -5,9 +5,11 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <stdexcept>
 #include <unordered_map>
 
 #include "common/flat_hash_map.h"
+#include "common/parallel_for.h"
 #include "geometry/bezier.h"
 #include "mesh/near_points.h"
 #include "mesh/ring_triangulation.h"
@@ -128,11 +130,10 @@ void sortUnique(std::vector<float>& values) {
 void between(const std::vector<LinePoint>* points, float lo, float hi, std::vector<float>& out) {
   out.clear();
   if (!points) return;
+  // One search: a leaf edge has few points inside, most often none.
   auto first = std::upper_bound(points->begin(), points->end(), lo,
                                 [](float t, const LinePoint& p) { return t < p.t; });
-  auto last = std::lower_bound(points->begin(), points->end(), hi,
-                               [](const LinePoint& p, float t) { return p.t < t; });
-  for (; first < last; ++first) out.push_back(first->t);
+  for (; first != points->end() && first->t < hi; ++first) out.push_back(first->t);
 }
 
 class Triangulator {
@@ -161,12 +162,47 @@ class Triangulator {
     listRepresentatives();
   }
 
+  static constexpr size_t kPrefetchAhead = 8;
+
+  // Leaves outside the scope are walked too, without triangles: their vertices are met in
+  // the same order as in the whole mesh, so a shared vertex takes the same patch's (u, v).
+  // The walk reads the line indices, merges and folds only, so runs of leaves are walked on
+  // several threads (LeafRun); their vertices are then numbered in leaf order, as one walk
+  // would have numbered them, so the mesh does not depend on the thread count.
   ParamMesh run() {
-    // Leaves outside the scope are walked too, without triangles: their vertices are met in
-    // the same order as in the whole mesh, so a shared vertex takes the same patch's (u, v).
-    for (const QuadLeaf& leaf : leaves_) {
-      silent_ = leaf.patchIndex < scope_.firstPatch || leaf.patchIndex >= scope_.endPatch;
-      triangulateLeaf(leaf);
+    registerPositions();
+    walking_ = true;
+    const size_t runLength = 512;
+    std::vector<LeafRun> runs((leaves_.size() + runLength - 1) / runLength);
+    parallelForChunks(leaves_.size(), runLength, scope_.threads, [&](size_t begin, size_t end) {
+      LeafWork work;
+      work.out = &runs[begin / runLength];
+      // About a vertex query per leaf corner and edge point, and two triangles, per leaf.
+      work.out->queries.reserve(10 * (end - begin));
+      work.out->triangles.reserve(3 * (end - begin));
+      for (size_t l = begin; l < end; ++l) {
+        const QuadLeaf& leaf = leaves_[l];
+        work.silent = leaf.patchIndex < scope_.firstPatch || leaf.patchIndex >= scope_.endPatch;
+        triangulateLeaf(leaf, work);
+      }
+    });
+    std::vector<uint32_t> indexOf;
+    for (const LeafRun& run : runs) {
+      indexOf.resize(run.queries.size());
+      for (size_t q = 0; q < run.queries.size(); ++q) {
+        if (q + kPrefetchAhead < run.queries.size()) index_.prefetch(run.queries[q + kPrefetchAhead].key);
+        const VertexQuery& query = run.queries[q];
+        indexOf[q] = addVertex(query.key, query.patch, query.uv.x, query.uv.y);
+      }
+      for (const std::array<uint32_t, 3>& t : run.triangles) {
+        for (uint32_t q : t) {
+          mesh_.indices.push_back(indexOf[q]);
+          mesh_.cornerUv.push_back(run.queries[q].uv);
+        }
+        mesh_.trianglePatch.push_back(run.queries[t[0]].patch);
+      }
+      mesh_.droppedTriangles += run.droppedTriangles;
+      mesh_.diagonalFans += run.diagonalFans;
     }
     return std::move(mesh_);
   }
@@ -354,10 +390,10 @@ class Triangulator {
   }
 
   // The key a vertex is merged into (itself if none); notes that the leaf met a merged one.
-  VertexKey resolve(const VertexKey& key) {
+  VertexKey resolve(const VertexKey& key, bool& touchesMerge) const {
     if (merged_.empty()) return key;
     const VertexKey r = find(key);
-    if (!(r == key)) touchesMerge_ = true;
+    if (!(r == key)) touchesMerge = true;
     return r;
   }
 
@@ -384,9 +420,29 @@ class Triangulator {
       double x = p[c] == 0.0 ? 0.0 : p[c];
       std::memcpy(&key[c], &x, sizeof x);
     }
+    if (walking_) {  // read only: registerPositions listed every position the walk meets
+      const uint32_t* id = positions_.find(key);
+      if (!id) throw std::logic_error("triangulateLeaves: a position met by the walk was not listed");
+      return *id;
+    }
     const auto [id, inserted] = positions_.tryEmplace(key, uint32_t(positions_.size()));
     if (inserted && scope_.seamKeys) positionPoints_.push_back(p);
     return *id;
+  }
+
+  // Gives an id to every position baseKey can meet in the leaf walk (the corners of each
+  // patch with leaves, and its collapsed sides' points), so that the walk only looks ids up.
+  // Ids only tell positions apart from here on: merging, where their order counts, is done.
+  void registerPositions() {
+    const std::vector<bool> present = patchesWithLeaves();
+    for (uint32_t p = 0; p < patches_.size(); ++p) {
+      if (!present[p]) continue;
+      const BezierPatch& bp = patches_[p];
+      for (int j : {0, bp.degreeV})
+        for (int i : {0, bp.degreeU}) positionId(bp.at(i, j));
+      for (int side = 0; side < 4; ++side)
+        if (topology_.sides[p][side].collapsed) positionId(sideControlPoints(bp, side)[0]);
+    }
   }
 
   // A side that folds back over itself (side_fold.h) and is no other patch's: over the part
@@ -400,11 +456,16 @@ class Triangulator {
     std::map<float, VertexKey> points;  // t → vertex: the corners and their images
   };
 
-  void findFolds() {
-    foldOf_.assign(patches_.size(), {-1, -1, -1, -1});
-    // Only the patches with leaves here (all of them, unless a scope passes part of them).
+  // The patches with leaves here (all of them, unless a scope passes part of them).
+  std::vector<bool> patchesWithLeaves() const {
     std::vector<bool> present(patches_.size(), false);
     for (const QuadLeaf& leaf : leaves_) present[leaf.patchIndex] = true;
+    return present;
+  }
+
+  void findFolds() {
+    foldOf_.assign(patches_.size(), {-1, -1, -1, -1});
+    const std::vector<bool> present = patchesWithLeaves();
     for (uint32_t p = 0; p < patches_.size(); ++p)
       for (int side = 0; side < 4 && present[p]; ++side) {
         const SideInfo& s = topology_.sides[p][side];
@@ -478,35 +539,69 @@ class Triangulator {
     return {kPatchParam, patch, (uint64_t(bits(u)) << 32) | bits(v)};
   }
 
-  // The vertex at (u, v) of `patch`, welded with every other patch's vertex at that point and
-  // with the near points merged into it.
-  uint32_t vertexAt(uint32_t patch, float u, float v) {
-    int side;
-    float t;
-    if (onSide(u, v, side, t) && foldOf_[patch][side] >= 0) touchesFold_ = true;
-    return addVertex(resolve(baseKey(patch, u, v)), patch, u, v);
-  }
-
-  struct RingVertex {
-    uint32_t index;
-    glm::vec2 uv;  // on the leaf's own patch
+  // A vertex the leaf walk asks for: its index is handed out after the walk (run), in the
+  // order the walk asked, as if it had been looked up then.
+  struct VertexQuery {
+    VertexKey key;
+    uint32_t patch;
+    glm::vec2 uv;
   };
 
-  void push(std::vector<RingVertex>& ring, uint32_t patch, float u, float v) {
-    ring.push_back({vertexAt(patch, u, v), glm::vec2(u, v)});
+  // A run of consecutive leaves, walked: their vertex queries in order, and their triangles
+  // as positions in `queries`.
+  struct LeafRun {
+    std::vector<VertexQuery> queries;
+    std::vector<std::array<uint32_t, 3>> triangles;
+    size_t droppedTriangles = 0, diagonalFans = 0;
+  };
+
+  struct RingVertex {
+    VertexKey key;   // one vertex, one key (addVertex)
+    uint32_t query;  // in LeafRun::queries
+    glm::vec2 uv;    // on the leaf's own patch
+    bool operator==(const RingVertex& o) const { return key == o.key; }
+  };
+
+  // One thread's walk: where it writes, and the leaf being triangulated.
+  struct LeafWork {
+    LeafRun* out = nullptr;
+    bool silent = false;        // the leaf is outside the scope
+    bool touchesFold = false;   // it has a vertex on a folded side
+    bool touchesMerge = false;  // ... or a vertex merged into a near one
+    std::vector<RingVertex> ring;
+    std::vector<glm::vec2> ringUv;
+    std::vector<VertexKey> ringKeys;
+    std::vector<std::array<uint32_t, 3>> ringTriangles;
+    std::vector<float> scratch;
+  };
+
+  static RingVertex query(LeafWork& work, const VertexKey& key, uint32_t patch, glm::vec2 uv) {
+    work.out->queries.push_back({key, patch, uv});
+    return {key, uint32_t(work.out->queries.size() - 1), uv};
+  }
+
+  // The vertex at (u, v) of `patch`, welded with every other patch's vertex at that point and
+  // with the near points merged into it.
+  RingVertex vertexAt(LeafWork& work, uint32_t patch, float u, float v) {
+    int side;
+    float t;
+    if (onSide(u, v, side, t) && foldOf_[patch][side] >= 0) work.touchesFold = true;
+    return query(work, resolve(baseKey(patch, u, v), work.touchesMerge), patch, glm::vec2(u, v));
   }
 
   // Appends the vertices strictly inside the leaf edge from t0 to t1 (in ring order) on the
   // line `fixed` (v = fixed when alongU, else u = fixed).
-  void edgeInterior(uint32_t patch, bool alongU, float fixed, float t0, float t1,
-                    std::vector<RingVertex>& ring) {
+  void edgeInterior(LeafWork& work, uint32_t patch, bool alongU, float fixed, float t0,
+                    float t1) {
+    std::vector<RingVertex>& ring = work.ring;
+    std::vector<float>& scratch = work.scratch;
     int side = -1;
     if (alongU && (fixed == 0.0f || fixed == 1.0f)) side = fixed == 0.0f ? kSideV0 : kSideV1;
     if (!alongU && (fixed == 0.0f || fixed == 1.0f)) side = fixed == 0.0f ? kSideU0 : kSideU1;
     // A listed point is a vertex of its own: no merge to look up.
     auto place = [&](float t) {
       const glm::vec2 uv = alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
-      ring.push_back({addVertex(baseKey(patch, uv.x, uv.y), patch, uv.x, uv.y), uv});
+      ring.push_back(query(work, baseKey(patch, uv.x, uv.y), patch, uv));
     };
     if (side >= 0) {
       const SideInfo& s = topology_.sides[patch][side];
@@ -516,18 +611,18 @@ class Triangulator {
         float c0 = canonical(s, t0), c1 = canonical(s, t1);
         if (!sharedMoved_.empty())
           c0 = movedTo(sharedMoved_[s.group], c0), c1 = movedTo(sharedMoved_[s.group], c1);
-        between(&sharedLines_[s.group], std::min(c0, c1), std::max(c0, c1), scratch_);
-        if (c0 > c1) std::reverse(scratch_.begin(), scratch_.end());
-        for (float c : scratch_) {
+        between(&sharedLines_[s.group], std::min(c0, c1), std::max(c0, c1), scratch);
+        if (c0 > c1) std::reverse(scratch.begin(), scratch.end());
+        for (float c : scratch) {
           float t = s.reversed ? 1.0f - c : c;
           glm::vec2 uv = alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
           // A listed point is a vertex of its own: no merge to look up.
-          ring.push_back({addVertex({kEdgeParam, uint32_t(s.group), bits(c)}, patch, uv.x, uv.y), uv});
+          ring.push_back(query(work, {kEdgeParam, uint32_t(s.group), bits(c)}, patch, uv));
         }
         return;
       }
       if (const int32_t f = foldOf_[patch][side]; f >= 0) {
-        touchesFold_ = true;
+        work.touchesFold = true;
         const std::map<float, VertexKey>& points = folds_[f].points;
         auto first = points.upper_bound(std::min(t0, t1));
         auto last = points.lower_bound(std::max(t0, t1));
@@ -535,7 +630,7 @@ class Triangulator {
         if (t0 > t1) std::reverse(inside.begin(), inside.end());
         for (const auto& [t, key] : inside) {
           glm::vec2 uv = alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
-          ring.push_back({addVertex(key, patch, uv.x, uv.y), uv});
+          ring.push_back(query(work, key, patch, uv));
         }
         return;
       }
@@ -546,20 +641,18 @@ class Triangulator {
     if (!movedOn.empty())
       if (auto moved = movedOn.find(lineKey(patch, fixed)); moved != movedOn.end())
         t0 = movedTo(moved->second, t0), t1 = movedTo(moved->second, t1);
-    between(points, std::min(t0, t1), std::max(t0, t1), scratch_);
-    if (t0 > t1) std::reverse(scratch_.begin(), scratch_.end());
-    for (float t : scratch_) place(t);
+    between(points, std::min(t0, t1), std::max(t0, t1), scratch);
+    if (t0 > t1) std::reverse(scratch.begin(), scratch.end());
+    for (float t : scratch) place(t);
   }
 
-  void emit(uint32_t patch, const RingVertex& a, const RingVertex& b, const RingVertex& c) {
-    if (silent_) return;
-    if (a.index == b.index || b.index == c.index || c.index == a.index) {
-      ++mesh_.droppedTriangles;
+  static void emit(LeafWork& work, const RingVertex& a, const RingVertex& b, const RingVertex& c) {
+    if (work.silent) return;
+    if (a == b || b == c || c == a) {
+      ++work.out->droppedTriangles;
       return;
     }
-    mesh_.indices.insert(mesh_.indices.end(), {a.index, b.index, c.index});
-    mesh_.trianglePatch.push_back(patch);
-    mesh_.cornerUv.insert(mesh_.cornerUv.end(), {a.uv, b.uv, c.uv});
+    work.out->triangles.push_back({a.query, b.query, c.query});
   }
 
   // Along a fold the ring can meet one vertex twice: back to back (a, v, v, a at the fold's
@@ -572,10 +665,10 @@ class Triangulator {
       again = false;
       const size_t n = ring.size();
       for (size_t i = 0; i < n && !again; ++i) {
-        if (ring[i].index == ring[(i + 1) % n].index) {
+        if (ring[i] == ring[(i + 1) % n]) {
           ring.erase(ring.begin() + long((i + 1) % n));
           again = true;
-        } else if (n >= 3 && ring[i].index == ring[(i + 2) % n].index) {
+        } else if (n >= 3 && ring[i] == ring[(i + 2) % n]) {
           // Drop the spike's tip and its second base, keeping the first.
           const size_t tip = (i + 1) % n, base = (i + 2) % n;
           ring.erase(ring.begin() + long(std::max(tip, base)));
@@ -591,9 +684,8 @@ class Triangulator {
   // Consecutive ring entries at one vertex (near points merged into it, near_points.h) are
   // one entry: the fan over them would only add triangles with two corners at one vertex.
   static void dropRepeats(std::vector<RingVertex>& ring) {
-    const auto same = [](const RingVertex& a, const RingVertex& b) { return a.index == b.index; };
-    ring.erase(std::unique(ring.begin(), ring.end(), same), ring.end());
-    while (ring.size() > 1 && ring.back().index == ring.front().index) ring.pop_back();
+    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+    while (ring.size() > 1 && ring.back() == ring.front()) ring.pop_back();
   }
 
   // Rule T's leaves: its bound holds for any triangle with corners in the leaf's rectangle
@@ -608,66 +700,74 @@ class Triangulator {
   // vertex is met once, or twice in a row (a collapsed side's two corners, whose triangle
   // collapses and is dropped as in the fan): otherwise the fan, whose triangles each hold one
   // ring edge, is kept.
-  bool triangulateRing(uint32_t patch, const gpu::vec4& r, uint32_t diagonal) {
-    const size_t n = ring_.size();
-    ringUv_.resize(n);
-    ringIndex_.resize(n);
+  static bool triangulateRing(LeafWork& work, const gpu::vec4& r, uint32_t diagonal) {
+    const std::vector<RingVertex>& ring = work.ring;
+    const size_t n = ring.size();
+    work.ringUv.resize(n);
+    work.ringKeys.resize(n);
     for (size_t k = 0; k < n; ++k) {
-      ringUv_[k] = ring_[k].uv;
-      ringIndex_[k] = ring_[k].index;
+      work.ringUv[k] = ring[k].uv;
+      work.ringKeys[k] = ring[k].key;
     }
-    std::sort(ringIndex_.begin(), ringIndex_.end());
+    std::sort(work.ringKeys.begin(), work.ringKeys.end(), keyLess);
     const size_t distinct =
-        size_t(std::unique(ringIndex_.begin(), ringIndex_.end()) - ringIndex_.begin());
+        size_t(std::unique(work.ringKeys.begin(), work.ringKeys.end()) - work.ringKeys.begin());
     size_t repeats = 0;
-    for (size_t k = 0; k < n; ++k) repeats += ring_[k].index == ring_[(k + 1) % n].index;
+    for (size_t k = 0; k < n; ++k) repeats += ring[k] == ring[(k + 1) % n];
     if (distinct + repeats != n) return false;
-    if (!triangulateRectangleRingAlong(ringUv_, {r.x, r.y}, {r.z, r.w}, diagonal, ringTriangles_))
+    if (!triangulateRectangleRingAlong(work.ringUv, {r.x, r.y}, {r.z, r.w}, diagonal,
+                                       work.ringTriangles))
       return false;
-    for (const auto& t : ringTriangles_) emit(patch, ring_[t[0]], ring_[t[1]], ring_[t[2]]);
+    for (const auto& t : work.ringTriangles) emit(work, ring[t[0]], ring[t[1]], ring[t[2]]);
     return true;
   }
 
-  void triangulateLeaf(const QuadLeaf& leaf) {
+  // Any order of keys, for counting distinct ones.
+  static bool keyLess(const VertexKey& x, const VertexKey& y) {
+    return x.kind != y.kind ? x.kind < y.kind : x.a != y.a ? x.a < y.a : x.b < y.b;
+  }
+
+  void triangulateLeaf(const QuadLeaf& leaf, LeafWork& work) {
     const uint32_t p = leaf.patchIndex;
     const gpu::vec4& r = leaf.rect;
-    ring_.clear();
-    touchesFold_ = touchesMerge_ = false;
+    std::vector<RingVertex>& ring = work.ring;
+    ring.clear();
+    work.touchesFold = work.touchesMerge = false;
     // Counter-clockwise: bottom (v0, u rising), right (u1, v rising), top (v1, u falling),
     // left (u0, v falling); each edge contributes its start corner and interior vertices.
-    push(ring_, p, r.x, r.y);
-    edgeInterior(p, true, r.y, r.x, r.z, ring_);
-    push(ring_, p, r.z, r.y);
-    edgeInterior(p, false, r.z, r.y, r.w, ring_);
-    push(ring_, p, r.z, r.w);
-    edgeInterior(p, true, r.w, r.z, r.x, ring_);
-    push(ring_, p, r.x, r.w);
-    edgeInterior(p, false, r.x, r.w, r.y, ring_);
+    ring.push_back(vertexAt(work, p, r.x, r.y));
+    edgeInterior(work, p, true, r.y, r.x, r.z);
+    ring.push_back(vertexAt(work, p, r.z, r.y));
+    edgeInterior(work, p, false, r.z, r.y, r.w);
+    ring.push_back(vertexAt(work, p, r.z, r.w));
+    edgeInterior(work, p, true, r.w, r.z, r.x);
+    ring.push_back(vertexAt(work, p, r.x, r.w));
+    edgeInterior(work, p, false, r.x, r.w, r.y);
 
-    const bool folded = touchesFold_ && dropFoldedBack(ring_);
-    if (touchesMerge_) dropRepeats(ring_);
-    if (ring_.size() < 3) return;
+    const bool folded = work.touchesFold && dropFoldedBack(ring);
+    if (work.touchesMerge) dropRepeats(ring);
+    if (ring.size() < 3) return;
     // Four entries are the four corners unless a merge took one: a leaf kept to a diagonal then
     // goes through triangulateRing, which finds that diagonal's corners or keeps the fan.
     const bool cornerDiagonal = leaf.diagonal == gpu::kToleranceAnyDiagonal ||
-                                (leaf.diagonal == gpu::kToleranceMainDiagonal && !touchesMerge_);
-    if (ring_.size() == 4 && !folded && cornerDiagonal) {
-      emit(p, ring_[0], ring_[1], ring_[2]);
-      emit(p, ring_[0], ring_[2], ring_[3]);
+                                (leaf.diagonal == gpu::kToleranceMainDiagonal && !work.touchesMerge);
+    if (ring.size() == 4 && !folded && cornerDiagonal) {
+      emit(work, ring[0], ring[1], ring[2]);
+      emit(work, ring[0], ring[2], ring[3]);
       return;
     }
-    if (!folded && provenAnyTriangulation(leaf.cause) && triangulateRing(p, r, leaf.diagonal))
+    if (!folded && provenAnyTriangulation(leaf.cause) && triangulateRing(work, r, leaf.diagonal))
       return;
     // The fan's triangles need not keep to one diagonal: such a leaf's bound is then only
     // the any-triangle one (counted, docs/quadtree.md, "One diagonal").
-    if (leaf.diagonal != gpu::kToleranceAnyDiagonal) ++mesh_.diagonalFans;
+    if (leaf.diagonal != gpu::kToleranceAnyDiagonal) ++work.out->diagonalFans;
     float us = leaf.split.x, vs = leaf.split.y;
     if (!(us > r.x && us < r.z && vs > r.y && vs < r.w)) {
       us = 0.5f * (r.x + r.z);
       vs = 0.5f * (r.y + r.w);
     }
-    RingVertex center{vertexAt(p, us, vs), glm::vec2(us, vs)};
-    for (size_t k = 0; k < ring_.size(); ++k) emit(p, center, ring_[k], ring_[(k + 1) % ring_.size()]);
+    const RingVertex center = vertexAt(work, p, us, vs);
+    for (size_t k = 0; k < ring.size(); ++k) emit(work, center, ring[k], ring[(k + 1) % ring.size()]);
   }
 
   const std::vector<QuadLeaf>& leaves_;
@@ -684,19 +784,12 @@ class Triangulator {
   std::unordered_map<VertexKey, VertexKey, VertexKeyHash> merged_;
   std::vector<std::array<int32_t, 4>> foldOf_;    // per patch side, index in folds_ or -1
   std::vector<FoldedSide> folds_;
-  bool silent_ = false;  // the leaf being triangulated is outside the scope
-  bool touchesFold_ = false;  // the leaf being triangulated has a vertex on a folded side
-  bool touchesMerge_ = false;  // ... or a vertex merged into a near one
+  bool walking_ = false;  // the leaves are being walked (run): positions are only looked up
   // Ids in the order positions are first met (ranksBefore compares them).
   FlatHashMap<std::array<uint64_t, 3>, uint32_t, PositionBitsHash> positions_;
   std::vector<glm::dvec3> positionPoints_;  // by position id, for seam keys
   FlatHashMap<VertexKey, uint32_t, VertexKeyHash> index_;
   ParamMesh mesh_;
-  std::vector<RingVertex> ring_;
-  std::vector<glm::vec2> ringUv_;
-  std::vector<uint32_t> ringIndex_;
-  std::vector<std::array<uint32_t, 3>> ringTriangles_;
-  std::vector<float> scratch_;
 };
 
 }  // namespace

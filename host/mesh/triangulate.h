@@ -68,6 +68,7 @@ struct TriangulationScope {
                                             // computed here
   uint32_t firstPatch = 0, endPatch = UINT32_MAX;  // the patches whose leaves become triangles
   bool seamKeys = false;                           // fill ParamMesh::seamKeys
+  unsigned threads = 1;  // leaves walked on this many threads (0: all); the mesh is the same
 };
 
 ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
