@@ -11,6 +11,7 @@
 #include "common/flat_hash_map.h"
 #include "common/parallel_for.h"
 #include "geometry/bezier.h"
+#include "mesh/line_index.h"
 #include "mesh/near_points.h"
 #include "mesh/ring_triangulation.h"
 #include "mesh/shared_edges.h"
@@ -50,58 +51,6 @@ struct PositionBitsHash {
 
 // The lines a node-based line index was sized for, per leaf (LineIndex::unorderedMapOrder).
 constexpr size_t kLineIndexReserve = 2;
-
-struct IdentityHash {
-  size_t operator()(uint64_t key) const { return size_t(key); }
-};
-
-// Per line (u = const or v = const inside a patch, keyed by lineKey), the leaf corners on it,
-// sorted; once near points are merged (near_points.h), only those that are vertices of their
-// own. Lines are numbered in the order they were first met.
-class LineIndex {
- public:
-  explicit LineIndex(size_t expected) : numbers_(expected) {}
-
-  // The line's points, the line added if new.
-  std::vector<LinePoint>& operator[](uint64_t key) {
-    const auto [number, added] = numbers_.tryEmplace(key, uint32_t(keys_.size()));
-    if (added) {
-      keys_.push_back(key);
-      points_.emplace_back();
-    }
-    return points_[*number];
-  }
-
-  const std::vector<LinePoint>* find(uint64_t key) const {
-    const uint32_t* number = numbers_.find(key);
-    return number ? &points_[*number] : nullptr;
-  }
-
-  size_t size() const { return keys_.size(); }
-  uint64_t key(size_t line) const { return keys_[line]; }
-  std::vector<LinePoint>& points(size_t line) { return points_[line]; }
-
-  // The lines in the order a std::unordered_map<uint64_t, …> reserved for `reserved` entries
-  // and filled in this index's order walks them. Merging near points hands out position ids
-  // in the order the lines are walked (Triangulator::positionId), and a merge of two patch
-  // corners keeps the one with the smaller id: walked in this order, the merges stay those
-  // of the node-based index this class replaced, so meshes keep their bytes. Only asked for
-  // when a line has something to merge.
-  std::vector<uint32_t> unorderedMapOrder(size_t reserved) const {
-    std::unordered_map<uint64_t, uint32_t> order;
-    order.reserve(reserved);
-    for (uint32_t line = 0; line < keys_.size(); ++line) order.emplace(keys_[line], line);
-    std::vector<uint32_t> lines;
-    lines.reserve(keys_.size());
-    for (const auto& entry : order) lines.push_back(entry.second);
-    return lines;
-  }
-
- private:
-  FlatHashMap<uint64_t, uint32_t, IdentityHash> numbers_;
-  std::vector<uint64_t> keys_;
-  std::vector<std::vector<LinePoint>> points_;
-};
 
 // The corners of a line merged into another point of it, sorted by t, with that point's t.
 using MovedCorners = std::vector<std::pair<float, float>>;
