@@ -3,6 +3,7 @@
 // std::unordered_map allocates a node per entry (and, through emplace, one per lookup of a key
 // that is already there) and follows a pointer per probe; here a lookup is a hash and, most
 // often, one slot. No erase, no iteration: where a caller needs an order, it keeps one itself.
+// (edge_hash_map.h is the same scheme for 64-bit edge keys, with erase: trim's per-face maps.)
 #pragma once
 
 #include <cstddef>
