@@ -7,7 +7,7 @@ packages=(
   build-essential cmake pkg-config
   libvulkan-dev libvulkan1 libvulkan-volk-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   glslang-tools spirv-tools
-  libglm-dev libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev libstb-dev
+  libglm-dev libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev libstb-dev robin-map-dev
   libosd-dev
   # tessera view (host/viewer/): the window, and a virtual X server and X input for its tests
   libglfw3-dev xvfb xdotool

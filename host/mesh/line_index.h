@@ -6,7 +6,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "common/flat_hash_map.h"
+#include "common/hash_map.h"
 #include "mesh/near_points.h"
 
 namespace tessera {
@@ -20,21 +20,21 @@ struct LineKeyHash {
 // are vertices of their own. Lines are numbered in the order they were first met.
 class LineIndex {
  public:
-  explicit LineIndex(size_t expected) : numbers_(expected) {}
+  explicit LineIndex(size_t expected) { numbers_.reserve(expected); }
 
   // The line's points, the line added if new.
   std::vector<LinePoint>& operator[](uint64_t key) {
-    const auto [number, added] = numbers_.tryEmplace(key, uint32_t(keys_.size()));
+    const auto [number, added] = numbers_.try_emplace(key, uint32_t(keys_.size()));
     if (added) {
       keys_.push_back(key);
       points_.emplace_back();
     }
-    return points_[*number];
+    return points_[number->second];
   }
 
   const std::vector<LinePoint>* find(uint64_t key) const {
-    const uint32_t* number = numbers_.find(key);
-    return number ? &points_[*number] : nullptr;
+    const auto number = numbers_.find(key);
+    return number == numbers_.end() ? nullptr : &points_[number->second];
   }
 
   size_t size() const { return keys_.size(); }
@@ -58,7 +58,7 @@ class LineIndex {
   }
 
  private:
-  FlatHashMap<uint64_t, uint32_t, LineKeyHash> numbers_;
+  HashMap<uint64_t, uint32_t, LineKeyHash> numbers_;
   std::vector<uint64_t> keys_;
   std::vector<std::vector<LinePoint>> points_;
 };

@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "common/flat_hash_map.h"
+#include "common/hash_map.h"
 
 namespace tessera {
 
@@ -26,7 +26,8 @@ struct CornerKeyHash {
 }  // namespace
 
 std::vector<uint32_t> weldIdenticalPositions(const std::vector<glm::vec3>& positions) {
-  FlatHashMap<CornerKey, uint32_t, CornerKeyHash> first(positions.size());
+  HashMap<CornerKey, uint32_t, CornerKeyHash> first;
+  first.reserve(positions.size());
   std::vector<uint32_t> remap(positions.size());
   for (uint32_t i = 0; i < positions.size(); ++i) {
     CornerKey key;
@@ -34,7 +35,7 @@ std::vector<uint32_t> weldIdenticalPositions(const std::vector<glm::vec3>& posit
       float x = positions[i][c] == 0.0f ? 0.0f : positions[i][c];
       std::memcpy(&key[c], &x, sizeof x);
     }
-    remap[i] = *first.tryEmplace(key, i).first;
+    remap[i] = first.try_emplace(key, i).first->second;
   }
   return remap;
 }

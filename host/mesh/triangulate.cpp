@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "common/flat_hash_map.h"
+#include "common/hash_map.h"
 #include "common/parallel_for.h"
 #include "geometry/bezier.h"
 #include "mesh/line_index.h"
@@ -95,8 +95,8 @@ class Triangulator {
         ownTopology_(scope.topology ? PatchTopology{} : findSharedEdges(patches)),
         topology_(scope.topology ? *scope.topology : ownTopology_),
         alongU_(leaves.size() / 4),
-        alongV_(leaves.size() / 4),
-        index_(leaves.size() * 3 / 2) {
+        alongV_(leaves.size() / 4) {
+    index_.reserve(leaves.size() * 3 / 2);
     mesh_.sharedEdgeGroups = topology_.groupCount;
     sharedLines_.resize(topology_.groupCount);
     groupSide_.assign(topology_.groupCount, {0, -1});
@@ -111,7 +111,6 @@ class Triangulator {
     listRepresentatives();
   }
 
-  static constexpr size_t kPrefetchAhead = 8;
 
   // Leaves outside the scope are walked too, without triangles: their vertices are met in
   // the same order as in the whole mesh, so a shared vertex takes the same patch's (u, v).
@@ -139,7 +138,6 @@ class Triangulator {
     for (const LeafRun& run : runs) {
       indexOf.resize(run.queries.size());
       for (size_t q = 0; q < run.queries.size(); ++q) {
-        if (q + kPrefetchAhead < run.queries.size()) index_.prefetch(run.queries[q + kPrefetchAhead].key);
         const VertexQuery& query = run.queries[q];
         indexOf[q] = addVertex(query.key, query.patch, query.uv.x, query.uv.y);
       }
@@ -370,13 +368,14 @@ class Triangulator {
       std::memcpy(&key[c], &x, sizeof x);
     }
     if (walking_) {  // read only: registerPositions listed every position the walk meets
-      const uint32_t* id = positions_.find(key);
-      if (!id) throw std::logic_error("triangulateLeaves: a position met by the walk was not listed");
-      return *id;
+      const auto found = positions_.find(key);
+      if (found == positions_.end())
+        throw std::logic_error("triangulateLeaves: a position met by the walk was not listed");
+      return found->second;
     }
-    const auto [id, inserted] = positions_.tryEmplace(key, uint32_t(positions_.size()));
+    const auto [id, inserted] = positions_.try_emplace(key, uint32_t(positions_.size()));
     if (inserted && scope_.seamKeys) positionPoints_.push_back(p);
-    return *id;
+    return id->second;
   }
 
   // Gives an id to every position baseKey can meet in the leaf walk (the corners of each
@@ -450,12 +449,12 @@ class Triangulator {
   }
 
   uint32_t addVertex(const VertexKey& key, uint32_t patch, float u, float v) {
-    const auto [index, inserted] = index_.tryEmplace(key, uint32_t(mesh_.vertices.size()));
+    const auto [index, inserted] = index_.try_emplace(key, uint32_t(mesh_.vertices.size()));
     if (inserted) {
       mesh_.vertices.push_back({patch, u, v});
       if (scope_.seamKeys) mesh_.seamKeys.push_back(seamKeyOf(key));
     }
-    return *index;
+    return index->second;
   }
 
   SeamKey seamKeyOf(const VertexKey& key) const {
@@ -735,9 +734,9 @@ class Triangulator {
   std::vector<FoldedSide> folds_;
   bool walking_ = false;  // the leaves are being walked (run): positions are only looked up
   // Ids in the order positions are first met (ranksBefore compares them).
-  FlatHashMap<std::array<uint64_t, 3>, uint32_t, PositionBitsHash> positions_;
+  HashMap<std::array<uint64_t, 3>, uint32_t, PositionBitsHash> positions_;
   std::vector<glm::dvec3> positionPoints_;  // by position id, for seam keys
-  FlatHashMap<VertexKey, uint32_t, VertexKeyHash> index_;
+  HashMap<VertexKey, uint32_t, VertexKeyHash> index_;
   ParamMesh mesh_;
 };
 

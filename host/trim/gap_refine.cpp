@@ -1,6 +1,6 @@
 #include "trim/detail/gap_refine.h"
 
-#include "common/edge_hash_map.h"
+#include "common/hash_map.h"
 #include "common/small_id_list.h"
 
 #include <algorithm>
@@ -49,9 +49,8 @@ class EdgeUsers {
   // not depend on the hashing.
   std::vector<EdgeKey> sharedEdges() const {
     std::vector<uint64_t> keys;
-    users_.forEach([&](uint64_t k, const SmallIdList& ts) {
+    for (const auto& [k, ts] : users_)
       if (ts.size() == 2) keys.push_back(k);
-    });
     std::sort(keys.begin(), keys.end());
     std::vector<EdgeKey> edges;
     edges.reserve(keys.size());
@@ -59,15 +58,15 @@ class EdgeUsers {
     return edges;
   }
   SmallIdList of(uint32_t a, uint32_t b) const {
-    const SmallIdList* found = users_.find(key(a, b));
-    return found ? *found : SmallIdList();
+    const auto found = users_.find(key(a, b));
+    return found == users_.end() ? SmallIdList() : found->second;
   }
 
  private:
   static uint64_t key(uint32_t a, uint32_t b) {
     return uint64_t(std::min(a, b)) << 32 | uint64_t(std::max(a, b));
   }
-  EdgeHashMap<SmallIdList> users_;
+  HashMap<uint64_t, SmallIdList> users_;
 };
 
 // The position of the triangle's side k (its corners k, k + 1) and the rotation that puts it first.

@@ -6,7 +6,7 @@
 #include <numeric>
 #include <set>
 
-#include "common/edge_hash_map.h"
+#include "common/hash_map.h"
 #include "common/small_id_list.h"
 #include "trim/trim_cut.h"
 
@@ -260,17 +260,16 @@ void flipTowardsDelaunay(const std::vector<glm::dvec2>& points,
   const auto key = [](uint32_t a, uint32_t b) {
     return Edge(std::min(a, b)) << 32 | Edge(std::max(a, b));
   };
-  EdgeHashMap<uint8_t> constrained;  // a set: the value is not read
+  HashSet<Edge> constrained;
   constrained.reserve(fixed.size());
-  for (const auto& e : fixed) constrained[key(e.first, e.second)] = 1;
-  EdgeHashMap<SmallIdList> users;  // edge → the triangles using it
+  for (const auto& e : fixed) constrained.insert(key(e.first, e.second));
+  HashMap<Edge, SmallIdList> users;  // edge → the triangles using it
   users.reserve(2 * triangles.size());  // about 3/2 edges a triangle
   for (uint32_t t = 0; t < triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) users[key(triangles[t][k], triangles[t][(k + 1) % 3])].push_back(t);
   std::vector<Edge> queue;
-  users.forEach([&](Edge edge, const SmallIdList& ts) {
+  for (const auto& [edge, ts] : users)
     if (ts.size() == 2 && !constrained.contains(edge)) queue.push_back(edge);
-  });
   std::sort(queue.begin(), queue.end());  // a deterministic order, whatever the hashing
   const auto moveUser = [&](Edge edge, uint32_t from, uint32_t to) {
     users[edge].replace(from, to);
@@ -281,9 +280,9 @@ void flipTowardsDelaunay(const std::vector<glm::dvec2>& points,
   while (!queue.empty() && budget-- > 0) {
     const Edge edge = queue.back();
     queue.pop_back();
-    const SmallIdList* found = users.find(edge);
-    if (!found || found->size() != 2 || constrained.contains(edge)) continue;
-    const uint32_t t0 = (*found)[0], t1 = (*found)[1];
+    const auto found = users.find(edge);
+    if (found == users.end() || found->second.size() != 2 || constrained.contains(edge)) continue;
+    const uint32_t t0 = found->second[0], t1 = found->second[1];
     // t0 = (a, b, c) counter-clockwise with the edge a→b; t1 holds b→a and d.
     int k0 = 0;
     while (key(triangles[t0][k0], triangles[t0][(k0 + 1) % 3]) != edge) ++k0;
