@@ -6,6 +6,8 @@
 #include <IFSelect_ReturnStatus.hxx>
 #include <IGESControl_Reader.hxx>
 #include <Interface_InterfaceModel.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
 #include <STEPControl_Reader.hxx>
 #include <StepData_StepModel.hxx>
 #include <Standard_Failure.hxx>
@@ -70,9 +72,34 @@ void recordFaceEntities(XSControl_Reader& reader, CadFile& file) {
   }
 }
 
+// Open CASCADE's readers report on its default messenger, whose printer writes to standard
+// output (the IGES reader's "Total number of loaded entities"): that put text before the
+// report of `--json` and before a mesh on standard output. Its printers are set aside while a
+// file is read and transferred; what matters reaches the caller as the status and errors
+// below. (The messenger is global: another thread's Open CASCADE messages during a read are
+// not printed either.)
+class OcctMessagesSetAside {
+ public:
+  OcctMessagesSetAside() : messenger_(Message::DefaultMessenger()) {
+    if (messenger_.IsNull()) return;
+    kept_ = messenger_->Printers();
+    messenger_->ChangePrinters().Clear();
+  }
+  ~OcctMessagesSetAside() {
+    if (!messenger_.IsNull()) messenger_->ChangePrinters() = kept_;
+  }
+  OcctMessagesSetAside(const OcctMessagesSetAside&) = delete;
+  OcctMessagesSetAside& operator=(const OcctMessagesSetAside&) = delete;
+
+ private:
+  Handle(Message_Messenger) messenger_;
+  Message_SequenceOfPrinters kept_;
+};
+
 // Both exchange readers: read, transfer every root, keep all roots as one shape (a compound
 // of located instances for an assembly).
 void readExchange(XSControl_Reader& reader, CadFile& file, const char* format) {
+  const OcctMessagesSetAside quiet;
   IFSelect_ReturnStatus status = reader.ReadFile(file.path.c_str());
   if (status != IFSelect_RetDone)
     throw InputError(InputErrorKind::Syntax, file.path, 0,

@@ -1,0 +1,16 @@
+# Runs `${CMD} ${ARGS}` and checks that it exits 0 and that its standard output is one JSON
+# document and nothing else (no library's chatter before or after it), holding the key ${KEY}.
+execute_process(COMMAND ${CMD} ${ARGS} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0)
+  message(FATAL_ERROR "exit code ${code}: ${err}")
+endif()
+string(JSON value ERROR_VARIABLE json_error GET "${out}" ${KEY})
+if(json_error)
+  message(FATAL_ERROR "standard output is not one JSON document with '${KEY}' (${json_error}): ${out}")
+endif()
+string(STRIP "${out}" stripped)
+string(SUBSTRING "${stripped}" 0 1 first)
+if(NOT first STREQUAL "{")
+  message(FATAL_ERROR "standard output does not start with the JSON document: ${out}")
+endif()
+message(STATUS "stdout is JSON; ${KEY} = ${value}")
