@@ -3,6 +3,8 @@
 // model, never by a fixed parameter distance.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 #include "mesh/near_points.h"
 
 using namespace tessera;
@@ -56,4 +58,32 @@ TEST_CASE("near points: equal points fold into one with the shorter edge", "[wat
   REQUIRE(points.size() == 3);
   REQUIRE(points[1].t == 0.5f);
   REQUIRE(points[1].spacing == 0.125f);
+}
+
+TEST_CASE("near points: the order a line's points come in does not matter", "[watertight]") {
+  // The triangulator lists a line's points leaf by leaf, in whatever order its lookups go
+  // (triangulate.cpp, collectLinePoints): the points kept and the pairs found must not
+  // depend on it, equal t with different spacings included.
+  const std::vector<LinePoint> listed = {{0.5f, 0.5f},   {0.25f, 0.25f},         {0.5f, 0.125f},
+                                         {0.75f, 0.25f}, {0.5f + 1e-4f, 0.125f}, {0.25f, 0.0625f},
+                                         {0.0f, 0.25f},  {1.0f, 0.25f}};
+  std::vector<LinePoint> points = listed;
+  const std::vector<std::pair<float, float>> pairs = nearPairs(points, kAlwaysDistinct);
+  REQUIRE(pairs.size() == 1);  // (0.5, 0.5 + 1e-4): 1e-4 ≤ 0.125 / 256
+  std::vector<size_t> order(listed.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  for (int shuffle = 0; shuffle < 40; ++shuffle) {
+    // A fixed sequence of permutations: rotate, then swap two by a stride.
+    std::rotate(order.begin(), order.begin() + 3, order.end());
+    std::swap(order[size_t(shuffle) % order.size()], order[size_t(shuffle * 5 + 1) % order.size()]);
+    std::vector<LinePoint> permuted;
+    for (size_t k : order) permuted.push_back(listed[k]);
+    INFO("permutation " << shuffle);
+    REQUIRE(nearPairs(permuted, kAlwaysDistinct) == pairs);
+    REQUIRE(permuted.size() == points.size());
+    for (size_t k = 0; k < points.size(); ++k) {
+      REQUIRE(permuted[k].t == points[k].t);
+      REQUIRE(permuted[k].spacing == points[k].spacing);
+    }
+  }
 }

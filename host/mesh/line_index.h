@@ -22,14 +22,14 @@ class LineIndex {
  public:
   explicit LineIndex(size_t expected) { numbers_.reserve(expected); }
 
-  // The line's points, the line added if new.
-  std::vector<LinePoint>& operator[](uint64_t key) {
+  // The line's number, the line added if new.
+  uint32_t number(uint64_t key) {
     const auto [number, added] = numbers_.try_emplace(key, uint32_t(keys_.size()));
     if (added) {
       keys_.push_back(key);
       points_.emplace_back();
     }
-    return points_[number->second];
+    return number->second;
   }
 
   const std::vector<LinePoint>* find(uint64_t key) const {

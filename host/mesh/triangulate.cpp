@@ -133,24 +133,41 @@ class Triangulator {
         work.silent = leaf.patchIndex < scope_.firstPatch || leaf.patchIndex >= scope_.endPatch;
         triangulateLeaf(leaf, work);
       }
+      work.out->findFirsts();
     });
-    std::vector<uint32_t> indexOf;
-    for (const LeafRun& run : runs) {
-      indexOf.resize(run.queries.size());
-      for (size_t q = 0; q < run.queries.size(); ++q) {
-        const VertexQuery& query = run.queries[q];
-        indexOf[q] = addVertex(query.key, query.patch, query.uv.x, query.uv.y);
+    // A key's first query in leaf order is its first query in the first run that has it: the
+    // runs' first queries, run by run, meet the keys in the order one walk would.
+    size_t triangles = 0;
+    std::vector<size_t> firstTriangle(runs.size());
+    for (size_t r = 0; r < runs.size(); ++r) {
+      LeafRun& run = runs[r];
+      run.ids.resize(run.firsts.size());
+      for (size_t k = 0; k < run.firsts.size(); ++k) {
+        const VertexQuery& query = run.queries[run.firsts[k]];
+        run.ids[k] = addVertex(query.key, query.patch, query.uv.x, query.uv.y);
       }
-      for (const std::array<uint32_t, 3>& t : run.triangles) {
-        for (uint32_t q : t) {
-          mesh_.indices.push_back(indexOf[q]);
-          mesh_.cornerUv.push_back(run.queries[q].uv);
-        }
-        mesh_.trianglePatch.push_back(run.queries[t[0]].patch);
-      }
+      firstTriangle[r] = triangles;
+      triangles += run.triangles.size();
       mesh_.droppedTriangles += run.droppedTriangles;
       mesh_.diagonalFans += run.diagonalFans;
     }
+    mesh_.indices.resize(3 * triangles);
+    mesh_.cornerUv.resize(3 * triangles);
+    mesh_.trianglePatch.resize(triangles);
+    parallelForChunks(runs.size(), 1, scope_.threads, [&](size_t begin, size_t end) {
+      for (size_t r = begin; r < end; ++r) {
+        const LeafRun& run = runs[r];
+        size_t t = firstTriangle[r];
+        for (const std::array<uint32_t, 3>& triangle : run.triangles) {
+          for (int c = 0; c < 3; ++c) {
+            const uint32_t q = triangle[c];
+            mesh_.indices[3 * t + c] = run.ids[run.first[q]];
+            mesh_.cornerUv[3 * t + c] = run.queries[q].uv;
+          }
+          mesh_.trianglePatch[t++] = run.queries[triangle[0]].patch;
+        }
+      }
+    });
     return std::move(mesh_);
   }
 
@@ -163,10 +180,15 @@ class Triangulator {
     for (const QuadLeaf& leaf : leaves_) {
       const gpu::vec4& r = leaf.rect;
       const uint32_t p = leaf.patchIndex;
-      for (float v : {r.y, r.w})
-        for (float u : {r.x, r.z}) {
-          alongU_[lineKey(p, v)].push_back({u, r.z - r.x});
-          alongV_[lineKey(p, u)].push_back({v, r.w - r.y});
+      // The leaf's four lines, each looked up once, in the order its corners meet them (the
+      // lines' numbers follow it; a line's points are sorted before use, their order free).
+      const uint32_t lineV[2] = {alongU_.number(lineKey(p, r.y)), alongU_.number(lineKey(p, r.w))};
+      const uint32_t lineU[2] = {alongV_.number(lineKey(p, r.x)), alongV_.number(lineKey(p, r.z))};
+      for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i) {
+          const float u = i ? r.z : r.x, v = j ? r.w : r.y;
+          alongU_.points(lineV[j]).push_back({u, r.z - r.x});
+          alongV_.points(lineU[i]).push_back({v, r.w - r.y});
           // The sides (u, v) is on: none, one, or two at a corner of the parameter square.
           for (int side : {kSideV0, kSideV1, kSideU0, kSideU1}) {
             const bool alongU = side == kSideV0 || side == kSideV1;
@@ -191,19 +213,21 @@ class Triangulator {
     for (LineIndex* line : {&alongU_, &alongV_}) {
       const bool alongU = line == &alongU_;
       // The pairs of every line first, then their merges in the walk order (LineIndex).
+      // Lines apart are independent: found on all the scope's threads.
       std::vector<std::vector<std::pair<float, float>>> pairs(line->size());
-      bool any = false;
-      for (size_t l = 0; l < line->size(); ++l) {
-        const uint32_t patch = uint32_t(line->key(l) >> 32);
-        const float fixed = fromBits(uint32_t(line->key(l)));
-        const auto uvOf = [&](float t) { return alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t); };
-        const auto distinct = [&](float a, float b) {
-          return distinctOnModel(patch, uvOf(a), uvOf(b));
-        };
-        pairs[l] = nearPairs(line->points(l), distinct);
-        if (lineIsSide(patch, alongU, fixed)) pairs[l].clear();  // merged by the side's own rules
-        any = any || !pairs[l].empty();
-      }
+      parallelForChunks(line->size(), 256, scope_.threads, [&](size_t begin, size_t end) {
+        for (size_t l = begin; l < end; ++l) {
+          const uint32_t patch = uint32_t(line->key(l) >> 32);
+          const float fixed = fromBits(uint32_t(line->key(l)));
+          const auto uvOf = [&](float t) { return alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t); };
+          const auto distinct = [&](float a, float b) {
+            return distinctOnModel(patch, uvOf(a), uvOf(b));
+          };
+          pairs[l] = nearPairs(line->points(l), distinct);
+          if (lineIsSide(patch, alongU, fixed)) pairs[l].clear();  // merged by the side's own rules
+        }
+      });
+      const bool any = std::any_of(pairs.begin(), pairs.end(), [](const auto& p) { return !p.empty(); });
       if (!any) continue;
       for (uint32_t l : line->unorderedMapOrder(kLineIndexReserve * leaves_.size())) {
         const uint32_t patch = uint32_t(line->key(l) >> 32);
@@ -501,6 +525,22 @@ class Triangulator {
     std::vector<VertexQuery> queries;
     std::vector<std::array<uint32_t, 3>> triangles;
     size_t droppedTriangles = 0, diagonalFans = 0;
+    // The queries that are the first of their key in this run, in order; per query, its
+    // key's place in `firsts`; per first query, its vertex index (numbered after the walk).
+    std::vector<uint32_t> firsts, first, ids;
+
+    // Numbering looks each key up once per run, not once per query (a vertex is asked for by
+    // every leaf around it), here in a table small enough for the cache, on the run's thread.
+    void findFirsts() {
+      HashMap<VertexKey, uint32_t, VertexKeyHash> place;
+      place.reserve(queries.size());
+      first.resize(queries.size());
+      for (size_t q = 0; q < queries.size(); ++q) {
+        const auto [k, added] = place.try_emplace(queries[q].key, uint32_t(firsts.size()));
+        if (added) firsts.push_back(uint32_t(q));
+        first[q] = k->second;
+      }
+    }
   };
 
   struct RingVertex {

@@ -1,0 +1,45 @@
+// The triangulator's line index (host/mesh/line_index.h): lines numbered in the order they are
+// first met, whatever is looked up in between. Near-point merges walk the lines in an order
+// derived from these numbers (LineIndex::unorderedMapOrder), and merges hand out the ids that
+// meshes keep, so the numbering is a contract.
+#include <catch2/catch.hpp>
+
+#include "mesh/line_index.h"
+
+using namespace tessera;
+
+TEST_CASE("line index: lines numbered in the order first met", "[triangulate]") {
+  LineIndex index(4);
+  const uint64_t keys[] = {7ull << 32 | 5, 3, 7ull << 32 | 2, 1ull << 40};
+  for (size_t k = 0; k < 4; ++k) {
+    REQUIRE(index.number(keys[k]) == k);
+    // Met again (a leaf's second corner on it): the same number, no new line.
+    REQUIRE(index.number(keys[0]) == 0);
+    REQUIRE(index.number(keys[k]) == k);
+    REQUIRE(index.size() == k + 1);
+  }
+  // Growing past the size asked for keeps the numbers.
+  for (uint64_t k = 0; k < 1000; ++k) index.number(1000 + k);
+  for (size_t k = 0; k < 4; ++k) REQUIRE(index.number(keys[k]) == k);
+  REQUIRE(index.size() == 1004);
+  for (size_t line = 0; line < index.size(); ++line)
+    REQUIRE(index.key(line) == (line < 4 ? keys[line] : 1000 + (line - 4)));
+  index.points(index.number(keys[2])).push_back({0.5f, 0.25f});
+  REQUIRE(index.find(keys[2])->size() == 1);
+  REQUIRE(index.find(keys[1])->empty());
+  REQUIRE(index.find(99) == nullptr);
+}
+
+TEST_CASE("line index: the merge walk order is std::unordered_map's", "[triangulate]") {
+  LineIndex index(8);
+  std::unordered_map<uint64_t, uint32_t> expected;
+  expected.reserve(16);
+  for (uint64_t k = 0; k < 200; ++k) {
+    const uint64_t key = (k % 7) << 32 | (k * 2654435761u) % 1000;
+    const uint32_t line = index.number(key);
+    expected.emplace(key, line);
+  }
+  std::vector<uint32_t> lines;
+  for (const auto& entry : expected) lines.push_back(entry.second);
+  REQUIRE(index.unorderedMapOrder(16) == lines);
+}
