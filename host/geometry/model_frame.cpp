@@ -11,20 +11,26 @@ bool hasPosition(const BezierPatch& patch, size_t k) {
 
 }  // namespace
 
+void extendBox(ControlPointBox& box, const BezierPatch& patch) {
+  for (size_t k = 0; k < patch.cp.size(); ++k) {
+    if (!hasPosition(patch, k)) continue;
+    box.lo = box.empty ? patch.cp[k] : glm::min(box.lo, patch.cp[k]);
+    box.hi = box.empty ? patch.cp[k] : glm::max(box.hi, patch.cp[k]);
+    box.empty = false;
+  }
+}
+
 ControlPointBox controlPointBox(const std::vector<BezierPatch>& patches) {
   ControlPointBox box;
-  for (const BezierPatch& patch : patches)
-    for (size_t k = 0; k < patch.cp.size(); ++k) {
-      if (!hasPosition(patch, k)) continue;
-      box.lo = box.empty ? patch.cp[k] : glm::min(box.lo, patch.cp[k]);
-      box.hi = box.empty ? patch.cp[k] : glm::max(box.hi, patch.cp[k]);
-      box.empty = false;
-    }
+  for (const BezierPatch& patch : patches) extendBox(box, patch);
   return box;
 }
 
 ModelFrame modelFrame(const std::vector<BezierPatch>& patches) {
-  const ControlPointBox box = controlPointBox(patches);
+  return modelFrame(controlPointBox(patches));
+}
+
+ModelFrame modelFrame(const ControlPointBox& box) {
   ModelFrame frame;
   if (box.empty) return frame;
   // Halves first: lo + hi could overflow where lo/2 + hi/2 cannot (halving is exact above

@@ -20,6 +20,9 @@ struct ControlPointBox {
   bool empty = true;
 };
 ControlPointBox controlPointBox(const std::vector<BezierPatch>& patches);
+// `box` grown by one patch's points: a caller whose patches sit inside other records walks
+// them without copying each into one vector.
+void extendBox(ControlPointBox& box, const BezierPatch& patch);
 
 // model = local·scale + centre. centre: the box's midpoint; scale: its largest half-extent
 // (1 for a box of one point). Both scale exactly with the model, so the teapot at 10⁻³⁰ or
@@ -37,6 +40,7 @@ struct ModelFrame {
 };
 
 ModelFrame modelFrame(const std::vector<BezierPatch>& patches);
+ModelFrame modelFrame(const ControlPointBox& box);  // the same frame from the patches' box
 
 // The patches' control points in `frame`, weights unchanged (a rational patch's affine points
 // move; w·(P − c)/s is its homogeneous form there). A point of weight 0 becomes the local

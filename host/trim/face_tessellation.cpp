@@ -161,10 +161,10 @@ FaceTessellations tessellateFaces(const TrimmedModel& model, double tolerance,
 }
 
 ModelFrame trimmedModelFrame(const TrimmedModel& model) {
-  std::vector<BezierPatch> pieces;
+  ControlPointBox box;
   for (const TrimmedFace& face : model.faces)
-    for (const BezierPatchPiece& piece : face.pieces) pieces.push_back(piece.patch);
-  return modelFrame(pieces);
+    for (const BezierPatchPiece& piece : face.pieces) extendBox(box, piece.patch);
+  return modelFrame(box);
 }
 
 }  // namespace tessera
