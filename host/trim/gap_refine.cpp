@@ -191,10 +191,12 @@ double cornerOffset(const FaceSurface& surface, const std::vector<FaceVertex>& v
 }
 
 GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
-                 std::vector<FaceTriangle>& triangles, const std::set<EdgeKey>& trimEdges,
+                 std::vector<FaceTriangle>& triangles, const std::vector<EdgeKey>& trimEdges,
                  const GapRefineOptions& options, std::vector<double>* parametric) {
   EdgeUsers users(triangles);
-  const auto isTrim = [&](uint32_t a, uint32_t b) { return trimEdges.count(edgeKey(a, b)) > 0; };
+  const auto isTrim = [&](uint32_t a, uint32_t b) {
+    return std::binary_search(trimEdges.begin(), trimEdges.end(), edgeKey(a, b));
+  };
   const glm::dvec2 metric = options.metric;
   const auto ratioOf = [&](const std::array<uint32_t, 3>& v) {
     return shapeRatio(vs[v[0]].uv * metric, vs[v[1]].uv * metric, vs[v[2]].uv * metric);

@@ -174,7 +174,7 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
   // The gap: bounded by the trim segments (material on their left) and by the kept
   // triangles' open edges, reversed.
   std::vector<std::pair<uint32_t, uint32_t>> gapEdges;
-  std::set<EdgeKey> trimEdges;
+  std::vector<EdgeKey> trimEdges;  // sorted and made distinct below
   std::vector<double> sampledParametric;  // per triangle, where the refinement measured it
   for (const TrimLoop& loop : face.loops) {
     std::vector<uint32_t> ids;
@@ -187,15 +187,23 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
       const uint32_t a = ids[k], b = ids[(k + 1) % ids.size()];
       if (a == b) continue;  // a repeated point
       gapEdges.push_back({a, b});
-      trimEdges.insert(edgeKey(a, b));
+      trimEdges.push_back(edgeKey(a, b));
     }
   }
+  std::sort(trimEdges.begin(), trimEdges.end());
+  trimEdges.erase(std::unique(trimEdges.begin(), trimEdges.end()), trimEdges.end());
   if (!face.loops.empty()) {
-    std::set<EdgeKey> directed;
+    // The kept triangles' directed edges, sorted and distinct (a std::set's order, without a
+    // node per edge): an edge whose reverse is absent is open.
+    std::vector<EdgeKey> directed;
+    directed.reserve(3 * triangles.size());
     for (const FaceTriangle& t : triangles)
-      for (int k = 0; k < 3; ++k) directed.insert({t.v[k], t.v[(k + 1) % 3]});
+      for (int k = 0; k < 3; ++k) directed.push_back({t.v[k], t.v[(k + 1) % 3]});
+    std::sort(directed.begin(), directed.end());
+    directed.erase(std::unique(directed.begin(), directed.end()), directed.end());
     for (const auto& [a, b] : directed)
-      if (!directed.count({b, a})) gapEdges.push_back({b, a});
+      if (!std::binary_search(directed.begin(), directed.end(), EdgeKey(b, a)))
+        gapEdges.push_back({b, a});
     const glm::dvec2 metric = gapMetric(surface, lo, hi, options.tolerance);
     std::vector<glm::dvec2> points;
     for (const FaceVertex& v : builder.vertices) points.push_back(v.uv * metric);

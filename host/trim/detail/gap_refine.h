@@ -4,7 +4,6 @@
 #include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
-#include <set>
 #include <utility>
 #include <vector>
 
@@ -79,13 +78,14 @@ struct GapRefineOptions {
 // Returns the number of splits and flips and the gap triangles still over δ when the rounds ran
 // out (GapRefineOptions::maxRounds; 0 when it finished). `parametric`, when given, receives per final triangle
 // its parametricDeviation where the refinement sampled it (every gap triangle it judged), −1
-// elsewhere: the stats need not sample those again.
+// elsewhere: the stats need not sample those again. `trimEdges`: the trim segments' keys,
+// sorted and distinct (looked up by binary search).
 struct GapRefineResult {
   size_t changes = 0;     // splits and flips
   size_t unfinished = 0;  // gap triangles left over δ
 };
 GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& vs,
-                 std::vector<FaceTriangle>& triangles, const std::set<EdgeKey>& trimEdges,
+                 std::vector<FaceTriangle>& triangles, const std::vector<EdgeKey>& trimEdges,
                  const GapRefineOptions& options, std::vector<double>* parametric = nullptr);
 
 }  // namespace tessera::trim_detail
