@@ -2,86 +2,106 @@
 
 #include <algorithm>
 #include <cstring>
-#include <map>
 
 namespace tessera {
 namespace {
 
-using CurveKey = std::vector<uint64_t>;  // the bits of every coordinate, in order
-
-// Points with their weights (1 on a polynomial patch, so a polynomial side and a rational
-// side with unit weights there are the same curve). Equal points with other weights are a
-// different curve (the same curve reparametrised, or another one): never shared.
-CurveKey keyOf(const std::vector<glm::dvec4>& points) {
-  CurveKey key;
-  for (const glm::dvec4& p : points)
-    for (int c = 0; c < 4; ++c) {
-      double x = p[c] == 0.0 ? 0.0 : p[c];  // -0 and +0 are the same point
-      uint64_t b;
-      std::memcpy(&b, &x, sizeof b);
-      key.push_back(b);
-    }
-  return key;
+// The control-point indices of side `side` in increasing t, into `out` (cleared first).
+void sideIndices(const BezierPatch& patch, int side, std::vector<size_t>& out) {
+  out.clear();
+  const int n = patch.degreeU, m = patch.degreeV;
+  const auto index = [m](int i, int j) { return size_t(i * (m + 1) + j); };
+  switch (side) {
+    case kSideV0: for (int i = 0; i <= n; ++i) out.push_back(index(i, 0)); break;
+    case kSideV1: for (int i = 0; i <= n; ++i) out.push_back(index(i, m)); break;
+    case kSideU0: for (int j = 0; j <= m; ++j) out.push_back(index(0, j)); break;
+    default: for (int j = 0; j <= m; ++j) out.push_back(index(n, j)); break;
+  }
 }
 
-// Side `side`'s control points as (x, y, z, weight), in increasing t.
-std::vector<glm::dvec4> sideWeightedPoints(const BezierPatch& patch, int side) {
-  BezierPatch weights = patch;  // the weights laid out as a control net, to reuse the walk
-  for (size_t k = 0; k < weights.cp.size(); ++k)
-    weights.cp[k] = glm::dvec3(patch.weights.empty() ? 1.0 : patch.weights[k]);
-  std::vector<glm::dvec3> points = sideControlPoints(patch, side);
-  std::vector<glm::dvec3> w = sideControlPoints(weights, side);
-  std::vector<glm::dvec4> out;
-  for (size_t k = 0; k < points.size(); ++k) out.push_back(glm::dvec4(points[k], w[k].x));
-  return out;
+uint64_t bitsOf(double x) {
+  if (x == 0.0) x = 0.0;  // -0 and +0 are the same point
+  uint64_t b;
+  std::memcpy(&b, &x, sizeof b);
+  return b;
+}
+
+// A side's key: the bits of every point's (x, y, z, weight), weight 1 on a polynomial patch
+// (so a polynomial side and a rational side with unit weights there are the same curve),
+// points in the order of `indices`. Equal points with other weights are a different curve
+// (the same curve reparametrised, or another one): never shared.
+template <typename Indices>
+void appendKey(const BezierPatch& patch, const Indices& indices, std::vector<uint64_t>& out) {
+  for (size_t k : indices) {
+    const glm::dvec3& p = patch.cp[k];
+    out.insert(out.end(), {bitsOf(p.x), bitsOf(p.y), bitsOf(p.z),
+                           bitsOf(patch.weights.empty() ? 1.0 : patch.weights[k])});
+  }
 }
 
 }  // namespace
 
 std::vector<glm::dvec3> sideControlPoints(const BezierPatch& patch, int side) {
+  std::vector<size_t> indices;
+  sideIndices(patch, side, indices);
   std::vector<glm::dvec3> points;
-  const int n = patch.degreeU, m = patch.degreeV;
-  switch (side) {
-    case kSideV0: for (int i = 0; i <= n; ++i) points.push_back(patch.at(i, 0)); break;
-    case kSideV1: for (int i = 0; i <= n; ++i) points.push_back(patch.at(i, m)); break;
-    case kSideU0: for (int j = 0; j <= m; ++j) points.push_back(patch.at(0, j)); break;
-    default: for (int j = 0; j <= m; ++j) points.push_back(patch.at(n, j)); break;
-  }
+  for (size_t k : indices) points.push_back(patch.cp[k]);
   return points;
 }
 
 PatchTopology findSharedEdges(const std::vector<BezierPatch>& patches) {
   PatchTopology topology;
   topology.sides.resize(patches.size());
+  // Every side's canonical key (the smaller of its two directions) in one pool: a map from
+  // key to sides allocated a vector per key and per side. Sorting the sides by key, then by
+  // when they were seen, gives the map's groups in the map's order, members in its order.
   struct Member {
+    size_t begin, end;  // its key in `keys`
     uint32_t patch;
     int side;
     bool reversed;
   };
-  std::map<CurveKey, std::vector<Member>> curves;  // canonical key → sides with that curve
+  std::vector<uint64_t> keys, forward, backward;
+  std::vector<Member> members;
+  std::vector<size_t> indices;
   for (uint32_t p = 0; p < patches.size(); ++p)
     for (int side = 0; side < 4; ++side) {
-      std::vector<glm::dvec3> points = sideControlPoints(patches[p], side);
-      if (std::all_of(points.begin(), points.end(), [&](const glm::dvec3& q) { return q == points[0]; })) {
+      const BezierPatch& patch = patches[p];
+      sideIndices(patch, side, indices);
+      const glm::dvec3& first = patch.cp[indices[0]];
+      if (std::all_of(indices.begin(), indices.end(),
+                      [&](size_t k) { return patch.cp[k] == first; })) {
         topology.sides[p][side].collapsed = true;
         ++topology.collapsedSides;
         continue;
       }
-      std::vector<glm::dvec4> weighted = sideWeightedPoints(patches[p], side);
-      CurveKey forward = keyOf(weighted);
-      std::reverse(weighted.begin(), weighted.end());
-      CurveKey backward = keyOf(weighted);
-      bool reversed = backward < forward;  // canonical direction: the smaller key
-      curves[reversed ? backward : forward].push_back({p, side, reversed});
+      forward.clear(), backward.clear();
+      appendKey(patch, indices, forward);
+      std::reverse(indices.begin(), indices.end());
+      appendKey(patch, indices, backward);
+      const bool reversed = backward < forward;  // canonical direction: the smaller key
+      const std::vector<uint64_t>& key = reversed ? backward : forward;
+      members.push_back({keys.size(), keys.size() + key.size(), p, side, reversed});
+      keys.insert(keys.end(), key.begin(), key.end());
     }
-  for (const auto& [key, members] : curves) {
-    if (members.size() < 2) continue;
-    int32_t group = int32_t(topology.groupCount++);
-    for (const Member& m : members) {
-      topology.sides[m.patch][m.side].group = group;
-      topology.sides[m.patch][m.side].reversed = m.reversed;
-      ++topology.sharedSides;
+  const auto keyLess = [&](const Member& a, const Member& b) {
+    return std::lexicographical_compare(keys.begin() + a.begin, keys.begin() + a.end,
+                                        keys.begin() + b.begin, keys.begin() + b.end);
+  };
+  std::stable_sort(members.begin(), members.end(), keyLess);
+  for (size_t first = 0; first < members.size();) {
+    size_t last = first + 1;
+    while (last < members.size() && !keyLess(members[first], members[last])) ++last;
+    if (last - first >= 2) {
+      const int32_t group = int32_t(topology.groupCount++);
+      for (size_t k = first; k < last; ++k) {
+        SideInfo& info = topology.sides[members[k].patch][members[k].side];
+        info.group = group;
+        info.reversed = members[k].reversed;
+        ++topology.sharedSides;
+      }
     }
+    first = last;
   }
   return topology;
 }
