@@ -4,9 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <map>
 #include <memory>
-#include <set>
 #include <stdexcept>
 #include <unordered_map>
 
