@@ -1,5 +1,6 @@
 # Runs `${CMD} ${ARGS}` and checks that it exits 0 and that its standard output is one JSON
-# document and nothing else (no library's chatter before or after it), holding the key ${KEY}.
+# document and nothing else (no library's chatter before or after it), holding the key ${KEY}
+# (equal to ${EXPECT_VALUE} where that is given).
 execute_process(COMMAND ${CMD} ${ARGS} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT code EQUAL 0)
   message(FATAL_ERROR "exit code ${code}: ${err}")
@@ -7,6 +8,9 @@ endif()
 string(JSON value ERROR_VARIABLE json_error GET "${out}" ${KEY})
 if(json_error)
   message(FATAL_ERROR "standard output is not one JSON document with '${KEY}' (${json_error}): ${out}")
+endif()
+if(DEFINED EXPECT_VALUE AND NOT value STREQUAL EXPECT_VALUE)
+  message(FATAL_ERROR "'${KEY}' is '${value}', expected '${EXPECT_VALUE}'")
 endif()
 string(STRIP "${out}" stripped)
 string(SUBSTRING "${stripped}" 0 1 first)

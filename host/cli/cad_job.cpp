@@ -72,7 +72,9 @@ nlohmann::json cadStatsToJson(const CadResult& r) {
                      // promise is deviation ≤ δ + this (docs/trimmed_faces.md)
                      {"trimPointOffset", f.maxTrimPointOffset}});
   }
-  return {{"tolerance", {{"delta", r.delta}, {"diagonal", r.diagonal}}},
+  return {{"schema", "tessera-cad-stats"},  // docs/stats_schema.md, "CAD models"
+          {"schemaVersion", 1},
+          {"tolerance", {{"delta", r.delta}, {"diagonal", r.diagonal}}},
           {"faces", r.faces},
           {"facesMeshed", r.mesh.faces.size()},
           {"failedFaces", r.failures},
