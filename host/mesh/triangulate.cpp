@@ -1,77 +1,3 @@
-// ---- (to be moved to host/mesh/detail/line_points.h)
-// The leaf corners on every line of the leaves (near_points.h, line_index.h): lines u = const
-// and v = const of each patch, and each shared side in its canonical parameter. The leaf walk
-// reads them as the vertices a leaf edge passes; near-point merging first merges and prunes
-// them (near_point_merge.h).
-#include <cstdint>
-#include <utility>
-#include <vector>
-
-#include "mesh/detail/seam_vertices.h"
-#include "mesh/line_index.h"
-
-namespace tessera::triangulate_detail {
-
-// The lines a node-based line index was sized for, per leaf (LineIndex::unorderedMapOrder).
-constexpr size_t kLineIndexReserve = 2;
-
-struct LinePoints {
-  LineIndex alongU, alongV;  // lines v = const (points along u) and u = const (along v)
-  std::vector<std::vector<LinePoint>> shared;  // per group, in canonical parameters
-  std::vector<std::pair<uint32_t, int>> groupSide;  // per group, one (patch, side) on it
-};
-
-// Every leaf corner with the leaf edges that end there, on each line it is on; the corners on
-// a folded side go to its FoldedSide::corners.
-LinePoints collectLinePoints(const std::vector<QuadLeaf>& leaves, SeamVertices& seams);
-
-}  // namespace tessera::triangulate_detail
-
-// ---- (to be moved to host/mesh/line_points.cpp)
-// collectLinePoints (detail/line_points.h): one pass over the leaves that puts each corner on
-// its lines, before near points are merged and the leaves walked.
-
-namespace tessera::triangulate_detail {
-
-LinePoints collectLinePoints(const std::vector<QuadLeaf>& leaves, SeamVertices& seams) {
-  const PatchTopology& topology = seams.topology();
-  LinePoints lines{LineIndex(leaves.size() / 4), LineIndex(leaves.size() / 4), {}, {}};
-  lines.shared.resize(topology.groupCount);
-  lines.groupSide.assign(topology.groupCount, {0, -1});
-  for (const QuadLeaf& leaf : leaves) {
-    const gpu::vec4& r = leaf.rect;
-    const uint32_t p = leaf.patchIndex;
-    // The leaf's four lines, each looked up once, in the order its corners meet them (the
-    // lines' numbers follow it; a line's points are sorted before use, their order free).
-    const uint32_t lineV[2] = {lines.alongU.number(lineKey(p, r.y)),
-                               lines.alongU.number(lineKey(p, r.w))};
-    const uint32_t lineU[2] = {lines.alongV.number(lineKey(p, r.x)),
-                               lines.alongV.number(lineKey(p, r.z))};
-    for (int j = 0; j < 2; ++j)
-      for (int i = 0; i < 2; ++i) {
-        const float u = i ? r.z : r.x, v = j ? r.w : r.y;
-        lines.alongU.points(lineV[j]).push_back({u, r.z - r.x});
-        lines.alongV.points(lineU[i]).push_back({v, r.w - r.y});
-        // The sides (u, v) is on: none, one, or two at a corner of the parameter square.
-        for (int side : {kSideV0, kSideV1, kSideU0, kSideU1}) {
-          const bool alongU = side == kSideV0 || side == kSideV1;
-          const float t = alongU ? u : v, fixed = alongU ? v : u;
-          if (fixed != (side == kSideV0 || side == kSideU0 ? 0.0f : 1.0f)) continue;
-          const SideInfo& s = topology.sides[p][side];
-          if (s.group >= 0) {
-            lines.shared[s.group].push_back({canonical(s, t), alongU ? r.z - r.x : r.w - r.y});
-            lines.groupSide[s.group] = {p, side};
-          }
-          const int32_t f = seams.foldOf(p, side);
-          if (f >= 0) seams.fold(uint32_t(f)).corners.push_back(t);
-        }
-      }
-  }
-  return lines;
-}
-
-}  // namespace tessera::triangulate_detail
-
 // ---- (to be moved to host/mesh/detail/near_point_merge.h)
 // Near-coincident points from the two sides of a line made one vertex (near_points.h): which
 // key each merged point's vertex is, and where on its line a leaf corner merged into another
@@ -82,6 +8,7 @@ LinePoints collectLinePoints(const std::vector<QuadLeaf>& leaves, SeamVertices& 
 #include <utility>
 #include <vector>
 
+#include "mesh/detail/line_points.h"
 #include "mesh/detail/seam_vertices.h"
 
 namespace tessera::triangulate_detail {
@@ -331,6 +258,7 @@ NearPointMerges mergeNearPoints(LinePoints& lines, SeamVertices& seams, size_t l
 #include <vector>
 
 #include "common/hash_map.h"
+#include "mesh/detail/line_points.h"
 #include "mesh/detail/seam_vertices.h"
 
 namespace tessera::triangulate_detail {
