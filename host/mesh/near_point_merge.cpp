@@ -1,0 +1,201 @@
+// mergeNearPoints (detail/near_point_merge.h): finds the near pairs of every line, merges
+// them in an order that keeps meshes' bytes (LineIndex::unorderedMapOrder), and prunes the
+// lines to the points that stay, noting where merged corners went.
+#include "mesh/detail/near_point_merge.h"
+
+#include <algorithm>
+
+#include "common/parallel_for.h"
+#include "geometry/bezier.h"
+#include "mesh/near_points.h"
+
+namespace tessera::triangulate_detail {
+namespace {
+
+class NearPointMerger {
+ public:
+  NearPointMerger(LinePoints& lines, SeamVertices& seams, size_t leafCount, unsigned threads)
+      : lines_(lines),
+        seams_(seams),
+        topology_(seams.topology()),
+        leafCount_(leafCount),
+        threads_(threads) {}
+
+  NearPointMerges run() {
+    mergeNearPoints();
+    listRepresentatives();
+    return std::move(out_);
+  }
+
+ private:
+  // Near-coincident points from the two sides of each line become one vertex (out_.merged).
+  // Sorts every line's points.
+  void mergeNearPoints() {
+    for (LineIndex* line : {&lines_.alongU, &lines_.alongV}) {
+      const bool alongU = line == &lines_.alongU;
+      // The pairs of every line first, then their merges in the walk order (LineIndex).
+      // Lines apart are independent: found on all the scope's threads.
+      std::vector<std::vector<std::pair<float, float>>> pairs(line->size());
+      parallelForChunks(line->size(), 256, threads_, [&](size_t begin, size_t end) {
+        for (size_t l = begin; l < end; ++l) {
+          const uint32_t patch = uint32_t(line->key(l) >> 32);
+          const float fixed = fromBits(uint32_t(line->key(l)));
+          const auto uvOf = [&](float t) { return alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t); };
+          const auto distinct = [&](float a, float b) {
+            return distinctOnModel(patch, uvOf(a), uvOf(b));
+          };
+          pairs[l] = nearPairs(line->points(l), distinct);
+          if (lineIsSide(patch, alongU, fixed)) pairs[l].clear();  // merged by the side's own rules
+        }
+      });
+      const bool any = std::any_of(pairs.begin(), pairs.end(), [](const auto& p) { return !p.empty(); });
+      if (!any) continue;
+      for (uint32_t l : line->unorderedMapOrder(kLineIndexReserve * leafCount_)) {
+        const uint32_t patch = uint32_t(line->key(l) >> 32);
+        const float fixed = fromBits(uint32_t(line->key(l)));
+        for (const auto& [a, b] : pairs[l])
+          merge(lineKeyOf(patch, alongU, fixed, a), lineKeyOf(patch, alongU, fixed, b));
+      }
+    }
+    for (uint32_t g = 0; g < lines_.shared.size(); ++g) {
+      const auto [patch, side] = lines_.groupSide[g];
+      if (side < 0) continue;  // no leaf of this triangulation is on it (a streamed group's scope)
+      const SideInfo& s = topology_.sides[patch][side];
+      const bool alongU = side == kSideV0 || side == kSideV1;
+      const float fixed = side == kSideV0 || side == kSideU0 ? 0.0f : 1.0f;
+      // (1 − c need not give back the leaf's own t bit for bit; a distance does not mind.)
+      const auto uvOf = [&](float c) {
+        const float t = canonical(s, c);
+        return alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
+      };
+      const auto distinct = [&, patch = patch](float a, float b) {
+        return distinctOnModel(patch, uvOf(a), uvOf(b));
+      };
+      for (const auto& [a, b] : nearPairs(lines_.shared[g], distinct))
+        merge(groupKey(g, a), groupKey(g, b));
+    }
+    for (auto& [key, representative] : out_.merged) representative = out_.find(key);
+  }
+
+  // The line indices keep the points that stay, as the vertices they are: a point merged into
+  // another is that one's vertex, and a ring over both would meet it twice. A leaf edge that
+  // ends at a merged point ends where that point's vertex is on the line (MovedCorners).
+  void listRepresentatives() {
+    if (out_.merged.empty()) return;
+    for (LineIndex* line : {&lines_.alongU, &lines_.alongV}) {
+      const bool alongU = line == &lines_.alongU;
+      auto& movedOn = alongU ? out_.movedAlongU : out_.movedAlongV;
+      for (uint32_t l : line->unorderedMapOrder(kLineIndexReserve * leafCount_)) {
+        const uint64_t key = line->key(l);
+        std::vector<LinePoint>& points = line->points(l);
+        const uint32_t patch = uint32_t(key >> 32);
+        const float fixed = fromBits(uint32_t(key));
+        size_t kept = 0;
+        for (const LinePoint& point : points) {
+          const VertexKey own = lineKeyOf(patch, alongU, fixed, point.t);
+          const VertexKey r = out_.find(own);
+          if (r == own) {
+            points[kept++] = point;
+            continue;
+          }
+          // Where r is on this line, if it is (merged along another line, it is not).
+          float t = point.t;
+          if (r.kind == kPatchParam && r.a == patch) {
+            const float u = fromBits(uint32_t(r.b >> 32)), v = fromBits(uint32_t(r.b));
+            if (alongU && v == fixed) t = u;
+            if (!alongU && u == fixed) t = v;
+          }
+          movedOn[key].emplace_back(point.t, t);
+        }
+        points.resize(kept);
+      }
+    }
+    out_.sharedMoved.resize(lines_.shared.size());
+    for (uint32_t g = 0; g < lines_.shared.size(); ++g) {
+      std::vector<LinePoint>& points = lines_.shared[g];
+      size_t kept = 0;
+      for (const LinePoint& point : points) {
+        const VertexKey own = groupKey(g, point.t);
+        const VertexKey r = out_.find(own);
+        if (r == own) {
+          points[kept++] = point;
+          continue;
+        }
+        float c = point.t;
+        if (r.kind == kEdgeParam && r.a == g) c = fromBits(uint32_t(r.b));
+        for (float end : {0.0f, 1.0f})
+          if (r == groupKey(g, end)) c = end;
+        out_.sharedMoved[g].emplace_back(point.t, c);
+      }
+      points.resize(kept);
+    }
+  }
+
+  // Whether the line v = fixed (alongU) or u = fixed of `patch` is one of its sides that is
+  // shared, collapsed or folded: their points are merged (or placed) by the side's own rules.
+  bool lineIsSide(uint32_t patch, bool alongU, float fixed) const {
+    if (fixed != 0.0f && fixed != 1.0f) return false;
+    const int side = alongU ? (fixed == 0.0f ? kSideV0 : kSideV1) : (fixed == 0.0f ? kSideU0 : kSideU1);
+    const SideInfo& s = topology_.sides[patch][side];
+    return s.group >= 0 || s.collapsed || seams_.foldOf(patch, side) >= 0;
+  }
+
+  // The vertex key of canonical parameter c on shared group g: its ends are patch corners.
+  // (Only there is c turned back into a patch parameter: 1 − c is exact at 0 and 1 alone.)
+  VertexKey groupKey(uint32_t g, float c) {
+    if (c != 0.0f && c != 1.0f) return {kEdgeParam, g, bits(c)};
+    const auto [patch, side] = lines_.groupSide[g];
+    const SideInfo& s = topology_.sides[patch][side];
+    const float t = s.reversed ? 1.0f - c : c;
+    const bool alongU = side == kSideV0 || side == kSideV1;
+    const float fixed = side == kSideV0 || side == kSideU0 ? 0.0f : 1.0f;
+    return alongU ? seams_.baseKey(patch, t, fixed) : seams_.baseKey(patch, fixed, t);
+  }
+
+  // Whether fp32 positions tell two points of a patch apart (near_points.h): farther apart
+  // on the model, in double, than kDistinctUlps units in the last place of their coordinates.
+  bool distinctOnModel(uint32_t patch, glm::vec2 a, glm::vec2 b) const {
+    const std::vector<BezierPatch>& patches = seams_.patches();
+    const glm::dvec3 pa = patchPoint(patches[patch], a.x, a.y);
+    const glm::dvec3 pb = patchPoint(patches[patch], b.x, b.y);
+    const glm::dvec3 m = glm::max(glm::abs(pa), glm::abs(pb));
+    return glm::length(pa - pb) > kDistinctUlps * 0x1p-23 * std::max({m.x, m.y, m.z});
+  }
+
+  VertexKey lineKeyOf(uint32_t patch, bool alongU, float fixed, float t) {
+    return alongU ? seams_.baseKey(patch, t, fixed) : seams_.baseKey(patch, fixed, t);
+  }
+
+  // Merging keeps, of two keys, the one ranked first: a patch corner, then a point of a shared
+  // side, then a point inside a patch; then the smaller parameter (on a shared side, the
+  // canonical one: the first of a run, as both sides see it).
+  static bool ranksBefore(const VertexKey& x, const VertexKey& y) {
+    static constexpr int rank[] = {3, 2, 0, 1};  // by KeyKind
+    if (rank[x.kind] != rank[y.kind]) return rank[x.kind] < rank[y.kind];
+    return x.a != y.a ? x.a < y.a : x.b < y.b;
+  }
+
+  void merge(const VertexKey& x, const VertexKey& y) {
+    if (x.kind == kFoldPosition || y.kind == kFoldPosition) return;  // placed by the fold
+    VertexKey rx = out_.find(x), ry = out_.find(y);
+    if (rx == ry) return;
+    if (ranksBefore(ry, rx)) std::swap(rx, ry);
+    out_.merged[ry] = rx;
+  }
+
+  LinePoints& lines_;
+  SeamVertices& seams_;
+  const PatchTopology& topology_;
+  const size_t leafCount_;
+  const unsigned threads_;
+  NearPointMerges out_;
+};
+
+}  // namespace
+
+NearPointMerges mergeNearPoints(LinePoints& lines, SeamVertices& seams, size_t leafCount,
+                                unsigned threads) {
+  return NearPointMerger(lines, seams, leafCount, threads).run();
+}
+
+}  // namespace tessera::triangulate_detail
