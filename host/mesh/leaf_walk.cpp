@@ -1,0 +1,284 @@
+// The leaf walk (detail/leaf_walk.h): one leaf's ring — its corners, the corners of finer
+// neighbours and the shared, folded or merged points on its edges — and its triangles: two
+// for a plain leaf, n − 2 without a new vertex for a rule-T leaf (ring_triangulation.h), else
+// the fan from its split point (docs/watertight.md). The hot loop of the triangulator: every
+// helper it calls per leaf is in this file or inline in the detail headers.
+#include "mesh/detail/leaf_walk.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "mesh/ring_triangulation.h"
+
+namespace tessera::triangulate_detail {
+namespace {
+
+// Where on its line the vertex of the corner at t lies.
+float movedTo(const MovedCorners& moved, float t) {
+  if (moved.empty()) return t;
+  auto it = std::lower_bound(moved.begin(), moved.end(), std::pair<float, float>(t, -INFINITY));
+  return it != moved.end() && it->first == t ? it->second : t;
+}
+
+// Positions strictly between lo and hi (lo < hi), ascending.
+void between(const std::vector<LinePoint>* points, float lo, float hi, std::vector<float>& out) {
+  out.clear();
+  if (!points) return;
+  // One search: a leaf edge has few points inside, most often none.
+  auto first = std::upper_bound(points->begin(), points->end(), lo,
+                                [](float t, const LinePoint& p) { return t < p.t; });
+  for (; first != points->end() && first->t < hi; ++first) out.push_back(first->t);
+}
+
+class LeafWalker {
+ public:
+  explicit LeafWalker(const LeafWalkTables& tables)
+      : seams_(tables.seams),
+        topology_(tables.seams.topology()),
+        lines_(tables.lines),
+        merges_(tables.merges) {}
+
+  void walk(const std::vector<QuadLeaf>& leaves, size_t begin, size_t end, uint32_t firstPatch,
+            uint32_t endPatch, LeafRun& run) {
+    LeafWork work;
+    work.out = &run;
+    for (size_t l = begin; l < end; ++l) {
+      const QuadLeaf& leaf = leaves[l];
+      work.silent = leaf.patchIndex < firstPatch || leaf.patchIndex >= endPatch;
+      triangulateLeaf(leaf, work);
+    }
+  }
+
+ private:
+  struct RingVertex {
+    VertexKey key;   // one vertex, one key (numbered once: triangulate.cpp)
+    uint32_t query;  // in LeafRun::queries
+    glm::vec2 uv;    // on the leaf's own patch
+    bool operator==(const RingVertex& o) const { return key == o.key; }
+  };
+
+  // One thread's walk: where it writes, and the leaf being triangulated.
+  struct LeafWork {
+    LeafRun* out = nullptr;
+    bool silent = false;        // the leaf is outside the scope
+    bool touchesFold = false;   // it has a vertex on a folded side
+    bool touchesMerge = false;  // ... or a vertex merged into a near one
+    std::vector<RingVertex> ring;
+    std::vector<glm::vec2> ringUv;
+    std::vector<VertexKey> ringKeys;
+    std::vector<std::array<uint32_t, 3>> ringTriangles;
+    std::vector<float> scratch;
+  };
+
+  static RingVertex query(LeafWork& work, const VertexKey& key, uint32_t patch, glm::vec2 uv) {
+    work.out->queries.push_back({key, patch, uv});
+    return {key, uint32_t(work.out->queries.size() - 1), uv};
+  }
+
+  // The vertex at (u, v) of `patch`, welded with every other patch's vertex at that point and
+  // with the near points merged into it.
+  RingVertex vertexAt(LeafWork& work, uint32_t patch, float u, float v) {
+    int side;
+    float t;
+    if (onSide(u, v, side, t) && seams_.foldOf(patch, side) >= 0) work.touchesFold = true;
+    return query(work, merges_.resolve(seams_.baseKey(patch, u, v), work.touchesMerge), patch,
+                 glm::vec2(u, v));
+  }
+
+  // Appends the vertices strictly inside the leaf edge from t0 to t1 (in ring order) on the
+  // line `fixed` (v = fixed when alongU, else u = fixed).
+  void edgeInterior(LeafWork& work, uint32_t patch, bool alongU, float fixed, float t0,
+                    float t1) {
+    std::vector<RingVertex>& ring = work.ring;
+    std::vector<float>& scratch = work.scratch;
+    int side = -1;
+    if (alongU && (fixed == 0.0f || fixed == 1.0f)) side = fixed == 0.0f ? kSideV0 : kSideV1;
+    if (!alongU && (fixed == 0.0f || fixed == 1.0f)) side = fixed == 0.0f ? kSideU0 : kSideU1;
+    // A listed point is a vertex of its own: no merge to look up.
+    auto place = [&](float t) {
+      const glm::vec2 uv = alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
+      ring.push_back(query(work, seams_.baseKey(patch, uv.x, uv.y), patch, uv));
+    };
+    if (side >= 0) {
+      const SideInfo& s = topology_.sides[patch][side];
+      if (s.collapsed) return;  // every point of it is the same vertex
+      if (s.group >= 0) {
+        // Compare in the shared curve's own parameter, the same on both sides.
+        float c0 = canonical(s, t0), c1 = canonical(s, t1);
+        const std::vector<MovedCorners>& sharedMoved = merges_.sharedMoved;
+        if (!sharedMoved.empty())
+          c0 = movedTo(sharedMoved[s.group], c0), c1 = movedTo(sharedMoved[s.group], c1);
+        between(&lines_.shared[s.group], std::min(c0, c1), std::max(c0, c1), scratch);
+        if (c0 > c1) std::reverse(scratch.begin(), scratch.end());
+        for (float c : scratch) {
+          float t = s.reversed ? 1.0f - c : c;
+          glm::vec2 uv = alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
+          // A listed point is a vertex of its own: no merge to look up.
+          ring.push_back(query(work, {kEdgeParam, uint32_t(s.group), bits(c)}, patch, uv));
+        }
+        return;
+      }
+      if (const int32_t f = seams_.foldOf(patch, side); f >= 0) {
+        work.touchesFold = true;
+        const std::map<float, VertexKey>& points = seams_.fold(uint32_t(f)).points;
+        auto first = points.upper_bound(std::min(t0, t1));
+        auto last = points.lower_bound(std::max(t0, t1));
+        std::vector<std::pair<float, VertexKey>> inside(first, last);
+        if (t0 > t1) std::reverse(inside.begin(), inside.end());
+        for (const auto& [t, key] : inside) {
+          glm::vec2 uv = alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
+          ring.push_back(query(work, key, patch, uv));
+        }
+        return;
+      }
+    }
+    const LineIndex& lines = alongU ? lines_.alongU : lines_.alongV;
+    const std::vector<LinePoint>* points = lines.find(lineKey(patch, fixed));
+    const auto& movedOn = alongU ? merges_.movedAlongU : merges_.movedAlongV;
+    if (!movedOn.empty())
+      if (auto moved = movedOn.find(lineKey(patch, fixed)); moved != movedOn.end())
+        t0 = movedTo(moved->second, t0), t1 = movedTo(moved->second, t1);
+    between(points, std::min(t0, t1), std::max(t0, t1), scratch);
+    if (t0 > t1) std::reverse(scratch.begin(), scratch.end());
+    for (float t : scratch) place(t);
+  }
+
+  static void emit(LeafWork& work, const RingVertex& a, const RingVertex& b, const RingVertex& c) {
+    if (work.silent) return;
+    if (a == b || b == c || c == a) {
+      ++work.out->droppedTriangles;
+      return;
+    }
+    work.out->triangles.push_back({a.query, b.query, c.query});
+  }
+
+  // Along a fold the ring can meet one vertex twice: back to back (a, v, v, a at the fold's
+  // turn) or as a spike (a, v, a, the leaf's own surface folded onto itself). A fan over them
+  // would give zero-area and back-to-back triangles; the ring without them bounds the same
+  // surface. Returns whether anything went.
+  static bool dropFoldedBack(std::vector<RingVertex>& ring) {
+    bool changed = false;
+    for (bool again = true; again && ring.size() >= 2;) {
+      again = false;
+      const size_t n = ring.size();
+      for (size_t i = 0; i < n && !again; ++i) {
+        if (ring[i] == ring[(i + 1) % n]) {
+          ring.erase(ring.begin() + long((i + 1) % n));
+          again = true;
+        } else if (n >= 3 && ring[i] == ring[(i + 2) % n]) {
+          // Drop the spike's tip and its second base, keeping the first.
+          const size_t tip = (i + 1) % n, base = (i + 2) % n;
+          ring.erase(ring.begin() + long(std::max(tip, base)));
+          ring.erase(ring.begin() + long(std::min(tip, base)));
+          again = true;
+        }
+      }
+      changed = changed || again;
+    }
+    return changed;
+  }
+
+  // Consecutive ring entries at one vertex (near points merged into it, near_points.h) are
+  // one entry: the fan over them would only add triangles with two corners at one vertex.
+  static void dropRepeats(std::vector<RingVertex>& ring) {
+    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+    while (ring.size() > 1 && ring.back() == ring.front()) ring.pop_back();
+  }
+
+  // Rule T's leaves: its bound holds for any triangle with corners in the leaf's rectangle
+  // (docs/quadtree.md, "Rule T: tolerance"), so their rings need no centre vertex. Rules A–D
+  // (and rule T's MaxDepth / MinSize leaves, which share their causes) keep the fan.
+  static bool provenAnyTriangulation(uint32_t cause) {
+    return cause == gpu::kCauseWithinTolerance || cause == gpu::kCauseCulled ||
+           cause == gpu::kCauseEyePlane;
+  }
+
+  // The ring as n − 2 triangles without a new vertex (ring_triangulation.h). Only where every
+  // vertex is met once, or twice in a row (a collapsed side's two corners, whose triangle
+  // collapses and is dropped as in the fan): otherwise the fan, whose triangles each hold one
+  // ring edge, is kept.
+  static bool triangulateRing(LeafWork& work, const gpu::vec4& r, uint32_t diagonal) {
+    const std::vector<RingVertex>& ring = work.ring;
+    const size_t n = ring.size();
+    work.ringUv.resize(n);
+    work.ringKeys.resize(n);
+    for (size_t k = 0; k < n; ++k) {
+      work.ringUv[k] = ring[k].uv;
+      work.ringKeys[k] = ring[k].key;
+    }
+    std::sort(work.ringKeys.begin(), work.ringKeys.end(), keyLess);
+    const size_t distinct =
+        size_t(std::unique(work.ringKeys.begin(), work.ringKeys.end()) - work.ringKeys.begin());
+    size_t repeats = 0;
+    for (size_t k = 0; k < n; ++k) repeats += ring[k] == ring[(k + 1) % n];
+    if (distinct + repeats != n) return false;
+    if (!triangulateRectangleRingAlong(work.ringUv, {r.x, r.y}, {r.z, r.w}, diagonal,
+                                       work.ringTriangles))
+      return false;
+    for (const auto& t : work.ringTriangles) emit(work, ring[t[0]], ring[t[1]], ring[t[2]]);
+    return true;
+  }
+
+  // Any order of keys, for counting distinct ones.
+  static bool keyLess(const VertexKey& x, const VertexKey& y) {
+    return x.kind != y.kind ? x.kind < y.kind : x.a != y.a ? x.a < y.a : x.b < y.b;
+  }
+
+  void triangulateLeaf(const QuadLeaf& leaf, LeafWork& work) {
+    const uint32_t p = leaf.patchIndex;
+    const gpu::vec4& r = leaf.rect;
+    std::vector<RingVertex>& ring = work.ring;
+    ring.clear();
+    work.touchesFold = work.touchesMerge = false;
+    // Counter-clockwise: bottom (v0, u rising), right (u1, v rising), top (v1, u falling),
+    // left (u0, v falling); each edge contributes its start corner and interior vertices.
+    ring.push_back(vertexAt(work, p, r.x, r.y));
+    edgeInterior(work, p, true, r.y, r.x, r.z);
+    ring.push_back(vertexAt(work, p, r.z, r.y));
+    edgeInterior(work, p, false, r.z, r.y, r.w);
+    ring.push_back(vertexAt(work, p, r.z, r.w));
+    edgeInterior(work, p, true, r.w, r.z, r.x);
+    ring.push_back(vertexAt(work, p, r.x, r.w));
+    edgeInterior(work, p, false, r.x, r.w, r.y);
+
+    const bool folded = work.touchesFold && dropFoldedBack(ring);
+    if (work.touchesMerge) dropRepeats(ring);
+    if (ring.size() < 3) return;
+    // Four entries are the four corners unless a merge took one: a leaf kept to a diagonal then
+    // goes through triangulateRing, which finds that diagonal's corners or keeps the fan.
+    const bool cornerDiagonal = leaf.diagonal == gpu::kToleranceAnyDiagonal ||
+                                (leaf.diagonal == gpu::kToleranceMainDiagonal && !work.touchesMerge);
+    if (ring.size() == 4 && !folded && cornerDiagonal) {
+      emit(work, ring[0], ring[1], ring[2]);
+      emit(work, ring[0], ring[2], ring[3]);
+      return;
+    }
+    if (!folded && provenAnyTriangulation(leaf.cause) && triangulateRing(work, r, leaf.diagonal))
+      return;
+    // The fan's triangles need not keep to one diagonal: such a leaf's bound is then only
+    // the any-triangle one (counted, docs/quadtree.md, "One diagonal").
+    if (leaf.diagonal != gpu::kToleranceAnyDiagonal) ++work.out->diagonalFans;
+    float us = leaf.split.x, vs = leaf.split.y;
+    if (!(us > r.x && us < r.z && vs > r.y && vs < r.w)) {
+      us = 0.5f * (r.x + r.z);
+      vs = 0.5f * (r.y + r.w);
+    }
+    const RingVertex center = vertexAt(work, p, us, vs);
+    for (size_t k = 0; k < ring.size(); ++k) emit(work, center, ring[k], ring[(k + 1) % ring.size()]);
+  }
+
+  SeamVertices& seams_;
+  const PatchTopology& topology_;
+  const LinePoints& lines_;
+  const NearPointMerges& merges_;
+};
+
+}  // namespace
+
+void walkLeaves(const LeafWalkTables& tables, const std::vector<QuadLeaf>& leaves, size_t begin,
+                size_t end, uint32_t firstPatch, uint32_t endPatch, LeafRun& run) {
+  LeafWalker(tables).walk(leaves, begin, end, firstPatch, endPatch, run);
+}
+
+}  // namespace tessera::triangulate_detail
