@@ -62,7 +62,7 @@ TEST_CASE("near points: equal points fold into one with the shorter edge", "[wat
 
 TEST_CASE("near points: the order a line's points come in does not matter", "[watertight]") {
   // The triangulator lists a line's points leaf by leaf, in whatever order its lookups go
-  // (triangulate.cpp, collectLinePoints): the points kept and the pairs found must not
+  // (line_points.cpp, collectLinePoints): the points kept and the pairs found must not
   // depend on it, equal t with different spacings included.
   const std::vector<LinePoint> listed = {{0.5f, 0.5f},   {0.25f, 0.25f},         {0.5f, 0.125f},
                                          {0.75f, 0.25f}, {0.5f + 1e-4f, 0.125f}, {0.25f, 0.0625f},

@@ -1,5 +1,6 @@
 // The leaf corners on each line u = const or v = const of a patch, for the triangulator
-// (triangulate.cpp): a line's points are the vertices a leaf edge along it passes.
+// (line_points.cpp fills it, leaf_walk.cpp reads it): a line's points are the vertices a
+// leaf edge along it passes.
 #pragma once
 
 #include <cstdint>
@@ -15,7 +16,7 @@ struct LineKeyHash {
   size_t operator()(uint64_t key) const { return size_t(key); }
 };
 
-// Per line (u = const or v = const inside a patch, keyed by triangulate.cpp's lineKey), the
+// Per line (u = const or v = const inside a patch, keyed by lineKey, detail/vertex_key.h), the
 // leaf corners on it, sorted; once near points are merged (near_points.h), only those that
 // are vertices of their own. Lines are numbered in the order they were first met.
 class LineIndex {
@@ -43,7 +44,7 @@ class LineIndex {
 
   // The lines in the order a std::unordered_map<uint64_t, …> reserved for `reserved` entries
   // and filled in this index's order walks them. Merging near points hands out position ids
-  // in the order the lines are walked (Triangulator::positionId), and a merge of two patch
+  // in the order the lines are walked (SeamVertices::positionId), and a merge of two patch
   // corners keeps the one with the smaller id: walked in this order, the merges stay those
   // of the node-based index this class replaced, so meshes keep their bytes. Only asked for
   // when a line has something to merge.
