@@ -1,35 +1,40 @@
+// tessera-cad's side of the CAD seam (cad_job.h): the entry points run the model here,
+// through host/cad/ and Open CASCADE. tessera links cad_handoff.cpp in their place.
 #include "cli/cad_job.h"
 
-#include <algorithm>
-#include <cctype>
-#include <cstdio>
+#include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+
+#include "cad/mesh_cad_file.h"
+#include "cad/to_trimmed.h"
+#include "cli/cli_support.h"
 #include "cli/commands.h"
 #include "cli/outputs.h"
 #include "cli/run_report.h"
 #include "cli/stdio.h"
-#include "common/stopwatch.h"
 #include "io/errors.h"
 #include "io/stats_report.h"
+#include "trim/mesher.h"
 #include "vk/context.h"
-#ifdef TESSERA_HAVE_CAD
-#include "cad/mesh_cad_file.h"
-#endif
 
 namespace tessera::cli {
+namespace {
 
-bool isCadInput(const std::string& path) {
-  std::string lower = path;
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  for (const std::string ext : {".step", ".stp", ".iges", ".igs", ".brep"})
-    if (lower.size() > ext.size() && lower.compare(lower.size() - ext.size(), ext.size(), ext) == 0)
-      return true;
-  return false;
-}
+struct CadJob {
+  std::string input;
+  ToleranceSpec tolerance;    // model units or a share of the model's diagonal; not pixels
+  bool skipBadFaces = false;  // write the faces that converted when some did not
+};
 
-#ifdef TESSERA_HAVE_CAD
+// What a CAD run gives: the mesh, δ, counts, failures and warnings (cad/mesh_cad_file.h).
+using CadResult = CadMeshRun;
 
+// Reads and meshes the model on chosen's backend. A face that does not convert is an
+// InputError naming the file and every failed face, unless job.skipBadFaces (then the faces
+// are listed in CadResult::failures and the others meshed).
 CadResult runCadJob(const CadJob& job, ChosenBackend& chosen) {
   // The quad-trees' trim pass on the same device as the trees (null: the CPU mirror).
   const std::unique_ptr<TrimClassifier> trim =
@@ -38,25 +43,13 @@ CadResult runCadJob(const CadJob& job, ChosenBackend& chosen) {
                      chosen.backend, trim.get());
 }
 
-#else
-
-CadResult runCadJob(const CadJob& job, ChosenBackend&) {
-  throw InputError(InputErrorKind::Syntax, job.input, 0,
-                   "this tessera was built without Open CASCADE's data exchange (host/cad/)");
-}
-
-#endif
-
-namespace {
-
 double largest(const CadResult& r, double TrimmedFaceStats::*field) {
   double value = 0;
   for (const TrimmedFaceStats& f : r.mesh.faces) value = std::max(value, f.*field);
   return value;
 }
 
-}  // namespace
-
+// The statistics report of a CAD run: δ, faces, edges, triangles, deviation per face.
 nlohmann::json cadStatsToJson(const CadResult& r) {
   nlohmann::json faces = nlohmann::json::array();
   double parametric = 0, geometric = 0;
@@ -90,8 +83,6 @@ nlohmann::json cadStatsToJson(const CadResult& r) {
           {"timeMs", {{"read", r.readMs}, {"import", r.importMs}, {"mesh", r.meshMs}}},
           {"perFace", faces}};
 }
-
-namespace {
 
 void printCadSummary(FILE* to, const std::string& input, const CadResult& r,
                      const std::string& toleranceText, const ChosenBackend& chosen) {
@@ -168,6 +159,45 @@ int tessellateCadModel(const CadCommand& c) {
     if (!c.output.empty()) std::printf("wrote %s\n", c.output.c_str());
     if (!c.stats.empty()) std::printf("wrote %s\n", c.stats.c_str());
   }
+  return kExitOk;
+}
+
+int renderCadModel(const CadRenderCommand& c) {
+  checkOutputs({{"input", c.input}}, {{"-o", c.output}});
+  vk::ContextOptions vkOptions;
+  vkOptions.device = c.device;
+  ChosenBackend chosen;
+  chosen.context = std::make_unique<vk::Context>(vkOptions);
+  if (!chosen.context->queueSupportsGraphics())
+    throw vk::VulkanUnavailable("device '" + chosen.deviceName() +
+                                "' cannot draw (no graphics queue); choose another with --device");
+  chosen.backend = makeVulkanBackend(*chosen.context);
+  const CadResult r = runCadJob({c.input, c.tolerance, false}, chosen);
+  std::vector<float> values;
+  if (c.options.colour == RenderOptions::Colour::Patch)
+    values.assign(r.mesh.triangleFace.begin(), r.mesh.triangleFace.end());
+  const std::vector<uint8_t> picture = renderMesh(*chosen.context, r.mesh.mesh, values, c.options);
+  writePicture(c.output, picture, c.options.width, c.options.height);
+  if (!c.quiet) {
+    FILE* const to = c.output == kStdioPath ? stderr : stdout;
+    std::fprintf(to, "%s: %zu faces, %zu triangles, tolerance %.4g, on %s\n", c.input.c_str(),
+                 r.mesh.faces.size(), r.mesh.mesh.triangleCount(), r.delta,
+                 chosen.deviceName().c_str());
+    std::fprintf(to, "wrote %s (%dx%d)\n", c.output == kStdioPath ? kStdoutName : c.output.c_str(),
+                 c.options.width, c.options.height);
+  }
+  return kExitOk;
+}
+
+int describeCadModel(const std::string& path) {
+  const CadFile file = readCadFile(path);
+  const double delta = defaultCadTolerance(file.shape);
+  const CadImport in = toTrimmedModel(file, delta);
+  std::printf("%s: %d faces (%zu converted, %zu failed), %d edges, %d vertices, %zu shared points at δ %g\n",
+              path.c_str(), in.faces.Extent(), in.model.faces.size(), in.failures.size(),
+              in.edges.Extent(), in.vertices.Extent(), in.model.sharedPoints.size(), delta);
+  for (const auto& failure : in.failures) std::printf("failed: %s\n", failure.message.c_str());
+  for (const auto& warning : in.warnings) std::printf("warning: %s\n", warning.message.c_str());
   return kExitOk;
 }
 

@@ -2,6 +2,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +21,16 @@
 #include "io/ply_writer.h"
 
 namespace tessera::cli {
+
+bool isCadInput(const std::string& path) {
+  std::string lower = path;
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  for (const std::string ext : {".step", ".stp", ".iges", ".igs", ".brep"})
+    if (lower.size() > ext.size() && lower.compare(lower.size() - ext.size(), ext.size(), ext) == 0)
+      return true;
+  return false;
+}
 
 int runReportingErrors(const std::function<int()>& body, const std::vector<std::string>& outputs,
                        const std::string& vulkanHint) {

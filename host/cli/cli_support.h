@@ -49,6 +49,10 @@ void addResourceLimitOptions(CLI::App& command);
 // Call once every command is added.
 void refuseBadNumbers(CLI::App& app);
 
+// By extension, case-insensitively: a CAD model (.step/.stp, .iges/.igs, .brep), which
+// tessellate, stats, render and info hand to cad_job.h's entry points.
+bool isCadInput(const std::string& path);
+
 struct ChosenBackend {
   std::unique_ptr<vk::Context> context;  // null on the CPU backend
   Backend backend;

@@ -19,7 +19,6 @@
 #include "cli/stdio.h"
 #include "io/surface_reader.h"
 #include "io/errors.h"
-#include "io/png_writer.h"
 #include "render/offscreen.h"
 #include "shaders/layout.h"
 #include "mesh/screen_tolerance.h"
@@ -135,20 +134,8 @@ std::string panelLabel(const Panel& panel) {
   return label.str();
 }
 
-// The PNG to its file, or whole to standard output (a failure leaves stdout empty).
-void writePicture(const std::string& output, const std::vector<uint8_t>& picture, int width,
-                  int height) {
-  if (output == kStdioPath) {
-    std::ostringstream png(std::ios::binary);
-    writePng(png, picture, width, height);
-    writeStdout(png.str());
-  } else {
-    writePngFile(output, picture, width, height);
-  }
-}
-
-// A CAD model (issue 17, cad_job.h): its trimmed faces meshed at one δ on the device that
-// draws, coloured by face with --colour patch.
+// A CAD model (issue 17, cad_job.h): the options that do not apply are a bad command line
+// here; the model is meshed and drawn by renderCadModel.
 int renderCad(const RenderArgs& a, RenderOptions options) {
   ToleranceSpec spec;
   checkCommandLine([&] {
@@ -165,30 +152,14 @@ int renderCad(const RenderArgs& a, RenderOptions options) {
       throw std::invalid_argument("--tolerance '" + a.tolerance +
                                   "': a CAD model takes a distance or a percentage, not pixels");
   });
-  checkOutputs({{"input", a.input}}, {{"-o", a.output}});
-  vk::ContextOptions vkOptions;
-  vkOptions.device = a.device;
-  ChosenBackend chosen;
-  chosen.context = std::make_unique<vk::Context>(vkOptions);
-  if (!chosen.context->queueSupportsGraphics())
-    throw vk::VulkanUnavailable("device '" + chosen.deviceName() +
-                                "' cannot draw (no graphics queue); choose another with --device");
-  chosen.backend = makeVulkanBackend(*chosen.context);
-  const CadResult r = runCadJob({a.input, spec, false}, chosen);
-  std::vector<float> values;
-  if (options.colour == RenderOptions::Colour::Patch)
-    values.assign(r.mesh.triangleFace.begin(), r.mesh.triangleFace.end());
-  const std::vector<uint8_t> picture = renderMesh(*chosen.context, r.mesh.mesh, values, options);
-  writePicture(a.output, picture, options.width, options.height);
-  if (!a.quiet) {
-    FILE* const to = a.output == kStdioPath ? stderr : stdout;
-    std::fprintf(to, "%s: %zu faces, %zu triangles, tolerance %.4g, on %s\n", a.input.c_str(),
-                 r.mesh.faces.size(), r.mesh.mesh.triangleCount(), r.delta,
-                 chosen.deviceName().c_str());
-    std::fprintf(to, "wrote %s (%dx%d)\n", a.output == kStdioPath ? kStdoutName : a.output.c_str(),
-                 options.width, options.height);
-  }
-  return kExitOk;
+  CadRenderCommand c;
+  c.input = a.input;
+  c.output = a.output;
+  c.device = a.device;
+  c.tolerance = spec;
+  c.options = options;
+  c.quiet = a.quiet;
+  return renderCadModel(c);
 }
 
 int run(const RenderArgs& a) {

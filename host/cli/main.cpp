@@ -2,12 +2,14 @@
 #include <cstdio>
 
 #include "cli/cli_support.h"
+#include "cli/command_line.h"
 #include "cli/commands.h"
 #include "cli/help_text.h"
 #include "common/version.h"
 #include "io/pending_temp_files.h"
 
 int main(int argc, char** argv) {
+  tessera::cli::keptCommandLine() = argv;  // for handing a CAD command to tessera-cad
   CLI::App app{"tessera: adaptive tessellation of free-form surfaces on Vulkan compute"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("tessera ") + tessera::versionString(),

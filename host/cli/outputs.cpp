@@ -3,11 +3,13 @@
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
+#include <sstream>
 #include <system_error>
 
 #include "cli/stdio.h"
 #include "io/gltf_writer.h"
 #include "io/obj_writer.h"
+#include "io/png_writer.h"
 #include "io/ply_writer.h"
 
 namespace tessera::cli {
@@ -96,6 +98,17 @@ MeshWriteOptions meshWriteOptions(const MeshOutputArgs& args, const std::string&
   }
   options.metadata = args.metadata;
   return options;
+}
+
+void writePicture(const std::string& output, const std::vector<uint8_t>& picture, int width,
+                  int height) {
+  if (output == kStdioPath) {
+    std::ostringstream png(std::ios::binary);
+    writePng(png, picture, width, height);
+    writeStdout(png.str());
+  } else {
+    writePngFile(output, picture, width, height);
+  }
 }
 
 }  // namespace tessera::cli

@@ -2,6 +2,7 @@
 // every output's directory takes a new file), then written together at the end
 // (AtomicFileGroup, host/io/atomic_file.h): all of them or none.
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -44,5 +45,10 @@ void addMeshOutputOptions(CLI::App* cmd, MeshOutputArgs& args);
 // --precision double for glb (CLI::ValidationError, exit 1): glTF has no double attributes.
 MeshWriteOptions meshWriteOptions(const MeshOutputArgs& args, const std::string& path,
                                   const std::string& format = "");
+
+// `render`'s RGBA8 picture as a PNG to `output`, or whole to standard output for "-" (a failure
+// leaves stdout empty).
+void writePicture(const std::string& output, const std::vector<uint8_t>& picture, int width,
+                  int height);
 
 }  // namespace tessera::cli
