@@ -1,6 +1,7 @@
 # cmake --install: headers, libtessera.a, the CMake package (find_package(tessera), target
-# tessera::tessera) and tessera.pc; the command too when it is built. scripts/check-install.sh
-# builds examples/consumer against an installed copy both ways.
+# tessera::tessera) and tessera.pc; the commands too when they are built (tessera, and
+# tessera-cad with Open CASCADE). scripts/check-install.sh builds examples/consumer against an
+# installed copy both ways.
 include(CMakePackageConfigHelpers)
 
 set(TESSERA_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/tessera)
@@ -19,6 +20,10 @@ install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/include/tessera
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h" ${TESSERA_HEADERS_LEFT_OUT})
 if(TESSERA_BUILD_CLI)
   install(TARGETS tessera RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  # In the same directory: tessera execs the tessera-cad beside it for a CAD model (cli/cad_job.h).
+  if(TARGET tessera-cad)
+    install(TARGETS tessera-cad RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  endif()
 endif()
 
 install(EXPORT tesseraTargets NAMESPACE tessera:: DESTINATION ${TESSERA_CMAKE_DIR})

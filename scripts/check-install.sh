@@ -4,7 +4,9 @@
 # data/teapot.bpt and checks that they print the same triangle count. Also checks that the
 # exported interface carries none of Tessera's build defines and that a consumer can include
 # <tessera/tessera.h> beside <vulkan/vulkan.h> and glm with their normal definitions, and
-# that add_subdirectory leaves the caller's build type alone and configures no tests.
+# that add_subdirectory leaves the caller's build type alone and configures no tests. The
+# commands: bin/tessera, and with the cad component bin/tessera-cad, which the installed
+# tessera (no Open CASCADE linked) hands a STEP model to.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${BUILD_DIR:-build}
@@ -80,6 +82,11 @@ same_triangles() {
 
 same_triangles "$work/cmake-build/consumer" "$work/consumer-pc" data/teapot.bpt
 echo "check-install: OK (installed to a prefix, find_package and pkg-config builds agree: $agreed triangles)"
+# The command, where it is built (bin/tessera-cad beside it: below, with the cad component).
+if [[ -x $build_dir/tessera && ! -x $prefix/bin/tessera ]]; then
+  echo "check-install: the build has tessera but the install has no bin/tessera" >&2
+  exit 1
+fi
 
 # The CAD component, where Tessera was built with Open CASCADE: find_package(tessera COMPONENTS
 # cad) and pkg-config tessera-cad, on a model of FreeCAD's IDF library (scripts/deps.sh).
@@ -94,6 +101,21 @@ if [[ -f $(dirname "$pc")/tessera-cad.pc ]]; then
     $(pkg-config --cflags --libs tessera-cad)
   same_triangles "$work/cad-build/cad_consumer" "$work/cad-consumer-pc" "$model"
   echo "check-install: OK (the cad component: $agreed triangles on $(basename "$model"))"
+  # The installed tessera links no Open CASCADE and hands the model to the installed
+  # tessera-cad beside it (host/cli/cad_job.h): the same mesh as the library's.
+  if [[ -x $build_dir/tessera-cad ]]; then
+    [[ -x $prefix/bin/tessera-cad ]] || { echo "check-install: no bin/tessera-cad" >&2; exit 1; }
+    if readelf -d "$prefix/bin/tessera" | grep -E "NEEDED.*lib(TK|tbb)"; then
+      echo "check-install: the installed tessera links Open CASCADE (above)" >&2
+      exit 1
+    fi
+    out=$("$prefix/bin/tessera" tessellate "$model" --backend cpu -o "$work/model.obj")
+    [[ $out == *"triangles $agreed,"* && -s $work/model.obj ]] || {
+      echo "check-install: bin/tessera on $model, through bin/tessera-cad, not $agreed triangles: $out" >&2
+      exit 1
+    }
+    echo "check-install: OK (bin/tessera ran $(basename "$model") in bin/tessera-cad: $agreed triangles)"
+  fi
 fi
 if [[ ! -f $(dirname "$pc")/tessera-cad.pc && -f $cad_header ]]; then
   echo "check-install: $cad_header installed without the cad component" >&2
