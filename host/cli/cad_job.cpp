@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <memory>
+#include <stdexcept>
 
 #include "cad/mesh_cad_file.h"
 #include "cad/to_trimmed.h"
@@ -123,8 +124,10 @@ int tessellateCadModel(const CadCommand& c) {
       throw std::invalid_argument("--lower-bound: not for CAD models (yet)");
   });
   const StreamFormats formats = parseFormats(c.formats);
-  if (c.output == kStdioPath || c.stats == kStdioPath)
-    throw CLI::ValidationError("--output", "a CAD model's mesh and report go to files (or --json)");
+  checkCommandLine([&] {
+    if (c.output == kStdioPath || c.stats == kStdioPath)
+      throw std::invalid_argument("--output: a CAD model's mesh and report go to files (or --json)");
+  });
   if (!c.output.empty()) checkMeshFormat(c.output, formats.output);
   checkOutputs({{"input", c.input}}, {{"-o", c.output}, {"--stats", c.stats}});
   AtomicFileGroup files;

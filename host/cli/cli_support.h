@@ -1,8 +1,6 @@
 // What the subcommands share: turning exceptions into one message and a documented exit code,
 // choosing the backend (--backend vulkan|cpu|auto), and writing meshes by extension.
 #pragma once
-#include <CLI/CLI.hpp>
-
 #include <functional>
 #include <future>
 #include <memory>
@@ -14,6 +12,11 @@
 #include "mesh/screen_tolerance.h"
 #include "mesh/tessellate.h"
 #include "vk/context.h"
+
+// CLI::App by name only (commands.h says why).
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace tessera::cli {
 

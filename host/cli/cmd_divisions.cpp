@@ -1,5 +1,7 @@
 // tessera divisions: paper 002's comparison table of division counts for rational surfaces
 // with zero weights (host/experiments/division_table.h, docs/rational_division.md).
+#include <CLI/CLI.hpp>
+
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>

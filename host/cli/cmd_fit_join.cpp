@@ -1,5 +1,7 @@
 // tessera fit | join: fitting a Loop control mesh to a target surface, refining until a
 // tolerance, and joining or pasting two control meshes (docs/loop.md).
+#include <CLI/CLI.hpp>
+
 #include <cstdio>
 #include <limits>
 #include <stdexcept>

@@ -1,4 +1,6 @@
 // `tessera info`: what an input file holds. A CAD model goes to describeCadModel (cad_job.h).
+#include <CLI/CLI.hpp>
+
 #include <cstdio>
 
 #include "cli/cad_job.h"

@@ -1,6 +1,8 @@
 // tessera loop | limit: Loop subdivision of OBJ control meshes on the chosen backend, and the
 // registration of every Loop command (fit and join run in cmd_fit_join.cpp; docs/loop.md).
 // Output by extension: .obj, .ply or .glb.
+#include <CLI/CLI.hpp>
+
 #include <cstdio>
 #include <filesystem>
 #include <memory>

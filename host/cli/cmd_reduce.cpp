@@ -1,6 +1,8 @@
 // `tessera reduce`: the control-point reduction paper's table (docs/reduction.md) on the
 // synthetic shoe-last surface — curvature-chosen against random knots per threshold — and the
 // before/after surfaces as JSON scenes for `tessera render`.
+#include <CLI/CLI.hpp>
+
 #include <unistd.h>
 
 #include <chrono>

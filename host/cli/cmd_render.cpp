@@ -1,5 +1,7 @@
 // `tessera render`: tessellate on the GPU, draw the mesh offscreen with Vulkan, write a PNG.
 // --side-by-side draws one panel per method with one shared camera, each labelled.
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cstdio>

@@ -1,6 +1,8 @@
 // `tessera view`: the real-time tessellation in a window (host/viewer/), or scripted frames
 // for tests and pictures. Built only with TESSERA_BUILD_VIEWER (GLFW); without it the command
 // says so and exits 3, as when no window system is present.
+#include <CLI/CLI.hpp>
+
 #include <cmath>
 #include <cstdio>
 #include <string>

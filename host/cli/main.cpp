@@ -1,4 +1,6 @@
 // tessera: tessellate free-form surfaces on the GPU. See docs/cli.md.
+#include <CLI/CLI.hpp>
+
 #include <cstdio>
 
 #include "cli/cli_support.h"

@@ -6,11 +6,14 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-
 #include "io/atomic_file.h"
 #include "io/mesh_write_options.h"
 #include "mesh/tessellate.h"
+
+// CLI::App by name only (commands.h says why).
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace tessera::cli {
 
