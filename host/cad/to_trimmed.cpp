@@ -56,13 +56,23 @@ struct FaceOutcome {
   CadFaceFailure failure;  // when not converted
 };
 
-// The first and last shared point of `edge` in the direction the wire uses it.
-std::pair<uint32_t, uint32_t> endIds(const TopoDS_Edge& edge, const CadImport& in) {
+// A wire's edge with its index in CadImport::edges (0-based) and its first and last shared
+// point in the direction the wire uses it: looked up once per edge, not at every use.
+struct WireEdge {
+  TopoDS_Edge edge;
+  size_t index = 0;
+  uint32_t firstId = 0, lastId = 0;
+};
+
+WireEdge wireEdge(const TopoDS_Edge& edge, const CadImport& in) {
   const int index = in.edges.FindIndex(edge);
   if (index == 0) throw CadFaceError("a wire edge is not in the shape's edge map");
-  const std::vector<uint32_t>& ids = in.edgeSamples[static_cast<size_t>(index - 1)].pointIds;
-  return edge.Orientation() == TopAbs_REVERSED ? std::pair(ids.back(), ids.front())
-                                               : std::pair(ids.front(), ids.back());
+  WireEdge out{edge, size_t(index - 1), 0, 0};
+  const std::vector<uint32_t>& ids = in.edgeSamples[out.index].pointIds;
+  const bool reversed = edge.Orientation() == TopAbs_REVERSED;
+  out.firstId = reversed ? ids.back() : ids.front();
+  out.lastId = reversed ? ids.front() : ids.back();
+  return out;
 }
 
 // The wire's edges in an order where each starts at the previous one's end: the wire's own
@@ -70,25 +80,23 @@ std::pair<uint32_t, uint32_t> endIds(const TopoDS_Edge& edge, const CadImport& i
 // makes the vertices ambiguous; otherwise
 // BRepTools_WireExplorer's, which needs every edge's pcurve on the face (on a plane without
 // stored pcurves, a projection of each edge: most of the import's time once).
-std::vector<TopoDS_Edge> orderedEdges(const TopoDS_Wire& wire, const TopoDS_Face& face,
-                                      const CadImport& in) {
-  std::vector<TopoDS_Edge> edges;
+std::vector<WireEdge> orderedEdges(const TopoDS_Wire& wire, const TopoDS_Face& face,
+                                   const CadImport& in) {
+  std::vector<WireEdge> edges;
   for (TopoDS_Iterator it(wire); it.More(); it.Next())
-    if (it.Value().ShapeType() == TopAbs_EDGE) edges.push_back(TopoDS::Edge(it.Value()));
+    if (it.Value().ShapeType() == TopAbs_EDGE) edges.push_back(wireEdge(TopoDS::Edge(it.Value()), in));
   // Chained by vertices is chained in uv, unless an edge has one vertex at both ends (a closed
   // edge: a torus's seams all meet at its one vertex) or is used twice (a seam, once per side):
   // then only the pcurves tell the order.
   std::set<const TopoDS_TShape*> distinct;
   bool vertexOrderHolds = true;
-  for (const TopoDS_Edge& edge : edges) {
-    const std::pair<uint32_t, uint32_t> ends = endIds(edge, in);
-    if ((ends.first == ends.second && edges.size() > 1) || !distinct.insert(edge.TShape().get()).second)
+  for (const WireEdge& edge : edges)
+    if ((edge.firstId == edge.lastId && edges.size() > 1) ||
+        !distinct.insert(edge.edge.TShape().get()).second)
       vertexOrderHolds = false;
-  }
   const auto chained = [&] {
     for (size_t k = 0; k < edges.size(); ++k)
-      if (endIds(edges[k], in).second != endIds(edges[(k + 1) % edges.size()], in).first)
-        return false;
+      if (edges[k].lastId != edges[(k + 1) % edges.size()].firstId) return false;
     return true;
   };
   if (vertexOrderHolds && chained()) return edges;
@@ -100,21 +108,22 @@ std::vector<TopoDS_Edge> orderedEdges(const TopoDS_Wire& wire, const TopoDS_Face
     // which writes the edges' uv points), but older and other versions write: one at a time.
     static std::mutex explorerMutex;
     const std::lock_guard<std::mutex> lock(explorerMutex);
-    for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next()) edges.push_back(it.Current());
+    for (BRepTools_WireExplorer it(wire, face); it.More(); it.Next())
+      edges.push_back(wireEdge(it.Current(), in));
   }
-  int edgeCount = 0;
+  size_t edgeCount = 0;
   for (TopExp_Explorer e(wire, TopAbs_EDGE); e.More(); e.Next()) ++edgeCount;
-  if (int(edges.size()) != edgeCount)
+  if (edges.size() != edgeCount)
     throw CadFaceError("the wire explorer ordered " + std::to_string(edges.size()) +
                        " of the wire's " + std::to_string(edgeCount) + " edges");
   return edges;
 }
 
-// Whether the file stores `edge`'s pcurve on `face` (BRep_Tool::CurveOnSurface computes one for
-// a plane otherwise).
-bool storesPcurve(const TopoDS_Edge& edge, const TopoDS_Face& face) {
-  TopLoc_Location location;
-  const Handle(Geom_Surface)& surface = BRep_Tool::Surface(face, location);
+// Whether the file stores `edge`'s pcurve on the face whose surface and location
+// BRep_Tool::Surface(face, location) gives (BRep_Tool::CurveOnSurface computes one for a plane
+// otherwise).
+bool storesPcurve(const TopoDS_Edge& edge, const Handle(Geom_Surface)& surface,
+                  const TopLoc_Location& location) {
   const TopLoc_Location onSurface = location.Predivided(edge.Location());
   const Handle(BRep_TEdge) tedge = Handle(BRep_TEdge)::DownCast(edge.TShape());
   for (BRep_ListIteratorOfListOfCurveRepresentation it(tedge->Curves()); it.More(); it.Next())
@@ -132,15 +141,18 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
                  const std::string& path, const CadImport& in, FaceOutcome& outcome) {
   RawLoop loop;
   const Handle(Geom_Plane) plane = Handle(Geom_Plane)::DownCast(basis);
+  TopLoc_Location faceLocation;  // the face's surface as stored, for storesPcurve
+  const Handle(Geom_Surface)& faceSurface = BRep_Tool::Surface(face, faceLocation);
   uint32_t firstId = 0, lastId = 0;
-  const std::vector<TopoDS_Edge> edges = orderedEdges(wire, face, in);
+  const std::vector<WireEdge> edges = orderedEdges(wire, face, in);
   for (size_t e = 0; e < edges.size(); ++e) {
-    const TopoDS_Edge& edge = edges[e];
-    const int index = in.edges.FindIndex(edge);
-    const EdgeSamples& samples = in.edgeSamples[static_cast<size_t>(index - 1)];
+    const TopoDS_Edge& edge = edges[e].edge;
+    const int index = int(edges[e].index) + 1;
+    const EdgeSamples& samples = in.edgeSamples[edges[e].index];
     double pf = 0, pl = 0;
     Handle(Geom2d_Curve) pcurve;
-    const bool projected = !plane.IsNull() && !samples.degenerated && !storesPcurve(edge, face);
+    const bool projected = !plane.IsNull() && !samples.degenerated &&
+                           !storesPcurve(edge, faceSurface, faceLocation);
     if (!projected) {
       pcurve = BRep_Tool::CurveOnSurface(edge, face, pf, pl);
       if (pcurve.IsNull())
@@ -272,10 +284,23 @@ FaceOutcome faceOutcome(const CadFile& file, const CadImport& in, int k) {
 // the order TopExp::MapShapes gives them (its explorer walks the same tree, depth first, with
 // the same composed orientations and locations, and stops at the type it maps), without
 // walking the shape three times (a tenth of the import's time, all before the threads start).
+// A face or edge met again (an edge is met once per face that uses it) is not walked again: the
+// maps compare shapes without their orientation (TopTools_ShapeMapHasher), a shape met again
+// has the same TShape and location, so its sub-shapes are those already mapped, and Add keeps
+// the first-mapped one. The maps come out as the full walk's, with half the edges' walks and
+// the vertices' location compositions.
 void mapSubShapes(const TopoDS_Shape& shape, CadImport& in) {
+  const auto mappedBefore = [&](TopTools_IndexedMapOfShape& map) {
+    const int extent = map.Extent();
+    return map.Add(shape) <= extent;
+  };
   switch (shape.ShapeType()) {
-    case TopAbs_FACE: in.faces.Add(shape); break;
-    case TopAbs_EDGE: in.edges.Add(shape); break;
+    case TopAbs_FACE:
+      if (mappedBefore(in.faces)) return;
+      break;
+    case TopAbs_EDGE:
+      if (mappedBefore(in.edges)) return;
+      break;
     case TopAbs_VERTEX: in.vertices.Add(shape); return;
     default: break;
   }
