@@ -68,10 +68,12 @@ std::vector<BezierPatchPiece> bezierPatches(const BSplineSurface& surface) {
                                           saturatingMultiply(refinedU, refinedV),
                                       sizeof(glm::dvec3));
   bytes = saturatingAdd(bytes, saturatingMultiply(2 * pieceBytes, pieces));
-  requireWithinMemoryBudget(
-      bytes, "the degree " + std::to_string(p) + "×" + std::to_string(q) + " B-spline of " +
-                 std::to_string(surface.countU) + "×" + std::to_string(surface.countV) +
-                 " control points as " + std::to_string(pieces) + " Bézier pieces");
+  // The message only when it is needed: a CAD model converts thousands of small surfaces.
+  if (bytes > memoryBudget())
+    requireWithinMemoryBudget(bytes, "the degree " + std::to_string(p) + "×" + std::to_string(q) +
+                                         " B-spline of " + std::to_string(surface.countU) + "×" +
+                                         std::to_string(surface.countV) + " control points as " +
+                                         std::to_string(pieces) + " Bézier pieces");
   const BSplineSurface alongU = refineSurface(surface, ParamDirection::U, knotsU);
   const BSplineSurface refined = refineSurface(alongU, ParamDirection::V, knotsV);
   std::vector<BezierPatchPiece> patches;

@@ -80,6 +80,7 @@ EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta,
     return samples;
   }
   BRepAdaptor_Curve curve(edge);
+  samples.params.reserve(16);  // most edges take fewer: one allocation, not five
   samples.params.push_back(first);
   if (curve.GetType() == GeomAbs_Line) {
     samples.params.push_back(last);
@@ -90,6 +91,7 @@ EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta,
     const double widest = radius > delta ? 2.0 * std::acos(1.0 - delta / radius) : last - first;
     int count = std::max(4, int(std::ceil((last - first) / widest)));
     while (chordDeviation(curve, first, first + (last - first) / count) > delta) ++count;  // rounding
+    samples.params.reserve(size_t(count) + 1);
     for (int k = 1; k <= count; ++k) samples.params.push_back(first + (last - first) * k / count);
     samples.maxChordDeviation = chordDeviation(curve, first, first + (last - first) / count);
   } else {

@@ -14,10 +14,10 @@
 #include <cmath>
 #include <cstring>
 #include <iterator>
-#include <unordered_map>
 
 #include "bspline/bspline.h"
 #include "cad/detail/number_text.h"
+#include "common/hash_map.h"
 #include "geometry/bezier.h"
 
 namespace tessera {
@@ -174,13 +174,14 @@ std::vector<glm::dvec2> CadSurface::mapUvs(const std::vector<gp_Pnt2d>& uvs) con
     for (const gp_Pnt2d& uv : uvs) mapped.push_back({uv.X(), uv.Y()});
     return mapped;
   }
-  // Keyed by the bits, so −0 and +0 (equal as doubles) keep their own solves.
-  std::unordered_map<uint64_t, double> solved[2];
+  // Keyed by the bits, so −0 and +0 (equal as doubles) keep their own solves; flat maps, no
+  // node allocated per coordinate.
+  HashMap<uint64_t, double> solved[2];
   const auto solve = [&](double t, bool alongU) {
     uint64_t bits;
     std::memcpy(&bits, &t, sizeof bits);
     const auto [it, fresh] = solved[alongU ? 0 : 1].try_emplace(bits, 0.0);
-    if (fresh) it->second = mapParameter(t, alongU);
+    if (fresh) it.value() = mapParameter(t, alongU);
     return it->second;
   };
   for (const gp_Pnt2d& uv : uvs) mapped.push_back({solve(uv.X(), true), solve(uv.Y(), false)});
