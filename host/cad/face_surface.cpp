@@ -5,6 +5,7 @@
 #include <BRep_Tool.hxx>
 #include <GeomConvert.hxx>
 #include <Geom_ConicalSurface.hxx>
+#include <Geom_Plane.hxx>
 #include <Geom_CylindricalSurface.hxx>
 #include <Geom_SphericalSurface.hxx>
 #include <Geom_ToroidalSurface.hxx>
@@ -253,8 +254,15 @@ CadSurface convertFaceSurface(const Handle(Geom_Surface)& basis, double u0, doub
     throw CadFaceError("surface degree " + std::to_string(result.nurbs->UDegree()) + "×" +
                        std::to_string(result.nurbs->VDegree()) + " is above 7");
 
-  // Same parametrisation? Compare at a grid of interior points; if not, solve f and g and
-  // check that they reproduce the surface (separability, see the header).
+  // Same parametrisation? A plane's NURBS is bilinear between its corners at its own (u, v) and a
+  // B-spline's is a segment of it (knots shifted by whole periods above): the same, so no check
+  // (it evaluated both surfaces at 36 points and found a gap of rounding). Otherwise compare at a
+  // grid of interior points; if not the same, solve f and g and check that they reproduce the
+  // surface (separability, see the header).
+  if (basis->IsKind(STANDARD_TYPE(Geom_Plane)) || basis->IsKind(STANDARD_TYPE(Geom_BSplineSurface))) {
+    result.pieces = rationalPieces(result.nurbs);
+    return result;
+  }
   const double scale = std::max(1e-300, poleDiagonal(result.nurbs));
   result.nurbs->Bounds(n0, n1, m0, m1);
   // Fractions that are neither knots nor span middles of an even split, where the angle and
