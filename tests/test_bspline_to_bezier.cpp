@@ -11,6 +11,7 @@
 #include "bspline/bspline.h"
 #include "bspline/to_bezier.h"
 #include "bspline/knots.h"
+#include "bspline/oslo.h"
 
 using namespace tessera;
 
@@ -161,6 +162,64 @@ TEST_CASE("to Bezier: surfaces are reproduced exactly on every patch", "[bspline
   // unclamped, so compare points rather than control points there).
   REQUIRE(maxAbs(patches.back().patch.at(3, 2) - surfacePoint(s, 1.0, 1.5)) <= 1e-14);
   REQUIRE(maxAbs(patches.front().patch.at(0, 0) - surfacePoint(s, 0.0, 0.0)) <= 1e-14);
+}
+
+TEST_CASE("to Bezier: a second net through the same insertion is what a second call gives, bit for bit",
+          "[bspline_to_bezier]") {
+  BSplineSurface s;
+  s.degreeU = 3;
+  s.degreeV = 2;
+  s.knotsU = {0, 0, 0, 0, 0.3, 0.3, 0.6, 1, 1, 1, 1};
+  s.knotsV = uniformKnots(2, 5, -1.0, 0.5);
+  s.countU = 7;
+  s.countV = 5;
+  s.cp = randomPoints(35, 13);
+  BSplineSurface companion = s;
+  companion.cp = randomPoints(35, 14);
+  companion.cp[3] = glm::dvec3(-0.0, 0.0, -0.0);  // signed zeros keep whatever the sums make
+
+  // The reference: refineSurface along u, then along v (oslo.h), each non-empty span pair's
+  // control points read off the refined net.
+  const auto reference = [](const BSplineSurface& surface) {
+    const BSplineSurface refined = refineSurface(
+        refineSurface(surface, ParamDirection::U, bezierKnots(3, surface.knotsU)),
+        ParamDirection::V, bezierKnots(2, surface.knotsV));
+    std::vector<std::vector<glm::dvec3>> nets;
+    for (int mu = 3; mu + 1 < int(refined.knotsU.size()) - 3; ++mu)
+      for (int nu = 2; nu + 1 < int(refined.knotsV.size()) - 2; ++nu) {
+        if (!(refined.knotsU[size_t(mu)] < refined.knotsU[size_t(mu + 1)]) ||
+            !(refined.knotsV[size_t(nu)] < refined.knotsV[size_t(nu + 1)]))
+          continue;
+        std::vector<glm::dvec3> net;
+        for (int i = 0; i <= 3; ++i)
+          for (int j = 0; j <= 2; ++j) net.push_back(refined.at(mu - 3 + i, nu - 2 + j));
+        nets.push_back(net);
+      }
+    return nets;
+  };
+  const auto sameBits = [](const std::vector<BezierPatchPiece>& pieces,
+                           const std::vector<std::vector<glm::dvec3>>& expected) {
+    REQUIRE(pieces.size() == expected.size());
+    for (size_t k = 0; k < pieces.size(); ++k) {
+      REQUIRE(pieces[k].patch.cp.size() == expected[k].size());
+      for (size_t c = 0; c < expected[k].size(); ++c)
+        for (int a = 0; a < 3; ++a) {
+          INFO("piece " << k << ", point " << c << ", coordinate " << a);
+          REQUIRE(std::signbit(pieces[k].patch.cp[c][a]) == std::signbit(expected[k][c][a]));
+          REQUIRE(pieces[k].patch.cp[c][a] == expected[k][c][a]);
+        }
+    }
+  };
+  const std::vector<BezierPatchPiece> single = bezierPatches(s);
+  sameBits(single, reference(s));
+  const auto [first, second] = bezierPatchPair(s, companion.cp);
+  sameBits(first, reference(s));
+  sameBits(second, reference(companion));
+  for (size_t k = 0; k < single.size(); ++k) {
+    REQUIRE(second[k].u0 == single[k].u0);
+    REQUIRE(second[k].v1 == single[k].v1);
+  }
+  REQUIRE_THROWS_AS(bezierPatchPair(s, randomPoints(34, 1)), std::invalid_argument);
 }
 
 TEST_CASE("to Bezier: invalid input is refused", "[bspline_to_bezier]") {

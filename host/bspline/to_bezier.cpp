@@ -50,7 +50,14 @@ std::vector<BezierCurvePiece> bezierPieces(const BSplineCurve& curve) {
   return pieces;
 }
 
-std::vector<BezierPatchPiece> bezierPatches(const BSplineSurface& surface) {
+namespace {
+
+// The pieces of `surface`'s knots and degrees for each net in `nets` (each countU × countV,
+// `surface.cp` among them or not): every knot raised to multiplicity p, then a piece per pair
+// of non-empty spans. The insertion's two matrices are built once for all the nets; each net
+// goes through them as refineSurface along u, then along v, would take it.
+std::vector<std::vector<BezierPatchPiece>> patchesOfNets(
+    const BSplineSurface& surface, const std::vector<const std::vector<glm::dvec3>*>& nets) {
   const int p = surface.degreeU;
   const int q = surface.degreeV;
   validateSurface(surface);
@@ -74,27 +81,48 @@ std::vector<BezierPatchPiece> bezierPatches(const BSplineSurface& surface) {
                                          " B-spline of " + std::to_string(surface.countU) + "×" +
                                          std::to_string(surface.countV) + " control points as " +
                                          std::to_string(pieces) + " Bézier pieces");
-  const BSplineSurface alongU = refineSurface(surface, ParamDirection::U, knotsU);
-  const BSplineSurface refined = refineSurface(alongU, ParamDirection::V, knotsV);
-  std::vector<BezierPatchPiece> patches;
-  patches.reserve(spansU.size() * spansV.size());
-  for (int mu : spansU) {
-    for (int nu : spansV) {
-      BezierPatchPiece piece;
-      piece.patch.degreeU = p;
-      piece.patch.degreeV = q;
-      piece.patch.cp.resize(static_cast<size_t>((p + 1) * (q + 1)));
-      for (int i = 0; i <= p; ++i) {
-        for (int j = 0; j <= q; ++j) piece.patch.at(i, j) = refined.at(mu - p + i, nu - q + j);
+  const Eigen::MatrixXd alongU = osloMatrix(p, surface.knotsU, knotsU);
+  const Eigen::MatrixXd alongV = osloMatrix(q, surface.knotsV, knotsV);
+  const int countU = int(alongU.rows()), countV = int(alongV.rows());
+  std::vector<std::vector<BezierPatchPiece>> out;
+  for (const std::vector<glm::dvec3>* net : nets) {
+    const std::vector<glm::dvec3> refined = applyToNet(
+        alongV, applyToNet(alongU, *net, surface.countU, surface.countV, ParamDirection::U),
+        countU, surface.countV, ParamDirection::V);
+    const auto at = [&](int i, int j) { return refined[size_t(i) * size_t(countV) + size_t(j)]; };
+    std::vector<BezierPatchPiece> patches;
+    patches.reserve(spansU.size() * spansV.size());
+    for (int mu : spansU) {
+      for (int nu : spansV) {
+        BezierPatchPiece piece;
+        piece.patch.degreeU = p;
+        piece.patch.degreeV = q;
+        piece.patch.cp.resize(static_cast<size_t>((p + 1) * (q + 1)));
+        for (int i = 0; i <= p; ++i) {
+          for (int j = 0; j <= q; ++j) piece.patch.at(i, j) = at(mu - p + i, nu - q + j);
+        }
+        piece.u0 = knotsU[static_cast<size_t>(mu)];
+        piece.u1 = knotsU[static_cast<size_t>(mu + 1)];
+        piece.v0 = knotsV[static_cast<size_t>(nu)];
+        piece.v1 = knotsV[static_cast<size_t>(nu + 1)];
+        patches.push_back(std::move(piece));
       }
-      piece.u0 = refined.knotsU[static_cast<size_t>(mu)];
-      piece.u1 = refined.knotsU[static_cast<size_t>(mu + 1)];
-      piece.v0 = refined.knotsV[static_cast<size_t>(nu)];
-      piece.v1 = refined.knotsV[static_cast<size_t>(nu + 1)];
-      patches.push_back(std::move(piece));
     }
+    out.push_back(std::move(patches));
   }
-  return patches;
+  return out;
+}
+
+}  // namespace
+
+std::vector<BezierPatchPiece> bezierPatches(const BSplineSurface& surface) {
+  return std::move(patchesOfNets(surface, {&surface.cp}).front());
+}
+
+std::pair<std::vector<BezierPatchPiece>, std::vector<BezierPatchPiece>> bezierPatchPair(
+    const BSplineSurface& surface, const std::vector<glm::dvec3>& companion) {
+  std::vector<std::vector<BezierPatchPiece>> both = patchesOfNets(surface, {&surface.cp, &companion});
+  return {std::move(both[0]), std::move(both[1])};
 }
 
 }  // namespace tessera

@@ -2,6 +2,7 @@
 // domain [x_p, x_n] is raised to multiplicity p by knot insertion (oslo.h), after which the
 // p + 1 control points of each non-empty span are that span's Bézier control points.
 #pragma once
+#include <utility>
 #include <vector>
 
 #include "bspline/bspline.h"
@@ -32,5 +33,12 @@ std::vector<BezierCurvePiece> bezierPieces(const BSplineCurve& curve);
 // One patch per pair of non-empty spans; the patch of u-span a and v-span b is at
 // index a·(number of v-spans) + b, i.e. u-major like the control net.
 std::vector<BezierPatchPiece> bezierPatches(const BSplineSurface& surface);
+
+// bezierPatches of `surface` and of `companion`, a second control net on its knots (countU ×
+// countV, u-major: a rational surface's weights beside its weighted points), bit for bit what
+// two calls give, with the knot insertion's matrices built once. Throws std::invalid_argument
+// when `companion` does not fit.
+std::pair<std::vector<BezierPatchPiece>, std::vector<BezierPatchPiece>> bezierPatchPair(
+    const BSplineSurface& surface, const std::vector<glm::dvec3>& companion);
 
 }  // namespace tessera

@@ -37,34 +37,39 @@ std::vector<double> flatKnots(const Handle(Geom_BSplineSurface)& s, bool alongU)
 // Knot insertion is linear in the control points, so the Bézier pieces of the homogeneous
 // surface (w·P, w) are those of (w·P) and of (w) taken apart; dividing gives the rational pieces.
 std::vector<BezierPatchPiece> rationalPieces(const Handle(Geom_BSplineSurface)& s) {
-  BSplineSurface weighted, weights;
-  weighted.degreeU = weights.degreeU = s->UDegree();
-  weighted.degreeV = weights.degreeV = s->VDegree();
-  weighted.knotsU = weights.knotsU = flatKnots(s, true);
-  weighted.knotsV = weights.knotsV = flatKnots(s, false);
-  weighted.countU = weights.countU = s->NbUPoles();
-  weighted.countV = weights.countV = s->NbVPoles();
+  BSplineSurface weighted;
+  weighted.degreeU = s->UDegree();
+  weighted.degreeV = s->VDegree();
+  weighted.knotsU = flatKnots(s, true);
+  weighted.knotsV = flatKnots(s, false);
+  weighted.countU = s->NbUPoles();
+  weighted.countV = s->NbVPoles();
   const bool rational = s->IsURational() || s->IsVRational();
+  std::vector<glm::dvec3> weights;  // w in x, a net on the same knots
+  weighted.cp.reserve(size_t(weighted.countU) * size_t(weighted.countV));
+  weights.reserve(weighted.cp.capacity());
   for (int i = 1; i <= s->NbUPoles(); ++i)
     for (int j = 1; j <= s->NbVPoles(); ++j) {
       const double w = rational ? s->Weight(i, j) : 1.0;
       weighted.cp.push_back(toGlm(s->Pole(i, j)) * w);
-      weights.cp.push_back({w, 0.0, 0.0});
+      weights.push_back({w, 0.0, 0.0});
     }
-  std::vector<BezierPatchPiece> pieces = bezierPatches(weighted);
-  if (!rational) return pieces;  // weights 1 stay 1: no second insertion, no division
-  const std::vector<BezierPatchPiece> weightPieces = bezierPatches(weights);
+  if (!rational) return bezierPatches(weighted);  // weights 1 stay 1: no division
+  // Both nets through one set of insertion matrices (bezierPatchPair).
+  std::pair<std::vector<BezierPatchPiece>, std::vector<BezierPatchPiece>> both =
+      bezierPatchPair(weighted, weights);
+  std::vector<BezierPatchPiece>& pieces = both.first;
   for (size_t k = 0; k < pieces.size(); ++k) {
     BezierPatch& patch = pieces[k].patch;
     patch.weights.resize(patch.cp.size());
     for (size_t c = 0; c < patch.cp.size(); ++c) {
-      const double w = weightPieces[k].patch.cp[c].x;
+      const double w = both.second[k].patch.cp[c].x;
       if (!(w > 0.0)) throw CadFaceError("a NURBS weight is not positive after knot insertion");
       patch.cp[c] /= w;
       patch.weights[c] = w;
     }
   }
-  return pieces;
+  return std::move(pieces);
 }
 
 double poleDiagonal(const Handle(Geom_BSplineSurface)& s) {
