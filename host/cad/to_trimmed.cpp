@@ -21,7 +21,6 @@
 #include <cmath>
 #include <exception>
 #include <mutex>
-#include <set>
 
 #include "cad/face_surface.h"
 #include "cad/detail/number_text.h"
@@ -84,17 +83,20 @@ WireEdge wireEdge(const TopoDS_Edge& edge, const CadImport& in) {
 std::vector<WireEdge> orderedEdges(const TopoDS_Wire& wire, const TopoDS_Face& face,
                                    const CadImport& in) {
   std::vector<WireEdge> edges;
+  edges.reserve(size_t(wire.NbChildren()));
   for (TopoDS_Iterator it(wire); it.More(); it.Next())
     if (it.Value().ShapeType() == TopAbs_EDGE) edges.push_back(wireEdge(TopoDS::Edge(it.Value()), in));
   // Chained by vertices is chained in uv, unless an edge has one vertex at both ends (a closed
   // edge: a torus's seams all meet at its one vertex) or is used twice (a seam, once per side):
   // then only the pcurves tell the order.
-  std::set<const TopoDS_TShape*> distinct;
+  std::vector<const TopoDS_TShape*> tshapes;  // sorted: an edge used twice sits beside itself
   bool vertexOrderHolds = true;
-  for (const WireEdge& edge : edges)
-    if ((edge.firstId == edge.lastId && edges.size() > 1) ||
-        !distinct.insert(edge.edge.TShape().get()).second)
-      vertexOrderHolds = false;
+  for (const WireEdge& edge : edges) {
+    if (edge.firstId == edge.lastId && edges.size() > 1) vertexOrderHolds = false;
+    tshapes.push_back(edge.edge.TShape().get());
+  }
+  std::sort(tshapes.begin(), tshapes.end());
+  if (std::adjacent_find(tshapes.begin(), tshapes.end()) != tshapes.end()) vertexOrderHolds = false;
   const auto chained = [&] {
     for (size_t k = 0; k < edges.size(); ++k)
       if (edges[k].lastId != edges[(k + 1) % edges.size()].firstId) return false;
@@ -142,10 +144,15 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
                  const std::string& path, const CadImport& in, FaceOutcome& outcome) {
   RawLoop loop;
   const Handle(Geom_Plane) plane = Handle(Geom_Plane)::DownCast(basis);
+  const gp_Pln pln = plane.IsNull() ? gp_Pln() : plane->Pln();
   TopLoc_Location faceLocation;  // the face's surface as stored, for storesPcurve
   const Handle(Geom_Surface)& faceSurface = BRep_Tool::Surface(face, faceLocation);
   uint32_t firstId = 0, lastId = 0;
   const std::vector<WireEdge> edges = orderedEdges(wire, face, in);
+  size_t points = 0;
+  for (const WireEdge& edge : edges) points += in.edgeSamples[edge.index].params.size() - 1;
+  loop.uv.reserve(points);
+  loop.pointIds.reserve(points);
   for (size_t e = 0; e < edges.size(); ++e) {
     const TopoDS_Edge& edge = edges[e].edge;
     const int index = int(edges[e].index) + 1;
@@ -172,7 +179,7 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
       if (projected) {
         const glm::dvec3& c = samples.curvePoints[s];
         double u, v;
-        ElSLib::Parameters(plane->Pln(), gp_Pnt(c.x, c.y, c.z), u, v);
+        ElSLib::Parameters(pln, gp_Pnt(c.x, c.y, c.z), u, v);
         uv.SetCoord(u, v);
       } else {
         // Same range is the rule for pcurves (BRep_Tool::SameRange); map linearly if not.
