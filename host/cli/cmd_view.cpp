@@ -96,6 +96,12 @@ int run(const ViewArgs& a, std::vector<std::string>& outputPaths) {
     }
   }
   checkOutputs({{"input", a.input}, {"--script", a.script}}, outputs);
+  // The real-time path draws untrimmed patches; a CAD model's trimmed faces are meshed once.
+  if (isCadInput(a.input))
+    throw InputError(InputErrorKind::Syntax, a.input, 0,
+                     "tessera view draws Bézier patches (.bpt, .grid or .json); a CAD model's "
+                     "trimmed faces are meshed by `tessera tessellate` (e.g. to .glb) or drawn "
+                     "by `tessera render`");
   o.patches = readSurfaceFile(a.input);
   if (a.teapots > 0)
     o.patches = bench::perturbedCopies(o.patches, a.teapots,
