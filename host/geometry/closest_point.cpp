@@ -20,12 +20,12 @@ glm::dvec2 clampToDomain(glm::dvec2 uv) { return glm::clamp(uv, glm::dvec2(0.0),
 // The search, with `derivativesAt(uv)` giving at least the partials up to second order.
 template <class Derivatives>
 ClosestPoint closestPoint(Derivatives derivativesAt, const glm::dvec3& target, glm::dvec2 start,
-                          int iterations) {
+                          int iterations, double enough) {
   glm::dvec2 uv = clampToDomain(start);
   SurfaceDerivatives d = derivativesAt(uv);
   double best = glm::length(d.p - target);
   double damping = 0.0;
-  for (int it = 0; it < iterations && best > 0.0; ++it) {
+  for (int it = 0; it < iterations && best > enough; ++it) {
     const glm::dvec3 f = d.p - target;
     // Gradient and Hessian of ½|f|².
     const double gu = glm::dot(d.pu, f), gv = glm::dot(d.pv, f);
@@ -66,16 +66,16 @@ ClosestPoint closestPoint(Derivatives derivativesAt, const glm::dvec3& target, g
 }  // namespace
 
 ClosestPoint closestPointOnPatch(const BezierPatch& patch, const glm::dvec3& target,
-                                 glm::dvec2 start, int iterations) {
+                                 glm::dvec2 start, int iterations, double enough) {
   return closestPoint([&](glm::dvec2 uv) { return derivativesAt(patch, uv); }, target, start,
-                      iterations);
+                      iterations, enough);
 }
 
 ClosestPoint closestPointOnPatch(const RationalBezierPatch& patch, const glm::dvec3& target,
-                                 glm::dvec2 start, int iterations) {
+                                 glm::dvec2 start, int iterations, double enough) {
   return closestPoint(
       [&](glm::dvec2 uv) { return rationalPatchSecondDerivatives(patch, uv.x, uv.y); }, target,
-      start, iterations);
+      start, iterations, enough);
 }
 
 }  // namespace tessera

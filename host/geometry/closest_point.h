@@ -21,11 +21,14 @@ struct ClosestPoint {
 // domain, and never an uphill step — so the result is at most |S(start) − target| and always
 // an upper bound of the true distance to the patch. A local search: from a good start (the
 // parametric guess) it finds the nearby foot point, not necessarily the global one.
+// `enough` > 0 ends the search once the distance is at most `enough` (each step only lowers it,
+// so the full search would end at most there too): for a caller that only asks whether the
+// distance is within a bound; otherwise the result is the same.
 ClosestPoint closestPointOnPatch(const BezierPatch& patch, const glm::dvec3& target,
-                                 glm::dvec2 start, int iterations = 12);
+                                 glm::dvec2 start, int iterations = 12, double enough = 0.0);
 // The same for a patch already in homogeneous form: toRationalPatch(patch) gives the same
 // result bit for bit, without converting the patch at every step.
 ClosestPoint closestPointOnPatch(const RationalBezierPatch& patch, const glm::dvec3& target,
-                                 glm::dvec2 start, int iterations = 12);
+                                 glm::dvec2 start, int iterations = 12, double enough = 0.0);
 
 }  // namespace tessera

@@ -154,11 +154,13 @@ glm::dvec3 FaceSurface::point(glm::dvec2 uv) const {
   return tensorPoint(patch.cp.data(), patch.degreeU, patch.degreeV, local.x, local.y);
 }
 
-double FaceSurface::distance(const glm::dvec3& target, glm::dvec2 guess) const {
+double FaceSurface::distance(const glm::dvec3& target, glm::dvec2 guess, double enough) const {
   const size_t piece = pieceAt(guess);
   if (rational_[piece])  // the homogeneous form converted once (the constructor)
-    return closestPointOnPatch(*rational_[piece], target, localUv(piece, guess)).distance;
-  return closestPointOnPatch(face_->pieces[piece].patch, target, localUv(piece, guess)).distance;
+    return closestPointOnPatch(*rational_[piece], target, localUv(piece, guess), 12, enough)
+        .distance;
+  return closestPointOnPatch(face_->pieces[piece].patch, target, localUv(piece, guess), 12, enough)
+      .distance;
 }
 
 FaceSurface::Scales FaceSurface::meanScales(glm::dvec2 lo, glm::dvec2 hi) const {

@@ -21,8 +21,9 @@ class FaceSurface {
   glm::dvec2 faceUv(size_t piece, glm::dvec2 local) const;
   glm::dvec3 point(glm::dvec2 uv) const;
   // Distance from `target` to the surface, by the closest-point search on the piece of
-  // `guess` started there (closest_point.h): an upper bound of the true distance.
-  double distance(const glm::dvec3& target, glm::dvec2 guess) const;
+  // `guess` started there (closest_point.h): an upper bound of the true distance. With
+  // `enough` > 0 the search ends once within it (closestPointOnPatch's `enough`).
+  double distance(const glm::dvec3& target, glm::dvec2 guess, double enough = 0.0) const;
   // Means over a 6 × 6 grid of [lo, hi], by central differences (one set of five points per
   // grid point).
   struct Scales {

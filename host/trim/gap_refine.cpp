@@ -5,8 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <unordered_map>
+#include <limits>
 
 namespace tessera::trim_detail {
 namespace {
@@ -87,6 +86,8 @@ struct Measures {
 };
 class MeasureCache {
  public:
+  explicit MeasureCache(size_t expected) { byCorners_.reserve(expected); }
+  // The reference lives until the next call of of() (the flat map moves its entries).
   Measures& of(std::array<uint32_t, 3> v) {
     std::sort(v.begin(), v.end());
     return byCorners_[v];
@@ -103,7 +104,37 @@ class MeasureCache {
       return size_t((uint64_t(v[0]) * 0x9E3779B97F4A7C15ull) ^ (uint64_t(v[1]) << 32 | v[2]));
     }
   };
-  std::unordered_map<std::array<uint32_t, 3>, Measures, Hash> byCorners_;
+  HashMap<std::array<uint32_t, 3>, Measures, Hash> byCorners_;
+};
+
+// S(uv) of each vertex, evaluated once: the measures and the split choice ask for a corner's
+// surface point every time they see the triangle. A vertex the refinement adds is on the
+// surface (its position is S(uv), the same call).
+class CornerPoints {
+ public:
+  CornerPoints(const FaceSurface& surface, const std::vector<FaceVertex>& vs)
+      : surface_(surface), vs_(vs) {}
+  glm::dvec3 operator()(uint32_t v) {  // a copy: the next call may grow the array
+    grow();
+    if (!known_[v]) points_[v] = surface_.point(vs_[v].uv), known_[v] = 1;
+    return points_[v];
+  }
+  void addOnSurface(uint32_t v) {
+    grow();
+    points_[v] = vs_[v].position, known_[v] = 1;
+  }
+  std::array<glm::dvec3, 3> of(const std::array<uint32_t, 3>& t) {
+    return {(*this)(t[0]), (*this)(t[1]), (*this)(t[2])};
+  }
+
+ private:
+  const FaceSurface& surface_;
+  const std::vector<FaceVertex>& vs_;
+  std::vector<glm::dvec3> points_;
+  std::vector<char> known_;
+  void grow() {
+    if (known_.size() < vs_.size()) points_.resize(vs_.size()), known_.resize(vs_.size(), 0);
+  }
 };
 
 }  // namespace
@@ -127,10 +158,14 @@ double largestOverSamples(const std::vector<FaceVertex>& vs, const std::array<ui
 
 }  // namespace
 
-SampledDeviations sampledDeviations(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
-                                    const std::array<uint32_t, 3>& t, int n) {
-  const glm::dvec3 s0 = surface.point(vs[t[0]].uv), s1 = surface.point(vs[t[1]].uv),
-                   s2 = surface.point(vs[t[2]].uv);
+namespace {
+
+// sampledDeviations with the corners' surface points s = S(uvᵢ) given.
+SampledDeviations sampledDeviationsFrom(const FaceSurface& surface,
+                                        const std::vector<FaceVertex>& vs,
+                                        const std::array<uint32_t, 3>& t,
+                                        const std::array<glm::dvec3, 3>& s, int n) {
+  const glm::dvec3 &s0 = s[0], &s1 = s[1], &s2 = s[2];
   const glm::dvec3 &p0 = vs[t[0]].position, &p1 = vs[t[1]].position, &p2 = vs[t[2]].position;
   SampledDeviations worst;
   for (int i = 0; i <= n; ++i)
@@ -147,6 +182,41 @@ SampledDeviations sampledDeviations(const FaceSurface& surface, const std::vecto
       worst.interpolation = std::max(worst.interpolation, glm::length(a * s0 + b * s1 + c * s2 - onSurface));
     }
   return worst;
+}
+
+// interpolationDistance with the corners' surface points given, for the refinement, which asks
+// only whether the triangle is within `limit`: a sample's search ends once within `limit`
+// (FaceSurface::distance's `enough`), and the samples end at the first one over it (its
+// distance is returned: the samples after it cannot bring the largest back under). The answer
+// to "≤ limit" is the full measure's; the value is not. limit = +∞: the full measure.
+double interpolationDistanceFrom(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
+                                 const std::array<uint32_t, 3>& t,
+                                 const std::array<glm::dvec3, 3>& s, int n, double limit) {
+  const glm::dvec3 &s0 = s[0], &s1 = s[1], &s2 = s[2];
+  const double enough = limit < std::numeric_limits<double>::infinity() ? limit : 0.0;
+  double worst = 0;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j) {
+      const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
+      if (i == n || j == n || i + j == 0) continue;
+      const glm::dvec2 uv = a * vs[t[0]].uv + b * vs[t[1]].uv + c * vs[t[2]].uv;
+      worst = std::max(worst, surface.distance(a * s0 + b * s1 + c * s2, uv, enough));
+      if (worst > limit) return worst;
+    }
+  return worst;
+}
+
+std::array<glm::dvec3, 3> cornerSurfacePoints(const FaceSurface& surface,
+                                              const std::vector<FaceVertex>& vs,
+                                              const std::array<uint32_t, 3>& t) {
+  return {surface.point(vs[t[0]].uv), surface.point(vs[t[1]].uv), surface.point(vs[t[2]].uv)};
+}
+
+}  // namespace
+
+SampledDeviations sampledDeviations(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
+                                    const std::array<uint32_t, 3>& t, int n) {
+  return sampledDeviationsFrom(surface, vs, t, cornerSurfacePoints(surface, vs, t), n);
 }
 
 double parametricDeviation(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
@@ -168,17 +238,8 @@ double interpolationDeviation(const FaceSurface& surface, const std::vector<Face
 
 double interpolationDistance(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
                              const std::array<uint32_t, 3>& t, int n) {
-  const glm::dvec3 s0 = surface.point(vs[t[0]].uv), s1 = surface.point(vs[t[1]].uv),
-                   s2 = surface.point(vs[t[2]].uv);
-  double worst = 0;
-  for (int i = 0; i <= n; ++i)
-    for (int j = 0; i + j <= n; ++j) {
-      const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
-      if (i == n || j == n || i + j == 0) continue;
-      const glm::dvec2 uv = a * vs[t[0]].uv + b * vs[t[1]].uv + c * vs[t[2]].uv;
-      worst = std::max(worst, surface.distance(a * s0 + b * s1 + c * s2, uv));
-    }
-  return worst;
+  return interpolationDistanceFrom(surface, vs, t, cornerSurfacePoints(surface, vs, t), n,
+                                   std::numeric_limits<double>::infinity());
 }
 
 double cornerOffset(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
@@ -194,6 +255,7 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
                  std::vector<FaceTriangle>& triangles, const std::vector<EdgeKey>& trimEdges,
                  const GapRefineOptions& options, std::vector<double>* parametric) {
   EdgeUsers users(triangles);
+  CornerPoints onSurface(surface, vs);
   const auto isTrim = [&](uint32_t a, uint32_t b) {
     return std::binary_search(trimEdges.begin(), trimEdges.end(), edgeKey(a, b));
   };
@@ -234,6 +296,7 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
     const glm::dvec2 uv = 0.5 * (vs[a].uv + vs[b].uv);
     vs.push_back({uv, surface.point(uv), -1});
     const uint32_t m = uint32_t(vs.size() - 1);
+    onSurface.addOnSurface(m);
     const SmallIdList sideUsers = users.of(a, b);  // a copy: the loop changes the map
     for (size_t k = 0; k < sideUsers.size(); ++k) {
       const uint32_t u = sideUsers[k];
@@ -254,6 +317,7 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
     const glm::dvec2 uv = (vs[v[0]].uv + vs[v[1]].uv + vs[v[2]].uv) / 3.0;
     vs.push_back({uv, surface.point(uv), -1});
     const uint32_t m = uint32_t(vs.size() - 1), n1 = uint32_t(triangles.size()), n2 = n1 + 1;
+    onSurface.addOnSurface(m);
     triangles[t] = {{v[0], v[1], m}, true};
     triangles.push_back({{v[1], v[2], m}, true});
     triangles.push_back({{v[2], v[0], m}, true});
@@ -267,18 +331,22 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
   // Vertices never move, so a triangle's measures depend on its corners alone: each is taken
   // once per set of corners (a triangle left alone by a round, or rebuilt by a flip back, is
   // not sampled again).
-  MeasureCache cache;
+  // m.geometric is only compared with δ: its search stops at the first sample over δ.
+  MeasureCache cache(2 * triangles.size());
   const bool geometric = options.measure == GapMeasure::Geometric;
   const auto deviation = [&](const std::array<uint32_t, 3>& v) {
     Measures& m = cache.of(v);
-    if (m.sampled.interpolation < 0) m.sampled = sampledDeviations(surface, vs, v, options.subdivisions);
+    if (m.sampled.interpolation < 0)
+      m.sampled = sampledDeviationsFrom(surface, vs, v, onSurface.of(v), options.subdivisions);
     return m.sampled.interpolation;
   };
   const auto withinTolerance = [&](const std::array<uint32_t, 3>& v) {
     if (deviation(v) <= options.tolerance) return true;
     if (!geometric) return false;
     Measures& m = cache.of(v);
-    if (m.geometric < 0) m.geometric = interpolationDistance(surface, vs, v, options.subdivisions);
+    if (m.geometric < 0)
+      m.geometric = interpolationDistanceFrom(surface, vs, v, onSurface.of(v),
+                                              options.subdivisions, options.tolerance);
     return m.geometric <= options.tolerance;
   };
 
@@ -340,7 +408,7 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
         // cylinder the rulings are straight and the arcs are not, so the longest side in (u, v)
         // is often the wrong one. The length breaks ties (a flat surface, error inside).
         const glm::dvec2 mid = 0.5 * (vs[a].uv + vs[b].uv);
-        const glm::dvec3 chord = 0.5 * (surface.point(vs[a].uv) + surface.point(vs[b].uv));
+        const glm::dvec3 chord = 0.5 * (onSurface(a) + onSurface(b));
         const double sag = geometric ? surface.distance(chord, mid)
                                      : glm::length(surface.point(mid) - chord);
         const double score = sag + 1e-9 * length;
