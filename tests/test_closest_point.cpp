@@ -147,3 +147,37 @@ TEST_CASE("closest point: a patch in homogeneous form gives the weighted patch's
     CHECK(b.distance >= std::abs(std::hypot(target.x, target.y) - 1.0) - 1e-9);
   }
 }
+
+TEST_CASE("closest point: 'enough' ends the search within it and keeps the within-bound answer",
+          "[deviation]") {
+  // The gap refinement asks only "distance ≤ δ?" and passes δ as `enough`: the answer must be
+  // the full search's, on the polynomial and the homogeneous path alike.
+  const BezierPatch patch = paraboloid();
+  const RationalBezierPatch rational = toRationalPatch(patch);
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), off(-0.3, 0.3);
+  int stoppedEarly = 0, over = 0;
+  for (int k = 0; k < 400; ++k) {
+    const glm::dvec2 uv(unit(rng), unit(rng)), start(unit(rng), unit(rng));
+    const glm::dvec3 target = patchPoint(patch, uv.x, uv.y) + glm::dvec3(off(rng), off(rng), off(rng));
+    const double bound = 0.02 + 0.2 * unit(rng);
+    for (int path = 0; path < 2; ++path) {
+      const ClosestPoint full = path == 0 ? closestPointOnPatch(patch, target, start)
+                                          : closestPointOnPatch(rational, target, start);
+      const ClosestPoint cut = path == 0 ? closestPointOnPatch(patch, target, start, 12, bound)
+                                         : closestPointOnPatch(rational, target, start, 12, bound);
+      REQUIRE((cut.distance <= bound) == (full.distance <= bound));
+      REQUIRE(cut.distance >= full.distance);  // an earlier point of the same descent
+      if (full.distance > bound) REQUIRE(cut.distance == full.distance);
+      stoppedEarly += cut.distance > full.distance;
+      over += full.distance > bound;
+      // enough = 0 is the default search.
+      const ClosestPoint zero = path == 0 ? closestPointOnPatch(patch, target, start, 12, 0.0)
+                                          : closestPointOnPatch(rational, target, start, 12, 0.0);
+      REQUIRE(zero.distance == full.distance);
+      REQUIRE(zero.uv == full.uv);
+    }
+  }
+  CHECK(stoppedEarly > 0);  // the bound did cut searches short
+  CHECK(over > 0);          // and some targets stayed over it
+}

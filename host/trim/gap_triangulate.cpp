@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <numeric>
 #include <set>
 
@@ -34,8 +33,11 @@ double signedArea(const std::vector<glm::dvec2>& points, const std::vector<uint3
 std::vector<std::vector<uint32_t>> closedLoops(
     const std::vector<glm::dvec2>& points,
     const std::vector<std::pair<uint32_t, uint32_t>>& edges, size_t& failures) {
-  std::multimap<uint32_t, uint32_t> outgoing;  // vertex → edge index
-  for (uint32_t e = 0; e < edges.size(); ++e) outgoing.emplace(edges[e].first, e);
+  // (vertex, edge index) sorted: a vertex's outgoing edges in their given order, as a
+  // std::multimap gave them, without a node per edge.
+  std::vector<std::pair<uint32_t, uint32_t>> outgoing(edges.size());
+  for (uint32_t e = 0; e < edges.size(); ++e) outgoing[e] = {edges[e].first, e};
+  std::sort(outgoing.begin(), outgoing.end());
   std::vector<bool> used(edges.size(), false);
   std::vector<std::vector<uint32_t>> loops;
   for (uint32_t start = 0; start < edges.size(); ++start) {
@@ -49,8 +51,8 @@ std::vector<std::vector<uint32_t>> closedLoops(
       const glm::dvec2 back = points[from] - points[at];
       int64_t best = -1;
       double bestAngle = 0;
-      auto range = outgoing.equal_range(at);
-      for (auto it = range.first; it != range.second; ++it) {
+      auto it = std::lower_bound(outgoing.begin(), outgoing.end(), std::make_pair(at, 0u));
+      for (; it != outgoing.end() && it->first == at; ++it) {
         const uint32_t e = it->second;
         if (used[e] && e != start) continue;
         const glm::dvec2 way = points[edges[e].second] - points[at];
@@ -89,12 +91,14 @@ bool bridgeHole(const std::vector<glm::dvec2>& points, std::vector<uint32_t>& po
                 const std::vector<std::pair<uint32_t, uint32_t>>& others, double scale) {
   struct Candidate {
     double distance;
-    size_t p, h;
+    uint32_t p, h;
   };
   std::vector<Candidate> candidates;
+  candidates.reserve(polygon.size() * hole.size());
   for (size_t p = 0; p < polygon.size(); ++p)
     for (size_t h = 0; h < hole.size(); ++h)
-      candidates.push_back({glm::length(points[polygon[p]] - points[hole[h]]), p, h});
+      candidates.push_back(
+          {glm::length(points[polygon[p]] - points[hole[h]]), uint32_t(p), uint32_t(h)});
   std::sort(candidates.begin(), candidates.end(),
             [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
   const double touch = 1e-13 * scale;
@@ -207,6 +211,7 @@ GapTriangulation triangulateGap(const std::vector<glm::dvec2>& points,
                                 const std::vector<std::pair<uint32_t, uint32_t>>& edges) {
   GapTriangulation result;
   if (edges.empty()) return result;
+  result.triangles.reserve(edges.size());  // about one a boundary edge, more with holes
   std::vector<std::vector<uint32_t>> loops = closedLoops(points, edges, result.failures);
   glm::dvec2 lo = points[edges[0].first], hi = lo;
   for (const auto& e : edges) lo = glm::min(lo, points[e.first]), hi = glm::max(hi, points[e.first]);
@@ -219,15 +224,22 @@ GapTriangulation triangulateGap(const std::vector<glm::dvec2>& points,
     (areas[l] > 0 ? outers : holes).push_back(l);
   }
   std::vector<std::vector<size_t>> holesOf(loops.size());
+  std::vector<std::vector<TrimSegment>> outerSegments;  // per outer loop, built once
+  if (!holes.empty())
+    for (size_t o : outers) {
+      std::vector<TrimSegment>& segments = outerSegments.emplace_back();
+      segments.reserve(loops[o].size());
+      for (size_t k = 0; k < loops[o].size(); ++k)
+        segments.push_back({points[loops[o][k]], points[loops[o][(k + 1) % loops[o].size()]]});
+    }
   for (size_t h : holes) {
     // A point of the hole's boundary: the middle of its first edge (on no other loop).
     const glm::dvec2 probe = 0.5 * (points[loops[h][0]] + points[loops[h][1]]);
     int64_t around = -1;
-    for (size_t o : outers) {
-      std::vector<TrimSegment> segments;
-      for (size_t k = 0; k < loops[o].size(); ++k)
-        segments.push_back({points[loops[o][k]], points[loops[o][(k + 1) % loops[o].size()]]});
-      if (trimWindingNumber(segments, probe) > 0 && (around < 0 || areas[o] < areas[around]))
+    for (size_t i = 0; i < outers.size(); ++i) {
+      const size_t o = outers[i];
+      if (trimWindingNumber(outerSegments[i], probe) > 0 &&
+          (around < 0 || areas[o] < areas[around]))
         around = int64_t(o);
     }
     if (around < 0)

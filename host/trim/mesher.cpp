@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
-#include <unordered_map>
 
+#include "common/hash_map.h"
 #include "common/parallel_for.h"
 #include "common/small_id_list.h"
 #include "common/stopwatch.h"
@@ -39,10 +39,9 @@ class FaceBuilder {
  public:
   std::vector<FaceVertex> vertices;
 
-  // The vertex of `key` within `weld` of uv, or a new one.
-  uint32_t vertex(std::unordered_map<int64_t, SmallIdList>& keyed, int64_t key, glm::dvec2 uv,
-                  const glm::dvec3& position, int64_t sharedId, double weld) {
-    SmallIdList& candidates = keyed[key];
+  // The vertex among `candidates` (those of one key) within `weld` of uv, or a new one.
+  uint32_t vertex(SmallIdList& candidates, glm::dvec2 uv, const glm::dvec3& position,
+                  int64_t sharedId, double weld) {
     for (size_t k = 0; k < candidates.size(); ++k)
       if (glm::length(vertices[candidates[k]].uv - uv) <= weld) return candidates[k];
     vertices.push_back({uv, position, sharedId});
@@ -146,7 +145,10 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
   FaceMesh out;
   Stopwatch step;
 
-  std::unordered_map<int64_t, SmallIdList> meshKeyed, trimKeyed;  // looked up, never walked
+  // The vertices of each quad-tree mesh vertex (a flat array by its id) and of each shared
+  // trim point (hashed: the ids run over the whole model); looked up, never walked.
+  std::vector<SmallIdList> meshKeyed(tess.mesh.positions.size());
+  HashMap<int64_t, SmallIdList> trimKeyed;
   const TrimSegmentIndex index(face.loops);
   std::vector<FaceTriangle> triangles;
   for (size_t t = 0; t < tess.mesh.triangleCount(); ++t) {
@@ -155,7 +157,7 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
     for (int k = 0; k < 3; ++k) {
       const uint32_t id = tess.mesh.indices[3 * t + k];
       uv[k] = surface.faceUv(tess.trianglePatch[t], glm::dvec2(tess.cornerUv[3 * t + k]));
-      v[k] = builder.vertex(meshKeyed, id, uv[k], glm::dvec3(tess.mesh.positions[id]), -1,
+      v[k] = builder.vertex(meshKeyed[id], uv[k], glm::dvec3(tess.mesh.positions[id]), -1,
                             meshWeld);
     }
     const double area = cross(uv[1] - uv[0], uv[2] - uv[0]);
@@ -174,12 +176,16 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
   std::vector<std::pair<uint32_t, uint32_t>> gapEdges;
   std::vector<EdgeKey> trimEdges;  // sorted and made distinct below
   std::vector<double> sampledParametric;  // per triangle, where the refinement measured it
+  size_t loopPoints = 0;
+  for (const TrimLoop& loop : face.loops) loopPoints += loop.uv.size();
+  trimKeyed.reserve(loopPoints);
+  std::vector<uint32_t> ids;
   for (const TrimLoop& loop : face.loops) {
-    std::vector<uint32_t> ids;
+    ids.clear();
     for (size_t k = 0; k < loop.uv.size(); ++k) {
       const uint32_t id = loop.pointIds[k];
       ids.push_back(
-          builder.vertex(trimKeyed, id, loop.uv[k], model.sharedPoints[id], id, trimWeld));
+          builder.vertex(trimKeyed[id], loop.uv[k], model.sharedPoints[id], id, trimWeld));
     }
     for (size_t k = 0; k < ids.size(); ++k) {
       const uint32_t a = ids[k], b = ids[(k + 1) % ids.size()];
