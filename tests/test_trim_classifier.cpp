@@ -15,6 +15,7 @@
 #include "gpu_test_context.h"
 #include "patch_samples.h"
 #include "trim/trim_classifier.h"
+#include "trim/trim_cut.h"
 #include "trim/trim_frontier.h"
 #include "trim_samples.h"
 
@@ -194,4 +195,46 @@ TEST_CASE("Trim classification timing: 100k nodes against 1000 segments", "[.][t
               queries.size(), set.segments.size(), counts[0], counts[1], counts[2], mirrorMs,
               vulkan->name().c_str(), vulkanMs);
   CHECK(a == b);
+}
+
+TEST_CASE("trim segment index: the binned winding number is the full scan's", "[trim]") {
+  // classifyTrimTriangle asks the index for the winding number at a triangle's centroid: it
+  // counts only the segments binned in the point's row at or right of its cell, which must
+  // give Sunday's sum over every segment — at points on cell lines, at loop vertices' heights,
+  // on segments' ends and outside the loops' box included.
+  std::mt19937 rng(1717);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int shape = 0; shape < 20; ++shape) {
+    std::vector<TrimLoop> loops(2);
+    const int n = 5 + shape * 7;  // a star around (0.5, 0.5) and a hole in it, clockwise
+    for (int k = 0; k < n; ++k) {
+      const double angle = 2 * 3.14159265358979 * k / n, r = 0.25 + 0.2 * unit(rng);
+      loops[0].uv.push_back({0.5 + r * std::cos(angle), 0.5 + r * std::sin(angle)});
+      loops[1].uv.push_back({0.5 + 0.1 * std::cos(-angle), 0.5 + 0.1 * std::sin(-angle)});
+    }
+    if (shape % 3 == 0) loops[1].uv[0].y = loops[0].uv[1].y;  // vertices at one height
+    for (TrimLoop& loop : loops) loop.pointIds.assign(loop.uv.size(), 0);
+    const TrimSegmentIndex index(loops);
+    std::vector<glm::dvec2> probes;
+    for (int k = 0; k < 400; ++k) probes.push_back({1.4 * unit(rng) - 0.2, 1.4 * unit(rng) - 0.2});
+    for (const TrimLoop& loop : loops)
+      for (size_t k = 0; k < loop.uv.size(); ++k) {
+        const glm::dvec2 a = loop.uv[k], b = loop.uv[(k + 1) % loop.uv.size()];
+        probes.push_back({unit(rng), a.y});         // a vertex's height
+        probes.push_back({std::max(a.x, b.x), 0.5 * (a.y + b.y)});  // level with an end
+        probes.push_back({0.5 * (a.x + b.x) + 1e-12, 0.5 * (a.y + b.y)});  // next to it
+      }
+    const int side = std::clamp(int(std::sqrt(double(index.segments().size()))), 1, 256);
+    const glm::dvec2 cell = (index.hi() - index.lo()) / double(side);
+    for (int k = 0; k <= side; ++k)  // on the cell lines
+      probes.push_back(index.lo() + double(k) * cell * glm::dvec2(1.0, 1.0 - 1e-3 * k));
+    int inside = 0;
+    for (const glm::dvec2& p : probes) {
+      const int expected = trimWindingNumber(index.segments(), p);
+      REQUIRE(index.windingNumber(p) == expected);
+      inside += expected > 0;
+    }
+    CHECK(inside > 0);
+    CHECK(inside < int(probes.size()));
+  }
 }

@@ -59,18 +59,37 @@ void TrimSegmentIndex::near(glm::dvec2 lo, glm::dvec2 hi, std::vector<uint32_t>&
         }
 }
 
+namespace {
+
+// Sunday's crossing rule: an upward edge with p strictly left of it adds 1, a downward edge
+// with p strictly right subtracts 1 (half-open in v, so a vertex at p's height counts once).
+// Non-zero only when p's v lies in the segment's v-range and the line passes right of p: for
+// p.x ≥ both ends' x, the rounded side's sign is never the counting one (rounding is monotone).
+int crossing(const TrimSegment& s, glm::dvec2 p) {
+  const double side = (s.b.x - s.a.x) * (p.y - s.a.y) - (p.x - s.a.x) * (s.b.y - s.a.y);
+  if (s.a.y <= p.y) return s.b.y > p.y && side > 0 ? 1 : 0;
+  return s.b.y <= p.y && side < 0 ? -1 : 0;
+}
+
+}  // namespace
+
 int trimWindingNumber(const std::vector<TrimSegment>& segments, glm::dvec2 p) {
-  // Sunday's crossing rule: an upward edge with p strictly left of it adds 1, a downward edge
-  // with p strictly right subtracts 1 (half-open in v, so a vertex at p's height counts once).
   int winding = 0;
-  for (const TrimSegment& s : segments) {
-    const double side = (s.b.x - s.a.x) * (p.y - s.a.y) - (p.x - s.a.x) * (s.b.y - s.a.y);
-    if (s.a.y <= p.y) {
-      if (s.b.y > p.y && side > 0) ++winding;
-    } else if (s.b.y <= p.y && side < 0) {
-      --winding;
-    }
-  }
+  for (const TrimSegment& s : segments) winding += crossing(s, p);
+  return winding;
+}
+
+int TrimSegmentIndex::windingNumber(glm::dvec2 p) const {
+  if (segments_.empty()) return 0;
+  if (++query_ == 0) std::fill(stamp_.begin(), stamp_.end(), 0), query_ = 1;
+  const int j = cellIndex(p.y, lo_.y, cell_.y, cellsV_);
+  int winding = 0;
+  for (int i = cellIndex(p.x, lo_.x, cell_.x, cellsU_); i < cellsU_; ++i)
+    for (uint32_t s : bins_[size_t(i) * cellsV_ + j])
+      if (stamp_[s] != query_) {
+        stamp_[s] = query_;
+        winding += crossing(segments_[s], p);
+      }
   return winding;
 }
 
@@ -116,8 +135,7 @@ TrimClass classifyTrimTriangle(const std::array<glm::dvec2, 3>& triangle,
         return TrimClass::Crossing;
   }
   const glm::dvec2 centroid = (triangle[0] + triangle[1] + triangle[2]) / 3.0;
-  return trimWindingNumber(index.segments(), centroid) > 0 ? TrimClass::Inside
-                                                           : TrimClass::Outside;
+  return index.windingNumber(centroid) > 0 ? TrimClass::Inside : TrimClass::Outside;
 }
 
 }  // namespace tessera

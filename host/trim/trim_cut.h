@@ -30,6 +30,10 @@ class TrimSegmentIndex {
   // Segments whose bounding box meets [lo, hi] (each at most once, unordered).
   void near(glm::dvec2 lo, glm::dvec2 hi, std::vector<uint32_t>& out) const;
   const std::vector<TrimSegment>& segments() const { return segments_; }
+  // trimWindingNumber(segments(), p), from the segments binned in p's row of cells at or
+  // right of p's cell: the others count 0 in Sunday's rule (their v-range misses p, or they
+  // end left of p: then the rounded side test cannot have the counting sign either).
+  int windingNumber(glm::dvec2 p) const;
   glm::dvec2 lo() const { return lo_; }
   glm::dvec2 hi() const { return hi_; }
 
