@@ -243,11 +243,18 @@ double interpolationDistance(const FaceSurface& surface, const std::vector<FaceV
 }
 
 double cornerOffset(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
-                    const std::array<uint32_t, 3>& t) {
+                    const std::array<uint32_t, 3>& t, std::vector<double>* known) {
   double worst = 0;
-  for (uint32_t v : t)
-    if (vs[v].sharedId >= 0)
+  for (uint32_t v : t) {
+    if (vs[v].sharedId < 0) continue;
+    if (!known) {
       worst = std::max(worst, glm::length(vs[v].position - surface.point(vs[v].uv)));
+      continue;
+    }
+    double& offset = (*known)[v];
+    if (offset < 0) offset = glm::length(vs[v].position - surface.point(vs[v].uv));
+    worst = std::max(worst, offset);
+  }
   return worst;
 }
 

@@ -234,6 +234,7 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
     return a == b || (vs[a].sharedId >= 0 && vs[a].sharedId == vs[b].sharedId);
   };
   out.collapsed.reserve(triangles.size());
+  std::vector<double> trimOffset(vs.size(), -1.0);  // per vertex, once measured
   for (size_t index = 0; index < triangles.size(); ++index) {
     FaceTriangle& t = triangles[index];
     const std::array<uint32_t, 3> measured = t.v;
@@ -248,8 +249,8 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
     ++stats.triangles;
     // The file's own offset of the trim points from the surface: part of the promise
     // (deviation ≤ δ + maxTrimPointOffset), measured whatever measureKeptTriangles says.
-    stats.maxTrimPointOffset =
-        std::max(stats.maxTrimPointOffset, trim_detail::cornerOffset(surface, vs, measured));
+    stats.maxTrimPointOffset = std::max(
+        stats.maxTrimPointOffset, trim_detail::cornerOffset(surface, vs, measured, &trimOffset));
     if (!t.gap && !options.measureKeptTriangles) continue;
     ++stats.measuredTriangles;
     const double parametric =

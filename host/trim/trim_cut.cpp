@@ -15,6 +15,9 @@ int cellIndex(double x, double lo, double cell, int count) {
 }  // namespace
 
 TrimSegmentIndex::TrimSegmentIndex(const std::vector<TrimLoop>& loops) {
+  size_t count = 0;
+  for (const TrimLoop& loop : loops) count += loop.uv.size();
+  segments_.reserve(count);
   for (const TrimLoop& loop : loops)
     for (size_t k = 0; k < loop.uv.size(); ++k)
       segments_.push_back({loop.uv[k], loop.uv[(k + 1) % loop.uv.size()]});
@@ -28,17 +31,27 @@ TrimSegmentIndex::TrimSegmentIndex(const std::vector<TrimLoop>& loops) {
   const int side = std::clamp(int(std::sqrt(double(segments_.size()))), 1, 256);
   cellsU_ = cellsV_ = side;
   cell_ = glm::max((hi_ - lo_) / double(side), glm::dvec2(1e-300));
-  bins_.assign(size_t(cellsU_) * cellsV_, {});
+  // The bins as one array (counts, then offsets, then each segment's ids in increasing order,
+  // as per-cell vectors held them) instead of a vector per cell.
   stamp_.assign(segments_.size(), 0);
+  std::vector<std::array<int, 4>> spans(segments_.size());  // u0, u1, v0, v1
+  binStart_.assign(size_t(cellsU_) * cellsV_ + 1, 0);
   for (uint32_t s = 0; s < segments_.size(); ++s) {
     const glm::dvec2 a = glm::min(segments_[s].a, segments_[s].b);
     const glm::dvec2 b = glm::max(segments_[s].a, segments_[s].b);
-    const int u0 = cellIndex(a.x, lo_.x, cell_.x, cellsU_);
-    const int u1 = cellIndex(b.x, lo_.x, cell_.x, cellsU_);
-    const int v0 = cellIndex(a.y, lo_.y, cell_.y, cellsV_);
-    const int v1 = cellIndex(b.y, lo_.y, cell_.y, cellsV_);
-    for (int i = u0; i <= u1; ++i)
-      for (int j = v0; j <= v1; ++j) bins_[size_t(i) * cellsV_ + j].push_back(s);
+    std::array<int, 4>& span = spans[s];
+    span = {cellIndex(a.x, lo_.x, cell_.x, cellsU_), cellIndex(b.x, lo_.x, cell_.x, cellsU_),
+            cellIndex(a.y, lo_.y, cell_.y, cellsV_), cellIndex(b.y, lo_.y, cell_.y, cellsV_)};
+    for (int i = span[0]; i <= span[1]; ++i)
+      for (int j = span[2]; j <= span[3]; ++j) ++binStart_[size_t(i) * cellsV_ + j + 1];
+  }
+  for (size_t c = 1; c < binStart_.size(); ++c) binStart_[c] += binStart_[c - 1];
+  binned_.resize(binStart_.back());
+  std::vector<uint32_t> fill(binStart_.begin(), binStart_.end() - 1);
+  for (uint32_t s = 0; s < segments_.size(); ++s) {
+    const std::array<int, 4>& span = spans[s];
+    for (int i = span[0]; i <= span[1]; ++i)
+      for (int j = span[2]; j <= span[3]; ++j) binned_[fill[size_t(i) * cellsV_ + j]++] = s;
   }
 }
 
@@ -52,7 +65,7 @@ void TrimSegmentIndex::near(glm::dvec2 lo, glm::dvec2 hi, std::vector<uint32_t>&
   const int v1 = cellIndex(hi.y, lo_.y, cell_.y, cellsV_);
   for (int i = u0; i <= u1; ++i)
     for (int j = v0; j <= v1; ++j)
-      for (uint32_t s : bins_[size_t(i) * cellsV_ + j])
+      for (uint32_t s : bin(size_t(i) * cellsV_ + j))
         if (stamp_[s] != query_) {
           stamp_[s] = query_;
           out.push_back(s);
@@ -85,7 +98,7 @@ int TrimSegmentIndex::windingNumber(glm::dvec2 p) const {
   const int j = cellIndex(p.y, lo_.y, cell_.y, cellsV_);
   int winding = 0;
   for (int i = cellIndex(p.x, lo_.x, cell_.x, cellsU_); i < cellsU_; ++i)
-    for (uint32_t s : bins_[size_t(i) * cellsV_ + j])
+    for (uint32_t s : bin(size_t(i) * cellsV_ + j))
       if (stamp_[s] != query_) {
         stamp_[s] = query_;
         winding += crossing(segments_[s], p);

@@ -41,7 +41,14 @@ class TrimSegmentIndex {
   std::vector<TrimSegment> segments_;
   glm::dvec2 lo_{0}, hi_{0}, cell_{1};
   int cellsU_ = 1, cellsV_ = 1;
-  std::vector<std::vector<uint32_t>> bins_;
+  std::vector<uint32_t> binStart_;  // cell c's segments: binned_[binStart_[c], binStart_[c + 1])
+  std::vector<uint32_t> binned_;
+  struct Bin {
+    const uint32_t *first, *last;
+    const uint32_t* begin() const { return first; }
+    const uint32_t* end() const { return last; }
+  };
+  Bin bin(size_t c) const { return {binned_.data() + binStart_[c], binned_.data() + binStart_[c + 1]}; }
   mutable std::vector<uint32_t> stamp_;
   mutable uint32_t query_ = 0;
 };

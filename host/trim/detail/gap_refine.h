@@ -53,8 +53,10 @@ double interpolationDeviation(const FaceSurface& surface, const std::vector<Face
 
 // Largest |Pᵢ − S(uvᵢ)| over the corners: for a trim point, its B-rep edge's distance from this
 // face's surface (the file's edge gap); 0 for a vertex of the face's own.
+// `known`, when given (one entry per vertex, −1 until measured), keeps each corner's offset
+// for the next triangle that has it.
 double cornerOffset(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
-                    const std::array<uint32_t, 3>& t);
+                    const std::array<uint32_t, 3>& t, std::vector<double>* known = nullptr);
 
 // The geometric counterpart of interpolationDeviation (corners on the surface).
 double interpolationDistance(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
