@@ -30,6 +30,7 @@
 #include "cad_test_shapes.h"
 #include "scratch_dir.h"
 #include "tessera/errors.h"
+#include "trim/face_surface.h"
 #include "trim/trim_classifier.h"
 
 using namespace tessera;
@@ -364,3 +365,39 @@ TEST_CASE("cad: a face that fails is reported, the others kept", "[cad]") {
   CHECK_THROWS_AS(toTrimmedModel(CadFile{"x", both, {}}, 0.0), ArgumentError);
 }
 #endif
+
+TEST_CASE("cad: FaceSurface::pointsAlongU gives point()'s doubles on the IDF library's faces",
+          "[cad]") {
+  // meanScales takes its u-neighbours from pointsAlongU, which shares the v direction's sums:
+  // bit for bit the three point() calls, on every kind of piece (planes, cylinders, rational
+  // tori, B-splines of several pieces), at piece sides and across them (three calls there).
+  const std::vector<std::string> files = idfFiles();
+  REQUIRE(files.size() == 32);
+  size_t compared = 0, multiPiece = 0, rational = 0;
+  for (size_t k = 0; k < files.size(); k += 4) {
+    INFO(files[k]);
+    const CadFile file = readCadFile(files[k]);
+    const CadImport in = toTrimmedModel(file, defaultCadTolerance(file.shape));
+    for (const TrimmedFace& face : in.model.faces) {
+      const tessera::FaceSurface surface(face);
+      multiPiece += face.pieces.size() > 1;
+      for (const BezierPatchPiece& p : face.pieces) rational += !p.patch.weights.empty();
+      for (const BezierPatchPiece& p : face.pieces)
+        for (int i = 0; i <= 4; ++i)
+          for (int j = 0; j <= 4; ++j) {
+            const glm::dvec2 uv(p.u0 + (p.u1 - p.u0) * i / 4.0, p.v0 + (p.v1 - p.v0) * j / 4.0);
+            for (const double h : {1e-3 * (p.u1 - p.u0), 0.6 * (p.u1 - p.u0)}) {
+              const glm::dvec2 du(h, 0);
+              const std::array<glm::dvec3, 3> along = surface.pointsAlongU({uv - du, uv, uv + du});
+              REQUIRE(along[0] == surface.point(uv - du));
+              REQUIRE(along[1] == surface.point(uv));
+              REQUIRE(along[2] == surface.point(uv + du));
+              ++compared;
+            }
+          }
+    }
+  }
+  CHECK(compared > 10000);
+  CHECK(multiPiece > 0);
+  CHECK(rational > 0);
+}

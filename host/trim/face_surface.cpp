@@ -63,6 +63,44 @@ Point tensorPoint(const Point* net, int n, int m, double u, double v) {
   }
 }
 
+// tensorPoint at (us[k], v), k = 0..2: one v, so the Bernstein row in v and the inner sums (one
+// per row of the net) are taken once for the three; each result is tensorPoint's double (the
+// same operations on the same operands).
+template <int N, int M, class Point>
+std::array<Point, 3> tensorPointsOfDegree(const Point* net, int n, int m,
+                                          const std::array<double, 3>& us, double v) {
+  if constexpr (N >= 0) n = N;
+  if constexpr (M >= 0) m = M;
+  const std::array<double, kMaxDegree + 1> bv = bernsteinRow<M>(m, v);
+  std::array<Point, kMaxDegree + 1> rows;
+  for (int i = 0; i <= n; ++i) {
+    Point row(0.0);
+    for (int j = 0; j <= m; ++j) row += bv[j] * net[i * (m + 1) + j];
+    rows[i] = row;
+  }
+  std::array<Point, 3> out;
+  for (int k = 0; k < 3; ++k) {
+    const std::array<double, kMaxDegree + 1> bu = bernsteinRow<N>(n, us[k]);
+    Point sum(0.0);
+    for (int i = 0; i <= n; ++i) sum += bu[i] * rows[i];
+    out[k] = sum;
+  }
+  return out;
+}
+
+template <class Point>
+std::array<Point, 3> tensorPoints(const Point* net, int n, int m, const std::array<double, 3>& us,
+                                  double v) {
+  switch (n * (kMaxDegree + 1) + m) {
+    case 1 * (kMaxDegree + 1) + 1: return tensorPointsOfDegree<1, 1>(net, n, m, us, v);
+    case 2 * (kMaxDegree + 1) + 1: return tensorPointsOfDegree<2, 1>(net, n, m, us, v);
+    case 1 * (kMaxDegree + 1) + 2: return tensorPointsOfDegree<1, 2>(net, n, m, us, v);
+    case 2 * (kMaxDegree + 1) + 2: return tensorPointsOfDegree<2, 2>(net, n, m, us, v);
+    case 3 * (kMaxDegree + 1) + 3: return tensorPointsOfDegree<3, 3>(net, n, m, us, v);
+    default: return tensorPointsOfDegree<-1, -1>(net, n, m, us, v);
+  }
+}
+
 // FaceSurface::localUv, here so that point() inlines it: called, its result went through the
 // stack as two scalars and came back as one vector load that waited on both stores (a quarter
 // of point()'s time in perf).
@@ -154,6 +192,29 @@ glm::dvec3 FaceSurface::point(glm::dvec2 uv) const {
   return tensorPoint(patch.cp.data(), patch.degreeU, patch.degreeV, local.x, local.y);
 }
 
+std::array<glm::dvec3, 3> FaceSurface::pointsAlongU(const std::array<glm::dvec2, 3>& uvs) const {
+  const size_t piece = pieceAt(uvs[1]);
+  const auto separately = [&] {  // the middle first, as meanScales called them
+    const glm::dvec3 middle = point(uvs[1]);
+    return std::array<glm::dvec3, 3>{point(uvs[0]), middle, point(uvs[2])};
+  };
+  if (!checked_ || uvs[0].y != uvs[1].y || uvs[2].y != uvs[1].y || pieceAt(uvs[0]) != piece ||
+      pieceAt(uvs[2]) != piece)
+    return separately();
+  const BezierPatchPiece& p = face_->pieces[piece];
+  std::array<double, 3> us;
+  for (int k = 0; k < 3; ++k) us[k] = localUvOf(p, uvs[k]).x;
+  const double v = localUvOf(p, uvs[1]).y;
+  if (rational_[piece]) {
+    const RationalBezierPatch& r = *rational_[piece];
+    const std::array<glm::dvec4, 3> h = tensorPoints(r.cpw.data(), r.degreeU, r.degreeV, us, v);
+    for (const glm::dvec4& hk : h)
+      if (hk.w == 0.0 || !std::isfinite(hk.w)) return separately();  // point()'s error path
+    return {glm::dvec3(h[0]) / h[0].w, glm::dvec3(h[1]) / h[1].w, glm::dvec3(h[2]) / h[2].w};
+  }
+  return tensorPoints(p.patch.cp.data(), p.patch.degreeU, p.patch.degreeV, us, v);
+}
+
 double FaceSurface::distance(const glm::dvec3& target, glm::dvec2 guess, double enough) const {
   const size_t piece = pieceAt(guess);
   if (rational_[piece])  // the homogeneous form converted once (the constructor)
@@ -171,8 +232,9 @@ FaceSurface::Scales FaceSurface::meanScales(glm::dvec2 lo, glm::dvec2 hi) const 
   for (int i = 0; i < kGrid; ++i)
     for (int j = 0; j < kGrid; ++j) {
       const glm::dvec2 uv = lo + (hi - lo) * glm::dvec2((i + 0.5) / kGrid, (j + 0.5) / kGrid);
-      const glm::dvec3 p = point(uv), pu0 = point(uv - du), pu1 = point(uv + du),
-                       pv0 = point(uv - dv), pv1 = point(uv + dv);
+      const std::array<glm::dvec3, 3> alongU = pointsAlongU({uv - du, uv, uv + du});
+      const glm::dvec3 &p = alongU[1], &pu0 = alongU[0], &pu1 = alongU[2];
+      const glm::dvec3 pv0 = point(uv - dv), pv1 = point(uv + dv);
       if (h.x > 0) sum.speeds.x += glm::length(pu1 - pu0) / (2 * h.x);
       if (h.y > 0) sum.speeds.y += glm::length(pv1 - pv0) / (2 * h.y);
       const glm::dvec3 normal = glm::cross(pu1 - pu0, pv1 - pv0);

@@ -3,6 +3,7 @@
 // piece go to the nearest piece, clamped to its rectangle (trim loops may overhang the
 // surface's domain by the CAD model's tolerance).
 #pragma once
+#include <array>
 #include <glm/glm.hpp>
 #include <optional>
 #include <vector>
@@ -20,6 +21,9 @@ class FaceSurface {
   glm::dvec2 localUv(size_t piece, glm::dvec2 uv) const;
   glm::dvec2 faceUv(size_t piece, glm::dvec2 local) const;
   glm::dvec3 point(glm::dvec2 uv) const;
+  // point() at three uvs of one v (uvs[k].y all equal; otherwise, or across pieces, three
+  // point() calls): the same doubles, the v direction's sums taken once.
+  std::array<glm::dvec3, 3> pointsAlongU(const std::array<glm::dvec2, 3>& uvs) const;
   // Distance from `target` to the surface, by the closest-point search on the piece of
   // `guess` started there (closest_point.h): an upper bound of the true distance. With
   // `enough` > 0 the search ends once within it (closestPointOnPatch's `enough`).
