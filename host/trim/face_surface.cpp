@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <limits>
+#include <type_traits>
 
 #include "geometry/bezier.h"
 #include "geometry/closest_point.h"
@@ -50,17 +51,26 @@ Point tensorPointOfDegree(const Point* net, int n, int m, double u, double v) {
 }
 
 // The degrees of the import's pieces (planes 1×1, cylinders and cones 2×1 or 1×2, spheres and
-// tori 2×2, bicubic B-splines 3×3) at fixed degree; any other at run time.
+// tori 2×2, bicubic B-splines 3×3) at fixed degree, any other at run time: f(N, M) with N and
+// M std::integral_constant<int, degree or −1>.
+template <class F>
+decltype(auto) withFixedDegrees(int n, int m, F&& f) {
+  using std::integral_constant;
+  switch (n * (kMaxDegree + 1) + m) {
+    case 1 * (kMaxDegree + 1) + 1: return f(integral_constant<int, 1>(), integral_constant<int, 1>());
+    case 2 * (kMaxDegree + 1) + 1: return f(integral_constant<int, 2>(), integral_constant<int, 1>());
+    case 1 * (kMaxDegree + 1) + 2: return f(integral_constant<int, 1>(), integral_constant<int, 2>());
+    case 2 * (kMaxDegree + 1) + 2: return f(integral_constant<int, 2>(), integral_constant<int, 2>());
+    case 3 * (kMaxDegree + 1) + 3: return f(integral_constant<int, 3>(), integral_constant<int, 3>());
+    default: return f(integral_constant<int, -1>(), integral_constant<int, -1>());
+  }
+}
+
 template <class Point>
 Point tensorPoint(const Point* net, int n, int m, double u, double v) {
-  switch (n * (kMaxDegree + 1) + m) {
-    case 1 * (kMaxDegree + 1) + 1: return tensorPointOfDegree<1, 1>(net, n, m, u, v);
-    case 2 * (kMaxDegree + 1) + 1: return tensorPointOfDegree<2, 1>(net, n, m, u, v);
-    case 1 * (kMaxDegree + 1) + 2: return tensorPointOfDegree<1, 2>(net, n, m, u, v);
-    case 2 * (kMaxDegree + 1) + 2: return tensorPointOfDegree<2, 2>(net, n, m, u, v);
-    case 3 * (kMaxDegree + 1) + 3: return tensorPointOfDegree<3, 3>(net, n, m, u, v);
-    default: return tensorPointOfDegree<-1, -1>(net, n, m, u, v);
-  }
+  return withFixedDegrees(n, m, [&](auto N, auto M) {
+    return tensorPointOfDegree<decltype(N)::value, decltype(M)::value>(net, n, m, u, v);
+  });
 }
 
 // tensorPoint at (us[k], v), k = 0..2: one v, so the Bernstein row in v and the inner sums (one
@@ -91,14 +101,9 @@ std::array<Point, 3> tensorPointsOfDegree(const Point* net, int n, int m,
 template <class Point>
 std::array<Point, 3> tensorPoints(const Point* net, int n, int m, const std::array<double, 3>& us,
                                   double v) {
-  switch (n * (kMaxDegree + 1) + m) {
-    case 1 * (kMaxDegree + 1) + 1: return tensorPointsOfDegree<1, 1>(net, n, m, us, v);
-    case 2 * (kMaxDegree + 1) + 1: return tensorPointsOfDegree<2, 1>(net, n, m, us, v);
-    case 1 * (kMaxDegree + 1) + 2: return tensorPointsOfDegree<1, 2>(net, n, m, us, v);
-    case 2 * (kMaxDegree + 1) + 2: return tensorPointsOfDegree<2, 2>(net, n, m, us, v);
-    case 3 * (kMaxDegree + 1) + 3: return tensorPointsOfDegree<3, 3>(net, n, m, us, v);
-    default: return tensorPointsOfDegree<-1, -1>(net, n, m, us, v);
-  }
+  return withFixedDegrees(n, m, [&](auto N, auto M) {
+    return tensorPointsOfDegree<decltype(N)::value, decltype(M)::value>(net, n, m, us, v);
+  });
 }
 
 // FaceSurface::localUv, here so that point() inlines it: called, its result went through the
