@@ -24,10 +24,24 @@ TEST_CASE("line index: lines numbered in the order first met", "[triangulate]") 
   REQUIRE(index.size() == 1004);
   for (size_t line = 0; line < index.size(); ++line)
     REQUIRE(index.key(line) == (line < 4 ? keys[line] : 1000 + (line - 4)));
-  index.points(index.number(keys[2])).push_back({0.5f, 0.25f});
-  REQUIRE(index.find(keys[2])->size() == 1);
-  REQUIRE(index.find(keys[1])->empty());
-  REQUIRE(index.find(99) == nullptr);
+  // Points go in the room allocated for their line; the lines share one array.
+  std::vector<uint32_t> room(index.size(), 0);
+  room[2] = 2;
+  room[3] = 1;
+  index.allocatePoints(room);
+  index.add(index.number(keys[2]), {0.5f, 0.25f});
+  index.add(3, {0.75f, 0.5f});
+  REQUIRE(index.find(keys[2]).size() == 1);
+  REQUIRE(index.find(keys[2])[0].t == 0.5f);
+  REQUIRE(index.find(keys[3]).size() == 1);
+  REQUIRE(index.find(keys[3])[0].t == 0.75f);
+  REQUIRE(index.find(keys[1]).empty());
+  REQUIRE(index.find(99).empty());
+  index.add(index.number(keys[2]), {0.25f, 0.25f});
+  REQUIRE(index.points(2).size() == 2);
+  index.shrink(2, 1);
+  REQUIRE(index.find(keys[2]).size() == 1);
+  REQUIRE(index.find(keys[3])[0].t == 0.75f);  // the neighbour's room untouched
 }
 
 TEST_CASE("line index: the merge walk order is std::unordered_map's", "[triangulate]") {

@@ -22,13 +22,13 @@ float movedTo(const MovedCorners& moved, float t) {
 }
 
 // Positions strictly between lo and hi (lo < hi), ascending.
-void between(const std::vector<LinePoint>* points, float lo, float hi, std::vector<float>& out) {
+template <typename Points>
+void between(const Points& points, float lo, float hi, std::vector<float>& out) {
   out.clear();
-  if (!points) return;
   // One search: a leaf edge has few points inside, most often none.
-  auto first = std::upper_bound(points->begin(), points->end(), lo,
+  auto first = std::upper_bound(points.begin(), points.end(), lo,
                                 [](float t, const LinePoint& p) { return t < p.t; });
-  for (; first != points->end() && first->t < hi; ++first) out.push_back(first->t);
+  for (; first != points.end() && first->t < hi; ++first) out.push_back(first->t);
 }
 
 class LeafWalker {
@@ -109,7 +109,7 @@ class LeafWalker {
         const std::vector<MovedCorners>& sharedMoved = merges_.sharedMoved;
         if (!sharedMoved.empty())
           c0 = movedTo(sharedMoved[s.group], c0), c1 = movedTo(sharedMoved[s.group], c1);
-        between(&lines_.shared[s.group], std::min(c0, c1), std::max(c0, c1), scratch);
+        between(lines_.shared[s.group], std::min(c0, c1), std::max(c0, c1), scratch);
         if (c0 > c1) std::reverse(scratch.begin(), scratch.end());
         for (float c : scratch) {
           float t = s.reversed ? 1.0f - c : c;
@@ -134,7 +134,7 @@ class LeafWalker {
       }
     }
     const LineIndex& lines = alongU ? lines_.alongU : lines_.alongV;
-    const std::vector<LinePoint>* points = lines.find(lineKey(patch, fixed));
+    const PointRange<const LinePoint> points = lines.find(lineKey(patch, fixed));
     const auto& movedOn = alongU ? merges_.movedAlongU : merges_.movedAlongV;
     if (!movedOn.empty())
       if (auto moved = movedOn.find(lineKey(patch, fixed)); moved != movedOn.end())

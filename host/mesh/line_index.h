@@ -16,9 +16,24 @@ struct LineKeyHash {
   size_t operator()(uint64_t key) const { return size_t(key); }
 };
 
+// A line's points: a range of LineIndex's one array (Point: LinePoint or const LinePoint).
+template <typename Point>
+struct PointRange {
+  Point* first = nullptr;
+  Point* last = nullptr;
+  Point* begin() const { return first; }
+  Point* end() const { return last; }
+  size_t size() const { return size_t(last - first); }
+  bool empty() const { return first == last; }
+  Point& operator[](size_t k) const { return first[k]; }
+};
+using LinePointRange = PointRange<LinePoint>;
+
 // Per line (u = const or v = const inside a patch, keyed by lineKey, detail/vertex_key.h), the
 // leaf corners on it, sorted; once near points are merged (near_points.h), only those that
-// are vertices of their own. Lines are numbered in the order they were first met.
+// are vertices of their own. Lines are numbered in the order they were first met. Their points
+// share one array, each line a range sized before it is filled (allocatePoints), so that the
+// tens of thousands of lines of a fine mesh cost no allocation each.
 class LineIndex {
  public:
   explicit LineIndex(size_t expected) { numbers_.reserve(expected); }
@@ -26,21 +41,37 @@ class LineIndex {
   // The line's number, the line added if new.
   uint32_t number(uint64_t key) {
     const auto [number, added] = numbers_.try_emplace(key, uint32_t(keys_.size()));
-    if (added) {
-      keys_.push_back(key);
-      points_.emplace_back();
-    }
+    if (added) keys_.push_back(key);
     return number->second;
   }
 
-  const std::vector<LinePoint>* find(uint64_t key) const {
+  // Room for pointCounts[line] points on each line, all empty; lines numbered later have none.
+  void allocatePoints(const std::vector<uint32_t>& pointCounts) {
+    offsets_.assign(keys_.size() + 1, 0);
+    for (size_t line = 0; line < pointCounts.size() && line < keys_.size(); ++line)
+      offsets_[line + 1] = pointCounts[line];
+    for (size_t line = 0; line < keys_.size(); ++line) offsets_[line + 1] += offsets_[line];
+    ends_.assign(offsets_.begin(), offsets_.end() - 1);
+    points_.resize(offsets_.back());
+  }
+  // Appends a point to the line, within the room allocatePoints gave it.
+  void add(size_t line, const LinePoint& point) { points_[ends_[line]++] = point; }
+  // Keeps the line's first `count` points.
+  void shrink(size_t line, size_t count) { ends_[line] = offsets_[line] + count; }
+
+  // The line's points; empty if the key names no line.
+  PointRange<const LinePoint> find(uint64_t key) const {
     const auto number = numbers_.find(key);
-    return number == numbers_.end() ? nullptr : &points_[number->second];
+    if (number == numbers_.end() || number->second >= ends_.size()) return {};
+    return {points_.data() + offsets_[number->second], points_.data() + ends_[number->second]};
   }
 
   size_t size() const { return keys_.size(); }
   uint64_t key(size_t line) const { return keys_[line]; }
-  std::vector<LinePoint>& points(size_t line) { return points_[line]; }
+  LinePointRange points(size_t line) {
+    if (line >= ends_.size()) return {};
+    return {points_.data() + offsets_[line], points_.data() + ends_[line]};
+  }
 
   // The lines in the order a std::unordered_map<uint64_t, …> reserved for `reserved` entries
   // and filled in this index's order walks them. Merging near points hands out position ids
@@ -61,7 +92,8 @@ class LineIndex {
  private:
   HashMap<uint64_t, uint32_t, LineKeyHash> numbers_;
   std::vector<uint64_t> keys_;
-  std::vector<std::vector<LinePoint>> points_;
+  std::vector<LinePoint> points_;             // every line's points, line after line
+  std::vector<size_t> offsets_, ends_;        // per line: its first point, one past its last
 };
 
 }  // namespace tessera

@@ -44,7 +44,9 @@ class NearPointMerger {
           const auto distinct = [&](float a, float b) {
             return distinctOnModel(patch, uvOf(a), uvOf(b));
           };
-          pairs[l] = nearPairs(line->points(l), distinct);
+          size_t count = line->points(l).size();
+          pairs[l] = nearPairs(line->points(l).begin(), count, distinct);
+          line->shrink(l, count);
           if (lineIsSide(patch, alongU, fixed)) pairs[l].clear();  // merged by the side's own rules
         }
       });
@@ -87,7 +89,7 @@ class NearPointMerger {
       auto& movedOn = alongU ? out_.movedAlongU : out_.movedAlongV;
       for (uint32_t l : line->unorderedMapOrder(kLineIndexReserve * leafCount_)) {
         const uint64_t key = line->key(l);
-        std::vector<LinePoint>& points = line->points(l);
+        const LinePointRange points = line->points(l);
         const uint32_t patch = uint32_t(key >> 32);
         const float fixed = fromBits(uint32_t(key));
         size_t kept = 0;
@@ -107,7 +109,7 @@ class NearPointMerger {
           }
           movedOn[key].emplace_back(point.t, t);
         }
-        points.resize(kept);
+        line->shrink(l, kept);
       }
     }
     out_.sharedMoved.resize(lines_.shared.size());

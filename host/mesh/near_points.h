@@ -44,5 +44,8 @@ constexpr double kDistinctUlps = 4.0;
 // Runs of more than two come as consecutive pairs.
 std::vector<std::pair<float, float>> nearPairs(std::vector<LinePoint>& points,
                                                const std::function<bool(float, float)>& distinct);
+// The same on points[0, count), which keeps the folded points first: count becomes theirs.
+std::vector<std::pair<float, float>> nearPairs(LinePoint* points, size_t& count,
+                                               const std::function<bool(float, float)>& distinct);
 
 }  // namespace tessera
