@@ -190,6 +190,29 @@ void pushBatches(std::vector<Batch>& stack, uint32_t level, std::vector<gpu::Qua
   pathBits.clear();
 }
 
+// Room for what a batch adds, so that no vector grows while it is taken: its children (the
+// splits the decisions ask for; a split fp32 cannot place gives none) and its leaves. Every node
+// ends as one leaf or more, so the leaves so far, this batch's nodes and the `waiting` ones are
+// never more than the tree's leaves: reserved by that count (1.5× the room held when it grows,
+// so the last levels, which add few nodes, move the leaves no more), the leaves are moved a few
+// times in a tree, not at every doubling of a growing vector.
+void reserveForLevel(const Batch& batch, const std::vector<gpu::NodeDecision>& decisions,
+                     size_t waiting, std::vector<QuadLeaf>& leaves,
+                     std::vector<gpu::QuadNode>& next, std::vector<uint64_t>& nextPaths,
+                     std::vector<uint8_t>& nextPathBits) {
+  size_t children = 0;
+  for (size_t i = 0; i < batch.nodes.size(); ++i) {
+    const SplitCounts counts = splitCounts(decisions[i]);
+    if (counts.splits()) children += size_t(counts.u) * counts.v;
+  }
+  next.reserve(children);
+  nextPaths.reserve(children);
+  nextPathBits.reserve(children);
+  const size_t leastLeaves = leaves.size() + batch.nodes.size() + waiting;
+  if (leaves.capacity() < leastLeaves)
+    leaves.reserve(std::max(leastLeaves, leaves.capacity() + leaves.capacity() / 2));
+}
+
 void addLevelStats(LevelStats& total, const LevelStats& batch) {
   total.nodes += batch.nodes;
   total.splits += batch.splits;
@@ -236,6 +259,7 @@ void buildGroupTree(const PatchSet& patches, uint32_t firstPatch, const Quadtree
     next.clear();
     nextPaths.clear();
     nextPathBits.clear();
+    reserveForLevel(batch, decisions, waiting, result.leaves, next, nextPaths, nextPathBits);
     for (size_t i = 0; i < batch.nodes.size(); ++i) {
       const gpu::QuadNode& n = batch.nodes[i];
       const gpu::NodeDecision& d = decisions[i];
