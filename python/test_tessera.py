@@ -13,6 +13,21 @@ import tessera
 
 teapot, cli, cad = sys.argv[1], sys.argv[2], sys.argv[3]
 
+
+def occt_libraries(maps):
+    """The Open CASCADE (libTK*) and TBB libraries in a /proc/<pid>/maps text."""
+    return sorted(set(re.findall(r"/(lib(?:TK\w*|tbb\w*)\.so[.\d]*)$", maps, re.M)))
+
+
+# `import tessera` and a .bpt file load no Open CASCADE: tessera._cad, which links it, waits for
+# the first CAD call. In a fresh interpreter, as a user's script starts.
+fresh = subprocess.run(
+    [sys.executable, "-c", "import sys, tessera; tessera.Tessellator()"
+     ".tessellate(sys.argv[1]); print(sorted(sys.modules)); print(open('/proc/self/maps').read())",
+     teapot], check=True, capture_output=True, text=True).stdout
+assert "tessera._core" in fresh and "tessera._cad" not in fresh, fresh[:2000]
+assert not occt_libraries(fresh), occt_libraries(fresh)
+
 # The file path on the CPU: the triangle and vertex counts the CLI reports for the same work.
 t = tessera.Tessellator(device="cpu")
 assert t.device_name == "cpu" and not t.uses_vulkan
@@ -61,10 +76,17 @@ diagonal = float(np.linalg.norm(points.reshape(-1, 3).max(0) - points.reshape(-1
 assert abs(tessera.relative_tolerance(points, 0.001) - 0.001 * diagonal) <= 1e-12 * diagonal
 
 # A CAD model where Tessera has its CAD input (tessera/cad.h): the CLI's triangle count.
-assert hasattr(t, "tessellate_cad") == (cad == "cad")
+assert "tessera._cad" not in sys.modules  # no CAD call yet
+assert hasattr(t, "tessellate_cad") == (cad == "cad") == hasattr(tessera, "CadMesh")
 if cad == "cad":
     model = "/usr/share/freecad/Mod/Idf/Idflibs/SOT23.stp"
+    # Loaded at the first CAD call (hasattr above found CadMesh), and here in this process: the
+    # maps check above sees Open CASCADE where it is.
+    assert "tessera._cad" in sys.modules
+    assert "libTKernel.so" in " ".join(occt_libraries(open("/proc/self/maps").read()))
     part = t.tessellate_cad(model)
+    assert isinstance(part, tessera.CadMesh) and repr(part).startswith("<tessera.CadMesh ")
+    assert isinstance(part.mesh, tessera.Mesh)
     assert part.faces == part.faces_meshed > 0 and not part.skipped_faces
     assert part.triangle_faces.shape == (part.mesh.indices.shape[0],)
     assert part.triangle_faces.dtype == np.uint32 and part.triangle_faces.max() < part.faces
@@ -72,6 +94,17 @@ if cad == "cad":
     cli_out = subprocess.run([cli, "tessellate", model, "--backend", "cpu"], check=True, capture_output=True,
                              text=True).stdout
     assert re.search(r"triangles %d," % part.mesh.indices.shape[0], cli_out), cli_out
+    # On the default device, whose Vulkan context tessera._core made: lavapipe (or the CPU where
+    # Vulkan is missing) gives the CPU's mesh bit for bit, another device its count within 1%.
+    t_auto = tessera.Tessellator()
+    on_auto = t_auto.tessellate_cad(model)
+    if not t_auto.uses_vulkan or "llvmpipe" in t_auto.device_name:
+        assert np.array_equal(on_auto.mesh.indices, part.mesh.indices)
+        assert np.array_equal(on_auto.mesh.positions, part.mesh.positions)
+        assert np.array_equal(on_auto.triangle_faces, part.triangle_faces)
+    else:
+        assert abs(on_auto.mesh.indices.shape[0] - part.mesh.indices.shape[0]) <= \
+            0.01 * part.mesh.indices.shape[0]
     finer = t.tessellate_cad(model, tolerance=part.tolerance / 4)
     assert finer.tolerance == part.tolerance / 4
     assert finer.mesh.indices.shape[0] > part.mesh.indices.shape[0]

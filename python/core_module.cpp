@@ -1,48 +1,19 @@
-// import tessera: the public API with numpy arrays (docs/python.md).
+// tessera._core: the public API with numpy arrays (docs/python.md), re-exported by the package
+// tessera (python/package_init.py). It links no Open CASCADE: CAD is tessera._cad's.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 #include <tessera/tessera.h>
-#ifdef TESSERA_HAVE_CAD
-#include <tessera/cad.h>
-#endif
 
-#include <cstring>
+#include "mesh_arrays.h"
 
 namespace py = pybind11;
+using tessera::python::PyMesh;
+using tessera::python::toArray;
+using tessera::python::toPython;
 
 namespace {
-
-// A copy of `values` as a numpy array of `shape` (the vector is freed with the Mesh).
-template <class T>
-py::array_t<T> toArray(const std::vector<T>& values, std::vector<py::ssize_t> shape) {
-  py::array_t<T> array(shape);
-  if (!values.empty()) std::memcpy(array.mutable_data(), values.data(), values.size() * sizeof(T));
-  return array;
-}
-
-struct PyMesh {
-  py::array_t<float> positions, normals, uvs;
-  py::array_t<uint32_t> patch_ids, indices;
-  py::object proof;  // None, or a dict of tessera::ToleranceProof's members
-};
-
-py::object proofToPython(const std::optional<tessera::ToleranceProof>& proof) {
-  if (!proof) return py::none();
-  py::dict d;
-  d["tolerance"] = proof->tolerance;
-  d["largest_bound"] = proof->largestBound;
-  d["proven"] = proof->proven;
-  return d;
-}
-
-PyMesh toPython(const tessera::Mesh& mesh) {
-  const auto n = static_cast<py::ssize_t>(mesh.vertexCount());
-  const auto m = static_cast<py::ssize_t>(mesh.triangleCount());
-  return {toArray(mesh.positions, {n, 3}), toArray(mesh.normals, {n, 3}), toArray(mesh.uvs, {n, 2}),
-          toArray(mesh.patchIds, {n}), toArray(mesh.indices, {m, 3}), proofToPython(mesh.proof)};
-}
 
 tessera::Rule parseRule(const std::string& name) {
   if (name == "A" || name == "a") return tessera::Rule::A;
@@ -115,66 +86,7 @@ tessera::RuleOptions ruleOptions(const std::string& rule, float linearity, float
 
 }  // namespace
 
-#ifdef TESSERA_HAVE_CAD
-// tessera/cad.h: Tessellator.tessellate_cad and its result, tessera.CadMesh.
-struct PyCadMesh {
-  PyMesh mesh;
-  py::array_t<uint32_t> triangle_faces;
-  size_t faces = 0, faces_meshed = 0;
-  double tolerance = 0, max_deviation = 0, max_parametric_deviation = 0;
-  std::vector<std::string> skipped_faces, warnings;
-};
-
-void defineCad(py::module_& m, py::class_<tessera::Tessellator>& tessellator) {
-  py::class_<PyCadMesh>(m, "CadMesh", "A CAD model's mesh and what was measured (docs/api.md)")
-      .def_readonly("mesh", &PyCadMesh::mesh, "the Mesh; patch_ids: a face each vertex is on")
-      .def_readonly("triangle_faces", &PyCadMesh::triangle_faces, "uint32 (M,): each triangle's face")
-      .def_readonly("faces", &PyCadMesh::faces)
-      .def_readonly("faces_meshed", &PyCadMesh::faces_meshed)
-      .def_readonly("tolerance", &PyCadMesh::tolerance, "δ used, model units")
-      .def_readonly("max_deviation", &PyCadMesh::max_deviation, "measured distance to the faces")
-      .def_readonly("max_parametric_deviation", &PyCadMesh::max_parametric_deviation)
-      .def_readonly("skipped_faces", &PyCadMesh::skipped_faces)
-      .def_readonly("warnings", &PyCadMesh::warnings)
-      .def("__repr__", [](const PyCadMesh& c) {
-        return "<tessera.CadMesh " + std::to_string(c.mesh.indices.shape(0)) + " triangles, " +
-               std::to_string(c.faces_meshed) + " of " + std::to_string(c.faces) + " faces>";
-      });
-  tessellator.def(
-      "tessellate_cad",
-      [](tessera::Tessellator& self, const py::object& path, double tolerance,
-         double relativeTolerance, bool skipBadFaces) {
-        const std::string file = py::str(py::module_::import("os").attr("fspath")(path));
-        tessera::CadOptions options;
-        options.tolerance = tolerance;
-        options.relativeTolerance = relativeTolerance;
-        options.skipBadFaces = skipBadFaces;
-        tessera::CadMesh cad;
-        {
-          py::gil_scoped_release unlocked;
-          cad = tessera::tessellateCadFile(self, file, options);
-        }
-        PyCadMesh out;
-        out.mesh = toPython(cad.mesh);
-        out.triangle_faces =
-            toArray(cad.triangleFaces, {static_cast<py::ssize_t>(cad.triangleFaces.size())});
-        out.faces = cad.faces;
-        out.faces_meshed = cad.facesMeshed;
-        out.tolerance = cad.tolerance;
-        out.max_deviation = cad.maxDeviation;
-        out.max_parametric_deviation = cad.maxParametricDeviation;
-        out.skipped_faces = cad.skippedFaces;
-        out.warnings = cad.warnings;
-        return out;
-      },
-      py::arg("path"), py::arg("tolerance") = 0.0, py::arg("relative_tolerance") = 0.001,
-      py::arg("skip_bad_faces") = false,
-      "A STEP, IGES or .brep model meshed watertight at `tolerance` (model units), or when 0 at "
-      "`relative_tolerance` of its diagonal");
-}
-#endif
-
-PYBIND11_MODULE(tessera, m) {
+PYBIND11_MODULE(_core, m) {
   m.doc() = "Tessera: free-form surfaces to triangle meshes on Vulkan or the CPU (docs/python.md)";
   m.attr("__version__") = tessera::version();
 
@@ -252,9 +164,9 @@ PYBIND11_MODULE(tessera, m) {
           py::arg("max_depth") = 30u,
           "Every triangle within `tolerance` (model units) of the surface: method 'adaptive' "
           "(rule T's quad-tree) or 'uniform' (a grid per patch from Filip's bound)");
-#ifdef TESSERA_HAVE_CAD
-  defineCad(m, tessellator);
-#endif
+  // Tessellator.tessellate_cad and tessera.CadMesh come from tessera._cad, which links Open
+  // CASCADE and is imported at the first CAD call (python/package_init.py): whether it was built.
+  m.attr("_has_cad") = bool(TESSERA_PYTHON_HAS_CAD);
 
   m.def(
       "relative_tolerance",

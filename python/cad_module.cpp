@@ -1,0 +1,79 @@
+// tessera._cad: Tessellator.tessellate_cad and tessera.CadMesh (tessera/cad.h). A module of its
+// own because it links Open CASCADE (~30 libraries and TBB); python/package_init.py imports it at
+// the first CAD call, so `import tessera` loads none of them. The Tessellator and Mesh types
+// are tessera._core's (pybind11 shares registered types between modules), and so are the
+// exception translations.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <tessera/cad.h>
+
+#include "mesh_arrays.h"
+
+namespace py = pybind11;
+using tessera::python::PyMesh;
+using tessera::python::toArray;
+using tessera::python::toPython;
+
+namespace {
+
+struct PyCadMesh {
+  PyMesh mesh;
+  py::array_t<uint32_t> triangle_faces;
+  size_t faces = 0, faces_meshed = 0;
+  double tolerance = 0, max_deviation = 0, max_parametric_deviation = 0;
+  std::vector<std::string> skipped_faces, warnings;
+};
+
+PyCadMesh tessellateCad(tessera::Tessellator& tessellator, const py::object& path,
+                        double tolerance, double relativeTolerance, bool skipBadFaces) {
+  const std::string file = py::str(py::module_::import("os").attr("fspath")(path));
+  tessera::CadOptions options;
+  options.tolerance = tolerance;
+  options.relativeTolerance = relativeTolerance;
+  options.skipBadFaces = skipBadFaces;
+  tessera::CadMesh cad;
+  {
+    py::gil_scoped_release unlocked;
+    cad = tessera::tessellateCadFile(tessellator, file, options);
+  }
+  PyCadMesh out;
+  out.mesh = toPython(cad.mesh);
+  out.triangle_faces =
+      toArray(cad.triangleFaces, {static_cast<py::ssize_t>(cad.triangleFaces.size())});
+  out.faces = cad.faces;
+  out.faces_meshed = cad.facesMeshed;
+  out.tolerance = cad.tolerance;
+  out.max_deviation = cad.maxDeviation;
+  out.max_parametric_deviation = cad.maxParametricDeviation;
+  out.skipped_faces = cad.skippedFaces;
+  out.warnings = cad.warnings;
+  return out;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_cad, m) {
+  m.doc() = "Tessera's CAD input (Open CASCADE), imported by tessera at the first CAD call";
+  py::module_::import("tessera._core");  // registers Tessellator, Mesh and the exceptions
+
+  py::class_<PyCadMesh>(m, "CadMesh", "A CAD model's mesh and what was measured (docs/api.md)")
+      .def_readonly("mesh", &PyCadMesh::mesh, "the Mesh; patch_ids: a face each vertex is on")
+      .def_readonly("triangle_faces", &PyCadMesh::triangle_faces, "uint32 (M,): each triangle's face")
+      .def_readonly("faces", &PyCadMesh::faces)
+      .def_readonly("faces_meshed", &PyCadMesh::faces_meshed)
+      .def_readonly("tolerance", &PyCadMesh::tolerance, "δ used, model units")
+      .def_readonly("max_deviation", &PyCadMesh::max_deviation, "measured distance to the faces")
+      .def_readonly("max_parametric_deviation", &PyCadMesh::max_parametric_deviation)
+      .def_readonly("skipped_faces", &PyCadMesh::skipped_faces)
+      .def_readonly("warnings", &PyCadMesh::warnings)
+      .def("__repr__", [](const PyCadMesh& c) {
+        return "<tessera.CadMesh " + std::to_string(c.mesh.indices.shape(0)) + " triangles, " +
+               std::to_string(c.faces_meshed) + " of " + std::to_string(c.faces) + " faces>";
+      });
+  // Tessellator.tessellate_cad (python/package_init.py) calls this with its arguments' defaults.
+  m.def("tessellate_cad", &tessellateCad, py::arg("tessellator"), py::arg("path"),
+        py::arg("tolerance"), py::arg("relative_tolerance"), py::arg("skip_bad_faces"),
+        "A STEP, IGES or .brep model meshed watertight at `tolerance` (model units), or when 0 "
+        "at `relative_tolerance` of its diagonal");
+}
