@@ -56,6 +56,7 @@ PyCadMesh tessellateCad(tessera::Tessellator& tessellator, const py::object& pat
 PYBIND11_MODULE(_cad, m) {
   m.doc() = "Tessera's CAD input (Open CASCADE), imported by tessera at the first CAD call";
   py::module_::import("tessera._core");  // registers Tessellator, Mesh and the exceptions
+  m.attr("__module__") = "tessera";      // tessera.CadMesh, as tessera._core's classes
 
   py::class_<PyCadMesh>(m, "CadMesh", "A CAD model's mesh and what was measured (docs/api.md)")
       .def_readonly("mesh", &PyCadMesh::mesh, "the Mesh; patch_ids: a face each vertex is on")

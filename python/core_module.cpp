@@ -89,6 +89,9 @@ tessera::RuleOptions ruleOptions(const std::string& rule, float linearity, float
 PYBIND11_MODULE(_core, m) {
   m.doc() = "Tessera: free-form surfaces to triangle meshes on Vulkan or the CPU (docs/python.md)";
   m.attr("__version__") = tessera::version();
+  // Everything here is tessera.X to its users (reprs, error messages, help()): pybind11 names
+  // classes and functions after their scope's __module__ where it has one.
+  m.attr("__module__") = "tessera";
 
   // Base first: pybind11 tries the translators registered last first, so subclasses win.
   const py::exception<tessera::Error>& error =
@@ -97,6 +100,8 @@ PYBIND11_MODULE(_core, m) {
   py::register_exception<tessera::ArgumentError>(m, "ArgumentError", error.ptr());
   py::register_exception<tessera::LimitError>(m, "LimitError", error.ptr());
   py::register_exception<tessera::DeviceError>(m, "DeviceError", error.ptr());
+  for (const char* name : {"Error", "InputError", "ArgumentError", "LimitError", "DeviceError"})
+    m.attr(name).attr("__module__") = "tessera";  // register_exception uses __name__
 
   py::class_<PyMesh>(m, "Mesh", "An indexed triangle mesh as numpy arrays")
       .def_readonly("positions", &PyMesh::positions, "float32 (N, 3)")

@@ -7,18 +7,13 @@ from ._core import (ArgumentError, DeviceError, Error, InputError, LimitError, M
                     __version__, load_patches, relative_tolerance, tessellate)
 
 __doc__ = _core.__doc__
-# Named tessera.X, as the user imports them (reprs, help(), tracebacks).
-for _public in (Error, InputError, ArgumentError, LimitError, DeviceError, Mesh, Tessellator):
-    _public.__module__ = __name__
-del _public
 
 if _core._has_cad:
 
     def _cad_module():
         """tessera._cad, imported (Open CASCADE loaded) on the first call."""
-        from . import _cad as cad
-        cad.CadMesh.__module__ = __name__
-        return cad
+        from . import _cad
+        return _cad
 
     def tessellate_cad(self, path, tolerance=0.0, relative_tolerance=0.001,
                        skip_bad_faces=False):

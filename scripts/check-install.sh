@@ -6,7 +6,8 @@
 # <tessera/tessera.h> beside <vulkan/vulkan.h> and glm with their normal definitions, and
 # that add_subdirectory leaves the caller's build type alone and configures no tests. The
 # commands: bin/tessera, and with the cad component bin/tessera-cad, which the installed
-# tessera (no Open CASCADE linked) hands a STEP model to.
+# tessera (no Open CASCADE linked) hands a STEP model to. The Python package where it is built:
+# tessera/_core (no Open CASCADE) and with the cad component tessera/_cad.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${BUILD_DIR:-build}
@@ -100,6 +101,7 @@ if [[ -f $(dirname "$pc")/tessera-cad.pc ]]; then
   c++ -std=c++17 -O2 examples/cad_consumer/main.cpp -o "$work/cad-consumer-pc" \
     $(pkg-config --cflags --libs tessera-cad)
   same_triangles "$work/cad-build/cad_consumer" "$work/cad-consumer-pc" "$model"
+  cad_triangles=$agreed
   echo "check-install: OK (the cad component: $agreed triangles on $(basename "$model"))"
   # The installed tessera links no Open CASCADE and hands the model to the installed
   # tessera-cad beside it (host/cli/cad_job.h): the same mesh as the library's.
@@ -120,4 +122,44 @@ fi
 if [[ ! -f $(dirname "$pc")/tessera-cad.pc && -f $cad_header ]]; then
   echo "check-install: $cad_header installed without the cad component" >&2
   exit 1
+fi
+
+# The Python package (python/), where it is built: imported from the prefix, `import tessera`
+# and a .bpt run map no Open CASCADE; with the cad component, tessera/_cad is installed and
+# tessellate_cad (which imports it) gives the C++ consumers' triangle count.
+if compgen -G "$build_dir/python/tessera/_core*.so" >/dev/null; then
+  init=$(find "$prefix" -path "*/tessera/__init__.py")
+  [[ -n $init ]] && compgen -G "$(dirname "$init")/_core*.so" >/dev/null || {
+    echo "check-install: the build has the Python package but the install lacks tessera/__init__.py or _core" >&2
+    exit 1
+  }
+  package=$(dirname "$init")
+  if compgen -G "$build_dir/python/tessera/_cad*.so" >/dev/null; then
+    compgen -G "$package/_cad*.so" >/dev/null || { echo "check-install: no $package/_cad*.so" >&2; exit 1; }
+  fi
+  if readelf -d "$package"/_core*.so | grep -E "NEEDED.*lib(TK|tbb)"; then
+    echo "check-install: the installed tessera._core links Open CASCADE (above)" >&2
+    exit 1
+  fi
+  python=$(sed -n 's/^Python3_EXECUTABLE:[A-Z]*=//p' "$build_dir/CMakeCache.txt")
+  teapot=$PWD/data/teapot.bpt  # run from $work: no folder named tessera beside the script
+  out=$(cd "$work" && PYTHONPATH=$(dirname "$package") "${python:-python3}" - "$teapot" \
+    "$package" ${cad_triangles:+"$model"} <<'PY'
+import re, sys
+import tessera
+assert tessera.__file__.startswith(sys.argv[2]), tessera.__file__
+t = tessera.Tessellator(device="cpu")
+print("teapot", t.tessellate(sys.argv[1]).indices.shape[0])
+occt = re.findall(r"/lib(?:TK|tbb)\S*", open("/proc/self/maps").read())
+assert not occt, "import tessera and a .bpt run loaded " + " ".join(sorted(set(occt)))
+if len(sys.argv) > 3:
+    print("cad", t.tessellate_cad(sys.argv[3]).mesh.indices.shape[0])
+PY
+  ) || { echo "check-install: the installed Python package failed: $out" >&2; exit 1; }
+  [[ $out =~ teapot\ [1-9] ]] || { echo "check-install: python: no teapot mesh: $out" >&2; exit 1; }
+  if [[ -n ${cad_triangles:-} && $out != *$'\n'"cad $cad_triangles" ]]; then
+    echo "check-install: python tessellate_cad on $model, not $cad_triangles triangles: $out" >&2
+    exit 1
+  fi
+  echo "check-install: OK (the Python package from the prefix: no Open CASCADE at import${cad_triangles:+, tessellate_cad $cad_triangles triangles})"
 fi
