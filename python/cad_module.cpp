@@ -2,7 +2,11 @@
 // own because it links Open CASCADE (~30 libraries and TBB); python/package_init.py imports it at
 // the first CAD call, so `import tessera` loads none of them. The Tessellator and Mesh types
 // are tessera._core's (pybind11 shares registered types between modules), and so are the
-// exception translations.
+// exception translations. Both modules carry their own copy of libtessera.a (a static
+// archive, symbols hidden): _cad's code runs on a Tessellator that _core built, which is sound
+// because the copies are of one build and the Vulkan calls after a context exists go through
+// that context's own function tables (vk/loader.h), not volk's globals, which only _core's
+// copy has loaded.
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
