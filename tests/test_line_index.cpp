@@ -31,17 +31,17 @@ TEST_CASE("line index: lines numbered in the order first met", "[triangulate]") 
   index.allocatePoints(room);
   index.add(index.number(keys[2]), {0.5f, 0.25f});
   index.add(3, {0.75f, 0.5f});
-  REQUIRE(index.find(keys[2]).size() == 1);
-  REQUIRE(index.find(keys[2])[0].t == 0.5f);
-  REQUIRE(index.find(keys[3]).size() == 1);
-  REQUIRE(index.find(keys[3])[0].t == 0.75f);
-  REQUIRE(index.find(keys[1]).empty());
-  REQUIRE(index.find(99).empty());
+  REQUIRE(index.points(2).size() == 1);
+  REQUIRE(index.points(2)[0].t == 0.5f);
+  REQUIRE(index.points(3).size() == 1);
+  REQUIRE(index.points(3)[0].t == 0.75f);
+  REQUIRE(index.points(1).empty());
+  REQUIRE(index.points(index.number(99)).empty());  // numbered after the room was given
   index.add(index.number(keys[2]), {0.25f, 0.25f});
   REQUIRE(index.points(2).size() == 2);
   index.shrink(2, 1);
-  REQUIRE(index.find(keys[2]).size() == 1);
-  REQUIRE(index.find(keys[3])[0].t == 0.75f);  // the neighbour's room untouched
+  REQUIRE(index.points(2).size() == 1);
+  REQUIRE(index.points(3)[0].t == 0.75f);  // the neighbour's room untouched
 }
 
 TEST_CASE("line index: the merge walk order is std::unordered_map's", "[triangulate]") {

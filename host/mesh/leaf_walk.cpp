@@ -9,6 +9,7 @@
 #include <cmath>
 #include <map>
 
+#include "common/hash_map.h"
 #include "mesh/ring_triangulation.h"
 
 namespace tessera::triangulate_detail {
@@ -43,37 +44,41 @@ class LeafWalker {
             uint32_t endPatch, LeafRun& run) {
     LeafWork work;
     work.out = &run;
+    // About one distinct vertex per leaf in a run, a few more on its border.
+    work.place.reserve(2 * (end - begin));
     for (size_t l = begin; l < end; ++l) {
       const QuadLeaf& leaf = leaves[l];
       work.silent = leaf.patchIndex < firstPatch || leaf.patchIndex >= endPatch;
-      triangulateLeaf(leaf, work);
+      triangulateLeaf(leaf, lines_.leafLines[l], work);
     }
   }
 
  private:
   struct RingVertex {
-    VertexKey key;   // one vertex, one key (numbered once: triangulate.cpp)
-    uint32_t query;  // in LeafRun::queries
-    glm::vec2 uv;    // on the leaf's own patch
-    bool operator==(const RingVertex& o) const { return key == o.key; }
+    uint32_t vertex;  // in LeafRun::vertices: one key, one place (numbered once: triangulate.cpp)
+    glm::vec2 uv;     // on the leaf's own patch
+    bool operator==(const RingVertex& o) const { return vertex == o.vertex; }
   };
 
   // One thread's walk: where it writes, and the leaf being triangulated.
   struct LeafWork {
     LeafRun* out = nullptr;
+    HashMap<VertexKey, uint32_t, VertexKeyHash> place;  // key → its place in out->vertices
     bool silent = false;        // the leaf is outside the scope
     bool touchesFold = false;   // it has a vertex on a folded side
     bool touchesMerge = false;  // ... or a vertex merged into a near one
     std::vector<RingVertex> ring;
     std::vector<glm::vec2> ringUv;
-    std::vector<VertexKey> ringKeys;
+    std::vector<uint32_t> ringVertices;
     std::vector<std::array<uint32_t, 3>> ringTriangles;
     std::vector<float> scratch;
   };
 
   static RingVertex query(LeafWork& work, const VertexKey& key, uint32_t patch, glm::vec2 uv) {
-    work.out->queries.push_back({key, patch, uv});
-    return {key, uint32_t(work.out->queries.size() - 1), uv};
+    std::vector<VertexQuery>& vertices = work.out->vertices;
+    const auto [place, added] = work.place.try_emplace(key, uint32_t(vertices.size()));
+    if (added) vertices.push_back({key, patch, uv});
+    return {place->second, uv};
   }
 
   // The vertex at (u, v) of `patch`, welded with every other patch's vertex at that point and
@@ -87,9 +92,9 @@ class LeafWalker {
   }
 
   // Appends the vertices strictly inside the leaf edge from t0 to t1 (in ring order) on the
-  // line `fixed` (v = fixed when alongU, else u = fixed).
-  void edgeInterior(LeafWork& work, uint32_t patch, bool alongU, float fixed, float t0,
-                    float t1) {
+  // line `fixed` (v = fixed when alongU, else u = fixed), number `line` in its LineIndex.
+  void edgeInterior(LeafWork& work, uint32_t patch, bool alongU, float fixed, uint32_t line,
+                    float t0, float t1) {
     std::vector<RingVertex>& ring = work.ring;
     std::vector<float>& scratch = work.scratch;
     int side = -1;
@@ -134,7 +139,7 @@ class LeafWalker {
       }
     }
     const LineIndex& lines = alongU ? lines_.alongU : lines_.alongV;
-    const PointRange<const LinePoint> points = lines.find(lineKey(patch, fixed));
+    const PointRange<const LinePoint> points = lines.points(line);
     const auto& movedOn = alongU ? merges_.movedAlongU : merges_.movedAlongV;
     if (!movedOn.empty())
       if (auto moved = movedOn.find(lineKey(patch, fixed)); moved != movedOn.end())
@@ -144,13 +149,14 @@ class LeafWalker {
     for (float t : scratch) place(t);
   }
 
-  static void emit(LeafWork& work, const RingVertex& a, const RingVertex& b, const RingVertex& c) {
+  static void emit(LeafWork& work, uint32_t patch, const RingVertex& a, const RingVertex& b,
+                   const RingVertex& c) {
     if (work.silent) return;
     if (a == b || b == c || c == a) {
       ++work.out->droppedTriangles;
       return;
     }
-    work.out->triangles.push_back({a.query, b.query, c.query});
+    work.out->triangles.push_back({{a.vertex, b.vertex, c.vertex}, {a.uv, b.uv, c.uv}, patch});
   }
 
   // Along a fold the ring can meet one vertex twice: back to back (a, v, v, a at the fold's
@@ -198,34 +204,30 @@ class LeafWalker {
   // vertex is met once, or twice in a row (a collapsed side's two corners, whose triangle
   // collapses and is dropped as in the fan): otherwise the fan, whose triangles each hold one
   // ring edge, is kept.
-  static bool triangulateRing(LeafWork& work, const gpu::vec4& r, uint32_t diagonal) {
+  static bool triangulateRing(LeafWork& work, uint32_t patch, const gpu::vec4& r,
+                              uint32_t diagonal) {
     const std::vector<RingVertex>& ring = work.ring;
     const size_t n = ring.size();
     work.ringUv.resize(n);
-    work.ringKeys.resize(n);
+    work.ringVertices.resize(n);
     for (size_t k = 0; k < n; ++k) {
       work.ringUv[k] = ring[k].uv;
-      work.ringKeys[k] = ring[k].key;
+      work.ringVertices[k] = ring[k].vertex;
     }
-    std::sort(work.ringKeys.begin(), work.ringKeys.end(), keyLess);
-    const size_t distinct =
-        size_t(std::unique(work.ringKeys.begin(), work.ringKeys.end()) - work.ringKeys.begin());
+    std::sort(work.ringVertices.begin(), work.ringVertices.end());
+    const size_t distinct = size_t(
+        std::unique(work.ringVertices.begin(), work.ringVertices.end()) - work.ringVertices.begin());
     size_t repeats = 0;
     for (size_t k = 0; k < n; ++k) repeats += ring[k] == ring[(k + 1) % n];
     if (distinct + repeats != n) return false;
     if (!triangulateRectangleRingAlong(work.ringUv, {r.x, r.y}, {r.z, r.w}, diagonal,
                                        work.ringTriangles))
       return false;
-    for (const auto& t : work.ringTriangles) emit(work, ring[t[0]], ring[t[1]], ring[t[2]]);
+    for (const auto& t : work.ringTriangles) emit(work, patch, ring[t[0]], ring[t[1]], ring[t[2]]);
     return true;
   }
 
-  // Any order of keys, for counting distinct ones.
-  static bool keyLess(const VertexKey& x, const VertexKey& y) {
-    return x.kind != y.kind ? x.kind < y.kind : x.a != y.a ? x.a < y.a : x.b < y.b;
-  }
-
-  void triangulateLeaf(const QuadLeaf& leaf, LeafWork& work) {
+  void triangulateLeaf(const QuadLeaf& leaf, const LeafLines& lines, LeafWork& work) {
     const uint32_t p = leaf.patchIndex;
     const gpu::vec4& r = leaf.rect;
     std::vector<RingVertex>& ring = work.ring;
@@ -234,13 +236,13 @@ class LeafWalker {
     // Counter-clockwise: bottom (v0, u rising), right (u1, v rising), top (v1, u falling),
     // left (u0, v falling); each edge contributes its start corner and interior vertices.
     ring.push_back(vertexAt(work, p, r.x, r.y));
-    edgeInterior(work, p, true, r.y, r.x, r.z);
+    edgeInterior(work, p, true, r.y, lines[0], r.x, r.z);
     ring.push_back(vertexAt(work, p, r.z, r.y));
-    edgeInterior(work, p, false, r.z, r.y, r.w);
+    edgeInterior(work, p, false, r.z, lines[3], r.y, r.w);
     ring.push_back(vertexAt(work, p, r.z, r.w));
-    edgeInterior(work, p, true, r.w, r.z, r.x);
+    edgeInterior(work, p, true, r.w, lines[1], r.z, r.x);
     ring.push_back(vertexAt(work, p, r.x, r.w));
-    edgeInterior(work, p, false, r.x, r.w, r.y);
+    edgeInterior(work, p, false, r.x, lines[2], r.w, r.y);
 
     const bool folded = work.touchesFold && dropFoldedBack(ring);
     if (work.touchesMerge) dropRepeats(ring);
@@ -250,11 +252,11 @@ class LeafWalker {
     const bool cornerDiagonal = leaf.diagonal == gpu::kToleranceAnyDiagonal ||
                                 (leaf.diagonal == gpu::kToleranceMainDiagonal && !work.touchesMerge);
     if (ring.size() == 4 && !folded && cornerDiagonal) {
-      emit(work, ring[0], ring[1], ring[2]);
-      emit(work, ring[0], ring[2], ring[3]);
+      emit(work, p, ring[0], ring[1], ring[2]);
+      emit(work, p, ring[0], ring[2], ring[3]);
       return;
     }
-    if (!folded && provenAnyTriangulation(leaf.cause) && triangulateRing(work, r, leaf.diagonal))
+    if (!folded && provenAnyTriangulation(leaf.cause) && triangulateRing(work, p, r, leaf.diagonal))
       return;
     // The fan's triangles need not keep to one diagonal: such a leaf's bound is then only
     // the any-triangle one (counted, docs/quadtree.md, "One diagonal").
@@ -265,7 +267,8 @@ class LeafWalker {
       vs = 0.5f * (r.y + r.w);
     }
     const RingVertex center = vertexAt(work, p, us, vs);
-    for (size_t k = 0; k < ring.size(); ++k) emit(work, center, ring[k], ring[(k + 1) % ring.size()]);
+    for (size_t k = 0; k < ring.size(); ++k)
+      emit(work, p, center, ring[k], ring[(k + 1) % ring.size()]);
   }
 
   SeamVertices& seams_;

@@ -59,16 +59,13 @@ class LineIndex {
   // Keeps the line's first `count` points.
   void shrink(size_t line, size_t count) { ends_[line] = offsets_[line] + count; }
 
-  // The line's points; empty if the key names no line.
-  PointRange<const LinePoint> find(uint64_t key) const {
-    const auto number = numbers_.find(key);
-    if (number == numbers_.end() || number->second >= ends_.size()) return {};
-    return {points_.data() + offsets_[number->second], points_.data() + ends_[number->second]};
-  }
-
   size_t size() const { return keys_.size(); }
   uint64_t key(size_t line) const { return keys_[line]; }
   LinePointRange points(size_t line) {
+    if (line >= ends_.size()) return {};
+    return {points_.data() + offsets_[line], points_.data() + ends_[line]};
+  }
+  PointRange<const LinePoint> points(size_t line) const {
     if (line >= ends_.size()) return {};
     return {points_.data() + offsets_[line], points_.data() + ends_[line]};
   }

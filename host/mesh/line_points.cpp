@@ -3,13 +3,8 @@
 // line's room in LineIndex's one array is known before it is filled.
 #include "mesh/detail/line_points.h"
 
-#include <array>
-
 namespace tessera::triangulate_detail {
 namespace {
-
-// A leaf's four lines: v = r.y, v = r.w (points along u), u = r.x, u = r.z (along v).
-using LeafLines = std::array<uint32_t, 4>;
 
 // Numbers every leaf's lines, each looked up once, in the order its corners meet them (the
 // lines' numbers follow it; a line's points are sorted before use, their order free).
@@ -39,10 +34,11 @@ void allocatePoints(const std::vector<LeafLines>& leafLines, LinePoints& lines) 
 
 LinePoints collectLinePoints(const std::vector<QuadLeaf>& leaves, SeamVertices& seams) {
   const PatchTopology& topology = seams.topology();
-  LinePoints lines{LineIndex(leaves.size() / 4), LineIndex(leaves.size() / 4), {}, {}};
+  LinePoints lines{LineIndex(leaves.size() / 4), LineIndex(leaves.size() / 4), {}, {}, {}};
   lines.shared.resize(topology.groupCount);
   lines.groupSide.assign(topology.groupCount, {0, -1});
-  const std::vector<LeafLines> leafLines = numberLeafLines(leaves, lines);
+  lines.leafLines = numberLeafLines(leaves, lines);
+  const std::vector<LeafLines>& leafLines = lines.leafLines;
   allocatePoints(leafLines, lines);
   for (size_t l = 0; l < leaves.size(); ++l) {
     const gpu::vec4& r = leaves[l].rect;

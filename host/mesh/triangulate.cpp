@@ -42,11 +42,10 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
   std::vector<LeafRun> runs((leaves.size() + runLength - 1) / runLength);
   parallelForChunks(leaves.size(), runLength, scope.threads, [&](size_t begin, size_t end) {
     LeafRun& run = runs[begin / runLength];
-    // About a vertex query per leaf corner and edge point, and two triangles, per leaf.
-    run.queries.reserve(10 * (end - begin));
+    // About a vertex and two triangles per leaf.
+    run.vertices.reserve(2 * (end - begin));
     run.triangles.reserve(3 * (end - begin));
     walkLeaves(tables, leaves, begin, end, scope.firstPatch, scope.endPatch, run);
-    run.findFirsts();
   });
 
   const auto addVertex = [&](const VertexKey& key, uint32_t patch, glm::vec2 uv) {
@@ -58,14 +57,14 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
     return vertex->second;
   };
   // A key's first query in leaf order is its first query in the first run that has it: the
-  // runs' first queries, run by run, meet the keys in the order one walk would.
+  // runs' vertices, run by run, meet the keys in the order one walk would.
   size_t triangles = 0;
   std::vector<size_t> firstTriangle(runs.size());
   for (size_t r = 0; r < runs.size(); ++r) {
     LeafRun& run = runs[r];
-    run.ids.resize(run.firsts.size());
-    for (size_t k = 0; k < run.firsts.size(); ++k) {
-      const VertexQuery& query = run.queries[run.firsts[k]];
+    run.ids.resize(run.vertices.size());
+    for (size_t k = 0; k < run.vertices.size(); ++k) {
+      const VertexQuery& query = run.vertices[k];
       run.ids[k] = addVertex(query.key, query.patch, query.uv);
     }
     firstTriangle[r] = triangles;
@@ -80,13 +79,12 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
     for (size_t r = begin; r < end; ++r) {
       const LeafRun& run = runs[r];
       size_t t = firstTriangle[r];
-      for (const std::array<uint32_t, 3>& triangle : run.triangles) {
+      for (const RunTriangle& triangle : run.triangles) {
         for (int c = 0; c < 3; ++c) {
-          const uint32_t q = triangle[c];
-          mesh.indices[3 * t + c] = run.ids[run.first[q]];
-          mesh.cornerUv[3 * t + c] = run.queries[q].uv;
+          mesh.indices[3 * t + c] = run.ids[triangle.vertex[c]];
+          mesh.cornerUv[3 * t + c] = triangle.uv[c];
         }
-        mesh.trianglePatch[t++] = run.queries[triangle[0]].patch;
+        mesh.trianglePatch[t++] = triangle.patch;
       }
     }
   });

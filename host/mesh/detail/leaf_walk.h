@@ -7,7 +7,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "common/hash_map.h"
 #include "mesh/detail/line_points.h"
 #include "mesh/detail/near_point_merge.h"
 #include "mesh/detail/seam_vertices.h"
@@ -15,35 +14,30 @@
 namespace tessera::triangulate_detail {
 
 // A vertex the leaf walk asks for: its index is handed out after the walk, in the order the
-// walk asked, as if it had been looked up then.
+// walk first asked for it, as if it had been looked up then.
 struct VertexQuery {
   VertexKey key;
   uint32_t patch;
   glm::vec2 uv;
 };
 
-// A run of consecutive leaves, walked: their vertex queries in order, and their triangles
-// as positions in `queries`.
-struct LeafRun {
-  std::vector<VertexQuery> queries;
-  std::vector<std::array<uint32_t, 3>> triangles;
-  size_t droppedTriangles = 0, diagonalFans = 0;
-  // The queries that are the first of their key in this run, in order; per query, its
-  // key's place in `firsts`; per first query, its vertex index (numbered after the walk).
-  std::vector<uint32_t> firsts, first, ids;
+// A triangle of a run: its corners as places in LeafRun::vertices, each corner's (u, v) on the
+// leaf's own patch (a welded vertex keeps another patch's), and that patch.
+struct RunTriangle {
+  std::array<uint32_t, 3> vertex;
+  std::array<glm::vec2, 3> uv;
+  uint32_t patch;
+};
 
-  // Numbering looks each key up once per run, not once per query (a vertex is asked for by
-  // every leaf around it), here in a table small enough for the cache, on the run's thread.
-  void findFirsts() {
-    HashMap<VertexKey, uint32_t, VertexKeyHash> place;
-    place.reserve(queries.size());
-    first.resize(queries.size());
-    for (size_t q = 0; q < queries.size(); ++q) {
-      const auto [k, added] = place.try_emplace(queries[q].key, uint32_t(firsts.size()));
-      if (added) firsts.push_back(uint32_t(q));
-      first[q] = k->second;
-    }
-  }
+// A run of consecutive leaves, walked. Its distinct vertices are kept in the order the walk
+// first asked for them, each with that first query: numbering looks each key up once per run,
+// not once per query (a vertex is asked for by every leaf around it), in a table small enough
+// for the cache, while the run is walked on its thread.
+struct LeafRun {
+  std::vector<VertexQuery> vertices;
+  std::vector<RunTriangle> triangles;
+  size_t droppedTriangles = 0, diagonalFans = 0;
+  std::vector<uint32_t> ids;  // per vertex, its index in the mesh (numbered after the walk)
 };
 
 // What the walk reads: set up once, then only looked up (positions included:
