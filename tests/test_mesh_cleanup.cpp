@@ -65,3 +65,24 @@ TEST_CASE("mesh cleanup: back-to-back pairs follow the rule on random meshes", "
     REQUIRE(std::count(rule.begin(), rule.end(), true) > 0);
   }
 }
+
+TEST_CASE("mesh cleanup: back-to-back pairs follow the rule where vertices have few triangles",
+          "[mesh][cleanup]") {
+  // Many vertices, few triangles each (as in a real mesh): each triangle is one of 300 random
+  // ones, rotated and maybe reversed, so pairs meet in buckets of a handful.
+  std::mt19937 random(20261128);
+  std::uniform_int_distribution<uint32_t> corner(0, 9999);
+  std::vector<std::array<uint32_t, 3>> base(300);
+  for (auto& b : base) b = {corner(random), corner(random), corner(random)};
+  std::uniform_int_distribution<size_t> pick(0, base.size() - 1);
+  std::vector<uint32_t> indices;
+  for (int t = 0; t < 3000; ++t) {
+    std::array<uint32_t, 3> c = base[pick(random)];
+    if (random() % 2) std::swap(c[1], c[2]);
+    std::rotate(c.begin(), c.begin() + random() % 3, c.end());
+    indices.insert(indices.end(), c.begin(), c.end());
+  }
+  const std::vector<bool> fast = backToBackPairs(indices), rule = backToBackByRule(indices);
+  REQUIRE(fast == rule);
+  REQUIRE(std::count(rule.begin(), rule.end(), true) > 1000);
+}

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -50,54 +51,57 @@ std::vector<bool> backToBackPairs(const std::vector<uint32_t>& indices) {
     return CornerKey{k[smallest], k[(smallest + 1) % 3], k[(smallest + 2) % 3]};
   };
   const size_t count = indices.size() / 3;
-  std::vector<CornerKey> keys(count);
-  for (size_t t = 0; t < count; ++t) keys[t] = keyOf(t, false);
-  // Triangles bucketed by their smallest corner (modulo a power of two), sorted by key within
-  // a bucket: a triangle and its reverse share that corner, and triangles met one after the
-  // other have nearby corners, so the lookups below stay in cache where one sort of the whole
-  // mesh, or a hash table of it, missed it at nearly every step.
-  size_t buckets = 1;
-  while (buckets < count) buckets *= 2;
-  const uint32_t mask = uint32_t(buckets - 1);
-  std::vector<uint32_t> start(buckets + 1, 0);
-  for (const CornerKey& k : keys) ++start[(k[0] & mask) + 1];
-  for (size_t b = 0; b < buckets; ++b) start[b + 1] += start[b];
-  std::vector<uint32_t> byKey(count);
+  std::vector<bool> cancelled(count, false);
+  if (count == 0) return cancelled;
+  // A triangle and its reverse share their smallest corner: triangles are bucketed by it, in
+  // triangle order (a counting sort), and each bucket is settled alone. Most buckets hold a
+  // handful (the triangles whose smallest corner a vertex is), scanned directly.
+  const uint32_t vertices = *std::max_element(indices.begin(), indices.end()) + 1;
+  const auto smallest = [&](size_t t) {
+    return std::min({indices[3 * t], indices[3 * t + 1], indices[3 * t + 2]});
+  };
+  std::vector<uint32_t> start(size_t(vertices) + 1, 0);
+  for (size_t t = 0; t < count; ++t) ++start[smallest(t) + 1];
+  for (uint32_t v = 0; v < vertices; ++v) start[v + 1] += start[v];
+  std::vector<uint32_t> byCorner(count);
   {
     std::vector<uint32_t> next(start.begin(), start.end() - 1);
-    for (size_t t = 0; t < count; ++t) byKey[next[keys[t][0] & mask]++] = uint32_t(t);
+    for (size_t t = 0; t < count; ++t) byCorner[next[smallest(t)]++] = uint32_t(t);
   }
-  // Group g: the triangles with one key; its open ones are a stack threaded through `below`.
-  std::vector<uint32_t> groupOf(count);
-  uint32_t groups = 0;
-  for (size_t b = 0; b < buckets; ++b) {
-    const auto first = byKey.begin() + start[b], last = byKey.begin() + start[b + 1];
-    if (last - first > 1)
-      std::sort(first, last, [&](uint32_t x, uint32_t y) { return keys[x] < keys[y]; });
-    for (auto i = first; i != last; ++i)
-      groupOf[*i] = i != first && keys[*i] == keys[*(i - 1)] ? groupOf[*(i - 1)] : groups++;
-  }
-  constexpr uint32_t kNone = UINT32_MAX;
-  std::vector<uint32_t> top(groups, kNone), below(count, kNone);
-  std::vector<bool> cancelled(count, false);
-  for (size_t t = 0; t < count; ++t) {
-    // The latest open triangle with this one's reverse key, if any, cancels with it.
-    const CornerKey reverse = keyOf(t, true);
-    const uint32_t b = reverse[0] & mask;
-    const auto last = byKey.begin() + start[b + 1];
-    const auto found = std::lower_bound(byKey.begin() + start[b], last, reverse,
-                                        [&](uint32_t x, const CornerKey& k) { return keys[x] < k; });
-    if (found != last && keys[*found] == reverse) {
-      uint32_t& open = top[groupOf[*found]];
-      if (open != kNone) {
-        cancelled[open] = cancelled[t] = true;
-        open = below[open];
+  // Per bucket, in triangle order: a triangle cancels with the latest open one whose key is
+  // its reverse, else stays open.
+  constexpr size_t kScanned = 64;  // larger buckets keep their open triangles per key
+  std::vector<uint32_t> open;
+  std::map<CornerKey, std::vector<uint32_t>> openByKey;
+  for (uint32_t v = 0; v < vertices; ++v) {
+    const uint32_t* first = byCorner.data() + start[v];
+    const uint32_t* last = byCorner.data() + start[v + 1];
+    if (last - first < 2) continue;
+    const bool scanned = size_t(last - first) <= kScanned;
+    open.clear();
+    openByKey.clear();
+    for (const uint32_t* i = first; i != last; ++i) {
+      const uint32_t t = *i;
+      const CornerKey reverse = keyOf(t, true);
+      if (scanned) {
+        auto match = std::find_if(open.rbegin(), open.rend(),
+                                  [&](uint32_t o) { return keyOf(o, false) == reverse; });
+        if (match != open.rend()) {
+          cancelled[*match] = cancelled[t] = true;
+          open.erase(std::next(match).base());
+        } else {
+          open.push_back(t);
+        }
         continue;
       }
+      const auto match = openByKey.find(reverse);
+      if (match != openByKey.end() && !match->second.empty()) {
+        cancelled[match->second.back()] = cancelled[t] = true;
+        match->second.pop_back();
+      } else {
+        openByKey[keyOf(t, false)].push_back(t);
+      }
     }
-    uint32_t& own = top[groupOf[t]];
-    below[t] = own;
-    own = uint32_t(t);
   }
   return cancelled;
 }
