@@ -86,3 +86,28 @@ TEST_CASE("mesh cleanup: back-to-back pairs follow the rule where vertices have 
   REQUIRE(fast == rule);
   REQUIRE(std::count(rule.begin(), rule.end(), true) > 1000);
 }
+
+TEST_CASE("mesh cleanup: welding keeps each position's first vertex, on any thread count",
+          "[mesh][cleanup][threads]") {
+  // Positions drawn from a few hundred, -0 and +0 the same point: the plain rule is a map from
+  // a position to the first vertex there.
+  std::mt19937 random(20261129);
+  std::uniform_int_distribution<int> pick(0, 299), sign(0, 1);
+  std::vector<glm::vec3> positions(20000);
+  for (glm::vec3& p : positions) {
+    const int k = pick(random);
+    p = glm::vec3(float(k % 7) * 0.25f, float(k / 7 % 5), float(k / 35));
+    if (p.x == 0.0f && sign(random)) p.x = -0.0f;
+  }
+  std::map<std::array<float, 3>, uint32_t> first;
+  std::vector<uint32_t> expected;
+  for (uint32_t i = 0; i < positions.size(); ++i) {
+    const glm::vec3& p = positions[i];
+    expected.push_back(first.try_emplace({p.x + 0.0f, p.y, p.z}, i).first->second);
+  }
+  REQUIRE(first.size() == 300);
+  for (unsigned threads : {1u, 2u, 3u, 0u}) {
+    INFO(threads << " threads");
+    REQUIRE(weldIdenticalPositions(positions, threads) == expected);
+  }
+}

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "common/hash_map.h"
+#include "common/first_occurrence.h"
 
 namespace tessera {
 
@@ -26,19 +26,20 @@ struct CornerKeyHash {
 
 }  // namespace
 
-std::vector<uint32_t> weldIdenticalPositions(const std::vector<glm::vec3>& positions) {
-  HashMap<CornerKey, uint32_t, CornerKeyHash> first;
-  first.reserve(positions.size());
-  std::vector<uint32_t> remap(positions.size());
-  for (uint32_t i = 0; i < positions.size(); ++i) {
-    CornerKey key;
-    for (int c = 0; c < 3; ++c) {
-      float x = positions[i][c] == 0.0f ? 0.0f : positions[i][c];
-      std::memcpy(&key[c], &x, sizeof x);
+std::vector<uint32_t> weldIdenticalPositions(const std::vector<glm::vec3>& positions,
+                                             unsigned threads) {
+  const auto forEachKey = [&](auto&& visit) {
+    for (size_t i = 0; i < positions.size(); ++i) {
+      CornerKey key;
+      for (int c = 0; c < 3; ++c) {
+        float x = positions[i][c] == 0.0f ? 0.0f : positions[i][c];
+        std::memcpy(&key[c], &x, sizeof x);
+      }
+      visit(i, key);
     }
-    remap[i] = first.try_emplace(key, i).first->second;
-  }
-  return remap;
+  };
+  return firstOccurrences<CornerKey, CornerKeyHash>(positions.size(), positions.size(),
+                                                    forEachKey, threads);
 }
 
 std::vector<bool> backToBackPairs(const std::vector<uint32_t>& indices) {

@@ -12,8 +12,10 @@
 
 namespace tessera {
 
-// For each vertex, the first vertex with bit-identical position.
-std::vector<uint32_t> weldIdenticalPositions(const std::vector<glm::vec3>& positions);
+// For each vertex, the first vertex with bit-identical position (its lookups on `threads`
+// threads, 0: all; the answer is the same).
+std::vector<uint32_t> weldIdenticalPositions(const std::vector<glm::vec3>& positions,
+                                             unsigned threads = 1);
 
 // Triangles whose reverse is in the mesh too (a, b, c and a, c, b): where a fold's strands are
 // zipped (side_fold.h), or evaluate to one point, a fan can cover one spot from both sides.

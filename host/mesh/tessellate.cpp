@@ -99,7 +99,7 @@ Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, const 
   // apart): weld those too, so a triangle with two corners there goes and its neighbours keep
   // sharing their edges; then back-to-back pairs cancel and caps (three corners on one line)
   // are flipped away (zero_area.h).
-  std::vector<uint32_t> remap = weldIdenticalPositions(mesh.positions);
+  std::vector<uint32_t> remap = weldIdenticalPositions(mesh.positions, 0);
   result.stats.degenerateTrianglesDropped = param.droppedTriangles;
   result.stats.diagonalFans = param.diagonalFans;
   mesh.indices.reserve(param.indices.size());

@@ -4,7 +4,7 @@
 // would have, so that the mesh does not depend on the thread count.
 #include "mesh/triangulate.h"
 
-#include "common/hash_map.h"
+#include "common/first_occurrence.h"
 #include "common/parallel_for.h"
 #include "mesh/detail/leaf_walk.h"
 
@@ -18,8 +18,6 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
   const PatchTopology ownTopology = scope.topology ? PatchTopology{} : findSharedEdges(patches);
   const PatchTopology& topology = scope.topology ? *scope.topology : ownTopology;
   ParamMesh mesh;
-  HashMap<VertexKey, uint32_t, VertexKeyHash> index;
-  index.reserve(leaves.size() * 3 / 2);
   mesh.sharedEdgeGroups = topology.groupCount;
   mesh.vertices.reserve(leaves.size() * 3 / 2);
   mesh.indices.reserve(leaves.size() * 8);
@@ -48,24 +46,32 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
     walkLeaves(tables, leaves, begin, end, scope.firstPatch, scope.endPatch, run);
   });
 
-  const auto addVertex = [&](const VertexKey& key, uint32_t patch, glm::vec2 uv) {
-    const auto [vertex, inserted] = index.try_emplace(key, uint32_t(mesh.vertices.size()));
-    if (inserted) {
-      mesh.vertices.push_back({patch, uv.x, uv.y});
-      if (scope.seamKeys) mesh.seamKeys.push_back(seams.seamKeyOf(key));
-    }
-    return vertex->second;
-  };
   // A key's first query in leaf order is its first query in the first run that has it: the
-  // runs' vertices, run by run, meet the keys in the order one walk would.
+  // runs' vertices, run by run, meet the keys in the order one walk would. The vertices are
+  // numbered in that order.
+  std::vector<size_t> runStart(runs.size() + 1, 0);
+  for (size_t r = 0; r < runs.size(); ++r) runStart[r + 1] = runStart[r] + runs[r].vertices.size();
+  const auto forEachKey = [&](auto&& visit) {
+    for (size_t r = 0; r < runs.size(); ++r)
+      for (size_t k = 0; k < runs[r].vertices.size(); ++k)
+        visit(runStart[r] + k, runs[r].vertices[k].key);
+  };
+  const std::vector<uint32_t> first = firstOccurrences<VertexKey, VertexKeyHash>(
+      runStart.back(), leaves.size() * 5 / 4, forEachKey, scope.threads);
+  std::vector<uint32_t> ids(runStart.back());
   size_t triangles = 0;
   std::vector<size_t> firstTriangle(runs.size());
   for (size_t r = 0; r < runs.size(); ++r) {
-    LeafRun& run = runs[r];
-    run.ids.resize(run.vertices.size());
-    for (size_t k = 0; k < run.vertices.size(); ++k) {
+    const LeafRun& run = runs[r];
+    for (size_t k = 0, q = runStart[r]; k < run.vertices.size(); ++k, ++q) {
+      if (first[q] != q) {
+        ids[q] = ids[first[q]];
+        continue;
+      }
       const VertexQuery& query = run.vertices[k];
-      run.ids[k] = addVertex(query.key, query.patch, query.uv);
+      ids[q] = uint32_t(mesh.vertices.size());
+      mesh.vertices.push_back({query.patch, query.uv.x, query.uv.y});
+      if (scope.seamKeys) mesh.seamKeys.push_back(seams.seamKeyOf(query.key));
     }
     firstTriangle[r] = triangles;
     triangles += run.triangles.size();
@@ -81,7 +87,7 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
       size_t t = firstTriangle[r];
       for (const RunTriangle& triangle : run.triangles) {
         for (int c = 0; c < 3; ++c) {
-          mesh.indices[3 * t + c] = run.ids[triangle.vertex[c]];
+          mesh.indices[3 * t + c] = ids[runStart[r] + triangle.vertex[c]];
           mesh.cornerUv[3 * t + c] = triangle.uv[c];
         }
         mesh.trianglePatch[t++] = triangle.patch;

@@ -30,14 +30,13 @@ struct RunTriangle {
 };
 
 // A run of consecutive leaves, walked. Its distinct vertices are kept in the order the walk
-// first asked for them, each with that first query: numbering looks each key up once per run,
-// not once per query (a vertex is asked for by every leaf around it), in a table small enough
-// for the cache, while the run is walked on its thread.
+// first asked for them, each with that first query: numbering (triangulate.cpp) looks each key
+// up once per run, not once per query (a vertex is asked for by every leaf around it); the
+// walk finds a run's own repeats in a table small enough for the cache, on the run's thread.
 struct LeafRun {
   std::vector<VertexQuery> vertices;
   std::vector<RunTriangle> triangles;
   size_t droppedTriangles = 0, diagonalFans = 0;
-  std::vector<uint32_t> ids;  // per vertex, its index in the mesh (numbered after the walk)
 };
 
 // What the walk reads: set up once, then only looked up (positions included:
