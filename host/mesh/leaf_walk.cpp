@@ -49,7 +49,7 @@ class LeafWalker {
     for (size_t l = begin; l < end; ++l) {
       const QuadLeaf& leaf = leaves[l];
       work.silent = leaf.patchIndex < firstPatch || leaf.patchIndex >= endPatch;
-      triangulateLeaf(leaf, lines_.leafLines[l], work);
+      triangulateLeaf(leaf, lines_.leafLinesU[l], lines_.leafLinesV[l], work);
     }
   }
 
@@ -227,7 +227,8 @@ class LeafWalker {
     return true;
   }
 
-  void triangulateLeaf(const QuadLeaf& leaf, const LeafLines& lines, LeafWork& work) {
+  void triangulateLeaf(const QuadLeaf& leaf, const LeafLines& linesU, const LeafLines& linesV,
+                       LeafWork& work) {
     const uint32_t p = leaf.patchIndex;
     const gpu::vec4& r = leaf.rect;
     std::vector<RingVertex>& ring = work.ring;
@@ -236,13 +237,13 @@ class LeafWalker {
     // Counter-clockwise: bottom (v0, u rising), right (u1, v rising), top (v1, u falling),
     // left (u0, v falling); each edge contributes its start corner and interior vertices.
     ring.push_back(vertexAt(work, p, r.x, r.y));
-    edgeInterior(work, p, true, r.y, lines[0], r.x, r.z);
+    edgeInterior(work, p, true, r.y, linesU[0], r.x, r.z);
     ring.push_back(vertexAt(work, p, r.z, r.y));
-    edgeInterior(work, p, false, r.z, lines[3], r.y, r.w);
+    edgeInterior(work, p, false, r.z, linesV[1], r.y, r.w);
     ring.push_back(vertexAt(work, p, r.z, r.w));
-    edgeInterior(work, p, true, r.w, lines[1], r.z, r.x);
+    edgeInterior(work, p, true, r.w, linesU[1], r.z, r.x);
     ring.push_back(vertexAt(work, p, r.x, r.w));
-    edgeInterior(work, p, false, r.x, lines[2], r.w, r.y);
+    edgeInterior(work, p, false, r.x, linesV[0], r.w, r.y);
 
     const bool folded = work.touchesFold && dropFoldedBack(ring);
     if (work.touchesMerge) dropRepeats(ring);

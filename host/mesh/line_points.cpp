@@ -3,52 +3,58 @@
 // line's room in LineIndex's one array is known before it is filled.
 #include "mesh/detail/line_points.h"
 
+#include "common/parallel_for.h"
+
 namespace tessera::triangulate_detail {
 namespace {
 
-// Numbers every leaf's lines, each looked up once, in the order its corners meet them (the
-// lines' numbers follow it; a line's points are sorted before use, their order free).
-std::vector<LeafLines> numberLeafLines(const std::vector<QuadLeaf>& leaves, LinePoints& lines) {
+// Numbers the leaves' lines in one direction (alongU: v = r.y, v = r.w; else u = r.x,
+// u = r.z), each looked up once, in the order the leaves' corners meet them (the lines'
+// numbers follow it; a line's points are sorted before use, their order free).
+std::vector<LeafLines> numberLeafLines(const std::vector<QuadLeaf>& leaves, bool alongU,
+                                       LineIndex& index) {
   std::vector<LeafLines> leafLines(leaves.size());
   for (size_t l = 0; l < leaves.size(); ++l) {
     const gpu::vec4& r = leaves[l].rect;
     const uint32_t p = leaves[l].patchIndex;
-    leafLines[l] = {lines.alongU.number(lineKey(p, r.y)), lines.alongU.number(lineKey(p, r.w)),
-                    lines.alongV.number(lineKey(p, r.x)), lines.alongV.number(lineKey(p, r.z))};
+    leafLines[l] = {index.number(lineKey(p, alongU ? r.y : r.x)),
+                    index.number(lineKey(p, alongU ? r.w : r.z))};
   }
   return leafLines;
 }
 
-// Each line's room in the index's array: two points per leaf edge on it.
-void allocatePoints(const std::vector<LeafLines>& leafLines, LinePoints& lines) {
-  std::vector<uint32_t> alongU(lines.alongU.size()), alongV(lines.alongV.size());
-  for (const LeafLines& ll : leafLines) {
-    alongU[ll[0]] += 2, alongU[ll[1]] += 2;
-    alongV[ll[2]] += 2, alongV[ll[3]] += 2;
+// Each line's room in the index's array (two points per leaf edge on it), then the leaf
+// corners on the lines: u along the lines v = const, v along u = const.
+void fillLines(const std::vector<QuadLeaf>& leaves, bool alongU,
+               const std::vector<LeafLines>& leafLines, LineIndex& index) {
+  std::vector<uint32_t> room(index.size());
+  for (const LeafLines& ll : leafLines) room[ll[0]] += 2, room[ll[1]] += 2;
+  index.allocatePoints(room);
+  for (size_t l = 0; l < leaves.size(); ++l) {
+    const gpu::vec4& r = leaves[l].rect;
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) {
+        if (alongU)
+          index.add(leafLines[l][j], {i ? r.z : r.x, r.z - r.x});
+        else
+          index.add(leafLines[l][i], {j ? r.w : r.y, r.w - r.y});
+      }
   }
-  lines.alongU.allocatePoints(alongU);
-  lines.alongV.allocatePoints(alongV);
 }
 
-}  // namespace
-
-LinePoints collectLinePoints(const std::vector<QuadLeaf>& leaves, SeamVertices& seams) {
+// The leaf corners on the patches' sides: shared sides' points in canonical parameters, folded
+// sides' corners (in the order of the corners, as the walk over all lines met them).
+void collectSidePoints(const std::vector<QuadLeaf>& leaves, SeamVertices& seams,
+                       LinePoints& lines) {
   const PatchTopology& topology = seams.topology();
-  LinePoints lines{LineIndex(leaves.size() / 4), LineIndex(leaves.size() / 4), {}, {}, {}};
-  lines.shared.resize(topology.groupCount);
-  lines.groupSide.assign(topology.groupCount, {0, -1});
-  lines.leafLines = numberLeafLines(leaves, lines);
-  const std::vector<LeafLines>& leafLines = lines.leafLines;
-  allocatePoints(leafLines, lines);
   for (size_t l = 0; l < leaves.size(); ++l) {
     const gpu::vec4& r = leaves[l].rect;
     const uint32_t p = leaves[l].patchIndex;
-    const LeafLines& ll = leafLines[l];
+    // Most leaves touch no side of their patch.
+    if (r.x != 0.0f && r.y != 0.0f && r.z != 1.0f && r.w != 1.0f) continue;
     for (int j = 0; j < 2; ++j)
       for (int i = 0; i < 2; ++i) {
         const float u = i ? r.z : r.x, v = j ? r.w : r.y;
-        lines.alongU.add(ll[j], {u, r.z - r.x});
-        lines.alongV.add(ll[2 + i], {v, r.w - r.y});
         // The sides (u, v) is on: none, one, or two at a corner of the parameter square.
         for (int side : {kSideV0, kSideV1, kSideU0, kSideU1}) {
           const bool alongU = side == kSideV0 || side == kSideV1;
@@ -64,6 +70,28 @@ LinePoints collectLinePoints(const std::vector<QuadLeaf>& leaves, SeamVertices& 
         }
       }
   }
+}
+
+}  // namespace
+
+LinePoints collectLinePoints(const std::vector<QuadLeaf>& leaves, SeamVertices& seams,
+                             unsigned threads) {
+  const PatchTopology& topology = seams.topology();
+  LinePoints lines{LineIndex(leaves.size() / 4), LineIndex(leaves.size() / 4), {}, {}, {}, {}};
+  lines.shared.resize(topology.groupCount);
+  lines.groupSide.assign(topology.groupCount, {0, -1});
+  // The two directions' lines are independent: each numbered and filled on a thread of its
+  // own (the sides' points with the lines along u).
+  parallelFor(2, threads, [&](size_t begin, size_t end) {
+    for (size_t part = begin; part < end; ++part) {
+      const bool alongU = part == 0;
+      LineIndex& index = alongU ? lines.alongU : lines.alongV;
+      std::vector<LeafLines>& leafLines = alongU ? lines.leafLinesU : lines.leafLinesV;
+      leafLines = numberLeafLines(leaves, alongU, index);
+      fillLines(leaves, alongU, leafLines, index);
+      if (alongU) collectSidePoints(leaves, seams, lines);
+    }
+  });
   return lines;
 }
 

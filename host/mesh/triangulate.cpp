@@ -26,7 +26,7 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
 
   // The order counts: position ids are handed out as the folds and then the merges meet them.
   SeamVertices seams(leaves, patches, topology, scope.seamKeys);
-  LinePoints lines = collectLinePoints(leaves, seams);
+  LinePoints lines = collectLinePoints(leaves, seams, scope.threads);
   for (uint32_t f = 0; f < seams.foldCount(); ++f) seams.placeFoldPoints(f);
   const NearPointMerges merges = mergeNearPoints(lines, seams, leaves.size(), scope.threads);
   seams.registerPositions();

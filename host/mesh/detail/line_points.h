@@ -16,19 +16,22 @@ namespace tessera::triangulate_detail {
 // The lines a node-based line index was sized for, per leaf (LineIndex::unorderedMapOrder).
 constexpr size_t kLineIndexReserve = 2;
 
-// A leaf's four lines, as numbered in LinePoints' indices: v = r.y, v = r.w (in alongU),
-// u = r.x, u = r.z (in alongV).
-using LeafLines = std::array<uint32_t, 4>;
+// A leaf's two lines in one of LinePoints' indices, as numbered there: v = r.y, v = r.w in
+// alongU; u = r.x, u = r.z in alongV.
+using LeafLines = std::array<uint32_t, 2>;
 
 struct LinePoints {
   LineIndex alongU, alongV;  // lines v = const (points along u) and u = const (along v)
-  std::vector<LeafLines> leafLines;  // per leaf: the leaf walk finds its edges' lines by them
+  // Per leaf, its lines in alongU and alongV: the leaf walk finds its edges' lines by them.
+  std::vector<LeafLines> leafLinesU, leafLinesV;
   std::vector<std::vector<LinePoint>> shared;  // per group, in canonical parameters
   std::vector<std::pair<uint32_t, int>> groupSide;  // per group, one (patch, side) on it
 };
 
 // Every leaf corner with the leaf edges that end there, on each line it is on; the corners on
-// a folded side go to its FoldedSide::corners.
-LinePoints collectLinePoints(const std::vector<QuadLeaf>& leaves, SeamVertices& seams);
+// a folded side go to its FoldedSide::corners. The two directions on up to 2 of `threads`
+// (0: all); the same lines whatever the count.
+LinePoints collectLinePoints(const std::vector<QuadLeaf>& leaves, SeamVertices& seams,
+                             unsigned threads);
 
 }  // namespace tessera::triangulate_detail
