@@ -22,7 +22,10 @@ template <class Key, class Hash, class ForEachKey>
 std::vector<uint32_t> firstOccurrences(size_t count, size_t expectedKeys,
                                        const ForEachKey& forEachKey, unsigned threads) {
   std::vector<uint32_t> first(count);
-  const unsigned shards = unsigned(std::min<size_t>(resolveThreadCount(threads), count));
+  // A thread pays for itself from a few thousand items on (a small mesh takes one).
+  constexpr size_t kItemsPerShard = 4096;
+  const unsigned shards = unsigned(
+      std::max<size_t>(1, std::min<size_t>(resolveThreadCount(threads), count / kItemsPerShard)));
   parallelParts(shards, [&](unsigned shard) {
     HashMap<Key, uint32_t, Hash> seen;
     seen.reserve(expectedKeys / shards + expectedKeys / shards / 8);

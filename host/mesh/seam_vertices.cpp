@@ -17,7 +17,11 @@ void sortUnique(std::vector<float>& values) {
 SeamVertices::SeamVertices(const std::vector<QuadLeaf>& leaves,
                            const std::vector<BezierPatch>& patches,
                            const PatchTopology& topology, bool seamKeys)
-    : leaves_(leaves), patches_(patches), topology_(topology), seamKeys_(seamKeys) {
+    : leaves_(leaves),
+      patches_(patches),
+      topology_(topology),
+      seamKeys_(seamKeys),
+      present_(patchesWithLeaves()) {
   findFolds();
 }
 
@@ -30,9 +34,8 @@ std::vector<bool> SeamVertices::patchesWithLeaves() const {
 
 void SeamVertices::findFolds() {
   foldOf_.assign(patches_.size(), {-1, -1, -1, -1});
-  const std::vector<bool> present = patchesWithLeaves();
   for (uint32_t p = 0; p < patches_.size(); ++p)
-    for (int side = 0; side < 4 && present[p]; ++side) {
+    for (int side = 0; side < 4 && present_[p]; ++side) {
       const SideInfo& s = topology_.sides[p][side];
       if (s.group >= 0 || s.collapsed) continue;
       std::optional<SideFold> fold = findSideFold(sideControlPoints(patches_[p], side));
@@ -66,9 +69,8 @@ void SeamVertices::placeFoldPoints(uint32_t f) {
 }
 
 void SeamVertices::registerPositions() {
-  const std::vector<bool> present = patchesWithLeaves();
   for (uint32_t p = 0; p < patches_.size(); ++p) {
-    if (!present[p]) continue;
+    if (!present_[p]) continue;
     const BezierPatch& bp = patches_[p];
     for (int j : {0, bp.degreeV})
       for (int i : {0, bp.degreeU}) positionId(bp.at(i, j));

@@ -68,7 +68,8 @@ Tessellation meshFromQueries(const std::vector<BezierPatch>& patches, QuadtreeRe
   const std::vector<gpu::EvalSample> samples = evaluate(queries);
   const double evaluateMs = step.elapsedMs();
 
-  Tessellation result = assembleTessellation(patches.size(), std::move(tree), param, samples);
+  Tessellation result =
+      assembleTessellation(patches.size(), std::move(tree), std::move(param), samples, 0);
   toModelCoordinates(result, frame);
   result.stats.triangulateMs = triangulateMs;
   result.stats.evaluateMs = evaluateMs;
@@ -78,8 +79,8 @@ Tessellation meshFromQueries(const std::vector<BezierPatch>& patches, QuadtreeRe
 
 }  // namespace
 
-Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, const ParamMesh& param,
-                                  const std::vector<gpu::EvalSample>& samples) {
+Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, ParamMesh param,
+                                  const std::vector<gpu::EvalSample>& samples, unsigned threads) {
   requireFiniteSamples(param, samples);
   Tessellation result;
   result.tree = std::move(tree);
@@ -99,24 +100,19 @@ Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, const 
   // apart): weld those too, so a triangle with two corners there goes and its neighbours keep
   // sharing their edges; then back-to-back pairs cancel and caps (three corners on one line)
   // are flipped away (zero_area.h).
-  std::vector<uint32_t> remap = weldIdenticalPositions(mesh.positions, 0);
+  std::vector<uint32_t> remap = weldIdenticalPositions(mesh.positions, threads);
   result.stats.degenerateTrianglesDropped = param.droppedTriangles;
   result.stats.diagonalFans = param.diagonalFans;
-  mesh.indices.reserve(param.indices.size());
-  result.trianglePatch.reserve(param.trianglePatch.size());
-  result.cornerUv.reserve(param.cornerUv.size());
-  for (size_t k = 0; k < param.indices.size(); k += 3) {
-    uint32_t a = remap[param.indices[k]], b = remap[param.indices[k + 1]],
-             c = remap[param.indices[k + 2]];
-    if (a == b || b == c || c == a) {
-      ++result.stats.degenerateTrianglesDropped;
-      continue;
-    }
-    mesh.indices.insert(mesh.indices.end(), {a, b, c});
-    result.trianglePatch.push_back(param.trianglePatch[k / 3]);
-    result.cornerUv.insert(result.cornerUv.end(), param.cornerUv.begin() + k,
-                           param.cornerUv.begin() + k + 3);
+  mesh.indices = std::move(param.indices);
+  result.trianglePatch = std::move(param.trianglePatch);
+  result.cornerUv = std::move(param.cornerUv);
+  std::vector<bool> collapsed(result.trianglePatch.size());
+  for (size_t t = 0; t < collapsed.size(); ++t) {
+    uint32_t* c = &mesh.indices[3 * t];
+    c[0] = remap[c[0]], c[1] = remap[c[1]], c[2] = remap[c[2]];
+    collapsed[t] = c[0] == c[1] || c[1] == c[2] || c[2] == c[0];
   }
+  dropTriangles(collapsed, result);
   dropTriangles(backToBackPairs(mesh.indices), result);
   dropTriangles(removeCaps(mesh.positions, mesh.indices, result.trianglePatch, result.cornerUv),
                 result);

@@ -72,8 +72,11 @@ Tessellation meshFromTree(const std::vector<BezierPatch>& patches, const PatchSe
 // param.vertices in order; welds equal positions and drops degenerate and back-to-back
 // triangles as tessellate() does, all in the frame the samples are in. Timings are left at 0.
 // Throws std::invalid_argument naming the patch and (u, v) of a sample that is not finite.
-Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, const ParamMesh& param,
-                                  const std::vector<gpu::EvalSample>& samples);
+// The triangles' arrays are taken over from `param` (move it in where it is not needed after).
+// Welding looks positions up on `threads` threads (0: all); the mesh is the same.
+Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, ParamMesh param,
+                                  const std::vector<gpu::EvalSample>& samples,
+                                  unsigned threads = 1);
 
 // Hands a tessellation made in `frame` out in model coordinates: each position mapped back in
 // double (frame.toModel) and rounded to fp32 once; normals and (u, v) are unchanged (the frame

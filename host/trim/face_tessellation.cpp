@@ -121,8 +121,8 @@ void tessellateGroup(const TrimmedModel& model, const FaceGroup& group, const Mo
       const std::vector<gpu::EvalSample> faceSamples(samples.begin() + long(firstQuery[k]),
                                                      samples.begin() + long(firstQuery[k + 1]));
       Tessellation& face = out.faces[group.faces[k]];
-      face = assembleTessellation(group.facePatches[k].size(), std::move(faceTrees[k]), params[k],
-                                  faceSamples);
+      face = assembleTessellation(group.facePatches[k].size(), std::move(faceTrees[k]),
+                                  std::move(params[k]), faceSamples);
       toModelCoordinates(face, frame);
     }
   });

@@ -130,6 +130,7 @@ class SeamVertices {
   const std::vector<BezierPatch>& patches_;
   const PatchTopology& topology_;
   const bool seamKeys_;
+  const std::vector<bool> present_;  // per patch, whether it has leaves here
   std::vector<std::array<int32_t, 4>> foldOf_;  // per patch side, index in folds_ or -1
   std::vector<FoldedSide> folds_;
   bool walking_ = false;  // the leaves are being walked: positions are only looked up
