@@ -215,8 +215,8 @@ class LeafWalker {
       work.ringVertices[k] = ring[k].vertex;
     }
     std::sort(work.ringVertices.begin(), work.ringVertices.end());
-    const size_t distinct = size_t(
-        std::unique(work.ringVertices.begin(), work.ringVertices.end()) - work.ringVertices.begin());
+    std::vector<uint32_t>& sorted = work.ringVertices;
+    const size_t distinct = size_t(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
     size_t repeats = 0;
     for (size_t k = 0; k < n; ++k) repeats += ring[k] == ring[(k + 1) % n];
     if (distinct + repeats != n) return false;
