@@ -28,6 +28,7 @@ std::vector<uint32_t> firstOccurrences(size_t count, size_t expectedKeys,
       std::max<size_t>(1, std::min<size_t>(resolveThreadCount(threads), count / kItemsPerShard)));
   parallelParts(shards, [&](unsigned shard) {
     HashMap<Key, uint32_t, Hash> seen;
+    seen.max_load_factor(0.8f);  // half the memory of tsl's 0.5: fewer pages to fault in
     seen.reserve(expectedKeys / shards + expectedKeys / shards / 8);
     forEachKey([&](size_t i, const Key& key) {
       // The shard by another mix of the hash than the table's (MixedHash).
