@@ -10,7 +10,9 @@
 #include <Geom_SphericalSurface.hxx>
 #include <Geom_ToroidalSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
+#include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -143,6 +145,32 @@ void wholePeriodCut(CadSurface& f, bool alongU, bool alongV, double u0, double v
   f.reparametrised = false;
 }
 
+// A plane over [u0, u1] × [v0, v1] without GeomConvert and the knot insertion, which take most
+// of a planar face's conversion (a trimmed copy of the plane, arrays, insertion matrices) to
+// give what this gives: GeomConvert's NURBS is bilinear through the plane's points at the
+// corners, knots at the bounds, and its one Bézier piece is that net, which the insertion's
+// identity matrices pass on as 0 + 1·x (so −0 comes out +0: the same bits as that path).
+CadSurface planeSurface(CadSurface& result, double u0, double u1, double v0, double v1) {
+  const Handle(Geom_Surface)& plane = result.original;
+  TColgp_Array2OfPnt poles(1, 2, 1, 2);
+  poles(1, 1) = plane->Value(u0, v0);
+  poles(1, 2) = plane->Value(u0, v1);
+  poles(2, 1) = plane->Value(u1, v0);
+  poles(2, 2) = plane->Value(u1, v1);
+  TColStd_Array1OfReal knotsU(1, 2), knotsV(1, 2);
+  knotsU(1) = u0, knotsU(2) = u1, knotsV(1) = v0, knotsV(2) = v1;
+  TColStd_Array1OfInteger mults(1, 2);
+  mults.Init(2);
+  result.nurbs = new Geom_BSplineSurface(poles, knotsU, knotsV, mults, mults, 1, 1);
+  BezierPatchPiece piece;
+  piece.u0 = u0, piece.u1 = u1, piece.v0 = v0, piece.v1 = v1;
+  piece.patch.degreeU = piece.patch.degreeV = 1;
+  for (int i = 1; i <= 2; ++i)
+    for (int j = 1; j <= 2; ++j) piece.patch.cp.push_back(0.0 + (0.0 + toGlm(poles(i, j))));
+  result.pieces.push_back(std::move(piece));
+  return std::move(result);
+}
+
 }  // namespace
 
 double CadSurface::mapParameter(double t, bool alongU) const {
@@ -226,6 +254,8 @@ CadSurface convertFaceSurface(const Handle(Geom_Surface)& basis, double u0, doub
     throw CadFaceError("zero-area face: its uv bounds are [" + cad_detail::numberText(u0) + ", " +
                        cad_detail::numberText(u1) + "] × [" + cad_detail::numberText(v0) + ", " + cad_detail::numberText(v1) + "]");
 
+  if (basis->IsKind(STANDARD_TYPE(Geom_Plane))) return planeSurface(result, u0, u1, v0, v1);
+
   // A face that wraps a whole period is converted untrimmed in that direction, where the NURBS
   // stays periodic with its knots at the surface's own parameters (0, 2π/3, 4π/3 for a circle),
   // and then cut at the face's u0 (wholePeriodCut). Trimmed to the whole period instead,
@@ -259,12 +289,12 @@ CadSurface convertFaceSurface(const Handle(Geom_Surface)& basis, double u0, doub
     throw CadFaceError("surface degree " + std::to_string(result.nurbs->UDegree()) + "×" +
                        std::to_string(result.nurbs->VDegree()) + " is above 7");
 
-  // Same parametrisation? A plane's NURBS is bilinear between its corners at its own (u, v) and a
-  // B-spline's is a segment of it (knots shifted by whole periods above): the same, so no check
-  // (it evaluated both surfaces at 36 points and found a gap of rounding). Otherwise compare at a
-  // grid of interior points; if not the same, solve f and g and check that they reproduce the
-  // surface (separability, see the header).
-  if (basis->IsKind(STANDARD_TYPE(Geom_Plane)) || basis->IsKind(STANDARD_TYPE(Geom_BSplineSurface))) {
+  // Same parametrisation? A B-spline's NURBS is a segment of it (knots shifted by whole periods
+  // above), as a plane's is bilinear between its corners at its own (u, v) (planeSurface): the
+  // same, so no check (it evaluated both surfaces at 36 points and found a gap of rounding).
+  // Otherwise compare at a grid of interior points; if not the same, solve f and g and check
+  // that they reproduce the surface (separability, see the header).
+  if (basis->IsKind(STANDARD_TYPE(Geom_BSplineSurface))) {
     result.pieces = rationalPieces(result.nurbs);
     return result;
   }

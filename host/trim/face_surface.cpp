@@ -152,6 +152,8 @@ FaceSurface::FaceSurface(const TrimmedFace& face) : face_(&face) {
 }
 
 size_t FaceSurface::pieceAt(glm::dvec2 uv) const {
+  // One piece (a plane, most CAD faces): the only cell, or the nearest rectangle, is piece 0.
+  if (face_->pieces.size() == 1) return 0;
   if (!cellPiece_.empty()) {
     const auto cell = [](const std::vector<double>& sides, double x) {
       const size_t i = std::upper_bound(sides.begin(), sides.end(), x) - sides.begin();

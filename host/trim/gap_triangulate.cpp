@@ -280,6 +280,9 @@ void flipTowardsDelaunay(const std::vector<glm::dvec2>& points,
   for (uint32_t t = 0; t < triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) users[key(triangles[t][k], triangles[t][(k + 1) % 3])].push_back(t);
   std::vector<Edge> queue;
+  // Every flip queues four edges: room for the first pass and a few flips, so the queue does not
+  // grow by doubling from nothing (its reallocations were a tenth of the gap's time).
+  queue.reserve(users.size() + 64);
   for (const auto& [edge, ts] : users)
     if (ts.size() == 2 && !constrained.contains(edge)) queue.push_back(edge);
   std::sort(queue.begin(), queue.end());  // a deterministic order, whatever the hashing
