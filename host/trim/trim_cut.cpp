@@ -125,13 +125,39 @@ bool insideTriangle(glm::dvec2 p, const std::array<glm::dvec2, 3>& t) {
 
 }  // namespace
 
-double segmentDistance(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 q0, glm::dvec2 q1) {
+namespace {
+
+bool properCrossing(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 q0, glm::dvec2 q1) {
   const double a = cross(p1 - p0, q0 - p0), b = cross(p1 - p0, q1 - p0);
   const double c = cross(q1 - q0, p0 - q0), d = cross(q1 - q0, p1 - q0);
-  if (((a > 0 && b < 0) || (a < 0 && b > 0)) && ((c > 0 && d < 0) || (c < 0 && d > 0)))
-    return 0;  // a proper crossing
+  return ((a > 0 && b < 0) || (a < 0 && b > 0)) && ((c > 0 && d < 0) || (c < 0 && d > 0));
+}
+
+double endDistance(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 q0, glm::dvec2 q1) {
   return std::min({pointSegmentDistance(p0, q0, q1), pointSegmentDistance(p1, q0, q1),
                    pointSegmentDistance(q0, p0, p1), pointSegmentDistance(q1, p0, p1)});
+}
+
+}  // namespace
+
+double segmentDistance(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 q0, glm::dvec2 q1) {
+  if (properCrossing(p0, p1, q0, q1)) return 0;
+  return endDistance(p0, p1, q0, q1);
+}
+
+bool segmentsFartherThan(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 q0, glm::dvec2 q1,
+                         double distance) {
+  // The crossing test first: on four points nearly on one line its signs are rounding, and
+  // segmentDistance says 0 when they say crossing, however far apart the boxes.
+  if (properCrossing(p0, p1, q0, q1)) return 0 > distance;
+  // Boxes apart by g: every end's distance to the other segment is at least g, and its computed
+  // value at least g less a few ulps of the coordinates' magnitude m (10⁻¹² m is far more).
+  const glm::dvec2 pLo = glm::min(p0, p1), pHi = glm::max(p0, p1);
+  const glm::dvec2 qLo = glm::min(q0, q1), qHi = glm::max(q0, q1);
+  const glm::dvec2 apart = glm::max(qLo - pHi, pLo - qHi);
+  const glm::dvec2 m = glm::max(glm::max(glm::abs(p0), glm::abs(p1)), glm::max(glm::abs(q0), glm::abs(q1)));
+  if (std::max(apart.x, apart.y) > distance + 1e-12 * std::max(m.x, m.y)) return true;
+  return endDistance(p0, p1, q0, q1) > distance;
 }
 
 TrimClass classifyTrimTriangle(const std::array<glm::dvec2, 3>& triangle,

@@ -59,6 +59,10 @@ int trimWindingNumber(const std::vector<TrimSegment>& segments, glm::dvec2 p);
 
 // Distance between two closed segments in the plane.
 double segmentDistance(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 q0, glm::dvec2 q1);
+// segmentDistance(p0, p1, q0, q1) > distance, the same answer, without the four point-segment
+// distances when the segments' boxes lie apart by more than `distance` and the rounding.
+bool segmentsFartherThan(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 q0, glm::dvec2 q1,
+                         double distance);
 
 // Crossing when a segment lies within `margin` of the closed triangle (it meets an edge, or
 // lies inside it: a small hole loop in one triangle is Crossing too); otherwise Inside or
