@@ -199,6 +199,35 @@ glm::dvec3 FaceSurface::point(glm::dvec2 uv) const {
   return tensorPoint(patch.cp.data(), patch.degreeU, patch.degreeV, local.x, local.y);
 }
 
+void FaceSurface::points(const glm::dvec2* uvs, size_t count, glm::dvec3* out) const {
+  if (face_->pieces.size() != 1 || !checked_) {
+    for (size_t k = 0; k < count; ++k) out[k] = point(uvs[k]);
+    return;
+  }
+  const BezierPatchPiece& piece = face_->pieces[0];
+  const BezierPatch& patch = piece.patch;
+  if (!rational_[0]) {
+    withFixedDegrees(patch.degreeU, patch.degreeV, [&](auto N, auto M) {
+      for (size_t k = 0; k < count; ++k) {
+        const glm::dvec2 local = localUvOf(piece, uvs[k]);
+        out[k] = tensorPointOfDegree<decltype(N)::value, decltype(M)::value>(
+            patch.cp.data(), patch.degreeU, patch.degreeV, local.x, local.y);
+      }
+    });
+    return;
+  }
+  const RationalBezierPatch& r = *rational_[0];
+  withFixedDegrees(r.degreeU, r.degreeV, [&](auto N, auto M) {
+    for (size_t k = 0; k < count; ++k) {
+      const glm::dvec2 local = localUvOf(piece, uvs[k]);
+      const glm::dvec4 h = tensorPointOfDegree<decltype(N)::value, decltype(M)::value>(
+          r.cpw.data(), r.degreeU, r.degreeV, local.x, local.y);
+      out[k] = h.w == 0.0 || !std::isfinite(h.w) ? rationalPatchPoint(r, local.x, local.y)
+                                                  : glm::dvec3(h) / h.w;
+    }
+  });
+}
+
 std::array<glm::dvec3, 3> FaceSurface::pointsAlongU(const std::array<glm::dvec2, 3>& uvs) const {
   const size_t piece = pieceAt(uvs[1]);
   const auto separately = [&] {  // the middle first, as meanScales called them

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace tessera::trim_detail {
 namespace {
@@ -171,7 +172,20 @@ SampledDeviations sampledDeviationsFrom(const FaceSurface& surface,
   // monotonic, so √(max d²) is max √(d²), glm::length's value, bit for bit (two roots a sample
   // were a fifth of the refinement's time).
   const auto squared = [](const glm::dvec3& d) { return glm::dot(d, d); };
+  // The interior samples' surface points in one call (FaceSurface::points), then the measures.
+  thread_local std::vector<glm::dvec2> uvs;
+  thread_local std::vector<glm::dvec3> onSurface;
+  uvs.clear();
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j) {
+      if (i == n || j == n || i + j == 0) continue;
+      const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
+      uvs.push_back(a * vs[t[0]].uv + b * vs[t[1]].uv + c * vs[t[2]].uv);
+    }
+  onSurface.resize(uvs.size());
+  surface.points(uvs.data(), uvs.size(), onSurface.data());
   SampledDeviations worst2;  // squared
+  size_t next = 0;
   for (int i = 0; i <= n; ++i)
     for (int j = 0; i + j <= n; ++j) {
       const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
@@ -180,10 +194,9 @@ SampledDeviations sampledDeviationsFrom(const FaceSurface& surface,
         worst2.parametric = std::max(worst2.parametric, squared(p - (i == n ? s0 : j == n ? s1 : s2)));
         continue;
       }
-      const glm::dvec2 uv = a * vs[t[0]].uv + b * vs[t[1]].uv + c * vs[t[2]].uv;
-      const glm::dvec3 onSurface = surface.point(uv);
-      worst2.parametric = std::max(worst2.parametric, squared(p - onSurface));
-      worst2.interpolation = std::max(worst2.interpolation, squared(a * s0 + b * s1 + c * s2 - onSurface));
+      const glm::dvec3& on = onSurface[next++];
+      worst2.parametric = std::max(worst2.parametric, squared(p - on));
+      worst2.interpolation = std::max(worst2.interpolation, squared(a * s0 + b * s1 + c * s2 - on));
     }
   return {std::sqrt(worst2.interpolation), std::sqrt(worst2.parametric)};
 }
