@@ -51,8 +51,9 @@ Point tensorPointOfDegree(const Point* net, int n, int m, double u, double v) {
 }
 
 // The degrees of the import's pieces (planes 1×1, cylinders and cones 2×1 or 1×2, spheres and
-// tori 2×2, bicubic B-splines 3×3) at fixed degree, any other at run time: f(N, M) with N and
-// M std::integral_constant<int, degree or −1>.
+// tori 2×2, cubic extrusions 3×1 or 1×3 (the IDF library's most common pieces), bicubic
+// B-splines 3×3) at fixed degree, any other at run time: f(N, M) with N and M
+// std::integral_constant<int, degree or −1>.
 template <class F>
 decltype(auto) withFixedDegrees(int n, int m, F&& f) {
   using std::integral_constant;
@@ -61,6 +62,8 @@ decltype(auto) withFixedDegrees(int n, int m, F&& f) {
     case 2 * (kMaxDegree + 1) + 1: return f(integral_constant<int, 2>(), integral_constant<int, 1>());
     case 1 * (kMaxDegree + 1) + 2: return f(integral_constant<int, 1>(), integral_constant<int, 2>());
     case 2 * (kMaxDegree + 1) + 2: return f(integral_constant<int, 2>(), integral_constant<int, 2>());
+    case 3 * (kMaxDegree + 1) + 1: return f(integral_constant<int, 3>(), integral_constant<int, 1>());
+    case 1 * (kMaxDegree + 1) + 3: return f(integral_constant<int, 1>(), integral_constant<int, 3>());
     case 3 * (kMaxDegree + 1) + 3: return f(integral_constant<int, 3>(), integral_constant<int, 3>());
     default: return f(integral_constant<int, -1>(), integral_constant<int, -1>());
   }
