@@ -299,29 +299,85 @@ GapTriangulation triangulateGap(const std::vector<glm::dvec2>& points,
   return result;
 }
 
-void flipTowardsDelaunay(const std::vector<glm::dvec2>& points,
-                         const std::vector<std::pair<uint32_t, uint32_t>>& fixed,
-                         std::vector<std::array<uint32_t, 3>>& triangles) {
-  // An edge as one exact 64-bit key (smaller vertex in the high word): hashed lookups, and the
-  // keys' order is the (smaller, larger) pairs' order.
-  using Edge = uint64_t;
+namespace {
+
+using EdgeKey64 = uint64_t;  // an edge as one exact key: smaller vertex in the high word
+
+// The edge → triangles map of a hashed flip: the flips below ask only for an edge's users, so
+// any map gives the same flips (the queue is sorted before it is used).
+struct HashedEdgeUsers {
+  HashMap<EdgeKey64, SmallIdList> map;
+  explicit HashedEdgeUsers(size_t triangles) { map.reserve(2 * triangles); }  // ~3/2 a triangle
+  SmallIdList& operator[](EdgeKey64 e) { return map[e]; }
+  SmallIdList* find(EdgeKey64 e) {
+    const auto found = map.find(e);
+    return found == map.end() ? nullptr : &found.value();
+  }
+  void erase(EdgeKey64 e) { map.erase(e); }
+  template <class F>
+  void forEach(F&& f) const {
+    for (const auto& [edge, ts] : map) f(edge, ts);
+  }
+};
+
+// The same map for a few triangles (most gaps): one vector searched from the front, without the
+// hashed map's buckets allocated for every gap.
+struct FewEdgeUsers {
+  std::vector<std::pair<EdgeKey64, SmallIdList>> entries;
+  explicit FewEdgeUsers(size_t triangles) { entries.reserve(2 * triangles); }
+  SmallIdList& operator[](EdgeKey64 e) {
+    if (SmallIdList* found = find(e)) return *found;
+    return entries.emplace_back(e, SmallIdList()).second;
+  }
+  SmallIdList* find(EdgeKey64 e) {
+    for (auto& [edge, ts] : entries)
+      if (edge == e) return &ts;
+    return nullptr;
+  }
+  void erase(EdgeKey64 e) {
+    for (size_t k = 0; k < entries.size(); ++k)
+      if (entries[k].first == e) {
+        entries[k] = std::move(entries.back());
+        entries.pop_back();
+        return;
+      }
+  }
+  template <class F>
+  void forEach(F&& f) const {
+    for (const auto& [edge, ts] : entries) f(edge, ts);
+  }
+};
+
+// Up to this many triangles, FewEdgeUsers: its searches cost less than hashing below it.
+constexpr size_t kFewTriangles = 24;
+
+template <class Users>
+void flipWith(const std::vector<glm::dvec2>& points,
+              const std::vector<std::pair<uint32_t, uint32_t>>& fixed,
+              std::vector<std::array<uint32_t, 3>>& triangles) {
+  using Edge = EdgeKey64;
   const auto key = [](uint32_t a, uint32_t b) {
     return Edge(std::min(a, b)) << 32 | Edge(std::max(a, b));
   };
-  HashSet<Edge> constrained;
+  // The constrained edges sorted: a binary search instead of a hashed set built for every gap.
+  std::vector<Edge> constrained;
   constrained.reserve(fixed.size());
-  for (const auto& e : fixed) constrained.insert(key(e.first, e.second));
-  HashMap<Edge, SmallIdList> users;  // edge → the triangles using it
-  users.reserve(2 * triangles.size());  // about 3/2 edges a triangle
+  for (const auto& e : fixed) constrained.push_back(key(e.first, e.second));
+  std::sort(constrained.begin(), constrained.end());
+  const auto isConstrained = [&](Edge e) {
+    return std::binary_search(constrained.begin(), constrained.end(), e);
+  };
+  Users users(triangles.size());  // edge → the triangles using it
   for (uint32_t t = 0; t < triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) users[key(triangles[t][k], triangles[t][(k + 1) % 3])].push_back(t);
   std::vector<Edge> queue;
   // Every flip queues four edges: room for the first pass and a few flips, so the queue does not
   // grow by doubling from nothing (its reallocations were a tenth of the gap's time).
-  queue.reserve(users.size() + 64);
-  for (const auto& [edge, ts] : users)
-    if (ts.size() == 2 && !constrained.contains(edge)) queue.push_back(edge);
-  std::sort(queue.begin(), queue.end());  // a deterministic order, whatever the hashing
+  queue.reserve(3 * triangles.size() + 64);
+  users.forEach([&](Edge edge, const SmallIdList& ts) {
+    if (ts.size() == 2 && !isConstrained(edge)) queue.push_back(edge);
+  });
+  std::sort(queue.begin(), queue.end());  // a deterministic order, whatever the map's
   const auto moveUser = [&](Edge edge, uint32_t from, uint32_t to) {
     users[edge].replace(from, to);
   };
@@ -331,9 +387,9 @@ void flipTowardsDelaunay(const std::vector<glm::dvec2>& points,
   while (!queue.empty() && budget-- > 0) {
     const Edge edge = queue.back();
     queue.pop_back();
-    const auto found = users.find(edge);
-    if (found == users.end() || found->second.size() != 2 || constrained.contains(edge)) continue;
-    const uint32_t t0 = found->second[0], t1 = found->second[1];
+    const SmallIdList* found = users.find(edge);
+    if (!found || found->size() != 2 || isConstrained(edge)) continue;
+    const uint32_t t0 = (*found)[0], t1 = (*found)[1];
     // t0 = (a, b, c) counter-clockwise with the edge a→b; t1 holds b→a and d.
     int k0 = 0;
     while (key(triangles[t0][k0], triangles[t0][(k0 + 1) % 3]) != edge) ++k0;
@@ -357,8 +413,20 @@ void flipTowardsDelaunay(const std::vector<glm::dvec2>& points,
     moveUser(key(a, d), t1, t0);
     moveUser(key(b, c), t0, t1);
     for (Edge e : {key(a, c), key(a, d), key(b, c), key(b, d)})
-      if (!constrained.contains(e)) queue.push_back(e);
+      if (!isConstrained(e)) queue.push_back(e);
   }
+}
+
+}  // namespace
+
+void flipTowardsDelaunay(const std::vector<glm::dvec2>& points,
+                         const std::vector<std::pair<uint32_t, uint32_t>>& fixed,
+                         std::vector<std::array<uint32_t, 3>>& triangles) {
+  if (triangles.size() < 2) return;  // no edge has two triangles
+  if (triangles.size() <= kFewTriangles)
+    flipWith<FewEdgeUsers>(points, fixed, triangles);
+  else
+    flipWith<HashedEdgeUsers>(points, fixed, triangles);
 }
 
 }  // namespace tessera
