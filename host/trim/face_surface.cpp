@@ -267,13 +267,23 @@ FaceSurface::Scales FaceSurface::meanScales(glm::dvec2 lo, glm::dvec2 hi) const 
   constexpr int kGrid = 6;
   const glm::dvec2 h = 1e-3 * (hi - lo);
   const glm::dvec2 du(h.x, 0), dv(0, h.y);
+  // The points along v of the whole grid in one points() call, then the sums in grid order.
+  std::array<glm::dvec2, 2 * kGrid * kGrid> alongV;
+  for (int i = 0; i < kGrid; ++i)
+    for (int j = 0; j < kGrid; ++j) {
+      const glm::dvec2 uv = lo + (hi - lo) * glm::dvec2((i + 0.5) / kGrid, (j + 0.5) / kGrid);
+      alongV[2 * (i * kGrid + j)] = uv - dv;
+      alongV[2 * (i * kGrid + j) + 1] = uv + dv;
+    }
+  std::array<glm::dvec3, 2 * kGrid * kGrid> pointsV;
+  points(alongV.data(), alongV.size(), pointsV.data());
   Scales sum{glm::dvec2(0.0), glm::dvec2(0.0)};
   for (int i = 0; i < kGrid; ++i)
     for (int j = 0; j < kGrid; ++j) {
       const glm::dvec2 uv = lo + (hi - lo) * glm::dvec2((i + 0.5) / kGrid, (j + 0.5) / kGrid);
       const std::array<glm::dvec3, 3> alongU = pointsAlongU({uv - du, uv, uv + du});
       const glm::dvec3 &p = alongU[1], &pu0 = alongU[0], &pu1 = alongU[2];
-      const glm::dvec3 pv0 = point(uv - dv), pv1 = point(uv + dv);
+      const glm::dvec3 &pv0 = pointsV[2 * (i * kGrid + j)], &pv1 = pointsV[2 * (i * kGrid + j) + 1];
       if (h.x > 0) sum.speeds.x += glm::length(pu1 - pu0) / (2 * h.x);
       if (h.y > 0) sum.speeds.y += glm::length(pv1 - pv0) / (2 * h.y);
       const glm::dvec3 normal = glm::cross(pu1 - pu0, pv1 - pv0);

@@ -175,11 +175,14 @@ SampledDeviations sampledDeviationsFrom(const FaceSurface& surface,
   // The interior samples' surface points in one call (FaceSurface::points), then the measures.
   thread_local std::vector<glm::dvec2> uvs;
   thread_local std::vector<glm::dvec3> onSurface;
+  thread_local std::vector<double> fraction;  // i / n, divided once for all the samples
+  fraction.resize(size_t(n) + 1);
+  for (int i = 0; i <= n; ++i) fraction[size_t(i)] = double(i) / n;
   uvs.clear();
   for (int i = 0; i <= n; ++i)
     for (int j = 0; i + j <= n; ++j) {
       if (i == n || j == n || i + j == 0) continue;
-      const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
+      const double a = fraction[size_t(i)], b = fraction[size_t(j)], c = 1 - a - b;
       uvs.push_back(a * vs[t[0]].uv + b * vs[t[1]].uv + c * vs[t[2]].uv);
     }
   onSurface.resize(uvs.size());
@@ -188,7 +191,7 @@ SampledDeviations sampledDeviationsFrom(const FaceSurface& surface,
   size_t next = 0;
   for (int i = 0; i <= n; ++i)
     for (int j = 0; i + j <= n; ++j) {
-      const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
+      const double a = fraction[size_t(i)], b = fraction[size_t(j)], c = 1 - a - b;
       const glm::dvec3 p = a * p0 + b * p1 + c * p2;
       if (i == n || j == n || i + j == 0) {  // a corner: its own offset, no interpolation error
         worst2.parametric = std::max(worst2.parametric, squared(p - (i == n ? s0 : j == n ? s1 : s2)));
