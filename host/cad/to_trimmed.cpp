@@ -4,6 +4,7 @@
 #include <BRepBndLib.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_ListIteratorOfListOfCurveRepresentation.hxx>
+#include <BRep_GCurve.hxx>
 #include <BRep_TEdge.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
@@ -122,16 +123,24 @@ std::vector<WireEdge> orderedEdges(const TopoDS_Wire& wire, const TopoDS_Face& f
   return edges;
 }
 
-// Whether the file stores `edge`'s pcurve on the face whose surface and location
-// BRep_Tool::Surface(face, location) gives (BRep_Tool::CurveOnSurface computes one for a plane
-// otherwise).
-bool storesPcurve(const TopoDS_Edge& edge, const Handle(Geom_Surface)& surface,
-                  const TopLoc_Location& location) {
+// The pcurve the file stores for `edge` on the face whose surface and location
+// BRep_Tool::Surface(face, location) gives, and its range, found as BRep_Tool::CurveOnSurface
+// finds it (for a seam, the edge's orientation picks which of its two); null when the file
+// stores none (BRep_Tool::CurveOnSurface then computes one on a plane). One search of the
+// edge's representations where asking whether one is stored and then for it took two.
+Handle(Geom2d_Curve) storedPcurve(const TopoDS_Edge& edge, const Handle(Geom_Surface)& surface,
+                                  const TopLoc_Location& location, double& first, double& last) {
   const TopLoc_Location onSurface = location.Predivided(edge.Location());
-  const Handle(BRep_TEdge) tedge = Handle(BRep_TEdge)::DownCast(edge.TShape());
-  for (BRep_ListIteratorOfListOfCurveRepresentation it(tedge->Curves()); it.More(); it.Next())
-    if (it.Value()->IsCurveOnSurface(surface, onSurface)) return true;
-  return false;
+  const bool reversed = edge.Orientation() == TopAbs_REVERSED;
+  const BRep_TEdge* tedge = static_cast<const BRep_TEdge*>(edge.TShape().get());
+  for (BRep_ListIteratorOfListOfCurveRepresentation it(tedge->Curves()); it.More(); it.Next()) {
+    const Handle(BRep_CurveRepresentation)& representation = it.Value();
+    if (!representation->IsCurveOnSurface(surface, onSurface)) continue;
+    const BRep_GCurve* curve = static_cast<const BRep_GCurve*>(representation.get());
+    curve->Range(first, last);
+    return curve->IsCurveOnClosedSurface() && reversed ? curve->PCurve2() : curve->PCurve();
+  }
+  return Handle(Geom2d_Curve)();
 }
 
 // One wire → one loop: edges in wire order, each edge's samples in the direction the wire uses
@@ -145,7 +154,7 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
   RawLoop loop;
   const Handle(Geom_Plane) plane = Handle(Geom_Plane)::DownCast(basis);
   const gp_Pln pln = plane.IsNull() ? gp_Pln() : plane->Pln();
-  TopLoc_Location faceLocation;  // the face's surface as stored, for storesPcurve
+  TopLoc_Location faceLocation;  // the face's surface as stored, for storedPcurve
   const Handle(Geom_Surface)& faceSurface = BRep_Tool::Surface(face, faceLocation);
   uint32_t firstId = 0, lastId = 0;
   const std::vector<WireEdge> edges = orderedEdges(wire, face, in);
@@ -158,10 +167,9 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
     const int index = int(edges[e].index) + 1;
     const EdgeSamples& samples = in.edgeSamples[edges[e].index];
     double pf = 0, pl = 0;
-    Handle(Geom2d_Curve) pcurve;
-    const bool projected = !plane.IsNull() && !samples.degenerated &&
-                           !storesPcurve(edge, faceSurface, faceLocation);
-    if (!projected) {
+    Handle(Geom2d_Curve) pcurve = storedPcurve(edge, faceSurface, faceLocation, pf, pl);
+    const bool projected = pcurve.IsNull() && !plane.IsNull() && !samples.degenerated;
+    if (pcurve.IsNull() && !projected) {
       pcurve = BRep_Tool::CurveOnSurface(edge, face, pf, pl);
       if (pcurve.IsNull())
         throw CadFaceError("edge " + std::to_string(index - 1) + " has no pcurve on the face");
