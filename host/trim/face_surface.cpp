@@ -203,13 +203,17 @@ glm::dvec3 FaceSurface::point(glm::dvec2 uv) const {
 }
 
 void FaceSurface::points(const glm::dvec2* uvs, size_t count, glm::dvec3* out) const {
-  if (face_->pieces.size() != 1 || !checked_) {
+  const auto oneByOne = [&] {
     for (size_t k = 0; k < count; ++k) out[k] = point(uvs[k]);
-    return;
-  }
-  const BezierPatchPiece& piece = face_->pieces[0];
+  };
+  if (!checked_ || count == 0) return oneByOne();
+  // Every uv in one piece (a triangle's samples nearly always are): that piece's loop.
+  const size_t index = pieceAt(uvs[0]);
+  for (size_t k = 1; k < count; ++k)
+    if (pieceAt(uvs[k]) != index) return oneByOne();
+  const BezierPatchPiece& piece = face_->pieces[index];
   const BezierPatch& patch = piece.patch;
-  if (!rational_[0]) {
+  if (!rational_[index]) {
     withFixedDegrees(patch.degreeU, patch.degreeV, [&](auto N, auto M) {
       for (size_t k = 0; k < count; ++k) {
         const glm::dvec2 local = localUvOf(piece, uvs[k]);
@@ -219,7 +223,7 @@ void FaceSurface::points(const glm::dvec2* uvs, size_t count, glm::dvec3* out) c
     });
     return;
   }
-  const RationalBezierPatch& r = *rational_[0];
+  const RationalBezierPatch& r = *rational_[index];
   withFixedDegrees(r.degreeU, r.degreeV, [&](auto N, auto M) {
     for (size_t k = 0; k < count; ++k) {
       const glm::dvec2 local = localUvOf(piece, uvs[k]);

@@ -25,7 +25,8 @@ class FaceSurface {
   // point() calls): the same doubles, the v direction's sums taken once.
   std::array<glm::dvec3, 3> pointsAlongU(const std::array<glm::dvec2, 3>& uvs) const;
   // point() of each of `count` uvs into `out`: the same doubles, the piece's form and degrees
-  // looked up once on a one-piece face, and the points' divisions overlapping in the loop.
+  // looked up once when every uv falls in one piece, and the points' divisions overlapping in
+  // the loop.
   void points(const glm::dvec2* uvs, size_t count, glm::dvec3* out) const;
   // Distance from `target` to the surface, by the closest-point search on the piece of
   // `guess` started there (closest_point.h): an upper bound of the true distance. With
