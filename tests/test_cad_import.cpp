@@ -9,6 +9,10 @@
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
+#include <GeomConvert.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Geom_Plane.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
@@ -24,6 +28,7 @@
 #include <map>
 #include <set>
 
+#include "bspline/to_bezier.h"
 #include "cad/cad_file.h"
 #include "cad/face_surface.h"
 #include "cad/to_trimmed.h"
@@ -400,4 +405,95 @@ TEST_CASE("cad: FaceSurface::pointsAlongU gives point()'s doubles on the IDF lib
   CHECK(compared > 10000);
   CHECK(multiPiece > 0);
   CHECK(rational > 0);
+}
+
+TEST_CASE("cad: FaceSurface::points gives point()'s doubles on the IDF library's faces", "[cad]") {
+  // The refinement's samples and meanScales' points along v come from points(), which looks the
+  // piece's form and degrees up once when every uv falls in one piece: bit for bit point() one
+  // by one, within a piece (that loop) and across pieces (point() itself), -0 kept apart.
+  const std::vector<std::string> files = idfFiles();
+  REQUIRE(files.size() == 32);
+  size_t compared = 0, onePieceLoops = 0, mixed = 0;
+  for (size_t k = 1; k < files.size(); k += 4) {
+    INFO(files[k]);
+    const CadFile file = readCadFile(files[k]);
+    const CadImport in = toTrimmedModel(file, defaultCadTolerance(file.shape));
+    for (const TrimmedFace& face : in.model.faces) {
+      const tessera::FaceSurface surface(face);
+      std::vector<glm::dvec2> across;  // one uv of every piece: several pieces at once
+      for (const BezierPatchPiece& p : face.pieces) {
+        std::vector<glm::dvec2> uvs;
+        for (int i = 0; i <= 4; ++i)
+          for (int j = 0; j <= 4; ++j)
+            uvs.emplace_back(p.u0 + (p.u1 - p.u0) * i / 4.0, p.v0 + (p.v1 - p.v0) * j / 4.0);
+        across.push_back(0.5 * glm::dvec2(p.u0 + p.u1, p.v0 + p.v1));
+        for (const std::vector<glm::dvec2>* set : {&uvs, &across}) {
+          std::vector<glm::dvec3> batch(set->size());
+          surface.points(set->data(), set->size(), batch.data());
+          for (size_t s = 0; s < set->size(); ++s) {
+            const glm::dvec3 one = surface.point((*set)[s]);
+            REQUIRE(std::memcmp(&one, &batch[s], sizeof one) == 0);
+            ++compared;
+          }
+          (set == &uvs ? onePieceLoops : mixed) += 1;
+        }
+      }
+    }
+  }
+  CHECK(compared > 10000);
+  CHECK(onePieceLoops > 100);
+  CHECK(mixed > 100);
+}
+
+TEST_CASE("cad: a plane's NURBS and piece are GeomConvert's and the knot insertion's, bit for bit",
+          "[cad]") {
+  // convertFaceSurface builds a plane's bilinear NURBS and its one piece directly; the path it
+  // replaces, GeomConvert on the trimmed plane and the knot insertion, must give the same bits.
+  const std::vector<std::string> files = idfFiles();
+  REQUIRE(files.size() == 32);
+  size_t planes = 0;
+  for (size_t k = 2; k < files.size(); k += 4) {
+    INFO(files[k]);
+    const CadFile file = readCadFile(files[k]);
+    const CadImport in = toTrimmedModel(file, defaultCadTolerance(file.shape));
+    for (size_t f = 0; f < in.model.faces.size(); ++f) {
+      const TopoDS_Face face = TopoDS::Face(
+          in.faces(int(in.model.faces[f].faceIndex) + 1).Oriented(TopAbs_FORWARD));
+      const Handle(Geom_Surface) basis = faceBasisSurface(face);
+      if (!basis->IsKind(STANDARD_TYPE(Geom_Plane))) continue;
+      const std::array<double, 4>& b = in.uvBounds[f];
+      const CadSurface direct = convertFaceSurface(basis, b[0], b[1], b[2], b[3]);
+      const Handle(Geom_BSplineSurface) converted = GeomConvert::SurfaceToBSplineSurface(
+          new Geom_RectangularTrimmedSurface(basis, b[0], b[1], b[2], b[3]));
+      REQUIRE(direct.nurbs->NbUPoles() == converted->NbUPoles());
+      REQUIRE(direct.nurbs->NbVPoles() == converted->NbVPoles());
+      REQUIRE(direct.nurbs->UDegree() == converted->UDegree());
+      REQUIRE(direct.nurbs->VDegree() == converted->VDegree());
+      REQUIRE_FALSE(direct.nurbs->IsURational());
+      REQUIRE_FALSE((converted->IsURational() || converted->IsVRational()));
+      BSplineSurface net;
+      net.degreeU = converted->UDegree(), net.degreeV = converted->VDegree();
+      net.countU = converted->NbUPoles(), net.countV = converted->NbVPoles();
+      for (int i = 1; i <= net.countU + net.degreeU + 1; ++i) net.knotsU.push_back(converted->UKnotSequence()(i));
+      for (int j = 1; j <= net.countV + net.degreeV + 1; ++j) net.knotsV.push_back(converted->VKnotSequence()(j));
+      for (int i = 1; i <= net.countU; ++i)
+        for (int j = 1; j <= net.countV; ++j) {
+          const gp_Pnt p = converted->Pole(i, j), q = direct.nurbs->Pole(i, j);
+          REQUIRE(std::memcmp(&p, &q, sizeof p) == 0);
+          net.cp.push_back(glm::dvec3(p.X(), p.Y(), p.Z()) * 1.0);
+        }
+      const std::vector<BezierPatchPiece> inserted = bezierPatches(net);
+      REQUIRE(inserted.size() == 1);
+      REQUIRE(direct.pieces.size() == 1);
+      const BezierPatchPiece &x = inserted[0], &y = direct.pieces[0];
+      CHECK((x.u0 == y.u0 && x.u1 == y.u1 && x.v0 == y.v0 && x.v1 == y.v1));
+      REQUIRE(x.patch.cp.size() == y.patch.cp.size());
+      REQUIRE(std::memcmp(x.patch.cp.data(), y.patch.cp.data(),
+                          x.patch.cp.size() * sizeof(glm::dvec3)) == 0);
+      CHECK(y.patch.weights.empty());
+      CHECK_FALSE(direct.reparametrised);
+      ++planes;
+    }
+  }
+  CHECK(planes > 100);
 }

@@ -238,3 +238,42 @@ TEST_CASE("trim segment index: the binned winding number is the full scan's", "[
     CHECK(inside < int(probes.size()));
   }
 }
+
+TEST_CASE("segmentsFartherThan answers segmentDistance > d", "[trim]") {
+  // The gap's hole bridges test visibility with it: the same answer as the distance itself on
+  // segments far apart, touching, crossing, nearly collinear (where the crossing test's signs
+  // are rounding and the distance says 0 however far apart the boxes), at an offset of 10⁴.
+  std::mt19937 rng(1718);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  size_t far = 0, near = 0, checked = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const glm::dvec2 offset = k % 2 ? glm::dvec2(1e4, -1e4) : glm::dvec2(0.0);
+    const double size = k % 3 ? 1.0 : 1e-6;
+    const glm::dvec2 p0 = offset + size * glm::dvec2(unit(rng), unit(rng));
+    glm::dvec2 p1 = offset + size * glm::dvec2(unit(rng), unit(rng));
+    glm::dvec2 q0 = offset + size * glm::dvec2(unit(rng), unit(rng));
+    glm::dvec2 q1 = offset + size * glm::dvec2(unit(rng), unit(rng));
+    switch (k % 5) {
+      case 1:  // on the line through p0 and p1, beyond p1: collinear and apart
+        q0 = p0 + (1.0 + 0.5 * unit(rng)) * (p1 - p0), q1 = p0 + (2.0 + unit(rng)) * (p1 - p0);
+        break;
+      case 2:  // an end on the other segment
+        q0 = p0 + unit(rng) * (p1 - p0);
+        break;
+      case 3:  // axis-parallel, one above the other
+        p1.y = p0.y, q0.y = q1.y = p0.y + size * 1e-9 * unit(rng);
+        break;
+      default: break;
+    }
+    const double distance = segmentDistance(p0, p1, q0, q1);
+    for (const double d : {0.0, 1e-13 * size, 1e-9 * size, 0.5 * distance, distance,
+                           std::nextafter(distance, 0.0), 0.3 * size, 2.0 * size}) {
+      REQUIRE(segmentsFartherThan(p0, p1, q0, q1, d) == (distance > d));
+      ++checked;
+    }
+    (distance > 1e-3 * size ? far : near) += 1;
+  }
+  CHECK(checked == 160000);
+  CHECK(far > 1000);
+  CHECK(near > 1000);
+}
