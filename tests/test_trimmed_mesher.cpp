@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <set>
 
 #include "mesh/tessellate.h"
@@ -386,6 +387,16 @@ TEST_CASE("trimmed mesher: a bad model names the face and the loop", "[trim]") {
   shortLoop.faces[0].loops[0].pointIds.resize(2);
   CHECK_THROWS_WITH(meshTrimmedModel(shortLoop, options, cpu),
                     Catch::Contains("loop 0 has 2 points"));
+  TrimmedModel badPiece = model;  // the quad-tree's check, named by face and piece
+  badPiece.faces[0].pieces.back().patch.cp[1].y = std::nan("");
+  CHECK_THROWS_WITH(meshTrimmedModel(badPiece, options, cpu),
+                    "face 7 (#88 ADVANCED_FACE), piece " +
+                        std::to_string(badPiece.faces[0].pieces.size() - 1) +
+                        " has a control point that is not finite or exceeds 1e38 (the mesh is "
+                        "fp32)");
+  badPiece.faces[0].label.clear();
+  CHECK_THROWS_WITH(meshTrimmedModel(badPiece, options, cpu),
+                    Catch::StartsWith("face 0, piece "));
   options.tolerance = 0;
   CHECK_THROWS_WITH(meshTrimmedModel(model, options, cpu), Catch::Contains("tolerance"));
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "common/parallel_for.h"
@@ -141,10 +142,16 @@ FaceTessellations tessellateFaces(const TrimmedModel& model, double tolerance,
     const TrimmedFace& face = model.faces[f];
     FaceGroup& group = groups[isBicubicFace(face) ? 0 : 1];
     std::vector<BezierPatch> patches;
+    patches.reserve(face.pieces.size());
     for (size_t k = 0; k < face.pieces.size(); ++k) {
-      validateTessellationPatch(face.pieces[k].patch,
-                                (face.label.empty() ? "face " + std::to_string(f) : face.label) +
-                                    ", piece " + std::to_string(k));
+      // The piece's name only for the message (validateTessellationPatch's is its `what`, a
+      // space and the reason): building it for every piece was most of this loop.
+      try {
+        validateTessellationPatch(face.pieces[k].patch, std::string());
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument((face.label.empty() ? "face " + std::to_string(f) : face.label) +
+                                    ", piece " + std::to_string(k) + e.what());
+      }
       patches.push_back(face.pieces[k].patch);
     }
     patches = toLocalFrame(std::move(patches), frame);
