@@ -76,7 +76,10 @@ class NearPointMerger {
       for (const auto& [a, b] : nearPairs(lines_.shared[g], distinct))
         merge(groupKey(g, a), groupKey(g, b));
     }
-    for (auto& [key, representative] : out_.merged) representative = out_.find(key);
+    // Every key straight to its representative: a key set before another is met through it
+    // gives the same end, so the table's order does not matter.
+    for (auto it = out_.merged.begin(); it != out_.merged.end(); ++it)
+      it.value() = out_.find(it->first);
   }
 
   // The line indices keep the points that stay, as the vertices they are: a point merged into

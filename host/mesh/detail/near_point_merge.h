@@ -4,10 +4,10 @@
 // these stay inline.
 #pragma once
 #include <cstdint>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
+#include "common/hash_map.h"
 #include "mesh/detail/line_points.h"
 #include "mesh/detail/seam_vertices.h"
 
@@ -17,9 +17,10 @@ namespace tessera::triangulate_detail {
 using MovedCorners = std::vector<std::pair<float, float>>;
 
 struct NearPointMerges {
-  // Key → the key of the vertex it is merged into.
-  std::unordered_map<VertexKey, VertexKey, VertexKeyHash> merged;
-  std::unordered_map<uint64_t, MovedCorners> movedAlongU, movedAlongV;  // lines with merges
+  // Key → the key of the vertex it is merged into. Flat tables (hash_map.h): the walk looks
+  // up every leaf corner here and every leaf edge in moved*; nothing depends on their order.
+  HashMap<VertexKey, VertexKey, VertexKeyHash> merged;
+  HashMap<uint64_t, MovedCorners> movedAlongU, movedAlongV;  // lines with merges
   std::vector<MovedCorners> sharedMoved;  // per group (empty when nothing merged)
 
   VertexKey find(VertexKey key) const {
