@@ -123,14 +123,16 @@ std::vector<WireEdge> orderedEdges(const TopoDS_Wire& wire, const TopoDS_Face& f
   return edges;
 }
 
-// The pcurve the file stores for `edge` on the face whose surface and location
-// BRep_Tool::Surface(face, location) gives, and its range, found as BRep_Tool::CurveOnSurface
+// The pcurve the file stores for `edge` on the face whose surface BRep_Tool::Surface(face, L)
+// gives, `onSurface` being L.Predivided(edge.Location()) (SurfaceLocation below), and its range,
+// found as BRep_Tool::CurveOnSurface
 // finds it (for a seam, the edge's orientation picks which of its two); null when the file
 // stores none (BRep_Tool::CurveOnSurface then computes one on a plane). One search of the
-// edge's representations where asking whether one is stored and then for it took two.
-Handle(Geom2d_Curve) storedPcurve(const TopoDS_Edge& edge, const Handle(Geom_Surface)& surface,
-                                  const TopLoc_Location& location, double& first, double& last) {
-  const TopLoc_Location onSurface = location.Predivided(edge.Location());
+// edge's representations where asking whether one is stored and then for it took two. A pointer
+// into the edge's representation, which the shape keeps: no handle copied per wire edge (an
+// atomic count on geometry that faces converting on other threads share).
+const Geom2d_Curve* storedPcurve(const TopoDS_Edge& edge, const Handle(Geom_Surface)& surface,
+                                  const TopLoc_Location& onSurface, double& first, double& last) {
   const bool reversed = edge.Orientation() == TopAbs_REVERSED;
   const BRep_TEdge* tedge = static_cast<const BRep_TEdge*>(edge.TShape().get());
   for (BRep_ListIteratorOfListOfCurveRepresentation it(tedge->Curves()); it.More(); it.Next()) {
@@ -138,10 +140,30 @@ Handle(Geom2d_Curve) storedPcurve(const TopoDS_Edge& edge, const Handle(Geom_Sur
     if (!representation->IsCurveOnSurface(surface, onSurface)) continue;
     const BRep_GCurve* curve = static_cast<const BRep_GCurve*>(representation.get());
     curve->Range(first, last);
-    return curve->IsCurveOnClosedSurface() && reversed ? curve->PCurve2() : curve->PCurve();
+    return (curve->IsCurveOnClosedSurface() && reversed ? curve->PCurve2() : curve->PCurve()).get();
   }
-  return Handle(Geom2d_Curve)();
+  return nullptr;
 }
+
+// The face's surface location relative to an edge's (L.Predivided(edge location), as
+// BRep_Tool::CurveOnSurface computes it): composed again only when the edge's location changes,
+// not for every edge (a wire's edges share theirs), since each composition allocates its list.
+class SurfaceLocation {
+ public:
+  explicit SurfaceLocation(const TopLoc_Location& faceLocation) : face_(faceLocation) {}
+  const TopLoc_Location& relativeTo(const TopLoc_Location& edgeLocation) {
+    if (!known_ || !(edgeLocation == edge_)) {
+      edge_ = edgeLocation;
+      onSurface_ = face_.Predivided(edgeLocation);
+      known_ = true;
+    }
+    return onSurface_;
+  }
+
+ private:
+  TopLoc_Location face_, edge_, onSurface_;
+  bool known_ = false;
+};
 
 // One wire → one loop: edges in wire order, each edge's samples in the direction the wire uses
 // it, mapped through the edge's pcurve on this face (for a seam, the orientation picks which of
@@ -152,10 +174,11 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
                  const Handle(Geom_Surface)& basis, uint32_t faceIndex, const std::string& label,
                  const std::string& path, const CadImport& in, FaceOutcome& outcome) {
   RawLoop loop;
-  const Handle(Geom_Plane) plane = Handle(Geom_Plane)::DownCast(basis);
-  const gp_Pln pln = plane.IsNull() ? gp_Pln() : plane->Pln();
+  const Geom_Plane* plane = dynamic_cast<const Geom_Plane*>(basis.get());
+  const gp_Pln pln = plane ? plane->Pln() : gp_Pln();
   TopLoc_Location faceLocation;  // the face's surface as stored, for storedPcurve
   const Handle(Geom_Surface)& faceSurface = BRep_Tool::Surface(face, faceLocation);
+  SurfaceLocation surfaceLocation(faceLocation);
   uint32_t firstId = 0, lastId = 0;
   const std::vector<WireEdge> edges = orderedEdges(wire, face, in);
   size_t points = 0;
@@ -167,12 +190,14 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
     const int index = int(edges[e].index) + 1;
     const EdgeSamples& samples = in.edgeSamples[edges[e].index];
     double pf = 0, pl = 0;
-    Handle(Geom2d_Curve) pcurve = storedPcurve(edge, faceSurface, faceLocation, pf, pl);
-    const bool projected = pcurve.IsNull() && !plane.IsNull() && !samples.degenerated;
-    if (pcurve.IsNull() && !projected) {
-      pcurve = BRep_Tool::CurveOnSurface(edge, face, pf, pl);
-      if (pcurve.IsNull())
+    const Geom2d_Curve* pcurve = storedPcurve(edge, faceSurface, surfaceLocation.relativeTo(edge.Location()), pf, pl);
+    const bool projected = !pcurve && plane && !samples.degenerated;
+    Handle(Geom2d_Curve) computed;  // BRep_Tool's own pcurve, kept while in use
+    if (!pcurve && !projected) {
+      computed = BRep_Tool::CurveOnSurface(edge, face, pf, pl);
+      if (computed.IsNull())
         throw CadFaceError("edge " + std::to_string(index - 1) + " has no pcurve on the face");
+      pcurve = computed.get();
     }
     const double f = samples.params.front(), l = samples.params.back();
     const bool reversed = edge.Orientation() == TopAbs_REVERSED;
@@ -385,6 +410,8 @@ CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads) {
   std::vector<FaceOutcome> outcomes(size_t(in.faces.Extent()));
   forEachItem(outcomes.size(), threads,
               [&](size_t f) { outcomes[f] = faceOutcome(file, in, int(f) + 1); });
+  in.model.faces.reserve(outcomes.size());
+  in.uvBounds.reserve(outcomes.size());
   for (FaceOutcome& outcome : outcomes) {
     if (!outcome.converted) {
       in.failures.push_back(std::move(outcome.failure));
