@@ -30,7 +30,17 @@ TEST_CASE("runaway refinement stops at the node budget, naming the patch and lev
   REQUIRE_THROWS_AS(tessellate(teapot, o, cpu), TessellationLimitError);
   REQUIRE_THROWS_WITH(tessellate(teapot, o, cpu),
                       Catch::Contains("node budget of 5000") && Catch::Contains("patch ") &&
-                          Catch::Contains("level "));
+                          Catch::Contains("level ") && Catch::Contains("Raise the thresholds"));
+}
+
+TEST_CASE("rule T at the node budget says to raise the tolerance", "[tessellate][limits][tolerance]") {
+  auto teapot = readBpt(TESSERA_SOURCE_DIR "/data/teapot.bpt");
+  Backend cpu = makeMirrorBackend();
+  QuadtreeOptions o = toleranceOptions(1e-6);
+  o.nodeBudget = 5000;
+  REQUIRE_THROWS_WITH(tessellate(teapot, o, cpu), Catch::Contains("node budget of 5000") &&
+                                                      Catch::Contains("Raise the tolerance") &&
+                                                      !Catch::Contains("thresholds"));
 }
 
 TEST_CASE("the maximum depth bounds refinement, and every leaf records why it ended",

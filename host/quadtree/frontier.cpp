@@ -44,8 +44,16 @@ QuadtreeResult uniformGrid(size_t patchCount, const QuadtreeOptions& o) {
   return result;
 }
 
+// What to change, in the rule's own terms: rule T refines until its tolerance is met, the
+// others until their angle thresholds are.
+std::string budgetAdvice(SplitRule rule) {
+  return rule == SplitRule::Tolerance
+             ? "Raise the tolerance, lower the maximum depth, or raise the node budget."
+             : "Raise the thresholds, lower the maximum depth, or raise the node budget.";
+}
+
 [[noreturn]] void throwBudgetExceeded(const std::vector<gpu::QuadNode>& next, uint32_t level,
-                                      size_t total, size_t budget) {
+                                      size_t total, size_t budget, SplitRule rule) {
   std::unordered_map<uint32_t, size_t> perPatch;
   for (const auto& n : next) ++perPatch[n.patchIndex];
   auto worst = std::max_element(perPatch.begin(), perPatch.end(),
@@ -54,7 +62,7 @@ QuadtreeResult uniformGrid(size_t patchCount, const QuadtreeOptions& o) {
       "node budget of " + std::to_string(budget) + " exceeded at level " +
       std::to_string(level + 1) + " (" + std::to_string(total) + " nodes); patch " +
       std::to_string(worst->first) + " alone has " + std::to_string(worst->second) +
-      " nodes there. Raise the thresholds, lower the maximum depth, or raise the budget.");
+      " nodes there. " + budgetAdvice(rule));
 }
 
 // A threshold as a message shows it: as short as "%g" makes it (0.1, -1, nan).
@@ -294,7 +302,7 @@ void buildGroupTree(const PatchSet& patches, uint32_t firstPatch, const Quadtree
     total += next.size();
     if (total > options.nodeBudget) {
       for (auto& n : next) n.patchIndex += firstPatch;  // name the patch as the caller knows it
-      throwBudgetExceeded(next, level, total, options.nodeBudget);
+      throwBudgetExceeded(next, level, total, options.nodeBudget, options.rule);
     }
     requireWithinMemoryBudget(saturatingMultiply(total, kTessellationBytesPerNode),
                               "the quad-tree's " + std::to_string(total) + " nodes at level " +
