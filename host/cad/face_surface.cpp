@@ -3,20 +3,28 @@
 
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
+#include <Convert_ConeToBSplineSurface.hxx>
+#include <Convert_CylinderToBSplineSurface.hxx>
+#include <ElCLib.hxx>
 #include <GeomConvert.hxx>
+#include <Precision.hxx>
 #include <Geom_ConicalSurface.hxx>
 #include <Geom_Plane.hxx>
+#include <gp_Cone.hxx>
+#include <gp_Cylinder.hxx>
 #include <Geom_CylindricalSurface.hxx>
 #include <Geom_SphericalSurface.hxx>
 #include <Geom_ToroidalSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
+#include <TColStd_Array2OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <iterator>
+#include <type_traits>
 
 #include "bspline/bspline.h"
 #include "cad/detail/number_text.h"
@@ -36,9 +44,65 @@ std::vector<double> flatKnots(const Handle(Geom_BSplineSurface)& s, bool alongU)
   return std::vector<double>(seq.begin(), seq.end());
 }
 
+// True when every knot of the direction already has its Bézier multiplicity: the degree p
+// inside, p + 1 at the ends (GeomConvert's circles and lines, a plane's or cone's bilinear
+// net): no knot to insert.
+bool bezierMultiplicities(const Handle(Geom_BSplineSurface)& s, bool alongU) {
+  const int degree = alongU ? s->UDegree() : s->VDegree();
+  const int knots = alongU ? s->NbUKnots() : s->NbVKnots();
+  for (int k = 1; k <= knots; ++k) {
+    const int m = alongU ? s->UMultiplicity(k) : s->VMultiplicity(k);
+    if (m != (k == 1 || k == knots ? degree + 1 : degree)) return false;
+  }
+  return true;
+}
+
+// The pieces of a surface whose knots need no insertion (bezierMultiplicities both ways): the
+// insertion's matrices are then identities (osloMatrix of a knot vector on itself gives exact
+// 1s and 0s), which pass each weighted point and weight on as 0 + 1·(0 + 1·x), so each piece
+// is the block of the net its span owns, taken with that arithmetic (−0 comes out +0) and
+// divided as rationalPieces divides: the same bits without the matrices and the nets' copies.
+std::vector<BezierPatchPiece> blockPieces(const Handle(Geom_BSplineSurface)& s) {
+  const int p = s->UDegree(), q = s->VDegree();
+  const int spansU = s->NbUKnots() - 1, spansV = s->NbVKnots() - 1;
+  const bool rational = s->IsURational() || s->IsVRational();
+  const TColgp_Array2OfPnt& poles = s->Poles();
+  const TColStd_Array2OfReal* weights = rational ? s->Weights() : nullptr;
+  std::vector<BezierPatchPiece> pieces(size_t(spansU) * size_t(spansV));
+  for (int a = 0; a < spansU; ++a)
+    for (int b = 0; b < spansV; ++b) {
+      BezierPatchPiece& piece = pieces[size_t(a) * size_t(spansV) + size_t(b)];
+      piece.u0 = s->UKnot(a + 1), piece.u1 = s->UKnot(a + 2);
+      piece.v0 = s->VKnot(b + 1), piece.v1 = s->VKnot(b + 2);
+      BezierPatch& patch = piece.patch;
+      patch.degreeU = p, patch.degreeV = q;
+      patch.cp.resize(size_t(p + 1) * size_t(q + 1));
+      if (rational) patch.weights.resize(patch.cp.size());
+      for (int i = 0; i <= p; ++i)
+        for (int j = 0; j <= q; ++j) {
+          const int row = a * p + i + 1, column = b * q + j + 1;
+          const size_t c = size_t(i) * size_t(q + 1) + size_t(j);
+          if (!rational) {
+            patch.cp[c] = 0.0 + (0.0 + toGlm(poles(row, column)) * 1.0);
+            continue;
+          }
+          const double w = (*weights)(row, column);
+          const double passed = 0.0 + (0.0 + w);
+          if (!(passed > 0.0)) throw CadFaceError("a NURBS weight is not positive after knot insertion");
+          patch.cp[c] = (0.0 + (0.0 + toGlm(poles(row, column)) * w)) / passed;
+          patch.weights[c] = passed;
+        }
+    }
+  return pieces;
+}
+
 // Knot insertion is linear in the control points, so the Bézier pieces of the homogeneous
 // surface (w·P, w) are those of (w·P) and of (w) taken apart; dividing gives the rational pieces.
-std::vector<BezierPatchPiece> rationalPieces(const Handle(Geom_BSplineSurface)& s) {
+std::vector<BezierPatchPiece> rationalPieces(const Handle(Geom_BSplineSurface)& s,
+                                             ConversionRoute route) {
+  if (route == ConversionRoute::Direct && bezierMultiplicities(s, true) &&
+      bezierMultiplicities(s, false))
+    return blockPieces(s);
   BSplineSurface weighted;
   weighted.degreeU = s->UDegree();
   weighted.degreeV = s->VDegree();
@@ -149,26 +213,67 @@ void wholePeriodCut(CadSurface& f, bool alongU, bool alongV, double u0, double v
 // of a planar face's conversion (a trimmed copy of the plane, arrays, insertion matrices) to
 // give what this gives: GeomConvert's NURBS is bilinear through the plane's points at the
 // corners, knots at the bounds, and its one Bézier piece is that net, which the insertion's
-// identity matrices pass on as 0 + 1·x (so −0 comes out +0: the same bits as that path).
+// identity matrices pass on as 0 + 1·x (so −0 comes out +0: the same bits as that path). No
+// NURBS is kept: a plane's (u, v) need no map, and its piece is its net.
 CadSurface planeSurface(CadSurface& result, double u0, double u1, double v0, double v1) {
   const Handle(Geom_Surface)& plane = result.original;
-  TColgp_Array2OfPnt poles(1, 2, 1, 2);
-  poles(1, 1) = plane->Value(u0, v0);
-  poles(1, 2) = plane->Value(u0, v1);
-  poles(2, 1) = plane->Value(u1, v0);
-  poles(2, 2) = plane->Value(u1, v1);
-  TColStd_Array1OfReal knotsU(1, 2), knotsV(1, 2);
-  knotsU(1) = u0, knotsU(2) = u1, knotsV(1) = v0, knotsV(2) = v1;
-  TColStd_Array1OfInteger mults(1, 2);
-  mults.Init(2);
-  result.nurbs = new Geom_BSplineSurface(poles, knotsU, knotsV, mults, mults, 1, 1);
   BezierPatchPiece piece;
   piece.u0 = u0, piece.u1 = u1, piece.v0 = v0, piece.v1 = v1;
   piece.patch.degreeU = piece.patch.degreeV = 1;
-  for (int i = 1; i <= 2; ++i)
-    for (int j = 1; j <= 2; ++j) piece.patch.cp.push_back(0.0 + (0.0 + toGlm(poles(i, j))));
+  piece.patch.cp.reserve(4);
+  for (const double u : {u0, u1})
+    for (const double v : {v0, v1}) piece.patch.cp.push_back(0.0 + (0.0 + toGlm(plane->Value(u, v))));
   result.pieces.push_back(std::move(piece));
   return std::move(result);
+}
+
+// What GeomConvert's BSplineSurfaceBuilder makes of a Convert_ class's result: its poles,
+// weights, knots and multiplicities copied into a Geom_BSplineSurface.
+Handle(Geom_BSplineSurface) builtFrom(const Convert_ElementarySurfaceToBSplineSurface& c) {
+  TColgp_Array2OfPnt poles(1, c.NbUPoles(), 1, c.NbVPoles());
+  TColStd_Array2OfReal weights(1, c.NbUPoles(), 1, c.NbVPoles());
+  TColStd_Array1OfReal knotsU(1, c.NbUKnots()), knotsV(1, c.NbVKnots());
+  TColStd_Array1OfInteger multsU(1, c.NbUKnots()), multsV(1, c.NbVKnots());
+  for (int j = 1; j <= c.NbVPoles(); ++j)
+    for (int i = 1; i <= c.NbUPoles(); ++i) {
+      poles(i, j) = c.Pole(i, j);
+      weights(i, j) = c.Weight(i, j);
+    }
+  for (int i = 1; i <= c.NbUKnots(); ++i) knotsU(i) = c.UKnot(i), multsU(i) = c.UMultiplicity(i);
+  for (int i = 1; i <= c.NbVKnots(); ++i) knotsV(i) = c.VKnot(i), multsV(i) = c.VMultiplicity(i);
+  return new Geom_BSplineSurface(poles, weights, knotsU, knotsV, multsU, multsV, c.UDegree(),
+                                 c.VDegree(), c.IsUPeriodic(), c.IsVPeriodic());
+}
+
+// GeomConvert's NURBS of a cylinder or cone without the trimmed copy of the surface it is
+// handed (which copies the surface) and its dispatch: the Convert_ class it calls, with the
+// bounds Geom_RectangularTrimmedSurface gives it (u moved into the first period as its SetTrim
+// moves it, v as is), built as its BSplineSurfaceBuilder builds. `wholeU`: untrimmed in u, the
+// periodic form. Null for any other surface, or where GeomConvert would segment the periodic
+// form (its knots off [0, 2π]), which the caller leaves to GeomConvert. The test compares this
+// with GeomConvert on every cylinder and cone of the IDF library, bit for bit.
+Handle(Geom_BSplineSurface) revolvedLineNurbs(const Handle(Geom_Surface)& basis, bool wholeU,
+                                              double u0, double u1, double v0, double v1) {
+  const auto convert = [&](const auto& surface) -> Handle(Geom_BSplineSurface) {
+    using Converter = std::conditional_t<std::is_same_v<std::decay_t<decltype(surface)>, gp_Cylinder>,
+                                         Convert_CylinderToBSplineSurface, Convert_ConeToBSplineSurface>;
+    if (!wholeU) {
+      ElCLib::AdjustPeriodic(0.0, 2.0 * M_PI, std::min(std::abs(u1 - u0) / 2, Precision::PConfusion()),
+                             u0, u1);
+      return builtFrom(Converter(surface, std::min(u0, u1), std::max(u0, u1), v0, v1));
+    }
+    Handle(Geom_BSplineSurface) periodic = builtFrom(Converter(surface, v0, v1));
+    const double eps = 100. * Epsilon(2. * M_PI);
+    if (std::abs(periodic->UKnot(1)) > eps ||
+        std::abs(periodic->UKnot(periodic->NbUKnots()) - 2. * M_PI) > eps)
+      return Handle(Geom_BSplineSurface)();
+    return periodic;
+  };
+  if (const auto* cylinder = dynamic_cast<const Geom_CylindricalSurface*>(basis.get()))
+    return convert(cylinder->Cylinder());
+  if (const auto* cone = dynamic_cast<const Geom_ConicalSurface*>(basis.get()))
+    return convert(cone->Cone());
+  return Handle(Geom_BSplineSurface)();
 }
 
 }  // namespace
@@ -237,7 +342,7 @@ CadSurface convertFaceSurface(const TopoDS_Face& face) {
 }
 
 CadSurface convertFaceSurface(const Handle(Geom_Surface)& basis, double u0, double u1, double v0,
-                              double v1) {
+                              double v1, ConversionRoute route) {
   CadSurface result;
   result.original = basis;
   double a, b, c, d;
@@ -254,7 +359,8 @@ CadSurface convertFaceSurface(const Handle(Geom_Surface)& basis, double u0, doub
     throw CadFaceError("zero-area face: its uv bounds are [" + cad_detail::numberText(u0) + ", " +
                        cad_detail::numberText(u1) + "] × [" + cad_detail::numberText(v0) + ", " + cad_detail::numberText(v1) + "]");
 
-  if (basis->IsKind(STANDARD_TYPE(Geom_Plane))) return planeSurface(result, u0, u1, v0, v1);
+  const bool direct = route == ConversionRoute::Direct;
+  if (direct && basis->IsKind(STANDARD_TYPE(Geom_Plane))) return planeSurface(result, u0, u1, v0, v1);
 
   // A face that wraps a whole period is converted untrimmed in that direction, where the NURBS
   // stays periodic with its knots at the surface's own parameters (0, 2π/3, 4π/3 for a circle),
@@ -265,16 +371,20 @@ CadSurface convertFaceSurface(const Handle(Geom_Surface)& basis, double u0, doub
   const double tiny = 1e-9;
   const bool wholeU = basis->IsUPeriodic() && u1 - u0 >= basis->UPeriod() * (1 - tiny);
   const bool wholeV = basis->IsVPeriodic() && v1 - v0 >= basis->VPeriod() * (1 - tiny);
-  Handle(Geom_Surface) bounded;
-  if (wholeU && wholeV)
-    bounded = basis;
-  else if (wholeU)
-    bounded = new Geom_RectangularTrimmedSurface(basis, v0, v1, Standard_False);
-  else if (wholeV)
-    bounded = new Geom_RectangularTrimmedSurface(basis, u0, u1, Standard_True);
-  else
-    bounded = new Geom_RectangularTrimmedSurface(basis, u0, u1, v0, v1);
-  result.nurbs = GeomConvert::SurfaceToBSplineSurface(bounded);
+  if (direct && !wholeV) result.nurbs = revolvedLineNurbs(basis, wholeU, u0, u1, v0, v1);
+  const bool revolvedLine = !result.nurbs.IsNull();
+  if (result.nurbs.IsNull()) {
+    Handle(Geom_Surface) bounded;
+    if (wholeU && wholeV)
+      bounded = basis;
+    else if (wholeU)
+      bounded = new Geom_RectangularTrimmedSurface(basis, v0, v1, Standard_False);
+    else if (wholeV)
+      bounded = new Geom_RectangularTrimmedSurface(basis, u0, u1, Standard_True);
+    else
+      bounded = new Geom_RectangularTrimmedSurface(basis, u0, u1, v0, v1);
+    result.nurbs = GeomConvert::SurfaceToBSplineSurface(bounded);
+  }
   if (result.nurbs.IsNull()) throw CadFaceError("GeomConvert gave no NURBS form");
   if (wholeU || wholeV) wholePeriodCut(result, wholeU, wholeV, u0, v0);
   if (result.nurbs->IsUPeriodic()) result.nurbs->SetUNotPeriodic();
@@ -295,7 +405,7 @@ CadSurface convertFaceSurface(const Handle(Geom_Surface)& basis, double u0, doub
   // Otherwise compare at a grid of interior points; if not the same, solve f and g and check
   // that they reproduce the surface (separability, see the header).
   if (basis->IsKind(STANDARD_TYPE(Geom_BSplineSurface))) {
-    result.pieces = rationalPieces(result.nurbs);
+    result.pieces = rationalPieces(result.nurbs, route);
     return result;
   }
   const double scale = std::max(1e-300, poleDiagonal(result.nurbs));
@@ -313,6 +423,14 @@ CadSurface convertFaceSurface(const Handle(Geom_Surface)& basis, double u0, doub
     result.reparametrised = true;
     result.uRef = longestIsoKnot(result, true);
     result.vRef = longestIsoKnot(result, false);
+    // A cylinder's or cone's NURBS from the Convert_ classes (revolvedLineNurbs) is a circle's
+    // times a line's, separable by construction: the check below (12 solves, 72 evaluations,
+    // a third of such a face's conversion) cannot fail there, and the GeomConvert route, which
+    // the tests compare with this one, still makes it.
+    if (revolvedLine) {
+      result.pieces = rationalPieces(result.nurbs, route);
+      return result;
+    }
     // The grid has 6 distinct u and 6 distinct v: 12 solves, not 72.
     double mappedU[std::size(fractions)], mappedV[std::size(fractions)];
     for (size_t k = 0; k < std::size(fractions); ++k) {
@@ -329,7 +447,7 @@ CadSurface convertFaceSurface(const Handle(Geom_Surface)& basis, double u0, doub
       throw CadFaceError("the NURBS form's parameters are not a separable change of the face's (off by " +
                          cad_detail::numberText(gap) + ")");
   }
-  result.pieces = rationalPieces(result.nurbs);
+  result.pieces = rationalPieces(result.nurbs, route);
   return result;
 }
 

@@ -34,7 +34,7 @@ class CadFaceError : public std::runtime_error {
 // the other).
 struct CadSurface {
   Handle(Geom_Surface) original;      // the face's surface, located (BRep_Tool::Surface)
-  Handle(Geom_BSplineSurface) nurbs;  // non-periodic, over the face's uv bounds
+  Handle(Geom_BSplineSurface) nurbs;  // non-periodic, over the face's uv bounds; null for a plane
   bool reparametrised = false;        // true when (u', v') ≠ (u, v) (a converted analytic surface)
   double uRef = 0.0, vRef = 0.0;      // the iso-lines f and g are solved on (see mapUv)
   std::vector<BezierPatchPiece> pieces;
@@ -57,8 +57,12 @@ Handle(Geom_Surface) faceBasisSurface(const TopoDS_Face& face);
 // direction). Throws CadFaceError (a zero-area face, a degree above 7, a surface GeomConvert
 // cannot convert exactly, a reparametrisation that does not check out) or lets
 // Standard_Failure through.
+// `route`: Direct builds planes, cylinders and cones without GeomConvert and cuts a NURBS whose
+// knots need no insertion into its blocks; GeomConvert takes GeomConvert and the knot insertion
+// for every surface, the reference the tests compare Direct with (the same bits).
+enum class ConversionRoute { Direct, GeomConvert };
 CadSurface convertFaceSurface(const Handle(Geom_Surface)& basis, double u0, double u1, double v0,
-                              double v1);
+                              double v1, ConversionRoute route = ConversionRoute::Direct);
 // The same over BRepTools::UVBounds (the pcurves' boxes; the import takes its loop points'
 // extent instead, to_trimmed.cpp).
 CadSurface convertFaceSurface(const TopoDS_Face& face);
