@@ -533,10 +533,10 @@ void requireSameNurbs(const Handle(Geom_BSplineSurface)& a, const Handle(Geom_BS
 TEST_CASE("cad: the direct conversions are GeomConvert's and the knot insertion's, bit for bit",
           "[cad]") {
   // convertFaceSurface's Direct route builds cylinders and cones from OCCT's Convert_ classes
-  // without GeomConvert's trimmed copy, and cuts a NURBS whose knots need no insertion into its
-  // blocks; the GeomConvert route takes GeomConvert and the insertion for every surface. Every
-  // face but the planes (their own test above) of half the library, both routes: the same NURBS,
-  // map and pieces, bit for bit.
+  // and segments a copy of a non-periodic B-spline, without GeomConvert's trimmed copy, and cuts
+  // a NURBS whose knots need no insertion into its blocks; the GeomConvert route takes
+  // GeomConvert and the insertion for every surface. Every face but the planes (their own test
+  // above) of the whole library, both routes: the same NURBS, map and pieces, bit for bit.
   const std::vector<std::string> files = idfFiles();
   REQUIRE(files.size() == 32);
   std::map<std::string, size_t> compared;

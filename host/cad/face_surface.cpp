@@ -373,6 +373,14 @@ CadSurface convertFaceSurface(const Handle(Geom_Surface)& basis, double u0, doub
   const bool wholeV = basis->IsVPeriodic() && v1 - v0 >= basis->VPeriod() * (1 - tiny);
   if (direct && !wholeV) result.nurbs = revolvedLineNurbs(basis, wholeU, u0, u1, v0, v1);
   const bool revolvedLine = !result.nurbs.IsNull();
+  // A non-periodic B-spline: GeomConvert copies it and segments the copy to the bounds, which
+  // are the face's (clamped above, as Geom_RectangularTrimmedSurface and GeomConvert clamp
+  // them); the trimmed surface it is handed first copies the B-spline once more.
+  if (direct && !basis->IsUPeriodic() && !basis->IsVPeriodic())
+    if (const auto* bspline = dynamic_cast<const Geom_BSplineSurface*>(basis.get())) {
+      result.nurbs = Handle(Geom_BSplineSurface)::DownCast(bspline->Copy());
+      result.nurbs->Segment(u0, u1, v0, v1);
+    }
   if (result.nurbs.IsNull()) {
     Handle(Geom_Surface) bounded;
     if (wholeU && wholeV)
