@@ -13,7 +13,13 @@
 #include <gp_Cone.hxx>
 #include <gp_Cylinder.hxx>
 #include <Geom_CylindricalSurface.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <Geom_BezierCurve.hxx>
+#include <Geom_Conic.hxx>
+#include <Geom_Line.hxx>
 #include <Geom_SphericalSurface.hxx>
+#include <Geom_SurfaceOfRevolution.hxx>
+#include <Geom_TrimmedCurve.hxx>
 #include <Geom_ToroidalSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <TColStd_Array1OfInteger.hxx>
@@ -276,6 +282,31 @@ Handle(Geom_BSplineSurface) revolvedLineNurbs(const Handle(Geom_Surface)& basis,
   return Handle(Geom_BSplineSurface)();
 }
 
+// True when GeomConvert converts the curve exactly (a line, a conic, a B-spline or Bézier
+// curve, trimmed or not), not by approximation (an offset curve, say).
+bool exactlyConvertedCurve(Handle(Geom_Curve) curve) {
+  while (const auto* trimmed = dynamic_cast<const Geom_TrimmedCurve*>(curve.get()))
+    curve = trimmed->BasisCurve();
+  return curve->IsKind(STANDARD_TYPE(Geom_Line)) || curve->IsKind(STANDARD_TYPE(Geom_Conic)) ||
+         curve->IsKind(STANDARD_TYPE(Geom_BSplineCurve)) ||
+         curve->IsKind(STANDARD_TYPE(Geom_BezierCurve));
+}
+
+// True when GeomConvert's NURBS of the surface is a tensor product of exact curve conversions,
+// so the change of parameters is separable by construction: a cylinder, cone, sphere or torus
+// (the Convert_ classes: a circle times a line or a circle), a surface of revolution whose
+// meridian converts exactly (GeomConvert rotates the meridian's poles: a circle times it).
+bool separableByConstruction(const Handle(Geom_Surface)& basis) {
+  if (basis->IsKind(STANDARD_TYPE(Geom_CylindricalSurface)) ||
+      basis->IsKind(STANDARD_TYPE(Geom_ConicalSurface)) ||
+      basis->IsKind(STANDARD_TYPE(Geom_SphericalSurface)) ||
+      basis->IsKind(STANDARD_TYPE(Geom_ToroidalSurface)))
+    return true;
+  if (const auto* revolution = dynamic_cast<const Geom_SurfaceOfRevolution*>(basis.get()))
+    return exactlyConvertedCurve(revolution->BasisCurve());
+  return false;
+}
+
 }  // namespace
 
 double CadSurface::mapParameter(double t, bool alongU) const {
@@ -372,7 +403,6 @@ CadSurface convertFaceSurface(const Handle(Geom_Surface)& basis, double u0, doub
   const bool wholeU = basis->IsUPeriodic() && u1 - u0 >= basis->UPeriod() * (1 - tiny);
   const bool wholeV = basis->IsVPeriodic() && v1 - v0 >= basis->VPeriod() * (1 - tiny);
   if (direct && !wholeV) result.nurbs = revolvedLineNurbs(basis, wholeU, u0, u1, v0, v1);
-  const bool revolvedLine = !result.nurbs.IsNull();
   // A non-periodic B-spline: GeomConvert copies it and segments the copy to the bounds, which
   // are the face's (clamped above, as Geom_RectangularTrimmedSurface and GeomConvert clamp
   // them); the trimmed surface it is handed first copies the B-spline once more.
@@ -421,21 +451,28 @@ CadSurface convertFaceSurface(const Handle(Geom_Surface)& basis, double u0, doub
   // Fractions that are neither knots nor span middles of an even split, where the angle and
   // the rational parameter agree.
   const double fractions[] = {0.0613, 0.2371, 0.4159, 0.5873, 0.7741, 0.9387};
-  double identityGap = 0.0;
-  for (double fu : fractions)
-    for (double fv : fractions) {
-      const double u = n0 + (n1 - n0) * fu, v = m0 + (m1 - m0) * fv;
-      identityGap = std::max(identityGap, result.nurbs->Value(u, v).Distance(basis->Value(u, v)));
+  // Only whether some point of the grid is off by more than 1e-10 of the size matters: the
+  // first such point settles it. The diagonal first (every u and every v among its six).
+  const double identityTolerance = 1e-10 * scale;
+  bool sameParameters = true;
+  for (size_t shift = 0; shift < std::size(fractions) && sameParameters; ++shift)
+    for (size_t i = 0; i < std::size(fractions); ++i) {
+      const double u = n0 + (n1 - n0) * fractions[i];
+      const double v = m0 + (m1 - m0) * fractions[(i + shift) % std::size(fractions)];
+      if (result.nurbs->Value(u, v).Distance(basis->Value(u, v)) > identityTolerance) {
+        sameParameters = false;
+        break;
+      }
     }
-  if (identityGap > 1e-10 * scale) {
+  if (!sameParameters) {
     result.reparametrised = true;
     result.uRef = longestIsoKnot(result, true);
     result.vRef = longestIsoKnot(result, false);
-    // A cylinder's or cone's NURBS from the Convert_ classes (revolvedLineNurbs) is a circle's
-    // times a line's, separable by construction: the check below (12 solves, 72 evaluations,
-    // a third of such a face's conversion) cannot fail there, and the GeomConvert route, which
-    // the tests compare with this one, still makes it.
-    if (revolvedLine) {
+    // A NURBS that is a tensor product of exact curve conversions (separableByConstruction)
+    // passes the check below (12 solves, 72 evaluations, most of such a face's conversion)
+    // by construction; the GeomConvert route, which the tests compare with this one, still
+    // makes it.
+    if (direct && separableByConstruction(basis)) {
       result.pieces = rationalPieces(result.nurbs, route);
       return result;
     }
