@@ -8,7 +8,10 @@
 // surface the NURBS parameter (u', v') differs from the face's (u, v) inside each span. OCCT
 // converts these surfaces as tensor products, so the change is separable: u' = f(u),
 // v' = g(v), with f and g fixing the knots. mapUv finds f and g by Newton's method on one
-// iso-line per direction and the conversion checks the result at interior points.
+// iso-line per direction and the conversion checks the result at interior points (not where
+// the NURBS is a tensor product of exact curve conversions, separable by construction).
+// Planes, cylinders, cones and non-periodic B-splines skip GeomConvert itself for what it would
+// give them, bit for bit (docs/cad.md, "Surfaces").
 #pragma once
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_Surface.hxx>
