@@ -5,6 +5,11 @@
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCone.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <TopLoc_Location.hxx>
+#include <gp_Ax1.hxx>
+#include <gp_Trsf.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -528,6 +533,52 @@ void requireSameNurbs(const Handle(Geom_BSplineSurface)& a, const Handle(Geom_BS
     }
 }
 
+// Both routes of convertFaceSurface on every non-planar face of `in`, bit for bit: the same
+// NURBS, map and pieces. Counts the faces by surface kind (and "whole u" where a face wraps its
+// u period), and in `blocks` those whose NURBS needed no knot insertion.
+void requireSameRoutes(const CadImport& in, std::map<std::string, size_t>& compared, size_t& blocks) {
+  for (size_t f = 0; f < in.model.faces.size(); ++f) {
+    INFO("face " << in.model.faces[f].faceIndex);
+    const TopoDS_Face face = TopoDS::Face(
+        in.faces(int(in.model.faces[f].faceIndex) + 1).Oriented(TopAbs_FORWARD));
+    const Handle(Geom_Surface) basis = faceBasisSurface(face);
+    if (basis->IsKind(STANDARD_TYPE(Geom_Plane))) continue;
+    const std::array<double, 4>& b = in.uvBounds[f];
+    const CadSurface direct = convertFaceSurface(basis, b[0], b[1], b[2], b[3]);
+    const CadSurface reference =
+        convertFaceSurface(basis, b[0], b[1], b[2], b[3], ConversionRoute::GeomConvert);
+    requireSameNurbs(direct.nurbs, reference.nurbs);
+    REQUIRE(direct.reparametrised == reference.reparametrised);
+    REQUIRE(std::memcmp(&direct.uRef, &reference.uRef, sizeof direct.uRef) == 0);
+    REQUIRE(std::memcmp(&direct.vRef, &reference.vRef, sizeof direct.vRef) == 0);
+    REQUIRE(direct.pieces.size() == reference.pieces.size());
+    for (size_t p = 0; p < direct.pieces.size(); ++p) {
+      const BezierPatchPiece &x = direct.pieces[p], &y = reference.pieces[p];
+      REQUIRE(std::memcmp(&x.u0, &y.u0, sizeof x.u0) == 0);
+      REQUIRE(std::memcmp(&x.u1, &y.u1, sizeof x.u1) == 0);
+      REQUIRE(std::memcmp(&x.v0, &y.v0, sizeof x.v0) == 0);
+      REQUIRE(std::memcmp(&x.v1, &y.v1, sizeof x.v1) == 0);
+      REQUIRE(x.patch.degreeU == y.patch.degreeU);
+      REQUIRE(x.patch.degreeV == y.patch.degreeV);
+      REQUIRE(x.patch.cp.size() == y.patch.cp.size());
+      REQUIRE(std::memcmp(x.patch.cp.data(), y.patch.cp.data(),
+                          x.patch.cp.size() * sizeof(glm::dvec3)) == 0);
+      REQUIRE(x.patch.weights.size() == y.patch.weights.size());
+      REQUIRE(std::memcmp(x.patch.weights.data(), y.patch.weights.data(),
+                          x.patch.weights.size() * sizeof(double)) == 0);
+    }
+    const std::string kind = basis->DynamicType()->Name();
+    ++compared[kind];
+    if (basis->IsUPeriodic() && b[1] - b[0] >= basis->UPeriod() * (1 - 1e-9))
+      ++compared["whole u " + kind];
+    // The blocks' case: a NURBS with no knot to insert (every conic's and line's).
+    const Handle(Geom_BSplineSurface)& s = direct.nurbs;
+    if (s->NbUPoles() == (s->NbUKnots() - 1) * s->UDegree() + 1 &&
+        s->NbVPoles() == (s->NbVKnots() - 1) * s->VDegree() + 1)
+      ++blocks;
+  }
+}
+
 }  // namespace
 
 TEST_CASE("cad: the direct conversions are GeomConvert's and the knot insertion's, bit for bit",
@@ -541,50 +592,44 @@ TEST_CASE("cad: the direct conversions are GeomConvert's and the knot insertion'
   REQUIRE(files.size() == 32);
   std::map<std::string, size_t> compared;
   size_t blocks = 0;
-  for (size_t k = 0; k < files.size(); k += 1) {
-    INFO(files[k]);
-    const CadFile file = readCadFile(files[k]);
-    const CadImport in = toTrimmedModel(file, defaultCadTolerance(file.shape));
-    for (size_t f = 0; f < in.model.faces.size(); ++f) {
-      INFO("face " << in.model.faces[f].faceIndex);
-      const TopoDS_Face face = TopoDS::Face(
-          in.faces(int(in.model.faces[f].faceIndex) + 1).Oriented(TopAbs_FORWARD));
-      const Handle(Geom_Surface) basis = faceBasisSurface(face);
-      if (basis->IsKind(STANDARD_TYPE(Geom_Plane))) continue;
-      const std::array<double, 4>& b = in.uvBounds[f];
-      const CadSurface direct = convertFaceSurface(basis, b[0], b[1], b[2], b[3]);
-      const CadSurface reference =
-          convertFaceSurface(basis, b[0], b[1], b[2], b[3], ConversionRoute::GeomConvert);
-      requireSameNurbs(direct.nurbs, reference.nurbs);
-      REQUIRE(direct.reparametrised == reference.reparametrised);
-      REQUIRE(std::memcmp(&direct.uRef, &reference.uRef, sizeof direct.uRef) == 0);
-      REQUIRE(std::memcmp(&direct.vRef, &reference.vRef, sizeof direct.vRef) == 0);
-      REQUIRE(direct.pieces.size() == reference.pieces.size());
-      for (size_t p = 0; p < direct.pieces.size(); ++p) {
-        const BezierPatchPiece &x = direct.pieces[p], &y = reference.pieces[p];
-        REQUIRE(std::memcmp(&x.u0, &y.u0, sizeof x.u0) == 0);
-        REQUIRE(std::memcmp(&x.u1, &y.u1, sizeof x.u1) == 0);
-        REQUIRE(std::memcmp(&x.v0, &y.v0, sizeof x.v0) == 0);
-        REQUIRE(std::memcmp(&x.v1, &y.v1, sizeof x.v1) == 0);
-        REQUIRE(x.patch.degreeU == y.patch.degreeU);
-        REQUIRE(x.patch.degreeV == y.patch.degreeV);
-        REQUIRE(x.patch.cp.size() == y.patch.cp.size());
-        REQUIRE(std::memcmp(x.patch.cp.data(), y.patch.cp.data(),
-                            x.patch.cp.size() * sizeof(glm::dvec3)) == 0);
-        REQUIRE(x.patch.weights == y.patch.weights);
-        REQUIRE(std::memcmp(x.patch.weights.data(), y.patch.weights.data(),
-                            x.patch.weights.size() * sizeof(double)) == 0);
-      }
-      ++compared[basis->DynamicType()->Name()];
-      // The blocks' case: a NURBS with no knot to insert (every conic's and line's).
-      const Handle(Geom_BSplineSurface)& s = direct.nurbs;
-      if (s->NbUPoles() == (s->NbUKnots() - 1) * s->UDegree() + 1 &&
-          s->NbVPoles() == (s->NbVKnots() - 1) * s->VDegree() + 1)
-        ++blocks;
-    }
+  for (const std::string& path : files) {
+    INFO(path);
+    const CadFile file = readCadFile(path);
+    requireSameRoutes(toTrimmedModel(file, defaultCadTolerance(file.shape)), compared, blocks);
   }
   for (const auto& [kind, count] : compared) UNSCOPED_INFO(kind << ": " << count);
   CHECK(compared["Geom_CylindricalSurface"] > 200);
+  CHECK(compared["whole u Geom_CylindricalSurface"] >= 4);
   CHECK(compared["Geom_ConicalSurface"] > 10);
   CHECK(blocks > 300);
+}
+
+TEST_CASE("cad: the direct conversions match GeomConvert on whole and partial cones and cylinders",
+          "[cad]") {
+  // The library has no cone that wraps its period: OCCT's solids of revolution, whole and cut
+  // to an angle, moved off the origin and turned (located faces), and the other test shapes.
+  gp_Trsf moved;
+  moved.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 2, 3)), 0.7);
+  moved.SetTranslationPart(gp_Vec(3.0, -1.5, 20.0));
+  std::vector<test::NamedShape> shapes = test::occtTestShapes();
+  shapes.push_back({"cone", BRepPrimAPI_MakeCone(1.0, 0.4, 2.0).Shape()});
+  shapes.push_back({"cone, 100°", BRepPrimAPI_MakeCone(1.0, 0.4, 2.0, 100.0 * M_PI / 180.0).Shape()});
+  shapes.push_back({"cylinder, 250°", BRepPrimAPI_MakeCylinder(0.7, 1.5, 250.0 * M_PI / 180.0).Shape()});
+  shapes.push_back({"cone, moved", BRepPrimAPI_MakeCone(1.0, 0.4, 2.0).Shape().Moved(TopLoc_Location(moved))});
+  shapes.push_back({"cone, 200°, moved",
+                    BRepPrimAPI_MakeCone(0.3, 1.1, 0.8, 200.0 * M_PI / 180.0).Shape().Moved(TopLoc_Location(moved))});
+  shapes.push_back({"cylinder, 30°, moved",
+                    BRepPrimAPI_MakeCylinder(0.7, 1.5, 30.0 * M_PI / 180.0).Shape().Moved(TopLoc_Location(moved))});
+  std::map<std::string, size_t> compared;
+  size_t blocks = 0;
+  for (const test::NamedShape& named : shapes) {
+    INFO(named.name);
+    requireSameRoutes(toTrimmedModel(CadFile{named.name, named.shape, {}}, 0.01), compared, blocks);
+  }
+  for (const auto& [kind, count] : compared) UNSCOPED_INFO(kind << ": " << count);
+  CHECK(compared["whole u Geom_ConicalSurface"] >= 2);
+  CHECK(compared["Geom_ConicalSurface"] >= 4);  // two whole, two cut to an angle
+  CHECK(compared["whole u Geom_CylindricalSurface"] >= 1);
+  CHECK(compared["Geom_CylindricalSurface"] >= 4);
+  CHECK(blocks >= 8);
 }
