@@ -34,6 +34,7 @@
 
 #include "bspline/bspline.h"
 #include "cad/detail/number_text.h"
+#include "cad/iso_line_d1.h"
 #include "common/hash_map.h"
 #include "geometry/bezier.h"
 
@@ -311,6 +312,11 @@ bool separableByConstruction(const Handle(Geom_Surface)& basis) {
 
 double CadSurface::mapParameter(double t, bool alongU) const {
   if (!reparametrised) return t;
+  IsoLineD1 line(*nurbs, alongU, alongU ? vRef : uRef);
+  return solveParameter(t, alongU, line);
+}
+
+double CadSurface::solveParameter(double t, bool alongU, IsoLineD1& line) const {
   // Gauss–Newton on |N(u', vRef) − S(u, vRef)|² (and likewise for v): vRef is a knot, which
   // both parametrisations share, so the iso-lines are the same curve.
   const gp_Pnt target = alongU ? original->Value(t, vRef) : original->Value(uRef, t);
@@ -320,9 +326,8 @@ double CadSurface::mapParameter(double t, bool alongU) const {
   double x = t;
   for (int iteration = 0; iteration < 40; ++iteration) {
     gp_Pnt p;
-    gp_Vec du, dv;
-    nurbs->D1(alongU ? x : uRef, alongU ? vRef : x, p, du, dv);
-    const gp_Vec d = alongU ? du : dv;
+    gp_Vec d;
+    line.d1(x, p, d);
     const double dd = d.SquareMagnitude();
     if (dd == 0.0) break;
     // A step never leaves the domain by more than its width (the map fixes the ends).
@@ -347,11 +352,13 @@ std::vector<glm::dvec2> CadSurface::mapUvs(const std::vector<gp_Pnt2d>& uvs) con
   // Keyed by the bits, so −0 and +0 (equal as doubles) keep their own solves; flat maps, no
   // node allocated per coordinate.
   HashMap<uint64_t, double> solved[2];
+  // One evaluator per direction: the fixed knot's span found once, the moving one's kept.
+  IsoLineD1 lines[2] = {IsoLineD1(*nurbs, true, vRef), IsoLineD1(*nurbs, false, uRef)};
   const auto solve = [&](double t, bool alongU) {
     uint64_t bits;
     std::memcpy(&bits, &t, sizeof bits);
     const auto [it, fresh] = solved[alongU ? 0 : 1].try_emplace(bits, 0.0);
-    if (fresh) it.value() = mapParameter(t, alongU);
+    if (fresh) it.value() = solveParameter(t, alongU, lines[alongU ? 0 : 1]);
     return it->second;
   };
   for (const gp_Pnt2d& uv : uvs) mapped.push_back({solve(uv.X(), true), solve(uv.Y(), false)});

@@ -35,6 +35,8 @@ class CadFaceError : public std::runtime_error {
 // Not trim/face_surface.h's FaceSurface (the mesher's evaluator of a TrimmedFace): one name for
 // two classes in one namespace broke the one-definition rule (ASan saw one's destructor run on
 // the other).
+class IsoLineD1;
+
 struct CadSurface {
   Handle(Geom_Surface) original;      // the face's surface, located (BRep_Tool::Surface)
   Handle(Geom_BSplineSurface) nurbs;  // non-periodic, over the face's uv bounds; null for a plane
@@ -49,6 +51,10 @@ struct CadSurface {
   // mapUv of every point, each distinct coordinate solved once (a circle's points share their v
   // on a cylinder, a line's their u): the same doubles as mapUv point by point.
   std::vector<glm::dvec2> mapUvs(const std::vector<gp_Pnt2d>& uvs) const;
+
+ private:
+  // mapParameter's solve on `line` (the iso-line through vRef, alongU, or uRef).
+  double solveParameter(double t, bool alongU, IsoLineD1& line) const;
 };
 
 // The face's surface (located, BRep_Tool::Surface) without its Geom_RectangularTrimmedSurface
