@@ -120,7 +120,8 @@ ImportFigures checkImport(const CadFile& file) {
   std::set<std::pair<uint32_t, uint32_t>> warnedPoints;  // (face, point id) on a warned edge
   for (const auto& warning : in.warnings) {
     std::printf("  warning: %s\n", warning.message.c_str());
-    for (uint32_t id : in.edgeSamples[warning.edgeIndex].pointIds) warnedPoints.insert({warning.faceIndex, id});
+    for (size_t k = 0; k < in.edgeSamples[warning.edgeIndex].params.size(); ++k)
+      warnedPoints.insert({warning.faceIndex, in.edgeSamples[warning.edgeIndex].pointId(k)});
   }
   CHECK(in.model.faces.size() + in.failures.size() == static_cast<size_t>(in.faces.Extent()));
   CHECK(in.maxChordDeviation <= delta);
@@ -128,8 +129,8 @@ ImportFigures checkImport(const CadFile& file) {
   // Segments of the edges' samples: each loop step must be one of them (closed loops of edges).
   std::set<IdPair> edgeSegments;
   for (const auto& samples : in.edgeSamples)
-    for (size_t k = 0; k + 1 < samples.pointIds.size(); ++k)
-      edgeSegments.insert(unordered(samples.pointIds[k], samples.pointIds[k + 1]));
+    for (size_t k = 0; k + 1 < samples.params.size(); ++k)
+      edgeSegments.insert(unordered(samples.pointId(k), samples.pointId(k + 1)));
   std::map<IdPair, std::set<uint32_t>> facesOfSegment;
 
   for (size_t f = 0; f < in.model.faces.size(); ++f) {
@@ -220,7 +221,7 @@ ImportFigures checkImport(const CadFile& file) {
       for (const auto& f : edgeFaces.FindFromKey(in.edges(e)))
         if (!failed.count(static_cast<uint32_t>(in.faces.FindIndex(f) - 1)))
           expected.insert(static_cast<uint32_t>(in.faces.FindIndex(f) - 1));
-    const IdPair first = unordered(samples.pointIds[0], samples.pointIds[1]);
+    const IdPair first = unordered(samples.pointId(0), samples.pointId(1));
     const std::set<uint32_t> used = facesOfSegment.count(first) ? facesOfSegment.at(first) : std::set<uint32_t>{};
     if (used != expected) ++mismatched;
   }

@@ -59,7 +59,8 @@ std::string importBytes(const CadImport& in) {
   }
   b.add(in.uvBounds);
   for (const EdgeSamples& e : in.edgeSamples) {
-    b.add(e.params), b.add(e.pointIds), b.add(e.curvePoints);
+    b.add(e.params), b.add(e.curvePoints);
+    for (size_t k = 0; k < e.params.size(); ++k) b.add(e.pointId(k));
     b.add(e.degenerated), b.add(e.maxChordDeviation), b.add(e.tolerance);
   }
   for (const CadFaceFailure& f : in.failures) b.add(f.faceIndex), b.add(f.message);

@@ -8,13 +8,13 @@
 #include <TopoDS_Vertex.hxx>
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace tessera {
 namespace {
 
 constexpr int kChecksPerSegment = 15;
 constexpr int kMaxDepth = 24;
-constexpr uint32_t kUnsharedSample = UINT32_MAX;  // an interior id until shareInteriorSamples
 
 glm::dvec3 toGlm(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 
@@ -25,33 +25,50 @@ double pointSegmentDistance(glm::dvec3 p, glm::dvec3 a, glm::dvec3 b) {
   return glm::length(p - (a + t * ab));
 }
 
-// Largest distance from the curve on [a, b] to the chord: for a circle (parametrised by angle)
-// its sagitta R·(1 − cos((b − a)/2)), exactly; otherwise measured at kChecksPerSegment samples.
-double chordDeviation(const BRepAdaptor_Curve& curve, double a, double b) {
-  if (curve.GetType() == GeomAbs_Circle) {
-    const double s = std::sin(0.25 * (b - a));
-    return curve.Circle().Radius() * 2.0 * s * s;
-  }
-  const glm::dvec3 pa = toGlm(curve.Value(a)), pb = toGlm(curve.Value(b));
+glm::dvec3 pointAt(const BRepAdaptor_Curve& curve, double t) { return toGlm(curve.Value(t)); }
+
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// A circle's (parametrised by angle) largest distance to the chord of [a, b]: its sagitta
+// R·(1 − cos((b − a)/2)), exactly.
+double circleSagitta(const BRepAdaptor_Curve& curve, double a, double b) {
+  const double s = std::sin(0.25 * (b - a));
+  return curve.Circle().Radius() * 2.0 * s * s;
+}
+
+// Largest distance from the curve on [a, b] to the chord pa pb (its points at a and b), measured
+// at kChecksPerSegment samples; the middle sample's parameter and point go to `middle`.
+double measuredDeviation(const BRepAdaptor_Curve& curve, double a, double b, glm::dvec3 pa,
+                         glm::dvec3 pb, double& middleT, glm::dvec3& middle) {
   double worst = 0.0;
   for (int k = 1; k <= kChecksPerSegment; ++k) {
     const double t = a + (b - a) * k / (kChecksPerSegment + 1.0);
-    worst = std::max(worst, pointSegmentDistance(toGlm(curve.Value(t)), pa, pb));
+    const glm::dvec3 p = pointAt(curve, t);
+    if (2 * k == kChecksPerSegment + 1) middleT = t, middle = p;
+    worst = std::max(worst, pointSegmentDistance(p, pa, pb));
   }
   return worst;
 }
 
-void refine(const BRepAdaptor_Curve& curve, double a, double b, double delta, int depth,
-            std::vector<double>& params, double& worst) {
-  const double deviation = chordDeviation(curve, a, b);
+// Halves [a, b] while the curve lies farther than delta from its chord; each kept segment's end
+// and its point are appended. Every point is evaluated once, at its own parameter: the ends come
+// from the parent, the middle from the parent's middle check where the parameters agree.
+void refine(const BRepAdaptor_Curve& curve, double a, double b, glm::dvec3 pa, glm::dvec3 pb,
+            double delta, int depth, std::vector<double>& params, std::vector<glm::dvec3>& points,
+            double& worst) {
+  double middleT = 0.0;
+  glm::dvec3 middle(0.0);
+  const double deviation = measuredDeviation(curve, a, b, pa, pb, middleT, middle);
   if (deviation > delta && depth < kMaxDepth) {
     const double m = 0.5 * (a + b);
-    refine(curve, a, m, delta, depth + 1, params, worst);
-    refine(curve, m, b, delta, depth + 1, params, worst);
+    const glm::dvec3 pm = sameBits(m, middleT) ? middle : pointAt(curve, m);
+    refine(curve, a, m, pa, pm, delta, depth + 1, params, points, worst);
+    refine(curve, m, b, pm, pb, delta, depth + 1, params, points, worst);
     return;
   }
   worst = std::max(worst, deviation);
   params.push_back(b);
+  points.push_back(pb);
 }
 
 uint32_t vertexId(const TopoDS_Vertex& v, const TopTools_IndexedMapOfShape& vertices) {
@@ -73,49 +90,59 @@ EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta,
 
   if (BRep_Tool::Degenerated(edge)) {
     samples.degenerated = true;
-    for (int k = 0; k <= 8; ++k) {
-      samples.params.push_back(first + (last - first) * k / 8.0);
-      samples.pointIds.push_back(id0);
-    }
+    for (int k = 0; k <= 8; ++k) samples.params.push_back(first + (last - first) * k / 8.0);
+    samples.firstId = samples.lastId = id0;
     return samples;
   }
   BRepAdaptor_Curve curve(edge);
   samples.params.reserve(16);  // most edges take fewer: one allocation, not five
   samples.params.push_back(first);
-  if (curve.GetType() == GeomAbs_Line) {
-    samples.params.push_back(last);
-  } else if (curve.GetType() == GeomAbs_Circle) {
-    // Parametrised by angle, so the fewest equal segments whose sagitta R·(1 − cos(Δt/2)) is
-    // within δ (at least 4, as below), not a power of two of them.
-    const double radius = curve.Circle().Radius();
-    const double widest = radius > delta ? 2.0 * std::acos(1.0 - delta / radius) : last - first;
-    int count = std::max(4, int(std::ceil((last - first) / widest)));
-    while (chordDeviation(curve, first, first + (last - first) / count) > delta) ++count;  // rounding
-    samples.params.reserve(size_t(count) + 1);
-    for (int k = 1; k <= count; ++k) samples.params.push_back(first + (last - first) * k / count);
-    samples.maxChordDeviation = chordDeviation(curve, first, first + (last - first) / count);
+  const GeomAbs_CurveType type = curve.GetType();
+  if (type == GeomAbs_Line || type == GeomAbs_Circle) {
+    if (type == GeomAbs_Line) {
+      samples.params.push_back(last);
+    } else {
+      // Parametrised by angle, so the fewest equal segments whose sagitta R·(1 − cos(Δt/2)) is
+      // within δ (at least 4, as below), not a power of two of them.
+      const double radius = curve.Circle().Radius();
+      const double widest = radius > delta ? 2.0 * std::acos(1.0 - delta / radius) : last - first;
+      int count = std::max(4, int(std::ceil((last - first) / widest)));
+      while (circleSagitta(curve, first, first + (last - first) / count) > delta) ++count;  // rounding
+      samples.params.reserve(size_t(count) + 1);
+      for (int k = 1; k <= count; ++k) samples.params.push_back(first + (last - first) * k / count);
+      samples.maxChordDeviation = circleSagitta(curve, first, first + (last - first) / count);
+    }
+    // The ends at the range's own ends (the last parameter can be an ulp from `last`).
+    samples.curvePoints.reserve(samples.params.size());
+    samples.curvePoints.push_back(pointAt(curve, first));
+    for (size_t k = 1; k + 1 < samples.params.size(); ++k)
+      samples.curvePoints.push_back(pointAt(curve, samples.params[k]));
+    samples.curvePoints.push_back(pointAt(curve, last));
   } else {
-    for (int k = 0; k < 4; ++k)
-      refine(curve, first + (last - first) * k / 4.0, first + (last - first) * (k + 1) / 4.0,
-             delta, 0, samples.params, samples.maxChordDeviation);
+    // Any other curve: its points come with the bisection, each evaluated once.
+    samples.curvePoints.reserve(16);
+    glm::dvec3 previous = pointAt(curve, first + (last - first) * 0 / 4.0);
+    const glm::dvec3 atFirst = sameBits(first + (last - first) * 0 / 4.0, first) ? previous : pointAt(curve, first);
+    samples.curvePoints.push_back(atFirst);
+    for (int k = 0; k < 4; ++k) {
+      const double a = first + (last - first) * k / 4.0, b = first + (last - first) * (k + 1) / 4.0;
+      const glm::dvec3 next = pointAt(curve, b);
+      refine(curve, a, b, previous, next, delta, 0, samples.params, samples.curvePoints,
+             samples.maxChordDeviation);
+      previous = next;
+    }
+    // The end at the range's own end (the last parameter can be an ulp from `last`).
+    if (!sameBits(samples.params.back(), last)) samples.curvePoints.back() = pointAt(curve, last);
   }
-  // The ends at the range's own ends (the last parameter can be an ulp from `last`).
-  samples.curvePoints.reserve(samples.params.size());
-  samples.curvePoints.push_back(toGlm(curve.Value(first)));
-  for (size_t k = 1; k + 1 < samples.params.size(); ++k)
-    samples.curvePoints.push_back(toGlm(curve.Value(samples.params[k])));
-  samples.curvePoints.push_back(toGlm(curve.Value(last)));
-  // The interior ids come with shareInteriorSamples.
-  samples.pointIds.assign(samples.params.size(), kUnsharedSample);
-  samples.pointIds.front() = id0;
-  samples.pointIds.back() = id1;
+  samples.firstId = id0;
+  samples.lastId = id1;
   return samples;
 }
 
 void shareInteriorSamples(EdgeSamples& samples, SharedPoints& points) {
   if (samples.degenerated) return;
+  samples.firstInteriorId = static_cast<uint32_t>(points.positions.size());
   for (size_t k = 1; k + 1 < samples.params.size(); ++k) {
-    samples.pointIds[k] = static_cast<uint32_t>(points.positions.size());
     points.positions.push_back(samples.curvePoints[k]);
     points.tolerances.push_back(samples.tolerance);
   }

@@ -10,8 +10,11 @@
 namespace tessera {
 
 struct EdgeSamples {
-  std::vector<double> params;      // increasing, first and last the edge's range
-  std::vector<uint32_t> pointIds;  // one per parameter; the ends are the vertices' points
+  std::vector<double> params;  // increasing, first and last the edge's range
+  // The shared points of the parameters: the ends are the vertices' points (firstId, lastId),
+  // the interior ones consecutive from firstInteriorId (shareInteriorSamples numbers them), all
+  // firstId on a degenerated edge. Kept as three numbers, not a vector per edge (an allocation).
+  uint32_t firstId = 0, lastId = 0, firstInteriorId = 0;
   // The edge's 3D curve at each parameter (its ends within the vertices' tolerance of their
   // points); empty for a degenerated edge. A plane's pcurve, where the file stores none, is the
   // projection of these (BRep_Tool::CurveOnPlane), which the import takes directly.
@@ -19,6 +22,13 @@ struct EdgeSamples {
   bool degenerated = false;        // a pole: every id is the vertex's
   double maxChordDeviation = 0.0;  // exact for circles, measured otherwise (discretiseEdge)
   double tolerance = 0.0;          // the edge's OCCT tolerance, its interior points' tolerance
+
+  // The shared point of parameter k.
+  uint32_t pointId(size_t k) const {
+    if (degenerated || k == 0) return firstId;
+    if (k + 1 == params.size()) return lastId;
+    return firstInteriorId + static_cast<uint32_t>(k - 1);
+  }
 };
 
 struct SharedPoints {

@@ -69,10 +69,10 @@ WireEdge wireEdge(const TopoDS_Edge& edge, const CadImport& in) {
   const int index = in.edges.FindIndex(edge);
   if (index == 0) throw CadFaceError("a wire edge is not in the shape's edge map");
   WireEdge out{edge, size_t(index - 1), 0, 0};
-  const std::vector<uint32_t>& ids = in.edgeSamples[out.index].pointIds;
+  const EdgeSamples& samples = in.edgeSamples[out.index];
   const bool reversed = edge.Orientation() == TopAbs_REVERSED;
-  out.firstId = reversed ? ids.back() : ids.front();
-  out.lastId = reversed ? ids.front() : ids.back();
+  out.firstId = reversed ? samples.lastId : samples.firstId;
+  out.lastId = reversed ? samples.firstId : samples.lastId;
   return out;
 }
 
@@ -202,8 +202,8 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
     const double f = samples.params.front(), l = samples.params.back();
     const bool reversed = edge.Orientation() == TopAbs_REVERSED;
     const size_t n = samples.params.size();
-    if (e == 0) firstId = samples.pointIds[reversed ? n - 1 : 0];
-    else if (samples.pointIds[reversed ? n - 1 : 0] != lastId)
+    if (e == 0) firstId = samples.pointId(reversed ? n - 1 : 0);
+    else if (samples.pointId(reversed ? n - 1 : 0) != lastId)
       throw CadFaceError("the wire is not connected at edge " + std::to_string(index - 1));
     double gap = 0.0;
     for (size_t k = 0; k < n; ++k) {
@@ -221,10 +221,10 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
       }
       const gp_Pnt onSurface = basis->Value(uv.X(), uv.Y());
       gap = std::max(gap, glm::length(glm::dvec3(onSurface.X(), onSurface.Y(), onSurface.Z()) -
-                                      in.model.sharedPoints[samples.pointIds[s]]));
+                                      in.model.sharedPoints[samples.pointId(s)]));
       if (k + 1 == n) break;  // the next edge's first point
       loop.uv.push_back(uv);
-      loop.pointIds.push_back(samples.pointIds[s]);
+      loop.pointIds.push_back(samples.pointId(s));
     }
     const double tolerance = BRep_Tool::Tolerance(edge);
     if (!samples.degenerated && gap > tolerance + 1e-3 * in.delta)
@@ -232,7 +232,7 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
                              path + ": " + label + ": edge " + std::to_string(index - 1) +
                                  ": its 3D curve and pcurve are " + cad_detail::numberText(gap) +
                                  " apart, beyond its tolerance " + cad_detail::numberText(tolerance)});
-    lastId = samples.pointIds[reversed ? 0 : n - 1];
+    lastId = samples.pointId(reversed ? 0 : n - 1);
   }
   if (edges.empty() || lastId != firstId) throw CadFaceError("a wire is not closed");
   if (loop.uv.size() < 2) throw CadFaceError("a wire has fewer than two points");
