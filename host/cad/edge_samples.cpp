@@ -90,17 +90,18 @@ EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta,
 
   if (BRep_Tool::Degenerated(edge)) {
     samples.degenerated = true;
+    samples.params.reserve(9);
     for (int k = 0; k <= 8; ++k) samples.params.push_back(first + (last - first) * k / 8.0);
     samples.firstId = samples.lastId = id0;
     return samples;
   }
   BRepAdaptor_Curve curve(edge);
-  samples.params.reserve(16);  // most edges take fewer: one allocation, not five
-  samples.params.push_back(first);
+  // Each vector allocated once, at its size: a free-form edge's bisection grows this thread's
+  // scratch vectors instead (malloc was a third of the edges' time).
   const GeomAbs_CurveType type = curve.GetType();
   if (type == GeomAbs_Line || type == GeomAbs_Circle) {
     if (type == GeomAbs_Line) {
-      samples.params.push_back(last);
+      samples.params = {first, last};
     } else {
       // Parametrised by angle, so the fewest equal segments whose sagitta R·(1 − cos(Δt/2)) is
       // within δ (at least 4, as below), not a power of two of them.
@@ -109,6 +110,7 @@ EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta,
       int count = std::max(4, int(std::ceil((last - first) / widest)));
       while (circleSagitta(curve, first, first + (last - first) / count) > delta) ++count;  // rounding
       samples.params.reserve(size_t(count) + 1);
+      samples.params.push_back(first);
       for (int k = 1; k <= count; ++k) samples.params.push_back(first + (last - first) * k / count);
       samples.maxChordDeviation = circleSagitta(curve, first, first + (last - first) / count);
     }
@@ -120,19 +122,21 @@ EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta,
     samples.curvePoints.push_back(pointAt(curve, last));
   } else {
     // Any other curve: its points come with the bisection, each evaluated once.
-    samples.curvePoints.reserve(16);
+    thread_local std::vector<double> params;
+    thread_local std::vector<glm::dvec3> points;
+    params.assign(1, first);
     glm::dvec3 previous = pointAt(curve, first + (last - first) * 0 / 4.0);
-    const glm::dvec3 atFirst = sameBits(first + (last - first) * 0 / 4.0, first) ? previous : pointAt(curve, first);
-    samples.curvePoints.push_back(atFirst);
+    points.assign(1, sameBits(first + (last - first) * 0 / 4.0, first) ? previous : pointAt(curve, first));
     for (int k = 0; k < 4; ++k) {
       const double a = first + (last - first) * k / 4.0, b = first + (last - first) * (k + 1) / 4.0;
       const glm::dvec3 next = pointAt(curve, b);
-      refine(curve, a, b, previous, next, delta, 0, samples.params, samples.curvePoints,
-             samples.maxChordDeviation);
+      refine(curve, a, b, previous, next, delta, 0, params, points, samples.maxChordDeviation);
       previous = next;
     }
     // The end at the range's own end (the last parameter can be an ulp from `last`).
-    if (!sameBits(samples.params.back(), last)) samples.curvePoints.back() = pointAt(curve, last);
+    if (!sameBits(params.back(), last)) points.back() = pointAt(curve, last);
+    samples.params.assign(params.begin(), params.end());
+    samples.curvePoints.assign(points.begin(), points.end());
   }
   samples.firstId = id0;
   samples.lastId = id1;
