@@ -1,0 +1,72 @@
+// IsoLineD1 (host/cad/): OCCT's own evaluation with the knot span kept between calls must give
+// OCCT's bits, at knots, between them, a hair off them and outside the domain.
+#ifdef TESSERA_HAVE_CAD
+#include <catch2/catch.hpp>
+#include <Geom_BSplineSurface.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColStd_Array2OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "cad/iso_line_d1.h"
+
+namespace {
+
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// Parameters over [-0.2, 1.2] of a knot vector with knots at 0, 0.3, 0.5, 1: a walk up, one
+// down (as a reversed edge reads its samples), the knots themselves and their neighbours.
+std::vector<double> walk() {
+  std::vector<double> ts;
+  for (int k = 0; k <= 140; ++k) ts.push_back(-0.2 + 1.4 * k / 140.0);
+  for (int k = 140; k >= 0; --k) ts.push_back(-0.2 + 1.4 * k / 140.0 + 1e-3);
+  for (double knot : {0.0, 0.3, 0.5, 1.0})
+    for (double t : {knot, std::nextafter(knot, -1.0), std::nextafter(knot, 2.0), knot - 1e-17, knot + 1e-16})
+      ts.push_back(t);
+  return ts;
+}
+
+}  // namespace
+
+TEST_CASE("cad: the iso-line evaluator with a kept span gives Geom_BSplineSurface::D1's bits", "[cad]") {
+  // Degree 2 × 3, rational, knots with an interior double knot in u.
+  TColStd_Array1OfReal uKnots(1, 4), vKnots(1, 3);
+  TColStd_Array1OfInteger uMults(1, 4), vMults(1, 3);
+  uKnots(1) = 0.0, uKnots(2) = 0.3, uKnots(3) = 0.5, uKnots(4) = 1.0;
+  uMults(1) = 3, uMults(2) = 2, uMults(3) = 1, uMults(4) = 3;
+  vKnots(1) = 0.0, vKnots(2) = 0.4, vKnots(3) = 1.0;
+  vMults(1) = 4, vMults(2) = 1, vMults(3) = 4;
+  const int nu = 3 + 2 + 1 + 3 - 3, nv = 4 + 1 + 4 - 4;
+  TColgp_Array2OfPnt poles(1, nu, 1, nv);
+  TColStd_Array2OfReal weights(1, nu, 1, nv);
+  for (int i = 1; i <= nu; ++i)
+    for (int j = 1; j <= nv; ++j) {
+      poles(i, j) = gp_Pnt(i + 0.1 * j * j, j - 0.2 * i, std::sin(i * j * 0.7));
+      weights(i, j) = 1.0 + 0.25 * ((i + j) % 3);
+    }
+  const Handle(Geom_BSplineSurface) surface =
+      new Geom_BSplineSurface(poles, weights, uKnots, vKnots, uMults, vMults, 2, 3);
+  size_t compared = 0, differing = 0;
+  for (const bool alongU : {true, false})
+    for (const double fixed : {0.0, 0.3, 0.4, 0.77, 1.0}) {
+      tessera::IsoLineD1 line(*surface, alongU, fixed);
+      for (const double x : walk()) {
+        gp_Pnt p, q;
+        gp_Vec d, du, dv;
+        line.d1(x, p, d);
+        if (alongU) surface->D1(x, fixed, q, du, dv); else surface->D1(fixed, x, q, du, dv);
+        const gp_Vec e = alongU ? du : dv;
+        ++compared;
+        if (!sameBits(p.X(), q.X()) || !sameBits(p.Y(), q.Y()) || !sameBits(p.Z(), q.Z()) ||
+            !sameBits(d.X(), e.X()) || !sameBits(d.Y(), e.Y()) || !sameBits(d.Z(), e.Z()))
+          ++differing;
+      }
+    }
+  CHECK(compared > 2000);
+  CHECK(differing == 0);
+}
+
+#endif  // TESSERA_HAVE_CAD
