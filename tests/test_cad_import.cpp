@@ -454,6 +454,42 @@ TEST_CASE("cad: FaceSurface::points gives point()'s doubles on the IDF library's
   CHECK(mixed > 100);
 }
 
+TEST_CASE("cad: FaceSurface::meanScales gives the pointwise version's doubles on the IDF faces",
+          "[cad]") {
+  // meanScales takes a one-piece face's grid with the rows in v shared by its columns; the
+  // gap's metric (mesher.cpp) depends on its bits, so they must be meanScalesPointwise's, on the
+  // face's box and on boxes past the piece (clamped) or inside it, -0 kept apart.
+  const std::vector<std::string> files = idfFiles();
+  REQUIRE(files.size() == 32);
+  size_t compared = 0, onePiece = 0, rational = 0;
+  const auto same = [](const tessera::FaceSurface::Scales& a, const tessera::FaceSurface::Scales& b) {
+    return std::memcmp(&a.speeds, &b.speeds, sizeof a.speeds) == 0 &&
+           std::memcmp(&a.bending, &b.bending, sizeof a.bending) == 0;
+  };
+  for (size_t k = 3; k < files.size(); k += 4) {
+    INFO(files[k]);
+    const CadFile file = readCadFile(files[k]);
+    const CadImport in = toTrimmedModel(file, defaultCadTolerance(file.shape));
+    for (const TrimmedFace& face : in.model.faces) {
+      const tessera::FaceSurface surface(face);
+      glm::dvec2 lo(face.pieces[0].u0, face.pieces[0].v0), hi = lo;
+      for (const BezierPatchPiece& p : face.pieces)
+        lo = glm::min(lo, {p.u0, p.v0}), hi = glm::max(hi, {p.u1, p.v1});
+      const glm::dvec2 extent = hi - lo;
+      for (const auto& [a, b] : {std::pair(lo, hi), std::pair(lo - 0.3 * extent, hi + 0.1 * extent),
+                                 std::pair(lo + 0.2 * extent, hi - 0.4 * extent)}) {
+        REQUIRE(same(surface.meanScales(a, b), surface.meanScalesPointwise(a, b)));
+        ++compared;
+      }
+      onePiece += face.pieces.size() == 1;
+      rational += !face.pieces[0].patch.weights.empty();
+    }
+  }
+  CHECK(compared > 300);
+  CHECK(onePiece > 100);
+  CHECK(rational > 10);
+}
+
 TEST_CASE("cad: a plane's NURBS and piece are GeomConvert's and the knot insertion's, bit for bit",
           "[cad]") {
   // convertFaceSurface builds a plane's bilinear NURBS and its one piece directly; the path it

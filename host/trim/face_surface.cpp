@@ -154,15 +154,16 @@ FaceSurface::FaceSurface(const TrimmedFace& face) : face_(&face) {
   }
 }
 
+size_t FaceSurface::cellOf(const std::vector<double>& sides, double x) {
+  const size_t i = std::upper_bound(sides.begin(), sides.end(), x) - sides.begin();
+  return std::clamp(i, size_t(1), sides.size() - 1) - 1;
+}
+
 size_t FaceSurface::pieceAt(glm::dvec2 uv) const {
   // One piece (a plane, most CAD faces): the only cell, or the nearest rectangle, is piece 0.
   if (face_->pieces.size() == 1) return 0;
   if (!cellPiece_.empty()) {
-    const auto cell = [](const std::vector<double>& sides, double x) {
-      const size_t i = std::upper_bound(sides.begin(), sides.end(), x) - sides.begin();
-      return std::clamp(i, size_t(1), sides.size() - 1) - 1;
-    };
-    const int piece = cellPiece_[cell(us_, uv.x) * (vs_.size() - 1) + cell(vs_, uv.y)];
+    const int piece = cellPiece_[cellOf(us_, uv.x) * (vs_.size() - 1) + cellOf(vs_, uv.y)];
     if (piece >= 0) return size_t(piece);
   }
   size_t best = 0;  // a hole in the grid of pieces: the nearest rectangle
@@ -174,6 +175,29 @@ size_t FaceSurface::pieceAt(glm::dvec2 uv) const {
     if (d < bestDistance) best = k, bestDistance = d;
   }
   return best;
+}
+
+size_t FaceSurface::commonPiece(const glm::dvec2* uvs, size_t count) const {
+  if (face_->pieces.size() == 1) return 0;
+  // The uvs' box in one cell of the pieces' grid: every uv is in that cell (a cell index is
+  // monotone in each coordinate), so pieceAt gives them all its piece, without a search per uv
+  // (the refinement's samples: 42 of them a triangle, two binary searches each).
+  glm::dvec2 lo = uvs[0], hi = uvs[0];
+  bool ordered = true;  // no NaN: pieceAt's answer for one is not the box's
+  for (size_t k = 0; k < count; ++k) {
+    const glm::dvec2 uv = uvs[k];
+    ordered = ordered && uv.x == uv.x && uv.y == uv.y;
+    lo = glm::min(lo, uv), hi = glm::max(hi, uv);
+  }
+  if (ordered && !cellPiece_.empty()) {
+    const size_t i = cellOf(us_, lo.x), j = cellOf(vs_, lo.y);
+    const int piece = cellPiece_[i * (vs_.size() - 1) + j];
+    if (piece >= 0 && cellOf(us_, hi.x) == i && cellOf(vs_, hi.y) == j) return size_t(piece);
+  }
+  const size_t index = pieceAt(uvs[0]);
+  for (size_t k = 1; k < count; ++k)
+    if (pieceAt(uvs[k]) != index) return kNoPiece;
+  return index;
 }
 
 glm::dvec2 FaceSurface::localUv(size_t piece, glm::dvec2 uv) const {
@@ -208,9 +232,8 @@ void FaceSurface::points(const glm::dvec2* uvs, size_t count, glm::dvec3* out) c
   };
   if (!checked_ || count == 0) return oneByOne();
   // Every uv in one piece (a triangle's samples nearly always are): that piece's loop.
-  const size_t index = pieceAt(uvs[0]);
-  for (size_t k = 1; k < count; ++k)
-    if (pieceAt(uvs[k]) != index) return oneByOne();
+  const size_t index = commonPiece(uvs, count);
+  if (index == kNoPiece) return oneByOne();
   const BezierPatchPiece& piece = face_->pieces[index];
   const BezierPatch& patch = piece.patch;
   if (!rational_[index]) {
@@ -267,7 +290,92 @@ double FaceSurface::distance(const glm::dvec3& target, glm::dvec2 guess, double 
       .distance;
 }
 
+namespace {
+
+// point() of a one-piece face at the stencils of FaceSurface::meanScales' grid, with the grid's
+// shared coordinates taken once: a column's v values (vⱼ, vⱼ ± h) are every column's, so the
+// Bernstein rows in v and the inner sums (one per row of the net) are taken once per v for all
+// six columns, and the rows in u once per u. Each point is tensorPoint's double (the same
+// operations on the same operands, as tensorPointsOfDegree), then point()'s division.
+// Returns false where point() would take its error path (a weight sum 0 or not finite).
+template <int N, int M, class Point, int G>
+bool gridStencilOfDegree(const Point* net, int n, int m, const BezierPatchPiece& piece,
+                         const std::array<double, 3 * G>& us, const std::array<double, 3 * G>& vs,
+                         std::array<glm::dvec3, 5 * G * G>& out) {
+  if constexpr (N >= 0) n = N;
+  if constexpr (M >= 0) m = M;
+  // us[3i + k], vs[3j + k]: the grid's i-th u (k = 1) and its neighbours (k = 0: − h, 2: + h).
+  std::array<std::array<double, kMaxDegree + 1>, 3 * G> bu;
+  for (size_t a = 0; a < us.size(); ++a)
+    bu[a] = bernsteinRow<N>(n, localUvOf(piece, {us[a], vs[1]}).x);
+  std::array<std::array<Point, kMaxDegree + 1>, 3 * G> rows;
+  for (size_t b = 0; b < vs.size(); ++b) {
+    const std::array<double, kMaxDegree + 1> bv = bernsteinRow<M>(m, localUvOf(piece, {us[1], vs[b]}).y);
+    for (int i = 0; i <= n; ++i) {
+      Point row(0.0);
+      for (int j = 0; j <= m; ++j) row += bv[j] * net[i * (m + 1) + j];
+      rows[b][i] = row;
+    }
+  }
+  const auto at = [&](size_t a, size_t b, glm::dvec3& result) {
+    Point sum(0.0);
+    for (int i = 0; i <= n; ++i) sum += bu[a][i] * rows[b][i];
+    if constexpr (std::is_same_v<Point, glm::dvec4>) {
+      if (sum.w == 0.0 || !std::isfinite(sum.w)) return false;
+      result = glm::dvec3(sum) / sum.w;
+    } else {
+      result = sum;
+    }
+    return true;
+  };
+  // out[5·(i·G + j) + k]: k = 0..2 along u (u − h, u, u + h), 3..4 along v (v − h, v + h).
+  for (size_t i = 0; i < G; ++i)
+    for (size_t j = 0; j < G; ++j) {
+      glm::dvec3* o = &out[5 * (i * G + j)];
+      if (!(at(3 * i, 3 * j + 1, o[0]) && at(3 * i + 1, 3 * j + 1, o[1]) &&
+            at(3 * i + 2, 3 * j + 1, o[2]) && at(3 * i + 1, 3 * j, o[3]) &&
+            at(3 * i + 1, 3 * j + 2, o[4])))
+        return false;
+    }
+  return true;
+}
+
+}  // namespace
+
 FaceSurface::Scales FaceSurface::meanScales(glm::dvec2 lo, glm::dvec2 hi) const {
+  constexpr int kGrid = 6;
+  const glm::dvec2 h = 1e-3 * (hi - lo);
+  const glm::dvec2 du(h.x, 0), dv(0, h.y);
+  // The grid's coordinates as meanScalesPointwise forms them: uv ± du keeps uv's v (x − 0 is
+  // x, −0 included) and uv ± dv its u.
+  std::array<double, 3 * kGrid> us, vs;
+  for (int i = 0; i < kGrid; ++i) {
+    const glm::dvec2 uv = lo + (hi - lo) * glm::dvec2((i + 0.5) / kGrid, (i + 0.5) / kGrid);
+    us[3 * i] = (uv - du).x, us[3 * i + 1] = uv.x, us[3 * i + 2] = (uv + du).x;
+    vs[3 * i] = (uv - dv).y, vs[3 * i + 1] = uv.y, vs[3 * i + 2] = (uv + dv).y;
+  }
+  std::array<glm::dvec3, 5 * kGrid * kGrid> stencil;
+  bool gridded = false;
+  if (checked_ && face_->pieces.size() == 1) {  // every uv in piece 0 (pieceAt)
+    const BezierPatchPiece& piece = face_->pieces[0];
+    if (rational_[0]) {
+      const RationalBezierPatch& r = *rational_[0];
+      gridded = withFixedDegrees(r.degreeU, r.degreeV, [&](auto N, auto M) {
+        return gridStencilOfDegree<decltype(N)::value, decltype(M)::value, glm::dvec4, kGrid>(
+            r.cpw.data(), r.degreeU, r.degreeV, piece, us, vs, stencil);
+      });
+    } else {
+      const BezierPatch& patch = piece.patch;
+      gridded = withFixedDegrees(patch.degreeU, patch.degreeV, [&](auto N, auto M) {
+        return gridStencilOfDegree<decltype(N)::value, decltype(M)::value, glm::dvec3, kGrid>(
+            patch.cp.data(), patch.degreeU, patch.degreeV, piece, us, vs, stencil);
+      });
+    }
+  }
+  return gridded ? scalesOf(stencil, h) : meanScalesPointwise(lo, hi);
+}
+
+FaceSurface::Scales FaceSurface::meanScalesPointwise(glm::dvec2 lo, glm::dvec2 hi) const {
   constexpr int kGrid = 6;
   const glm::dvec2 h = 1e-3 * (hi - lo);
   const glm::dvec2 du(h.x, 0), dv(0, h.y);
@@ -281,13 +389,27 @@ FaceSurface::Scales FaceSurface::meanScales(glm::dvec2 lo, glm::dvec2 hi) const 
     }
   std::array<glm::dvec3, 2 * kGrid * kGrid> pointsV;
   points(alongV.data(), alongV.size(), pointsV.data());
-  Scales sum{glm::dvec2(0.0), glm::dvec2(0.0)};
+  std::array<glm::dvec3, 5 * kGrid * kGrid> stencil;
   for (int i = 0; i < kGrid; ++i)
     for (int j = 0; j < kGrid; ++j) {
       const glm::dvec2 uv = lo + (hi - lo) * glm::dvec2((i + 0.5) / kGrid, (j + 0.5) / kGrid);
       const std::array<glm::dvec3, 3> alongU = pointsAlongU({uv - du, uv, uv + du});
-      const glm::dvec3 &p = alongU[1], &pu0 = alongU[0], &pu1 = alongU[2];
-      const glm::dvec3 &pv0 = pointsV[2 * (i * kGrid + j)], &pv1 = pointsV[2 * (i * kGrid + j) + 1];
+      glm::dvec3* o = &stencil[5 * (i * kGrid + j)];
+      o[0] = alongU[0], o[1] = alongU[1], o[2] = alongU[2];
+      o[3] = pointsV[2 * (i * kGrid + j)], o[4] = pointsV[2 * (i * kGrid + j) + 1];
+    }
+  return scalesOf(stencil, h);
+}
+
+FaceSurface::Scales FaceSurface::scalesOf(const std::array<glm::dvec3, 5 * 36>& stencil,
+                                          glm::dvec2 h) {
+  constexpr int kGrid = 6;
+  Scales sum{glm::dvec2(0.0), glm::dvec2(0.0)};
+  for (int i = 0; i < kGrid; ++i)
+    for (int j = 0; j < kGrid; ++j) {
+      const glm::dvec3* o = &stencil[5 * (i * kGrid + j)];
+      const glm::dvec3 &p = o[1], &pu0 = o[0], &pu1 = o[2];
+      const glm::dvec3 &pv0 = o[3], &pv1 = o[4];
       if (h.x > 0) sum.speeds.x += glm::length(pu1 - pu0) / (2 * h.x);
       if (h.y > 0) sum.speeds.y += glm::length(pv1 - pv0) / (2 * h.y);
       const glm::dvec3 normal = glm::cross(pu1 - pu0, pv1 - pv0);

@@ -44,8 +44,18 @@ class FaceSurface {
     glm::dvec2 bending;
   };
   Scales meanScales(glm::dvec2 lo, glm::dvec2 hi) const;
+  // The same doubles, each point by pointsAlongU and points() (the plain version, for tests:
+  // meanScales takes a one-piece face's grid with its shared rows once).
+  Scales meanScalesPointwise(glm::dvec2 lo, glm::dvec2 hi) const;
 
  private:
+  // meanScales' sums from its 6 × 6 grid's points, 5 a grid point (u − h, u, u + h, v − h, v + h).
+  static Scales scalesOf(const std::array<glm::dvec3, 5 * 36>& stencil, glm::dvec2 h);
+  static constexpr size_t kNoPiece = ~size_t(0);
+  // The cell of the pieces' grid along one axis holding x (clamped to the grid).
+  static size_t cellOf(const std::vector<double>& sides, double x);
+  // pieceAt of every uv when they all agree, kNoPiece otherwise.
+  size_t commonPiece(const glm::dvec2* uvs, size_t count) const;
   const TrimmedFace* face_;
   std::vector<double> us_, vs_;       // the pieces' sorted distinct sides
   std::vector<int> cellPiece_;        // (us_.size()−1)·(vs_.size()−1) cells → piece or −1
