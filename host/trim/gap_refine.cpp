@@ -173,20 +173,30 @@ SampledDeviations sampledDeviationsFrom(const FaceSurface& surface,
   // were a fifth of the refinement's time).
   const auto squared = [](const glm::dvec3& d) { return glm::dot(d, d); };
   // The interior samples' surface points in one call (FaceSurface::points), then the measures.
-  thread_local std::vector<glm::dvec2> uvs;
-  thread_local std::vector<glm::dvec3> onSurface;
+  // The buffers sized once per thread and written through plain pointers: a push_back stored
+  // the thread-local vector's end after every sample (an eighth of this function's time).
+  thread_local std::vector<glm::dvec2> uvBuffer;
+  thread_local std::vector<glm::dvec3> onSurfaceBuffer;
   thread_local std::vector<double> fraction;  // i / n, divided once for all the samples
-  fraction.resize(size_t(n) + 1);
-  for (int i = 0; i <= n; ++i) fraction[size_t(i)] = double(i) / n;
-  uvs.clear();
+  thread_local int fractionOf = -1;
+  const size_t interior = size_t(n + 1) * size_t(n + 2) / 2;  // ≥ the samples but the corners
+  if (uvBuffer.size() < interior) uvBuffer.resize(interior), onSurfaceBuffer.resize(interior);
+  if (fractionOf != n) {
+    fraction.resize(size_t(n) + 1);
+    for (int i = 0; i <= n; ++i) fraction[size_t(i)] = double(i) / n;
+    fractionOf = n;
+  }
+  glm::dvec2* const uvs = uvBuffer.data();
+  const glm::dvec3* const onSurface = onSurfaceBuffer.data();
+  const glm::dvec2 uv0 = vs[t[0]].uv, uv1 = vs[t[1]].uv, uv2 = vs[t[2]].uv;
+  size_t count = 0;
   for (int i = 0; i <= n; ++i)
     for (int j = 0; i + j <= n; ++j) {
       if (i == n || j == n || i + j == 0) continue;
       const double a = fraction[size_t(i)], b = fraction[size_t(j)], c = 1 - a - b;
-      uvs.push_back(a * vs[t[0]].uv + b * vs[t[1]].uv + c * vs[t[2]].uv);
+      uvs[count++] = a * uv0 + b * uv1 + c * uv2;
     }
-  onSurface.resize(uvs.size());
-  surface.points(uvs.data(), uvs.size(), onSurface.data());
+  surface.points(uvs, count, onSurfaceBuffer.data());
   SampledDeviations worst2;  // squared
   size_t next = 0;
   for (int i = 0; i <= n; ++i)
