@@ -40,9 +40,12 @@ std::vector<std::vector<uint32_t>> closedLoops(
   std::sort(outgoing.begin(), outgoing.end());
   std::vector<bool> used(edges.size(), false);
   std::vector<std::vector<uint32_t>> loops;
+  // The loop walked in a buffer kept for the thread and copied out at its size once closed (a
+  // vector grown by push_back reallocated log n times per loop).
+  thread_local std::vector<uint32_t> loop;
   for (uint32_t start = 0; start < edges.size(); ++start) {
     if (used[start]) continue;
-    std::vector<uint32_t> loop{edges[start].first};
+    loop.assign(1, edges[start].first);
     used[start] = true;
     uint32_t from = edges[start].first, at = edges[start].second;
     bool closed = false;
@@ -70,7 +73,7 @@ std::vector<std::vector<uint32_t>> closedLoops(
       at = edges[best].second;
     }
     if (closed && loop.size() >= 3)
-      loops.push_back(std::move(loop));
+      loops.emplace_back(loop.begin(), loop.end());
     else
       ++failures;
   }
@@ -323,8 +326,16 @@ struct HashedEdgeUsers {
 // The same map for a few triangles (most gaps): one vector searched from the front, without the
 // hashed map's buckets allocated for every gap.
 struct FewEdgeUsers {
-  std::vector<std::pair<EdgeKey64, SmallIdList>> entries;
-  explicit FewEdgeUsers(size_t triangles) { entries.reserve(2 * triangles); }
+  // A buffer kept for the thread, emptied for each gap: no allocation per gap.
+  std::vector<std::pair<EdgeKey64, SmallIdList>>& entries = buffer();
+  explicit FewEdgeUsers(size_t triangles) {
+    entries.clear();
+    entries.reserve(2 * triangles);
+  }
+  static std::vector<std::pair<EdgeKey64, SmallIdList>>& buffer() {
+    thread_local std::vector<std::pair<EdgeKey64, SmallIdList>> entries;
+    return entries;
+  }
   SmallIdList& operator[](EdgeKey64 e) {
     if (SmallIdList* found = find(e)) return *found;
     return entries.emplace_back(e, SmallIdList()).second;
@@ -360,7 +371,10 @@ void flipWith(const std::vector<glm::dvec2>& points,
     return Edge(std::min(a, b)) << 32 | Edge(std::max(a, b));
   };
   // The constrained edges sorted: a binary search instead of a hashed set built for every gap.
-  std::vector<Edge> constrained;
+  // It and the queue are buffers kept for the thread (most gaps are a few triangles, where
+  // their allocations cost more than the flips).
+  thread_local std::vector<Edge> constrained;
+  constrained.clear();
   constrained.reserve(fixed.size());
   for (const auto& e : fixed) constrained.push_back(key(e.first, e.second));
   std::sort(constrained.begin(), constrained.end());
@@ -370,7 +384,8 @@ void flipWith(const std::vector<glm::dvec2>& points,
   Users users(triangles.size());  // edge → the triangles using it
   for (uint32_t t = 0; t < triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) users[key(triangles[t][k], triangles[t][(k + 1) % 3])].push_back(t);
-  std::vector<Edge> queue;
+  thread_local std::vector<Edge> queue;
+  queue.clear();
   // Every flip queues four edges: room for the first pass and a few flips, so the queue does not
   // grow by doubling from nothing (its reallocations were a tenth of the gap's time).
   queue.reserve(3 * triangles.size() + 64);

@@ -150,7 +150,13 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
   std::vector<SmallIdList> meshKeyed(tess.mesh.positions.size());
   HashMap<int64_t, SmallIdList> trimKeyed;
   const TrimSegmentIndex index(face.loops);
+  size_t loopPoints = 0;
+  for (const TrimLoop& loop : face.loops) loopPoints += loop.uv.size();
+  // Room for every vertex and triangle before the gap's (grown by doubling, their copies were a
+  // twentieth of the cut on the IDF library's small faces).
+  builder.vertices.reserve(tess.mesh.positions.size() + loopPoints);
   std::vector<FaceTriangle> triangles;
+  triangles.reserve(tess.mesh.triangleCount() + loopPoints);
   for (size_t t = 0; t < tess.mesh.triangleCount(); ++t) {
     std::array<uint32_t, 3> v;
     std::array<glm::dvec2, 3> uv;
@@ -175,11 +181,11 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
   // triangles' open edges, reversed.
   std::vector<std::pair<uint32_t, uint32_t>> gapEdges;
   std::vector<EdgeKey> trimEdges;  // sorted and made distinct below
+  gapEdges.reserve(loopPoints), trimEdges.reserve(loopPoints);
   std::vector<double> sampledParametric;  // per triangle, where the refinement measured it
-  size_t loopPoints = 0;
-  for (const TrimLoop& loop : face.loops) loopPoints += loop.uv.size();
   trimKeyed.reserve(loopPoints);
   std::vector<uint32_t> ids;
+  ids.reserve(loopPoints);
   for (const TrimLoop& loop : face.loops) {
     ids.clear();
     for (size_t k = 0; k < loop.uv.size(); ++k) {
@@ -210,6 +216,7 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
         gapEdges.push_back({b, a});
     const glm::dvec2 metric = gapMetric(surface, lo, hi, options.tolerance);
     std::vector<glm::dvec2> points;
+    points.reserve(builder.vertices.size());
     for (const FaceVertex& v : builder.vertices) points.push_back(v.uv * metric);
     const GapTriangulation gap = triangulateGap(points, gapEdges);
     stats.gapFailures = gap.failures;
