@@ -16,31 +16,9 @@ void checkDegree(int degree, const char* where) {
 
 }  // namespace
 
-namespace {
-
-// C(n, k) for n ≤ 2·kMaxDegree, each by the product below (every partial product an integer,
-// so exact): a table, since the derivative quotient rules ask for it in their inner loops.
-constexpr int kBinomialRows = 2 * kMaxDegree + 1;
-constexpr std::array<std::array<double, kBinomialRows>, kBinomialRows> binomialTable() {
-  std::array<std::array<double, kBinomialRows>, kBinomialRows> table{};
-  for (int n = 0; n < kBinomialRows; ++n)
-    for (int k = 0; k <= n; ++k) {
-      double c = 1.0;
-      for (int i = 1; i <= k; ++i) c = c * (n - k + i) / i;
-      table[n][k] = c;
-    }
-  return table;
-}
-constexpr auto kBinomials = binomialTable();
-
-}  // namespace
-
-double binomial(int n, int k) {
-  if (n < 0 || n > 2 * kMaxDegree)
-    throw std::invalid_argument("binomial: n = " + std::to_string(n) + " is outside 0.." +
-                                std::to_string(2 * kMaxDegree));
-  if (k < 0 || k > n) return 0.0;
-  return kBinomials[n][k];
+void binomialOutOfRange(int n) {
+  throw std::invalid_argument("binomial: n = " + std::to_string(n) + " is outside 0.." +
+                              std::to_string(2 * kMaxDegree));
 }
 
 double fallingFactorial(int n, int k) {
