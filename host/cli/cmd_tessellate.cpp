@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <future>
 #include <memory>
 #include <optional>
@@ -213,6 +214,9 @@ int run(const TessellateArgs& a) {
   // The mesh and the report are written together at the end, both or neither.
   AtomicFileGroup files;
 
+  // An input that cannot be opened fails here, before the Vulkan driver is loaded for a job
+  // that cannot run; readSurface gives the message (the file and the reason).
+  if (a.input != kStdioPath && !std::ifstream(a.input)) readSurface(a.input, inputFormat);
   PendingContext pendingContext = startMakingContext(a.backend, a.device);
   std::vector<BezierPatch> patches = readSurface(a.input, inputFormat);
   if (ruleT)
