@@ -326,7 +326,8 @@ struct HashedEdgeUsers {
 // The same map for a few triangles (most gaps): one vector searched from the front, without the
 // hashed map's buckets allocated for every gap.
 struct FewEdgeUsers {
-  // A buffer kept for the thread, emptied for each gap: no allocation per gap.
+  // A buffer kept for the thread, emptied for each gap: no allocation per gap. So at most one
+  // FewEdgeUsers may be alive on a thread at a time (flipWith makes one and does not recurse).
   std::vector<std::pair<EdgeKey64, SmallIdList>>& entries = buffer();
   explicit FewEdgeUsers(size_t triangles) {
     entries.clear();
