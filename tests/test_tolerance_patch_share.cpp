@@ -72,7 +72,7 @@ double cellModelTriangles(const BezierPatch& patch, double delta, bool normalOnl
 
 }  // namespace
 
-TEST_CASE("rule T: triangles against each patch's share of N_min", "[.][tolerance][nmin]") {
+TEST_CASE("rule T: triangles against each patch's share of N_min", "[tolerance][nmin]") {
   Backend backend = makeMirrorBackend();
   for (const char* name : {"teapot", "teacup", "teaspoon"}) {
     const auto patches = readBpt(std::string(TESSERA_SOURCE_DIR "/data/") + name + ".bpt");
