@@ -12,6 +12,7 @@
 #include "common/small_id_list.h"
 #include "common/stopwatch.h"
 #include "quadtree/quadtree.h"
+#include "trim/detail/affine_face.h"
 #include "trim/detail/gap_refine.h"
 #include "trim/face_surface.h"
 #include "trim/face_tessellation.h"
@@ -223,11 +224,16 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
     for (const auto& t : gap.triangles) triangles.push_back({t, true});
     out.gapMs = step.elapsedMs();
     step.restart();
-    const trim_detail::GapRefineResult refined = trim_detail::refineGap(
-        surface, builder.vertices, triangles, trimEdges,
-        {options.tolerance, options.deviationSubdivisions, options.maxRefineRounds, metric,
-         options.gapMeasure},
-        &sampledParametric);
+    trim_detail::GapRefineResult refined;
+    if (options.affineShortcut &&
+        trim_detail::gapRefinementIdle(face, builder.vertices, options.tolerance))
+      sampledParametric = trim_detail::cornerParametric(surface, builder.vertices, triangles);
+    else
+      refined = trim_detail::refineGap(
+          surface, builder.vertices, triangles, trimEdges,
+          {options.tolerance, options.deviationSubdivisions, options.maxRefineRounds, metric,
+           options.gapMeasure},
+          &sampledParametric);
     stats.refinementSplits = refined.changes;
     stats.unfinishedGapTriangles = refined.unfinished;
     out.refineMs = step.elapsedMs();

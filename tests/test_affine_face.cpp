@@ -1,0 +1,148 @@
+// The gap refinement's shortcut on affine faces (host/trim/detail/affine_face.h): which faces
+// take it, and that taking it changes no mesh byte and only the samples' rounding in the
+// parametric stats, on hand-built planes and on the FreeCAD IDF models (mostly planes).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "trim/detail/affine_face.h"
+#include "trim/mesher.h"
+#include "trimmed_models.h"
+#ifdef TESSERA_HAVE_CAD
+#include <BRepBndLib.hxx>
+#include <Bnd_Box.hxx>
+
+#include "cad/cad_file.h"
+#include "cad/to_trimmed.h"
+#endif
+
+using namespace tessera;
+using namespace tessera::test;
+using trim_detail::FaceVertex;
+
+namespace {
+
+std::vector<FaceVertex> cornersOfUnitSquare() {
+  return {{{0, 0}, {}, -1}, {{1, 0}, {}, -1}, {{1, 1}, {}, -1}, {{0, 1}, {}, -1}};
+}
+
+// The model meshed with and without the shortcut, compared: the same mesh bit for bit, the same
+// stats but the parametric ones, which may only lose the samples' rounding (`slack`). Returns
+// the faces gapRefinementIdle takes, judged on their loop points.
+size_t expectSameMeshes(const TrimmedModel& model, double delta, double slack) {
+  size_t affineFaces = 0;
+  Backend cpu = makeMirrorBackend();
+  TrimmedMeshOptions options;
+  options.tolerance = delta;
+  options.measureGeometric = false;
+  const TrimmedMesh fast = meshTrimmedModel(model, options, cpu);
+  options.affineShortcut = false;
+  const TrimmedMesh sampled = meshTrimmedModel(model, options, cpu);
+  CHECK(fast.mesh.indices == sampled.mesh.indices);
+  CHECK(fast.mesh.positions == sampled.mesh.positions);
+  CHECK(fast.mesh.uvs == sampled.mesh.uvs);
+  CHECK(fast.cornerUv == sampled.cornerUv);
+  REQUIRE(fast.faces.size() == sampled.faces.size());
+  double largestLoss = 0;
+  for (size_t f = 0; f < model.faces.size(); ++f) {
+    const TrimmedFaceStats &a = fast.faces[f], &b = sampled.faces[f];
+    CHECK(a.gapTriangles == b.gapTriangles);
+    CHECK(a.triangles == b.triangles);
+    CHECK(a.refinementSplits == b.refinementSplits);
+    CHECK(a.unfinishedGapTriangles == b.unfinishedGapTriangles);
+    CHECK(a.maxTrimPointOffset == b.maxTrimPointOffset);
+    CHECK(a.measuredTriangles == b.measuredTriangles);
+    CHECK(a.maxGapParametricDeviation <= b.maxGapParametricDeviation);
+    CHECK(a.maxParametricDeviation <= b.maxParametricDeviation);
+    largestLoss = std::max({largestLoss, b.maxParametricDeviation - a.maxParametricDeviation,
+                            b.maxGapParametricDeviation - a.maxGapParametricDeviation});
+    std::vector<FaceVertex> loopPoints;
+    for (const TrimLoop& loop : model.faces[f].loops)
+      for (const glm::dvec2 uv : loop.uv) loopPoints.push_back({uv, {}, -1});
+    if (trim_detail::gapRefinementIdle(model.faces[f], loopPoints, delta)) {
+      ++affineFaces;
+      // Nothing to split (the sampled path agrees), and the gap's parametric deviation is its
+      // corners' offsets: the trim points' (the file's edge gap) and the quad-tree vertices'
+      // fp32 rounding (far under δ: a hundredth of it is asserted), not the surface's bending.
+      CHECK(b.refinementSplits == 0);
+      CHECK(a.maxGapParametricDeviation <= 0.01 * delta + a.maxTrimPointOffset);
+    }
+  }
+  WARN(affineFaces << " affine faces of " << model.faces.size() << "; the sampled parametric "
+                   << "deviation's largest excess over the shortcut's " << largestLoss);
+  CHECK(largestLoss <= slack);
+  return affineFaces;
+}
+
+}  // namespace
+
+TEST_CASE("affine faces: a plane's gap refinement is known idle, a twisted or clamped face's not",
+          "[trim][affine]") {
+  const double delta = 1e-3;
+  TrimmedFace plane = faceOf(planarPatch({3, -2, 1}, {2, 0, 0}, {0, 0.5, 1}), {}, false, 0);
+  CHECK(trim_detail::gapRefinementIdle(plane, cornersOfUnitSquare(), delta));
+  // A twist T: the saddle's chords miss it by up to |T|/4 (at the square's centre, from the
+  // diagonal from (1, 0) to (0, 1)): idle only when |T|/4 is under δ.
+  for (const double twist : {3.9e-3, 4.1e-3}) {
+    TrimmedFace saddle = plane;
+    saddle.pieces[0].patch.at(1, 1).z += twist;
+    CHECK(trim_detail::gapRefinementIdle(saddle, cornersOfUnitSquare(), delta) ==
+          (twist / 4 < delta));
+  }
+  // A vertex past the rectangle: the surface is clamped there, not affine.
+  std::vector<FaceVertex> overhang = cornersOfUnitSquare();
+  overhang[2].uv.x = 1 + 1e-6;  // rounding's margin: 10⁻⁹ of the rectangle's reach
+  CHECK_FALSE(trim_detail::gapRefinementIdle(plane, overhang, delta));
+  // Not bilinear, unequal weights, two pieces.
+  TrimmedFace bump = faceOf(bumpPatch(1, 0.0), {}, false, 1);  // flat, but cubic: not taken
+  CHECK_FALSE(trim_detail::gapRefinementIdle(bump, cornersOfUnitSquare(), delta));
+  TrimmedFace weighted = plane;
+  weighted.pieces[0].patch.weights = {1, 1, 1, 2};
+  CHECK_FALSE(trim_detail::gapRefinementIdle(weighted, cornersOfUnitSquare(), delta));
+  weighted.pieces[0].patch.weights = {2, 2, 2, 2};
+  CHECK(trim_detail::gapRefinementIdle(weighted, cornersOfUnitSquare(), delta));
+  TrimmedFace halves = plane;
+  halves.pieces.push_back(halves.pieces[0]);
+  CHECK_FALSE(trim_detail::gapRefinementIdle(halves, cornersOfUnitSquare(), delta));
+}
+
+TEST_CASE("affine faces: the shortcut keeps a holed plate's mesh and refines nothing sampled",
+          "[trim][affine]") {
+  // Square plates with round holes off the origin: gap triangles only, trim points on the plane
+  // (offset 0 up to rounding), so the stats' gap deviation is the rounding the samples add.
+  TrimmedModel model;
+  test::SharedPoints shared(model);
+  for (int k = 0; k < 3; ++k) {
+    const BezierPatch p = planarPatch({100.0 + k, 7, -3}, {1, 0, 0.25 * k}, {0, 1, 0});
+    const auto at = [&](glm::dvec2 uv) { return patchPoint(p, uv.x, uv.y); };
+    model.faces.push_back(faceOf(p,
+                                 {sampledLoop(squareBoundary(), 40, at, shared),
+                                  sampledLoop(circle({0.4, 0.5}, 0.2), 32 + 8 * k, at, shared)},
+                                 k == 1, uint32_t(k)));
+  }
+  CHECK(expectSameMeshes(model, 1e-3, 1e-12) == 3);
+}
+
+#ifdef TESSERA_HAVE_CAD
+TEST_CASE("affine faces: the IDF models' planes mesh as sampled, bit for bit",
+          "[trim][affine][cad]") {
+  size_t affineFaces = 0, faces = 0;
+  for (const char* name : {"SOT23.stp", "0603_SMD.stp", "TSM_104_01_L_DV_A.stp", "SOT_96.stp"}) {
+    const std::string path = std::string("/usr/share/freecad/Mod/Idf/Idflibs/") + name;
+    REQUIRE(std::filesystem::exists(path));  // freecad-common (scripts/deps.sh)
+    const CadFile file = readCadFile(path);
+    Bnd_Box box;
+    BRepBndLib::Add(file.shape, box);
+    const double diagonal = std::sqrt(box.SquareExtent());
+    const CadImport import = toTrimmedModel(file, 1e-3 * diagonal);
+    INFO(name);
+    // The samples' rounding: a few ulps of the model's coordinates, 10⁻¹² of its diagonal at most.
+    affineFaces += expectSameMeshes(import.model, import.delta, 1e-12 * diagonal);
+    faces += import.model.faces.size();
+  }
+  WARN(affineFaces << " of " << faces << " IDF faces take the shortcut");
+  CHECK(affineFaces * 2 > faces);  // the corpus is mostly planes
+}
+#endif
