@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "trim/detail/affine_face.h"
+#include "trim/face_surface.h"
 #include "trim/mesher.h"
 #include "trimmed_models.h"
 #ifdef TESSERA_HAVE_CAD
@@ -28,11 +29,35 @@ std::vector<FaceVertex> cornersOfUnitSquare() {
   return {{{0, 0}, {}, -1}, {{1, 0}, {}, -1}, {{1, 1}, {}, -1}, {{0, 1}, {}, -1}};
 }
 
+// The face's (u, v) box as the mesher takes it: its pieces and its loops.
+std::pair<glm::dvec2, glm::dvec2> faceBox(const TrimmedFace& face) {
+  glm::dvec2 lo(face.pieces[0].u0, face.pieces[0].v0), hi = lo;
+  for (const BezierPatchPiece& p : face.pieces)
+    lo = glm::min(lo, {p.u0, p.v0}), hi = glm::max(hi, {p.u1, p.v1});
+  for (const TrimLoop& loop : face.loops)
+    for (const glm::dvec2 uv : loop.uv) lo = glm::min(lo, uv), hi = glm::max(hi, uv);
+  return {lo, hi};
+}
+
+// mesher.cpp's gapMetric, from meanScales' 180 surface points: what affineGapMetric must give.
+glm::dvec2 sampledGapMetric(const TrimmedFace& face, double tolerance) {
+  const auto [lo, hi] = faceBox(face);
+  const FaceSurface::Scales scales = FaceSurface(face).meanScales(lo, hi);
+  const glm::dvec2 extent = hi - lo;
+  const auto allowed = [&](double b, double e) {
+    return b > 0 ? std::min(std::sqrt(8.0 * tolerance / b), e) : e;
+  };
+  const double du = allowed(scales.bending.x, extent.x), dv = allowed(scales.bending.y, extent.y);
+  const bool flat = du >= extent.x && dv >= extent.y;
+  const double ratio = flat ? scales.speeds.x / scales.speeds.y : dv / du;
+  return {std::exp2(std::round(std::log2(ratio))), 1.0};
+}
+
 // The model meshed with and without the shortcut, compared: the same mesh bit for bit, the same
 // stats but the parametric ones, which may only lose the samples' rounding (`slack`). Returns
 // the faces gapRefinementIdle takes, judged on their loop points.
 size_t expectSameMeshes(const TrimmedModel& model, double delta, double slack) {
-  size_t affineFaces = 0;
+  size_t affineFaces = 0, metricFaces = 0;
   Backend cpu = makeMirrorBackend();
   TrimmedMeshOptions options;
   options.tolerance = delta;
@@ -61,6 +86,11 @@ size_t expectSameMeshes(const TrimmedModel& model, double delta, double slack) {
     std::vector<FaceVertex> loopPoints;
     for (const TrimLoop& loop : model.faces[f].loops)
       for (const glm::dvec2 uv : loop.uv) loopPoints.push_back({uv, {}, -1});
+    const auto [lo, hi] = faceBox(model.faces[f]);
+    if (const auto metric = trim_detail::affineGapMetric(model.faces[f], lo, hi, delta)) {
+      ++metricFaces;
+      CHECK(*metric == sampledGapMetric(model.faces[f], delta));
+    }
     if (trim_detail::gapRefinementIdle(model.faces[f], loopPoints, delta)) {
       ++affineFaces;
       // Nothing to split (the sampled path agrees), and the gap's parametric deviation is its
@@ -73,6 +103,7 @@ size_t expectSameMeshes(const TrimmedModel& model, double delta, double slack) {
   WARN(affineFaces << " affine faces of " << model.faces.size() << "; the sampled parametric "
                    << "deviation's largest excess over the shortcut's " << largestLoss);
   CHECK(largestLoss <= slack);
+  CHECK(metricFaces == affineFaces);  // the corpus's planes take both shortcuts
   return affineFaces;
 }
 
@@ -106,6 +137,30 @@ TEST_CASE("affine faces: a plane's gap refinement is known idle, a twisted or cl
   TrimmedFace halves = plane;
   halves.pieces.push_back(halves.pieces[0]);
   CHECK_FALSE(trim_detail::gapRefinementIdle(halves, cornersOfUnitSquare(), delta));
+}
+
+TEST_CASE("affine faces: a plane's gap metric is its sides' speed ratio as a power of two, "
+          "unless near a half", "[trim][affine]") {
+  const double delta = 1e-3;
+  const glm::dvec2 lo(0, 0), hi(1, 1);
+  // Sides of speed 3 and 1: log₂ 3 = 1.58 → 2 (meanScales agrees); 2^1.5 = 2.83 is refused.
+  for (const double side : {1.0, 3.0, 0.3, 2.0 * std::sqrt(2.0), 40.0}) {
+    const TrimmedFace plane = faceOf(planarPatch({-7, 5, 2}, {side, 0, side}, {0, 1, 0}), {}, false, 0);
+    const std::optional<glm::dvec2> metric = trim_detail::affineGapMetric(plane, lo, hi, delta);
+    const double exponent = std::log2(side * std::sqrt(2.0));
+    INFO("speed ratio " << side * std::sqrt(2.0));
+    CHECK(metric.has_value() == (std::abs(exponent - std::round(exponent)) < 0.49));
+    if (metric) CHECK(*metric == sampledGapMetric(plane, delta));
+  }
+  // A saddle, and a box past the rectangle (clamped stencil points): not affine, not taken.
+  TrimmedFace saddle = faceOf(planarPatch({0, 0, 0}, {1, 0, 0}, {0, 1, 0}), {}, false, 1);
+  saddle.pieces[0].patch.at(1, 1).z += 0.5;
+  CHECK_FALSE(trim_detail::affineGapMetric(saddle, lo, hi, delta));
+  const TrimmedFace plane = faceOf(planarPatch({0, 0, 0}, {1, 0, 0}, {0, 1, 0}), {}, false, 2);
+  CHECK(trim_detail::affineGapMetric(plane, lo, hi, delta) == glm::dvec2(1, 1));
+  CHECK_FALSE(trim_detail::affineGapMetric(plane, lo, {1.01, 1}, delta));
+  // δ within reach of meanScales' rounding noise: refused.
+  CHECK_FALSE(trim_detail::affineGapMetric(plane, lo, hi, 1e-12));
 }
 
 TEST_CASE("affine faces: the shortcut keeps a holed plate's mesh and refines nothing sampled",

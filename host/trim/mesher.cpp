@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "common/hash_map.h"
@@ -215,7 +216,11 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
     for (const auto& [a, b] : directed)
       if (!std::binary_search(directed.begin(), directed.end(), EdgeKey(b, a)))
         gapEdges.push_back({b, a});
-    const glm::dvec2 metric = gapMetric(surface, lo, hi, options.tolerance);
+    const std::optional<glm::dvec2> affineMetric =
+        options.affineShortcut ? trim_detail::affineGapMetric(face, lo, hi, options.tolerance)
+                               : std::nullopt;
+    const glm::dvec2 metric =
+        affineMetric ? *affineMetric : gapMetric(surface, lo, hi, options.tolerance);
     std::vector<glm::dvec2> points;
     points.reserve(builder.vertices.size());
     for (const FaceVertex& v : builder.vertices) points.push_back(v.uv * metric);

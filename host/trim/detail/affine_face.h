@@ -2,6 +2,7 @@
 // refinement's samples measure only rounding: a triangle's corners on the surface span the
 // surface itself, so it never splits (docs/trimmed_faces.md, "Planes").
 #pragma once
+#include <optional>
 #include <vector>
 
 #include "trim/detail/gap_refine.h"
@@ -21,6 +22,14 @@ namespace tessera::trim_detail {
 // (a few ulps) many times over.
 bool gapRefinementIdle(const TrimmedFace& face, const std::vector<FaceVertex>& vs,
                        double tolerance);
+
+// What gapMetric (mesher.cpp) returns for the face over [lo, hi] at δ = `tolerance`, known without
+// meanScales' 180 surface points: a one-piece bilinear face (no weights) nearly a parallelogram
+// is flat at δ, so its metric is the ratio of its sides' speeds |B|/(u1 − u0) over
+// |C|/(v1 − v0) rounded to a power of two. Empty where that cannot be told apart from rounding
+// (a ratio's log₂ near a half, δ near the rounding, [lo, hi] past the rectangle).
+std::optional<glm::dvec2> affineGapMetric(const TrimmedFace& face, glm::dvec2 lo, glm::dvec2 hi,
+                                          double tolerance);
 
 // What refineGap's `parametric` holds when gapRefinementIdle: per gap triangle the largest
 // |Pᵢ − S(uvᵢ)| over its corners (the samples' largest parametric deviation: Σ bᵢ Pᵢ −
