@@ -42,8 +42,9 @@ struct TrimmedMeshOptions {
   int maxRefineRounds = 24;        // splitting rounds for gap triangles over δ
   GapMeasure gapMeasure = GapMeasure::Geometric;
   // Faces whose surface is affine (planes) skip the gap refinement's sampling, which cannot
-  // split there (detail/affine_face.h): the same mesh; their gap triangles' parametric
-  // deviation is their corners' offsets, without the samples' rounding. Off: sampled, for tests.
+  // split there, and take the gap metric from their sides instead of meanScales
+  // (detail/affine_face.h): the same mesh; their gap triangles' parametric deviation is their
+  // corners' offsets, without the samples' rounding. Off: sampled as before, for tests.
   bool affineShortcut = true;
   unsigned threads = 0;            // faces cut in parallel (0: all cores); output independent
   // The local frame of the quad-trees (geometry/model_frame.h); unset: the model's own
