@@ -4,7 +4,8 @@
 //   shaders/grid_eval.comp.glsl) with the vertices left in the mapped buffer and copied out;
 //   each as a fraction of the host-memory bandwidth cap;
 // - point queries (position, Pu, Pv, normal, κ; one invocation per point re-reading 16 control
-//   points, shaders/eval.comp.glsl): the double kernel, the fp32 mirror, Vulkan;
+//   points, shaders/eval.comp.glsl): the double kernel (one thread), the fp32 mirror (all
+//   cores from 8,192 queries: host/eval/evaluator_mirror.cpp), Vulkan;
 // - the cost of one empty submit-and-wait round trip.
 // Usage: bench_eval [patches=1024] [pointsPerSide=32] [queries=262144] [--json file]
 #include <cstdio>
@@ -92,7 +93,7 @@ void pointCases(bench::Report& report, vk::Context& context,
   auto mirror = makeMirrorEvaluator();
   auto vulkan = makeVulkanEvaluator(context);
   for (PatchEvaluator* e : {mirror.get(), vulkan.get()}) {
-    bench::Case c{e == mirror.get() ? "scalar CPU (fp32 mirror, 1 thread)"
+    bench::Case c{e == mirror.get() ? "CPU (fp32 mirror, all cores from 8,192 queries)"
                                     : "Vulkan, one invocation per point (upload + dispatch + "
                                       "readback)",
                   double(queryCount)};

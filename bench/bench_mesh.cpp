@@ -1,6 +1,6 @@
 // Final-mesh generation: from finished quad-trees to a watertight indexed mesh — leaf
 // triangulation with stitching across patches (CPU), then positions and normals of every
-// vertex evaluated in one batch, on Vulkan or on the scalar CPU (the fp32 mirror) — in
+// vertex evaluated in one batch, on Vulkan or on the CPU (the fp32 mirror, all cores) — in
 // triangles per second, on the teapot ×N, in one run.
 // Usage: bench_mesh [instances=1000] [--json file]
 #include <cstdio>
@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
                 gpu.mesh.vertexCount());
   bench::Table& table = report.table("mesh", "triangles", title);
   const double tris = double(gpu.mesh.triangleCount());
-  for (auto [path, timing, t] : {std::make_tuple("vertex evaluation on the scalar CPU (fp32 mirror)",
+  for (auto [path, timing, t] : {std::make_tuple("vertex evaluation on the CPU (fp32 mirror, all cores)",
                                                  cpuTime, &cpu),
                                  std::make_tuple("vertex evaluation on Vulkan", gpuTime, &gpu)}) {
     bench::Case c{path, tris, timing};
@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
     table.cases.push_back(c);
   }
   report.print(table);
-  std::printf("\nsplit of the last run: scalar CPU triangulation %.0f ms + evaluation %.0f ms; "
+  std::printf("\nsplit of the last run: CPU triangulation %.0f ms + evaluation %.0f ms; "
               "Vulkan triangulation %.0f ms + evaluation %.0f ms\n",
               cpu.stats.triangulateMs, cpu.stats.evaluateMs, gpu.stats.triangulateMs,
               gpu.stats.evaluateMs);
