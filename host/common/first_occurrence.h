@@ -54,11 +54,15 @@ class TablePool {
 
   void give(Table&& table) {
     const std::lock_guard<std::mutex> lock(mutex_);
-    if (kept_.size() < kKept) kept_.push_back(std::move(table));
+    if (kept_.size() < kKept && table.bucket_count() <= kKeptBuckets)
+      kept_.push_back(std::move(table));
   }
 
  private:
   static constexpr size_t kKept = 4;  // one per shard on this machine's cores, and a spare
+  // What an embedding program may find held between its calls: a table of a huge mesh is
+  // freed, not kept (2¹⁸ buckets: a few MiB each, the tea set's at 10⁻³ well inside).
+  static constexpr size_t kKeptBuckets = size_t(1) << 18;
   std::mutex mutex_;
   std::vector<Table> kept_;
 };

@@ -23,7 +23,7 @@ struct Backend {
   std::unique_ptr<PatchEvaluator> evaluator;
 };
 
-Backend makeMirrorBackend();                       // fp32 mirror, all cores for the tree
+Backend makeMirrorBackend();  // fp32 mirror, all cores for the tree and large evaluations
 Backend makeVulkanBackend(vk::Context& context);
 
 struct TessellationStats {
