@@ -7,6 +7,7 @@
 #pragma once
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "quadtree/quadtree.h"
 
@@ -29,7 +30,26 @@ class RevisingClassifier : public NodeClassifier {
   void classify(const PatchSet& patches, const std::vector<gpu::QuadNode>& nodes,
                 const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,
                 LevelStats& stats) final {
-    inner_.classify(patches, nodes, options, decisions, stats);
+    // Nodes whose decision revise() rewrites whole are not sent to the inner classifier: its
+    // decision for them would never be read. Every classifier decides a node from that node
+    // and its patch alone (the batch only groups the work), so the others' decisions are
+    // those of the whole batch.
+    innerNodes_.clear();
+    innerIndex_.clear();
+    for (size_t i = 0; i < nodes.size(); ++i)
+      if (!rewritesWhole(groupFirst_ + nodes[i].patchIndex, options)) {
+        innerNodes_.push_back(nodes[i]);
+        innerIndex_.push_back(i);
+      }
+    if (innerNodes_.size() == nodes.size()) {
+      inner_.classify(patches, nodes, options, decisions, stats);
+    } else {
+      if (!innerNodes_.empty())
+        inner_.classify(patches, innerNodes_, options, innerDecisions_, stats);
+      decisions.assign(nodes.size(), gpu::NodeDecision{});
+      for (size_t k = 0; k < innerIndex_.size(); ++k)
+        decisions[innerIndex_[k]] = innerDecisions_[k];
+    }
     revise(nodes, options, decisions, stats);
   }
   size_t maxBatchNodes() const override { return inner_.maxBatchNodes(); }
@@ -40,6 +60,11 @@ class RevisingClassifier : public NodeClassifier {
   // nodes[i].patchIndex).
   virtual void revise(const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
                       std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) = 0;
+  // True where revise() assigns decisions[i] whole, reading nothing of it, for every node of
+  // patch `patch` (over all groups) under `options`: the inner classifier skips those nodes.
+  virtual bool rewritesWhole(size_t /*patch*/, const QuadtreeOptions& /*options*/) const {
+    return false;
+  }
   size_t groupFirst() const { return groupFirst_; }
   const NodeClassifier& inner() const { return inner_; }
 
@@ -47,6 +72,10 @@ class RevisingClassifier : public NodeClassifier {
   NodeClassifier& inner_;
   size_t patchCount_;
   size_t groupFirst_ = 0, groupSize_ = 0;
+  // The batch the inner classifier sees when some nodes skip it, and where each came from.
+  std::vector<gpu::QuadNode> innerNodes_;
+  std::vector<size_t> innerIndex_;
+  std::vector<gpu::NodeDecision> innerDecisions_;
 };
 
 }  // namespace tessera

@@ -114,6 +114,12 @@ std::string RevolutionBoundClassifier::name() const {
   return inner().name() + " (surfaces of revolution by their distance bound)";
 }
 
+bool RevolutionBoundClassifier::rewritesWhole(size_t patch, const QuadtreeOptions& options) const {
+  const Patch& p = patches_[patch];
+  return options.rule == SplitRule::Tolerance && p.form &&
+         p.form->profile != RevolutionForm::Profile::None;
+}
+
 void RevolutionBoundClassifier::revise(const std::vector<gpu::QuadNode>& nodes,
                                        const QuadtreeOptions& options,
                                        std::vector<gpu::NodeDecision>& decisions, LevelStats&) {
@@ -122,7 +128,7 @@ void RevolutionBoundClassifier::revise(const std::vector<gpu::QuadNode>& nodes,
   const float up = std::numeric_limits<float>::infinity();
   for (size_t i = 0; i < nodes.size(); ++i) {
     const Patch& patch = patches_[groupFirst() + nodes[i].patchIndex];
-    if (!patch.form || patch.form->profile == RevolutionForm::Profile::None) continue;
+    if (!rewritesWhole(groupFirst() + nodes[i].patchIndex, options)) continue;
     const gpu::vec4& r = nodes[i].rect;
     const RevolutionBound bound =
         revolutionNodeBound(*patch.form, *patch.surface, patch.piece, glm::dvec4(r));

@@ -55,6 +55,9 @@ class RevolutionBoundClassifier final : public RevisingClassifier {
  private:
   void revise(const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
               std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) override;
+  // A known form's nodes under rule T: revise() sets their decisions from the bound alone, so
+  // the inner (rule T's parametric) classifier never decides them.
+  bool rewritesWhole(size_t patch, const QuadtreeOptions& options) const override;
 
   std::vector<Patch> patches_;
   double scale_;
