@@ -37,7 +37,7 @@ class RevisingClassifier : public NodeClassifier {
     innerNodes_.clear();
     innerIndex_.clear();
     for (size_t i = 0; i < nodes.size(); ++i)
-      if (!rewritesWhole(groupFirst_ + nodes[i].patchIndex, options)) {
+      if (!skipRewritten_ || !rewritesWhole(groupFirst_ + nodes[i].patchIndex, options)) {
         innerNodes_.push_back(nodes[i]);
         innerIndex_.push_back(i);
       }
@@ -53,6 +53,9 @@ class RevisingClassifier : public NodeClassifier {
     revise(nodes, options, decisions, stats);
   }
   size_t maxBatchNodes() const override { return inner_.maxBatchNodes(); }
+  // On (the default), nodes whose decision revise() rewrites whole skip the inner classifier;
+  // off, every node goes to it as before that skip: the tests compare the two trees.
+  void setSkipRewritten(bool skip) { skipRewritten_ = skip; }
   size_t maxPatchBufferBytes() const override { return inner_.maxPatchBufferBytes(); }
 
  protected:
@@ -72,6 +75,7 @@ class RevisingClassifier : public NodeClassifier {
   NodeClassifier& inner_;
   size_t patchCount_;
   size_t groupFirst_ = 0, groupSize_ = 0;
+  bool skipRewritten_ = true;
   // The batch the inner classifier sees when some nodes skip it, and where each came from.
   std::vector<gpu::QuadNode> innerNodes_;
   std::vector<size_t> innerIndex_;
