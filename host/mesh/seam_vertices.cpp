@@ -38,6 +38,11 @@ void SeamVertices::findFolds() {
     for (int side = 0; side < 4 && present_[p]; ++side) {
       const SideInfo& s = topology_.sides[p][side];
       if (s.group >= 0 || s.collapsed) continue;
+      // A side of degree 1 (every side of a plane) has two control points, which
+      // findSideFold never folds: skipped without building its point list.
+      const BezierPatch& bp = patches_[p];
+      const int degree = side == kSideV0 || side == kSideV1 ? bp.degreeU : bp.degreeV;
+      if (degree + 1 < 3) continue;
       std::optional<SideFold> fold = findSideFold(sideControlPoints(patches_[p], side));
       if (!fold) continue;
       foldOf_[p][side] = int32_t(folds_.size());

@@ -42,10 +42,18 @@ void appendKey(const BezierPatch& patch, const Indices& indices, std::vector<uin
 }  // namespace
 
 std::vector<glm::dvec3> sideControlPoints(const BezierPatch& patch, int side) {
-  std::vector<size_t> indices;
-  sideIndices(patch, side, indices);
+  // sideIndices' order, without its index list (one allocation, not five).
+  const int n = patch.degreeU, m = patch.degreeV;
+  const bool alongU = side == kSideV0 || side == kSideV1;
   std::vector<glm::dvec3> points;
-  for (size_t k : indices) points.push_back(patch.cp[k]);
+  points.reserve(size_t(alongU ? n : m) + 1);
+  if (alongU) {
+    const int j = side == kSideV0 ? 0 : m;
+    for (int i = 0; i <= n; ++i) points.push_back(patch.cp[size_t(i * (m + 1) + j)]);
+  } else {
+    const int i = side == kSideU0 ? 0 : n;
+    for (int j = 0; j <= m; ++j) points.push_back(patch.cp[size_t(i * (m + 1) + j)]);
+  }
   return points;
 }
 
@@ -64,6 +72,7 @@ PatchTopology findSharedEdges(const std::vector<BezierPatch>& patches) {
   std::vector<uint64_t> keys, forward, backward;
   std::vector<Member> members;
   std::vector<size_t> indices;
+  members.reserve(4 * patches.size());
   for (uint32_t p = 0; p < patches.size(); ++p)
     for (int side = 0; side < 4; ++side) {
       const BezierPatch& patch = patches[p];
@@ -88,7 +97,15 @@ PatchTopology findSharedEdges(const std::vector<BezierPatch>& patches) {
     return std::lexicographical_compare(keys.begin() + a.begin, keys.begin() + a.end,
                                         keys.begin() + b.begin, keys.begin() + b.end);
   };
-  std::stable_sort(members.begin(), members.end(), keyLess);
+  // A stable sort's order is the one order of the keys that keeps ties as seen, so any stable
+  // sort gives it: insertion for a face's few sides (std::stable_sort allocates a buffer).
+  if (members.size() <= 32) {
+    for (size_t k = 1; k < members.size(); ++k)
+      for (size_t j = k; j > 0 && keyLess(members[j], members[j - 1]); --j)
+        std::swap(members[j], members[j - 1]);
+  } else {
+    std::stable_sort(members.begin(), members.end(), keyLess);
+  }
   for (size_t first = 0; first < members.size();) {
     size_t last = first + 1;
     while (last < members.size() && !keyLess(members[first], members[last])) ++last;
