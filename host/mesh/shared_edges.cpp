@@ -73,6 +73,9 @@ PatchTopology findSharedEdges(const std::vector<BezierPatch>& patches) {
   std::vector<Member> members;
   std::vector<size_t> indices;
   members.reserve(4 * patches.size());
+  size_t keyWords = 0;  // 4 words a side point, each point on two sides
+  for (const BezierPatch& patch : patches) keyWords += 8 * size_t(patch.degreeU + patch.degreeV + 2);
+  keys.reserve(keyWords);
   for (uint32_t p = 0; p < patches.size(); ++p)
     for (int side = 0; side < 4; ++side) {
       const BezierPatch& patch = patches[p];

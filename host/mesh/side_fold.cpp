@@ -1,15 +1,22 @@
 #include "mesh/side_fold.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace tessera {
 namespace {
 
+// de Casteljau on a copy of c: on the stack for a side's few points (the fold search calls it
+// 256 times a side), the same arithmetic either way.
 double bernstein(const std::vector<double>& c, double t) {
-  std::vector<double> b = c;
-  for (size_t r = 1; r < b.size(); ++r)
-    for (size_t k = 0; k + r < b.size(); ++k) b[k] = (1 - t) * b[k] + t * b[k + 1];
+  std::array<double, 16> small;
+  std::vector<double> large;
+  double* b = small.data();
+  if (c.size() > small.size()) b = (large = c).data();
+  else std::copy(c.begin(), c.end(), small.begin());
+  for (size_t r = 1; r < c.size(); ++r)
+    for (size_t k = 0; k + r < c.size(); ++k) b[k] = (1 - t) * b[k] + t * b[k + 1];
   return b[0];
 }
 
