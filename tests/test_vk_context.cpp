@@ -1,6 +1,8 @@
 #include <catch2/catch.hpp>
 
 #include <cstdlib>
+#include <stdexcept>
+#include <string>
 
 #include <type_traits>
 
@@ -48,6 +50,25 @@ TEST_CASE("buffers round-trip data and grow on demand", "[gpu][vk]") {
   REQUIRE(buffer.size() >= 5000);
   REQUIRE_THROWS_AS(buffer.upload(values.data(), buffer.size() + 1), std::out_of_range);
   test::requireValidationClean();
+}
+
+// Every Vulkan backend checks a binding against the device's range before it allocates, so
+// an oversized batch is a clear error naming the stage, not a clipped descriptor.
+TEST_CASE("a binding past the device's storage buffer range is refused by name", "[gpu][vk]") {
+  vk::Context& context = test::gpuContext();
+  const uint64_t limit = context.info().maxStorageBufferRange;
+  INFO("device " << context.info().name << ", range " << limit);
+  REQUIRE(limit > 0);
+  REQUIRE_NOTHROW(vk::requireStorageRange(context, limit, "test stage"));
+  try {
+    vk::requireStorageRange(context, limit + 1, "test stage");
+    FAIL("no error one byte past the range");
+  } catch (const std::length_error& e) {
+    const std::string message = e.what();
+    CHECK(message.find("test stage") == 0);
+    CHECK(message.find(std::to_string(limit + 1)) != std::string::npos);
+    CHECK(message.find(std::to_string(limit) + " bytes") != std::string::npos);
+  }
 }
 
 // Dispatch tables are per context (host/vk/loader.h): a second instance and device that come

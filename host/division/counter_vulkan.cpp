@@ -45,13 +45,8 @@ class VulkanDivisionCounter final : public DivisionCounter {
 
  private:
   void ensure(vk::Buffer& buffer, size_t bytes, vk::BufferUse use) {
-    if (buffer.handle() != VK_NULL_HANDLE && buffer.size() >= bytes) return;
-    const uint64_t limit = context_.info().maxStorageBufferRange;
-    if (bytes > limit)
-      throw std::length_error("division counts: " + std::to_string(bytes) +
-                              " bytes exceed the device's storage buffer range (" +
-                              std::to_string(limit) + " bytes); split the batch");
-    buffer = vk::Buffer(context_, std::max<size_t>(bytes, 16), use);
+    vk::requireStorageRange(context_, bytes, "division counts");
+    vk::ensureCapacity(context_, buffer, std::max<size_t>(bytes, 16), use);
   }
 
   vk::Context& context_;

@@ -28,11 +28,7 @@ class VulkanGridEvaluator final : public GridEvaluator {
                                   uint32_t pointsPerSide) override {
     validateGridPointsPerSide(pointsPerSide);
     const size_t bytes = gridVertexCount(patches.size(), pointsPerSide) * sizeof(gpu::GridVertex);
-    const uint64_t limit = context_.info().maxStorageBufferRange;
-    if (limit && bytes > limit)
-      throw std::length_error("grid evaluation: " + std::to_string(bytes) +
-                              " bytes of vertices exceed the device's storage buffer range of " +
-                              std::to_string(limit));
+    vk::requireStorageRange(context_, bytes, "grid evaluation (vertices)");
     if (patches.empty()) return nullptr;
     vk::ensureCapacity(context_, patches_, patches.size() * sizeof(gpu::BicubicPatch),
                        vk::BufferUse::Upload);

@@ -32,10 +32,8 @@ StitchPatternRunner::StitchPatternRunner(vk::Context& context,
 }
 
 void StitchPatternRunner::checkRange(size_t vertexBytes, size_t indexBytes) const {
-  const uint64_t limit = context_.info().maxStorageBufferRange;
-  if (limit && (vertexBytes > limit || indexBytes > limit))
-    throw std::length_error("real-time pattern: " + std::to_string(vertexBytes) +
-                            " bytes of vertices exceed the device's storage buffer range");
+  vk::requireStorageRange(context_, vertexBytes, "real-time pattern (vertices)");
+  vk::requireStorageRange(context_, indexBytes, "real-time pattern (indices)");
 }
 
 void StitchPatternRunner::run(const std::vector<gpu::StitchPatch>& records,

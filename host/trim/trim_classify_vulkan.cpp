@@ -49,13 +49,8 @@ class VulkanTrimClassifier final : public TrimClassifier {
 
  private:
   void ensure(vk::Buffer& buffer, size_t bytes, vk::BufferUse use) {
-    if (buffer.handle() != VK_NULL_HANDLE && buffer.size() >= bytes) return;
-    const uint64_t limit = context_.info().maxStorageBufferRange;
-    if (bytes > limit)
-      throw std::length_error("trim classification: " + std::to_string(bytes) +
-                              " bytes exceed the device's storage buffer range (" +
-                              std::to_string(limit) + " bytes); split the batch");
-    buffer = vk::Buffer(context_, std::max<size_t>(bytes, 16), use);
+    vk::requireStorageRange(context_, bytes, "trim classification");
+    vk::ensureCapacity(context_, buffer, std::max<size_t>(bytes, 16), use);
   }
 
   void upload(vk::Buffer& buffer, const void* data, size_t bytes) {

@@ -105,6 +105,14 @@ void Buffer::download(void* target, size_t bytes) const {
   std::memcpy(target, mapped_, bytes);
 }
 
+void requireStorageRange(const Context& context, uint64_t bytes, const std::string& what) {
+  const uint64_t limit = context.info().maxStorageBufferRange;
+  if (limit == 0 || bytes <= limit) return;
+  throw std::length_error(what + ": " + std::to_string(bytes) +
+                          " bytes exceed the device's storage buffer range (" +
+                          std::to_string(limit) + " bytes); split the batch");
+}
+
 void ensureCapacity(Context& context, Buffer& buffer, VkDeviceSize bytes, BufferUse use) {
   if (buffer.handle() && buffer.size() >= bytes) return;
   VkDeviceSize grown = buffer.size() ? buffer.size() : 256;

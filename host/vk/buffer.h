@@ -5,7 +5,9 @@
 #pragma once
 #include "vk/backend_only.h"
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "vk/context.h"
@@ -59,6 +61,11 @@ class Buffer {
   void* mapped_ = nullptr;
   bool coherent_ = true;
 };
+
+// Throws std::length_error naming `what` when one binding of `bytes` is more than a storage
+// buffer descriptor may address on this device (maxStorageBufferRange; 128 MiB on lavapipe):
+// the caller splits its batch instead of binding a range the driver would clip.
+void requireStorageRange(const Context& context, uint64_t bytes, const std::string& what);
 
 // Grows `buffer` (recreating it) when it is smaller than `bytes`; keeps it otherwise, so
 // per-level buffers are reused across levels and frames.
