@@ -14,21 +14,25 @@
 #include "lib/tolerance_bound.h"
 #include "lib/dispatch.glsl"
 
-layout(std430, binding = 0) readonly buffer Patches { BicubicPatch patches[]; };
-layout(std430, binding = 1) readonly buffer Nodes { QuadNode nodes[]; };
-layout(std430, binding = 2) writeonly buffer Decisions { NodeDecision decisions[]; };
-layout(std430, binding = 3) readonly buffer Nets { ToleranceNetBounds nets[]; };
+#include "lib/tolerance_texels.glsl"  // bindings 0-2: patches and nodes
+
+layout(std430, binding = 3) writeonly buffer Decisions { NodeDecision decisions[]; };
+// The first dispatch's ToleranceNetBounds, 3 RGBA32F texels a node (texel_view.h, as above).
+layout(binding = 4) uniform samplerBuffer netTexels;
 
 layout(push_constant) uniform Push { ClassifyPush pc; };
 
 void main() {
   uint index = linearInvocationIndex();
   if (index >= pc.nodeCount) return;
-  QuadNode node = nodes[index];
-  ToleranceNetBounds first = nets[index];
+  QuadNode node = fetchNode(index);
+  ToleranceNetBounds first;
+  first.ssSt = texelFetch(netTexels, int(3u * index));
+  first.ssCentre = texelFetch(netTexels, int(3u * index + 1u));
+  first.stCentre = texelFetch(netTexels, int(3u * index + 2u));
   vec3 errors;
   errors.xy = first.ssSt.yw;
-  NetTerms tt = bicubicNetBound(patches[node.patchIndex], node.rect, 2, errors.z);
+  NetTerms tt = bicubicNetBound(fetchPatch(node.patchIndex), node.rect, 2, errors.z);
   ToleranceTerms terms = bicubicTermsOfNets(netTermsOf(first.ssCentre, first.ssSt.x),
                                             netTermsOf(first.stCentre, first.ssSt.z), tt, errors,
                                             node.rect);

@@ -15,20 +15,21 @@
 #include "lib/tolerance_bound.h"
 #include "lib/dispatch.glsl"
 
-layout(std430, binding = 0) readonly buffer Patches { BicubicPatch patches[]; };
-layout(std430, binding = 1) readonly buffer Nodes { QuadNode nodes[]; };
-layout(std430, binding = 2) writeonly buffer Nets { ToleranceNetBounds nets[]; };
+#include "lib/tolerance_texels.glsl"  // bindings 0-2: patches and nodes
+
+layout(std430, binding = 3) writeonly buffer Nets { ToleranceNetBounds nets[]; };
 
 layout(push_constant) uniform Push { ClassifyPush pc; };
 
 void main() {
   uint index = linearInvocationIndex();
   if (index >= pc.nodeCount) return;
-  QuadNode node = nodes[index];
+  QuadNode node = fetchNode(index);
+  BicubicPatch bp = fetchPatch(node.patchIndex);
   float ssError;
   float stError;
-  NetTerms ss = bicubicNetBound(patches[node.patchIndex], node.rect, 0, ssError);
-  NetTerms st = bicubicNetBound(patches[node.patchIndex], node.rect, 1, stError);
+  NetTerms ss = bicubicNetBound(bp, node.rect, 0, ssError);
+  NetTerms st = bicubicNetBound(bp, node.rect, 1, stError);
   nets[index].ssSt = vec4(ss.largest, ssError, st.largest, stError);
   nets[index].ssCentre = netCentreSpread(ss);
   nets[index].stCentre = netCentreSpread(st);

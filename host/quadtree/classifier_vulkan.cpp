@@ -3,8 +3,9 @@
 // quadtree_midpoint.comp.glsl and quadtree_general_midpoint.comp.glsl, or rule-T-only ones:
 // quadtree_general_tolerance.comp.glsl, and for bicubic patches two dispatches a level,
 // quadtree_tolerance_nets.comp.glsl then quadtree_tolerance.comp.glsl, whose pipelines are built
-// on two threads. Pipelines are made once per (shader, rule, S) and buffers grow and are kept
-// between levels.
+// on two threads and which read the patches, the nodes and the nets as uniform texel buffers
+// (shaders/lib/tolerance_texels.glsl). Pipelines are made once per (shader, rule, S) and
+// buffers grow and are kept between levels.
 #include <cstdint>  // before the generated SPIR-V array, which uses uint32_t
 #include <map>
 #include <tuple>
@@ -23,9 +24,19 @@
 #include "vk/background_pipeline.h"
 #include "vk/buffer.h"
 #include "vk/pipeline.h"
+#include "vk/texel_view.h"
 
 namespace tessera {
 namespace {
+
+// Buffers that rule T's bicubic shaders read by texelFetch (and the others as storage buffers).
+constexpr VkBufferUsageFlags kTexelReadable =
+    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
+// Rule T's bicubic shaders: bindings 0-2 (patches, nodes as rects, nodes as words) and, for the
+// deciding one, 4 (the nets) are texel buffers; 3 is the storage buffer each writes.
+constexpr uint32_t kNetsTexelBindings = 0b0111u;
+constexpr uint32_t kDecidingTexelBindings = 0b10111u;
+constexpr size_t kNetTexelsPerNode = sizeof(gpu::ToleranceNetBounds) / 16;
 
 class VulkanClassifier final : public NodeClassifier {
  public:
@@ -35,12 +46,16 @@ class VulkanClassifier final : public NodeClassifier {
 
   // Every buffer is bound whole as one storage buffer, so none may exceed the device's
   // maxStorageBufferRange (128 MiB on lavapipe): nodes and decisions are 32 bytes each.
+  // Rule T's bicubic shaders see nodes and nets through texel views, which
+  // maxTexelBufferElements bounds too (not the binding on lavapipe or NVIDIA's GPUs).
   size_t maxBatchNodes() const override {
-    return size_t(context_.info().maxStorageBufferRange) /
-           std::max(sizeof(gpu::QuadNode), sizeof(gpu::NodeDecision));
+    return std::min(size_t(context_.info().maxStorageBufferRange) /
+                        std::max(sizeof(gpu::QuadNode), sizeof(gpu::NodeDecision)),
+                    size_t(vk::maxTexelViewBytes(context_)) / sizeof(gpu::ToleranceNetBounds));
   }
   size_t maxPatchBufferBytes() const override {
-    return size_t(context_.info().maxStorageBufferRange);
+    return std::min(size_t(context_.info().maxStorageBufferRange),
+                    size_t(vk::maxTexelViewBytes(context_)));
   }
 
   void beginTree(const PatchSet& patches) override {
@@ -49,13 +64,13 @@ class VulkanClassifier final : public NodeClassifier {
     if (patches.size() == 0) return;
     if (patches.isBicubic()) {
       vk::ensureCapacity(context_, patches_, patches.size() * sizeof(gpu::BicubicPatch),
-                         vk::BufferUse::Upload);
+                         vk::BufferUse::Upload, kTexelReadable);
       patches_.upload(patches.bicubic());
       return;
     }
     const GeneralPatchSet& general = patches.general();
     vk::ensureCapacity(context_, patches_, general.patches.size() * sizeof(gpu::GeneralPatch),
-                       vk::BufferUse::Upload);
+                       vk::BufferUse::Upload, kTexelReadable);
     vk::ensureCapacity(context_, points_, general.points.size() * sizeof(gpu::vec4),
                        vk::BufferUse::Upload);
     patches_.upload(general.patches);
@@ -71,7 +86,7 @@ class VulkanClassifier final : public NodeClassifier {
     if (general)
       run(true, {&patches_, &nodes_, &decisions_, &points_}, nodes, options, decisions, stats);
     else if (options.rule == SplitRule::Tolerance)
-      run(false, {&patches_, &nodes_, &decisions_, &netBounds_}, nodes, options, decisions, stats);
+      run(false, {}, nodes, options, decisions, stats);
     else
       run(false, {&patches_, &nodes_, &decisions_}, nodes, options, decisions, stats);
   }
@@ -91,9 +106,9 @@ class VulkanClassifier final : public NodeClassifier {
     vk::ComputePipeline* nets = twoDispatches ? &toleranceNets_.get() : nullptr;
     if (nets)
       vk::ensureCapacity(context_, netBounds_, nodes.size() * sizeof(gpu::ToleranceNetBounds),
-                         vk::BufferUse::Upload);
+                         vk::BufferUse::Upload, kTexelReadable);
     vk::ensureCapacity(context_, nodes_, nodes.size() * sizeof(gpu::QuadNode),
-                       vk::BufferUse::Upload);
+                       vk::BufferUse::Upload, kTexelReadable);
     vk::ensureCapacity(context_, decisions_, nodes.size() * sizeof(gpu::NodeDecision),
                        vk::BufferUse::Readback);
     nodes_.upload(nodes);
@@ -102,10 +117,16 @@ class VulkanClassifier final : public NodeClassifier {
       timer_.reset(cmd);
       timer_.mark(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
       if (nets) {
-        nets->dispatch(cmd, {&patches_, &nodes_, &netBounds_}, &push, push.nodeCount);
+        const VkBufferView points = patchPoints_.viewOf(patches_);
+        const VkBufferView rects = nodeRects_.viewOf(nodes_);
+        const VkBufferView words = nodeWords_.viewOf(nodes_);
+        nets->dispatchBindings(cmd, {points, rects, words, &netBounds_}, &push, push.nodeCount);
         vk::computeToComputeBarrier(context_, cmd);
+        pipeline.dispatchBindings(cmd, {points, rects, words, &decisions_, netTexels_.viewOf(netBounds_)},
+                                  &push, push.nodeCount);
+      } else {
+        pipeline.dispatch(cmd, buffers, &push, push.nodeCount);
       }
-      pipeline.dispatch(cmd, buffers, &push, push.nodeCount);
       timer_.mark(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
       vk::computeToHostBarrier(context_, cmd);
     });
@@ -120,12 +141,14 @@ class VulkanClassifier final : public NodeClassifier {
     auto it = pipelines_.find(key);
     if (it == pipelines_.end()) {
       const ShaderCode code = shaderFor(general, rule);
+      const bool texels = !general && rule == gpu::kSplitRuleTolerance;
       vk::ComputePipelineDesc desc{code.name,
                                    code.spirv,
                                    code.bytes,
-                                   general || rule == gpu::kSplitRuleTolerance ? 4u : 3u,
+                                   texels ? 5u : general ? 4u : 3u,
                                    sizeof(gpu::ClassifyPush),
-                                   {{0, rule}, {1, uint32_t(samples)}}};
+                                   {{0, rule}, {1, uint32_t(samples)}},
+                                   texels ? kDecidingTexelBindings : 0u};
       it = pipelines_.emplace(key, std::make_unique<vk::ComputePipeline>(context_, desc)).first;
     }
     return *it->second;
@@ -164,9 +187,14 @@ class VulkanClassifier final : public NodeClassifier {
   vk::BackgroundPipeline toleranceNets_{
       context_,
       {"quadtree_tolerance_nets.comp", kSpirv_quadtree_tolerance_nets_comp,
-       sizeof(kSpirv_quadtree_tolerance_nets_comp), 3, sizeof(gpu::ClassifyPush), {}}};
+       sizeof(kSpirv_quadtree_tolerance_nets_comp), 4, sizeof(gpu::ClassifyPush), {},
+       kNetsTexelBindings}};
   std::map<std::tuple<bool, uint32_t, int>, std::unique_ptr<vk::ComputePipeline>> pipelines_;
   vk::Buffer patches_, nodes_, decisions_, points_, netBounds_;
+  vk::TexelView patchPoints_{context_, VK_FORMAT_R32G32B32A32_SFLOAT};
+  vk::TexelView nodeRects_{context_, VK_FORMAT_R32G32B32A32_SFLOAT};
+  vk::TexelView nodeWords_{context_, VK_FORMAT_R32G32B32A32_UINT};
+  vk::TexelView netTexels_{context_, VK_FORMAT_R32G32B32A32_SFLOAT};
   size_t uploadedCount_ = 0;
   bool uploadedGeneral_ = false;
 };

@@ -113,13 +113,14 @@ void requireStorageRange(const Context& context, uint64_t bytes, const std::stri
                           std::to_string(limit) + " bytes); split the batch");
 }
 
-void ensureCapacity(Context& context, Buffer& buffer, VkDeviceSize bytes, BufferUse use) {
+void ensureCapacity(Context& context, Buffer& buffer, VkDeviceSize bytes, BufferUse use,
+                    VkBufferUsageFlags usage) {
   if (buffer.handle() && buffer.size() >= bytes) return;
   VkDeviceSize grown = buffer.size() ? buffer.size() : 256;
   while (grown < bytes) grown *= 2;
   // Doubling must not push a buffer past what one descriptor can address.
   grown = std::max(bytes, std::min<VkDeviceSize>(grown, context.info().maxStorageBufferRange));
-  buffer = Buffer(context, grown, use);
+  buffer = Buffer(context, grown, use, usage);
 }
 
 }  // namespace tessera::vk

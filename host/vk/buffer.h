@@ -67,8 +67,9 @@ class Buffer {
 // the caller splits its batch instead of binding a range the driver would clip.
 void requireStorageRange(const Context& context, uint64_t bytes, const std::string& what);
 
-// Grows `buffer` (recreating it) when it is smaller than `bytes`; keeps it otherwise, so
-// per-level buffers are reused across levels and frames.
-void ensureCapacity(Context& context, Buffer& buffer, VkDeviceSize bytes, BufferUse use);
+// Grows `buffer` (recreating it, with `usage`) when it is smaller than `bytes`; keeps it
+// otherwise, so per-level buffers are reused across levels and frames.
+void ensureCapacity(Context& context, Buffer& buffer, VkDeviceSize bytes, BufferUse use,
+                    VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 
 }  // namespace tessera::vk

@@ -67,6 +67,7 @@ struct DeviceInfo {
   bool usable = false;         // meets Tessera's requirements
   std::string unusableReason;  // why not, when !usable
   uint64_t maxStorageBufferRange = 0;
+  uint32_t maxTexelBufferElements = 0;  // texels one uniform texel buffer view may address
   // The largest single allocation (Vulkan 1.1's maintenance3 limit); 0 where not reported.
   uint64_t maxMemoryAllocationSize = 0;
   uint32_t maxComputeWorkGroupCountX = 0;

@@ -58,6 +58,7 @@ DeviceInfo describeDevice(const InstanceTable& vk, VkPhysicalDevice device, uint
   info.type = props.deviceType;
   info.apiVersion = props.apiVersion;
   info.maxStorageBufferRange = props.limits.maxStorageBufferRange;
+  info.maxTexelBufferElements = props.limits.maxTexelBufferElements;
   info.maxComputeWorkGroupCountX = props.limits.maxComputeWorkGroupCount[0];
   info.timestampPeriodNs = props.limits.timestampPeriod;
 

@@ -21,7 +21,8 @@ ComputePipeline::ComputePipeline(Context& context, const ComputePipelineDesc& de
     : context_(context),
       name_(desc.name),
       bufferCount_(desc.storageBufferCount),
-      pushBytes_(desc.pushConstantBytes) {
+      pushBytes_(desc.pushConstantBytes),
+      texelMask_(desc.texelBufferMask) {
   const Stopwatch stopwatch;
   const DeviceTable& vk = context.vk();
   VkDevice device = context.device();
@@ -29,7 +30,8 @@ ComputePipeline::ComputePipeline(Context& context, const ComputePipelineDesc& de
   std::vector<VkDescriptorSetLayoutBinding> bindings(bufferCount_);
   for (uint32_t i = 0; i < bufferCount_; ++i) {
     bindings[i].binding = i;
-    bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    bindings[i].descriptorType = (texelMask_ >> i) & 1u ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER
+                                                        : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     bindings[i].descriptorCount = 1;
     bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
   }
@@ -94,12 +96,50 @@ void ComputePipeline::dispatch(VkCommandBuffer cmd, std::initializer_list<const 
   dispatch(cmd, infos, pushConstants, invocations);
 }
 
+void ComputePipeline::dispatchBindings(VkCommandBuffer cmd, std::initializer_list<Binding> bindings,
+                                       const void* pushConstants, uint32_t invocations) const {
+  if (bindings.size() != bufferCount_)
+    throw std::invalid_argument(name_ + ": expected " + std::to_string(bufferCount_) +
+                                " bindings, got " + std::to_string(bindings.size()));
+  std::vector<VkDescriptorBufferInfo> infos(bindings.size());
+  std::vector<VkBufferView> views(bindings.size());
+  std::vector<VkWriteDescriptorSet> writes(bindings.size());
+  uint32_t i = 0;
+  for (const Binding& b : bindings) {
+    const bool texel = (texelMask_ >> i) & 1u;
+    if (texel != (b.texelView != VK_NULL_HANDLE))
+      throw std::invalid_argument(name_ + ": binding " + std::to_string(i) + " must be a " +
+                                  (texel ? "texel buffer view" : "storage buffer"));
+    writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+    writes[i].dstBinding = i;
+    writes[i].descriptorCount = 1;
+    if (texel) {
+      views[i] = b.texelView;
+      writes[i].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+      writes[i].pTexelBufferView = &views[i];
+    } else {
+      infos[i] = {b.buffer->handle(), 0, VK_WHOLE_SIZE};
+      writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+      writes[i].pBufferInfo = &infos[i];
+    }
+    ++i;
+  }
+  if (invocations == 0) return;
+  const DeviceTable& vk = context_.vk();
+  vk.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+  vk.vkCmdPushDescriptorSetKHR(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0,
+                               static_cast<uint32_t>(writes.size()), writes.data());
+  recordDispatch(cmd, pushConstants, invocations);
+}
+
 void ComputePipeline::dispatch(VkCommandBuffer cmd,
                                const std::vector<VkDescriptorBufferInfo>& infos,
                                const void* pushConstants, uint32_t invocations) const {
   if (infos.size() != bufferCount_)
     throw std::invalid_argument(name_ + ": expected " + std::to_string(bufferCount_) +
                                 " buffers, got " + std::to_string(infos.size()));
+  if (texelMask_)
+    throw std::invalid_argument(name_ + ": has texel buffer bindings (dispatchBindings)");
   for (const VkDescriptorBufferInfo& info : infos)
     if (info.offset % context_.minStorageBufferOffsetAlignment() != 0)
       throw std::invalid_argument(name_ + ": buffer offset " + std::to_string(info.offset) +
@@ -119,6 +159,12 @@ void ComputePipeline::dispatch(VkCommandBuffer cmd,
   }
   vk.vkCmdPushDescriptorSetKHR(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0,
                                static_cast<uint32_t>(writes.size()), writes.data());
+  recordDispatch(cmd, pushConstants, invocations);
+}
+
+void ComputePipeline::recordDispatch(VkCommandBuffer cmd, const void* pushConstants,
+                                     uint32_t invocations) const {
+  const DeviceTable& vk = context_.vk();
   if (pushBytes_)
     vk.vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes_,
                           pushConstants);

@@ -24,9 +24,11 @@ struct ComputePipelineDesc {
   std::string name;  // for error messages
   const uint32_t* spirv = nullptr;
   size_t spirvBytes = 0;
-  uint32_t storageBufferCount = 0;
+  uint32_t storageBufferCount = 0;  // bindings 0..count−1
   uint32_t pushConstantBytes = 0;
   std::vector<SpecConstant> specialization;
+  // Bit i set: binding i is a uniform texel buffer (vk/texel_view.h), not a storage buffer.
+  uint32_t texelBufferMask = 0;
 };
 
 class ComputePipeline {
@@ -46,13 +48,28 @@ class ComputePipeline {
   void dispatch(VkCommandBuffer cmd, const std::vector<VkDescriptorBufferInfo>& buffers,
                 const void* pushConstants, uint32_t invocations) const;
 
+  // One binding of dispatchBindings: a whole storage buffer, or a uniform texel buffer view
+  // where the pipeline's texelBufferMask names the binding.
+  struct Binding {
+    const Buffer* buffer = nullptr;
+    VkBufferView texelView = VK_NULL_HANDLE;
+    Binding(const Buffer* storage) : buffer(storage) {}  // NOLINT: lists read as buffers
+    Binding(VkBufferView view) : texelView(view) {}      // NOLINT
+  };
+  void dispatchBindings(VkCommandBuffer cmd, std::initializer_list<Binding> bindings,
+                        const void* pushConstants, uint32_t invocations) const;
+
   const std::string& name() const { return name_; }
 
  private:
+  // Push constants and the dispatch, after the pipeline and its descriptors are bound.
+  void recordDispatch(VkCommandBuffer cmd, const void* pushConstants, uint32_t invocations) const;
+
   Context& context_;
   std::string name_;
   uint32_t bufferCount_ = 0;
   uint32_t pushBytes_ = 0;
+  uint32_t texelMask_ = 0;
   VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
   VkPipelineLayout layout_ = VK_NULL_HANDLE;
   VkPipeline pipeline_ = VK_NULL_HANDLE;

@@ -1,0 +1,76 @@
+// Rule T's quad-tree alone (issue 15), on the tea set as bench_occt builds it: per level, the
+// minimum over runs of the GPU time, the rest of the classify call and the frontier time, and
+// the tree's total, for one classifier. Small enough to run under callgrind or perf stat.
+// Usage: bench_tree_levels [tolerances=0.01,0.001] [runs=20] [vulkan|mirror]
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "common/stopwatch.h"
+#include "eval/patch_set.h"
+#include "geometry/model_frame.h"
+#include "io/bpt_reader.h"
+#include "quadtree/quadtree.h"
+#include "vk/context.h"
+
+using namespace tessera;
+
+int main(int argc, char** argv) {
+  std::vector<double> tolerances = {0.01, 0.001};
+  if (argc > 1) {
+    tolerances.clear();
+    std::stringstream list(argv[1]);
+    for (std::string item; std::getline(list, item, ',');) tolerances.push_back(std::stod(item));
+  }
+  const int runs = argc > 2 ? std::max(1, std::atoi(argv[2])) : 20;
+  const std::string which = argc > 3 ? argv[3] : "vulkan";
+
+  std::vector<BezierPatch> patches;
+  const char* names[] = {"teapot", "teacup", "teaspoon"};
+  for (int k = 0; k < 3; ++k) {
+    auto model = readBpt(std::string(TESSERA_BENCH_DATA "/") + names[k] + ".bpt");
+    for (auto& p : model) {
+      for (auto& c : p.cp) c.x += 10.0 * double(k);  // as bench_occt places them
+      patches.push_back(p);
+    }
+  }
+  const ModelFrame frame = modelFrame(patches);
+  const PatchSet set = toPatchSet(toLocalFrame(patches, frame));
+
+  vk::ContextOptions contextOptions;
+  vk::Context context(contextOptions);
+  auto classifier = which == "mirror" ? makeParallelMirrorClassifier() : makeVulkanClassifier(context);
+  std::printf("classifier %s\n", classifier->name().c_str());
+
+  for (double tolerance : tolerances) {
+    QuadtreeOptions options = toleranceOptions(tolerance / frame.scale);
+    std::vector<LevelStats> best;
+    double bestTotal = 1e30;
+    size_t leaves = 0;
+    for (int run = 0; run < runs; ++run) {
+      const Stopwatch stopwatch;
+      QuadtreeResult tree = buildQuadtree(set, options, *classifier);
+      bestTotal = std::min(bestTotal, stopwatch.elapsedMs());
+      leaves = tree.leaves.size();
+      if (best.empty()) best = tree.levels;
+      for (size_t l = 0; l < tree.levels.size() && l < best.size(); ++l) {
+        best[l].gpuMs = std::min(best[l].gpuMs, tree.levels[l].gpuMs);
+        best[l].classifyMs = std::min(best[l].classifyMs, tree.levels[l].classifyMs);
+        best[l].frontierMs = std::min(best[l].frontierMs, tree.levels[l].frontierMs);
+      }
+    }
+    std::printf("δ %g: %zu leaves, tree min %.3f ms over %d runs\n", tolerance, leaves, bestTotal,
+                runs);
+    std::printf("| level | nodes | splits | GPU ms | classify ms | frontier ms |\n");
+    double gpu = 0, classify = 0, frontier = 0;
+    for (const LevelStats& l : best) {
+      std::printf("| %u | %zu | %zu | %.3f | %.3f | %.3f |\n", l.level, l.nodes, l.splits, l.gpuMs,
+                  l.classifyMs, l.frontierMs);
+      gpu += l.gpuMs, classify += l.classifyMs, frontier += l.frontierMs;
+    }
+    std::printf("| sum of minima | | | %.3f | %.3f | %.3f |\n", gpu, classify, frontier);
+  }
+  return 0;
+}
