@@ -14,11 +14,11 @@
 #include "lib/tolerance_bound.h"
 #include "lib/dispatch.glsl"
 
-#include "lib/tolerance_texels.glsl"  // bindings 0-2: patches and nodes
+#include "lib/tolerance_texels.glsl"  // bindings 0-1: patches and nodes
 
+// The first dispatch's ToleranceNetBounds, 3 texels a node.
+layout(binding = 2) uniform usamplerBuffer netTexels;
 layout(std430, binding = 3) writeonly buffer Decisions { NodeDecision decisions[]; };
-// The first dispatch's ToleranceNetBounds, 3 RGBA32F texels a node (texel_view.h, as above).
-layout(binding = 4) uniform samplerBuffer netTexels;
 
 layout(push_constant) uniform Push { ClassifyPush pc; };
 
@@ -27,9 +27,9 @@ void main() {
   if (index >= pc.nodeCount) return;
   QuadNode node = fetchNode(index);
   ToleranceNetBounds first;
-  first.ssSt = texelFetch(netTexels, int(3u * index));
-  first.ssCentre = texelFetch(netTexels, int(3u * index + 1u));
-  first.stCentre = texelFetch(netTexels, int(3u * index + 2u));
+  first.ssSt = fetchVec4(netTexels, 3u * index);
+  first.ssCentre = fetchVec4(netTexels, 3u * index + 1u);
+  first.stCentre = fetchVec4(netTexels, 3u * index + 2u);
   vec3 errors;
   errors.xy = first.ssSt.yw;
   NetTerms tt = bicubicNetBound(fetchPatch(node.patchIndex), node.rect, 2, errors.z);

@@ -15,9 +15,9 @@
 #include "lib/tolerance_bound.h"
 #include "lib/dispatch.glsl"
 
-#include "lib/tolerance_texels.glsl"  // bindings 0-2: patches and nodes
+#include "lib/tolerance_texels.glsl"  // bindings 0-1: patches and nodes
 
-layout(std430, binding = 3) writeonly buffer Nets { ToleranceNetBounds nets[]; };
+layout(std430, binding = 2) writeonly buffer Nets { ToleranceNetBounds nets[]; };
 
 layout(push_constant) uniform Push { ClassifyPush pc; };
 

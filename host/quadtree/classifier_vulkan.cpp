@@ -29,14 +29,15 @@
 namespace tessera {
 namespace {
 
-// Buffers that rule T's bicubic shaders read by texelFetch (and the others as storage buffers).
-constexpr VkBufferUsageFlags kTexelReadable =
+// Buffers that rule T's bicubic shaders read as texel buffers (the other shaders as storage
+// buffers).
+constexpr VkBufferUsageFlags kTexelUsage =
     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
-// Rule T's bicubic shaders: bindings 0-2 (patches, nodes as rects, nodes as words) and, for the
-// deciding one, 4 (the nets) are texel buffers; 3 is the storage buffer each writes.
-constexpr uint32_t kNetsTexelBindings = 0b0111u;
-constexpr uint32_t kDecidingTexelBindings = 0b10111u;
-constexpr size_t kNetTexelsPerNode = sizeof(gpu::ToleranceNetBounds) / 16;
+// Rule T's bicubic shaders (lib/tolerance_texels.glsl): the nets shader reads patches and nodes
+// as texel buffers (bindings 0, 1) and writes the nets (2, a storage buffer); the deciding
+// shader reads patches, nodes and nets (0-2) and writes the decisions (3).
+constexpr uint32_t kNetsTexelBindings = 0b011u;
+constexpr uint32_t kDecidingTexelBindings = 0b0111u;
 
 class VulkanClassifier final : public NodeClassifier {
  public:
@@ -64,13 +65,13 @@ class VulkanClassifier final : public NodeClassifier {
     if (patches.size() == 0) return;
     if (patches.isBicubic()) {
       vk::ensureCapacity(context_, patches_, patches.size() * sizeof(gpu::BicubicPatch),
-                         vk::BufferUse::Upload, kTexelReadable);
+                         vk::BufferUse::Upload, kTexelUsage);
       patches_.upload(patches.bicubic());
       return;
     }
     const GeneralPatchSet& general = patches.general();
     vk::ensureCapacity(context_, patches_, general.patches.size() * sizeof(gpu::GeneralPatch),
-                       vk::BufferUse::Upload, kTexelReadable);
+                       vk::BufferUse::Upload, kTexelUsage);
     vk::ensureCapacity(context_, points_, general.points.size() * sizeof(gpu::vec4),
                        vk::BufferUse::Upload);
     patches_.upload(general.patches);
@@ -106,9 +107,9 @@ class VulkanClassifier final : public NodeClassifier {
     vk::ComputePipeline* nets = twoDispatches ? &toleranceNets_.get() : nullptr;
     if (nets)
       vk::ensureCapacity(context_, netBounds_, nodes.size() * sizeof(gpu::ToleranceNetBounds),
-                         vk::BufferUse::Upload, kTexelReadable);
+                         vk::BufferUse::Upload, kTexelUsage);
     vk::ensureCapacity(context_, nodes_, nodes.size() * sizeof(gpu::QuadNode),
-                       vk::BufferUse::Upload, kTexelReadable);
+                       vk::BufferUse::Upload, kTexelUsage);
     vk::ensureCapacity(context_, decisions_, nodes.size() * sizeof(gpu::NodeDecision),
                        vk::BufferUse::Readback);
     nodes_.upload(nodes);
@@ -117,13 +118,13 @@ class VulkanClassifier final : public NodeClassifier {
       timer_.reset(cmd);
       timer_.mark(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
       if (nets) {
-        const VkBufferView points = patchPoints_.viewOf(patches_);
-        const VkBufferView rects = nodeRects_.viewOf(nodes_);
-        const VkBufferView words = nodeWords_.viewOf(nodes_);
-        nets->dispatchBindings(cmd, {points, rects, words, &netBounds_}, &push, push.nodeCount);
+        const VkBufferView points = patchTexels_.viewOf(patches_);
+        const VkBufferView nodeTexels = nodeTexels_.viewOf(nodes_);
+        const VkBufferView netTexels = netTexels_.viewOf(netBounds_);
+        nets->dispatchBindings(cmd, {points, nodeTexels, &netBounds_}, &push, push.nodeCount);
         vk::computeToComputeBarrier(context_, cmd);
-        pipeline.dispatchBindings(cmd, {points, rects, words, &decisions_, netTexels_.viewOf(netBounds_)},
-                                  &push, push.nodeCount);
+        pipeline.dispatchBindings(cmd, {points, nodeTexels, netTexels, &decisions_}, &push,
+                                  push.nodeCount);
       } else {
         pipeline.dispatch(cmd, buffers, &push, push.nodeCount);
       }
@@ -145,7 +146,7 @@ class VulkanClassifier final : public NodeClassifier {
       vk::ComputePipelineDesc desc{code.name,
                                    code.spirv,
                                    code.bytes,
-                                   texels ? 5u : general ? 4u : 3u,
+                                   general || texels ? 4u : 3u,
                                    sizeof(gpu::ClassifyPush),
                                    {{0, rule}, {1, uint32_t(samples)}},
                                    texels ? kDecidingTexelBindings : 0u};
@@ -187,14 +188,14 @@ class VulkanClassifier final : public NodeClassifier {
   vk::BackgroundPipeline toleranceNets_{
       context_,
       {"quadtree_tolerance_nets.comp", kSpirv_quadtree_tolerance_nets_comp,
-       sizeof(kSpirv_quadtree_tolerance_nets_comp), 4, sizeof(gpu::ClassifyPush), {},
+       sizeof(kSpirv_quadtree_tolerance_nets_comp), 3, sizeof(gpu::ClassifyPush), {},
        kNetsTexelBindings}};
   std::map<std::tuple<bool, uint32_t, int>, std::unique_ptr<vk::ComputePipeline>> pipelines_;
   vk::Buffer patches_, nodes_, decisions_, points_, netBounds_;
-  vk::TexelView patchPoints_{context_, VK_FORMAT_R32G32B32A32_SFLOAT};
-  vk::TexelView nodeRects_{context_, VK_FORMAT_R32G32B32A32_SFLOAT};
-  vk::TexelView nodeWords_{context_, VK_FORMAT_R32G32B32A32_UINT};
-  vk::TexelView netTexels_{context_, VK_FORMAT_R32G32B32A32_SFLOAT};
+  // Rule T's bicubic shaders' views of the buffers, all RGBA32UI (lib/tolerance_texels.glsl).
+  vk::TexelView patchTexels_{context_, VK_FORMAT_R32G32B32A32_UINT};
+  vk::TexelView nodeTexels_{context_, VK_FORMAT_R32G32B32A32_UINT};
+  vk::TexelView netTexels_{context_, VK_FORMAT_R32G32B32A32_UINT};
   size_t uploadedCount_ = 0;
   bool uploadedGeneral_ = false;
 };

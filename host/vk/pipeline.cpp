@@ -30,8 +30,7 @@ ComputePipeline::ComputePipeline(Context& context, const ComputePipelineDesc& de
   std::vector<VkDescriptorSetLayoutBinding> bindings(bufferCount_);
   for (uint32_t i = 0; i < bufferCount_; ++i) {
     bindings[i].binding = i;
-    bindings[i].descriptorType = (texelMask_ >> i) & 1u ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER
-                                                        : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    bindings[i].descriptorType = descriptorType(i);
     bindings[i].descriptorCount = 1;
     bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
   }
@@ -96,6 +95,11 @@ void ComputePipeline::dispatch(VkCommandBuffer cmd, std::initializer_list<const 
   dispatch(cmd, infos, pushConstants, invocations);
 }
 
+VkDescriptorType ComputePipeline::descriptorType(uint32_t binding) const {
+  return (texelMask_ >> binding) & 1u ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER
+                                      : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+}
+
 void ComputePipeline::dispatchBindings(VkCommandBuffer cmd, std::initializer_list<Binding> bindings,
                                        const void* pushConstants, uint32_t invocations) const {
   if (bindings.size() != bufferCount_)
@@ -106,20 +110,20 @@ void ComputePipeline::dispatchBindings(VkCommandBuffer cmd, std::initializer_lis
   std::vector<VkWriteDescriptorSet> writes(bindings.size());
   uint32_t i = 0;
   for (const Binding& b : bindings) {
-    const bool texel = (texelMask_ >> i) & 1u;
+    const VkDescriptorType type = descriptorType(i);
+    const bool texel = type != VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     if (texel != (b.texelView != VK_NULL_HANDLE))
       throw std::invalid_argument(name_ + ": binding " + std::to_string(i) + " must be a " +
                                   (texel ? "texel buffer view" : "storage buffer"));
     writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
     writes[i].dstBinding = i;
     writes[i].descriptorCount = 1;
+    writes[i].descriptorType = type;
     if (texel) {
       views[i] = b.texelView;
-      writes[i].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
       writes[i].pTexelBufferView = &views[i];
     } else {
       infos[i] = {b.buffer->handle(), 0, VK_WHOLE_SIZE};
-      writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
       writes[i].pBufferInfo = &infos[i];
     }
     ++i;

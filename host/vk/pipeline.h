@@ -70,6 +70,7 @@ class ComputePipeline {
   uint32_t bufferCount_ = 0;
   uint32_t pushBytes_ = 0;
   uint32_t texelMask_ = 0;
+  VkDescriptorType descriptorType(uint32_t binding) const;
   VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
   VkPipelineLayout layout_ = VK_NULL_HANDLE;
   VkPipeline pipeline_ = VK_NULL_HANDLE;

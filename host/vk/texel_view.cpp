@@ -8,7 +8,7 @@
 namespace tessera::vk {
 
 namespace {
-constexpr VkDeviceSize kTexelBytes = 16;  // RGBA32F / RGBA32UI
+constexpr VkDeviceSize kTexelBytes = 16;  // RGBA32UI, RGBA32F
 }  // namespace
 
 VkDeviceSize maxTexelViewBytes(const Context& context) {

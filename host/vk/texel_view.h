@@ -1,9 +1,9 @@
-// A uniform texel buffer view of a whole vk::Buffer in one 16-byte format (RGBA32F or
-// RGBA32UI), for shaders that read a buffer by texelFetch instead of as a storage buffer.
-// Why: lavapipe (Mesa 22.3) loads a storage buffer at an index that differs per invocation
-// one lane at a time, with a bounds test per component (~70 instructions a lane for a vec4),
-// while a texel fetch gathers the 8 lanes' texels at once; rule T's bicubic shaders spent
-// about two thirds of their instructions on such loads (bench/README.md, rule T section).
+// A uniform texel buffer view of a whole vk::Buffer in one 16-byte format (RGBA32UI, say), for
+// shaders that read a buffer by texelFetch instead of as a storage buffer. Why: lavapipe (Mesa
+// 22.3) loads a storage buffer at an index that differs per invocation one lane at a time,
+// with a bounds test per component (~70 instructions a lane for a vec4), while a texel fetch
+// gathers the 8 lanes' texels at once; rule T's bicubic shaders spent about two thirds of their
+// instructions on such loads (bench/README.md, rule T section).
 #pragma once
 #include "vk/backend_only.h"
 
@@ -35,7 +35,7 @@ class TexelView {
   VkDeviceSize viewedSize_ = 0;
 };
 
-// Texels of 16 bytes (RGBA32F, RGBA32UI) one view may address on this device.
+// Bytes of 16-byte texels (RGBA32UI, RGBA32F) one view may address on this device.
 VkDeviceSize maxTexelViewBytes(const Context& context);
 
 }  // namespace tessera::vk
