@@ -1,8 +1,10 @@
 // Rule T's quad-tree alone (issue 15), on the tea set as bench_occt builds it: per level, the
 // minimum over runs of the GPU time, the rest of the classify call and the frontier time, and
 // the tree's total, for one classifier. Small enough to run under callgrind or perf stat.
-// Usage: bench_tree_levels [tolerances=0.01,0.001] [runs=20] [vulkan|mirror]
+// Usage: bench_tree_levels [tolerances=0.01,0.001] [runs=20] [vulkan|mirror] (text output
+// only: scripts/bench.sh's --json <file> is accepted and ignored).
 #include <algorithm>
+#include <cstdlib>
 #include <cstdio>
 #include <sstream>
 #include <string>
@@ -18,14 +20,22 @@
 using namespace tessera;
 
 int main(int argc, char** argv) {
+  std::vector<std::string> args;
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--json") {
+      ++i;
+      continue;
+    }
+    args.push_back(argv[i]);
+  }
   std::vector<double> tolerances = {0.01, 0.001};
-  if (argc > 1) {
+  if (args.size() > 0) {
     tolerances.clear();
-    std::stringstream list(argv[1]);
+    std::stringstream list(args[0]);
     for (std::string item; std::getline(list, item, ',');) tolerances.push_back(std::stod(item));
   }
-  const int runs = argc > 2 ? std::max(1, std::atoi(argv[2])) : 20;
-  const std::string which = argc > 3 ? argv[3] : "vulkan";
+  const int runs = args.size() > 1 ? std::max(1, std::atoi(args[1].c_str())) : 20;
+  const std::string which = args.size() > 2 ? args[2] : "vulkan";
 
   std::vector<BezierPatch> patches;
   const char* names[] = {"teapot", "teacup", "teaspoon"};
