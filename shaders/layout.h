@@ -46,7 +46,14 @@ struct EvalSample {
   vec4 normalKappa;
 };
 
-// Push constants of eval.comp.glsl.
+// What a mesh keeps of an evaluation (eval_vertices.comp.glsl): EvalSample's position and
+// unit normal, 32 bytes where EvalSample has 64. position.w = 1, normal.w = 0.
+struct VertexSample {
+  vec4 position;
+  vec4 normal;
+};
+
+// Push constants of eval.comp.glsl and eval_vertices.comp.glsl.
 struct EvalPush {
   uint queryCount;
   float degenerateEps;  // ε of docs/conventions.md (1e-5 in fp32)

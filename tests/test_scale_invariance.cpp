@@ -356,9 +356,9 @@ TEST_CASE("local frame: a sample that is not finite is refused naming its patch 
           "[scale]") {
   ParamMesh param;
   param.vertices = {{0, 0.0f, 0.0f}, {3, 0.25f, 0.5f}};
-  std::vector<gpu::EvalSample> samples(2);
-  samples[0].normalKappa = samples[1].normalKappa = gpu::vec4(0, 0, 1, 0);
-  samples[1].normalKappa.y = INFINITY;
+  std::vector<gpu::VertexSample> samples(2);
+  samples[0].normal = samples[1].normal = gpu::vec4(0, 0, 1, 0);
+  samples[1].normal.y = INFINITY;
   try {
     assembleTessellation(4, QuadtreeResult{}, param, samples);
     FAIL("no exception");

@@ -14,4 +14,8 @@ gpu::EvalSample evalBicubicSample(const gpu::BicubicPatch& patch, float u, float
   return glsl::evalBicubicSample(patch, u, v, eps);
 }
 
+gpu::VertexSample evalBicubicVertex(const gpu::BicubicPatch& patch, float u, float v, float eps) {
+  return glsl::evalBicubicVertex(patch, u, v, eps);
+}
+
 }  // namespace tessera::mirror

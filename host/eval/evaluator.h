@@ -29,11 +29,21 @@ class PatchEvaluator {
   // rational; general_patch.h) the general kernel.
   virtual std::vector<gpu::EvalSample> evaluate(const PatchSet& patches,
                                                 const std::vector<gpu::EvalQuery>& queries) = 0;
-  // Announces that evaluate() will be called for patches like these, so a backend may start
-  // its one-time setup (Vulkan: building the pipeline on a worker thread) while the caller
-  // builds the quad-tree. Optional: evaluate() works without it.
+  // What a mesh keeps of each sample: the same position and normal bits as evaluate()'s, for
+  // less work where a backend has a variant for it (bicubic sets: eval_vertices.comp.glsl and
+  // its mirror); elsewhere evaluate()'s samples, cut down.
+  virtual std::vector<gpu::VertexSample> evaluateVertices(
+      const PatchSet& patches, const std::vector<gpu::EvalQuery>& queries);
+  // Announces that evaluate() (prepare) or evaluateVertices() (prepareVertices) will be called
+  // for patches like these, so a backend may start its one-time setup (Vulkan: building the
+  // pipeline on a worker thread) while the caller builds the quad-tree. Optional: both
+  // evaluations work without it.
   virtual void prepare(const PatchSet& patches) { (void)patches; }
+  virtual void prepareVertices(const PatchSet& patches) { prepare(patches); }
 };
+
+// The position and normal of each sample (evaluateVertices' default).
+std::vector<gpu::VertexSample> vertexSamples(const std::vector<gpu::EvalSample>& samples);
 
 std::unique_ptr<PatchEvaluator> makeMirrorEvaluator();
 // Evaluates on `context`'s device; the context must outlive the evaluator.

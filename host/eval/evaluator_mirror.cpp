@@ -34,16 +34,28 @@ void checkQueries(size_t patchCount, const std::vector<gpu::EvalQuery>& queries)
                               std::to_string(patchCount));
 }
 
+std::vector<gpu::VertexSample> vertexSamples(const std::vector<gpu::EvalSample>& samples) {
+  std::vector<gpu::VertexSample> out(samples.size());
+  for (size_t i = 0; i < samples.size(); ++i)
+    out[i] = {samples[i].position, gpu::vec4(glm::vec3(samples[i].normalKappa), 0.0f)};
+  return out;
+}
+
+std::vector<gpu::VertexSample> PatchEvaluator::evaluateVertices(
+    const PatchSet& patches, const std::vector<gpu::EvalQuery>& queries) {
+  return vertexSamples(evaluate(patches, queries));
+}
+
 namespace {
 
 // The samples are independent: a large batch is evaluated on all cores, in chunks taken in
 // turn (patches differ in cost only a little; the chunk keeps a thread's queries together).
 // Each sample is the same function of its query on any thread, so the bits do not change.
-template <typename EvaluateOne>
-std::vector<gpu::EvalSample> evaluateAll(const std::vector<gpu::EvalQuery>& queries,
-                                         const EvaluateOne& evaluateOne) {
+template <typename Sample, typename EvaluateOne>
+std::vector<Sample> evaluateAll(const std::vector<gpu::EvalQuery>& queries,
+                                const EvaluateOne& evaluateOne) {
   constexpr size_t kChunk = 4096;  // below two chunks a thread costs more than it saves
-  std::vector<gpu::EvalSample> out(queries.size());
+  std::vector<Sample> out(queries.size());
   parallelForChunks(queries.size(), kChunk, queries.size() >= 2 * kChunk ? 0u : 1u,
                     [&](size_t begin, size_t end) {
                       for (size_t i = begin; i < end; ++i) out[i] = evaluateOne(queries[i]);
@@ -60,11 +72,21 @@ class MirrorEvaluator final : public PatchEvaluator {
                                : evaluateGeneral(patches.general(), queries);
   }
 
+  std::vector<gpu::VertexSample> evaluateVertices(
+      const PatchSet& patches, const std::vector<gpu::EvalQuery>& queries) override {
+    if (!patches.isBicubic()) return PatchEvaluator::evaluateVertices(patches, queries);
+    const std::vector<gpu::BicubicPatch>& bicubic = patches.bicubic();
+    checkQueries(bicubic.size(), queries);
+    return evaluateAll<gpu::VertexSample>(queries, [&](const gpu::EvalQuery& q) {
+      return mirror::evalBicubicVertex(bicubic[q.patchIndex], q.u, q.v, kDegenerateEpsFp32);
+    });
+  }
+
  private:
   std::vector<gpu::EvalSample> evaluateBicubic(const std::vector<gpu::BicubicPatch>& patches,
                                                const std::vector<gpu::EvalQuery>& queries) {
     checkQueries(patches.size(), queries);
-    return evaluateAll(queries, [&](const gpu::EvalQuery& q) {
+    return evaluateAll<gpu::EvalSample>(queries, [&](const gpu::EvalQuery& q) {
       return mirror::evalBicubicSample(patches[q.patchIndex], q.u, q.v, kDegenerateEpsFp32);
     });
   }
@@ -72,7 +94,7 @@ class MirrorEvaluator final : public PatchEvaluator {
   std::vector<gpu::EvalSample> evaluateGeneral(const GeneralPatchSet& patches,
                                                const std::vector<gpu::EvalQuery>& queries) {
     checkQueries(patches.size(), queries);
-    return evaluateAll(queries, [&](const gpu::EvalQuery& q) {
+    return evaluateAll<gpu::EvalSample>(queries, [&](const gpu::EvalQuery& q) {
       return mirror::evalGeneralSample(patches.patches[q.patchIndex], patches.points.data(), q.u,
                                        q.v, kDegenerateEpsFp32);
     });

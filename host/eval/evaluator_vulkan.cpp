@@ -1,5 +1,6 @@
 // The Vulkan backend of PatchEvaluator: one dispatch of shaders/eval.comp.glsl (bicubic) or
-// eval_general.comp.glsl (general patches) per call, buffers kept and grown between calls.
+// eval_general.comp.glsl (general patches) per call, or of eval_vertices.comp.glsl for a bicubic
+// set's mesh vertices; buffers kept and grown between calls.
 // Each pipeline is made on first use, or on a worker thread from prepare() on.
 #include <cstdint>  // before the generated SPIR-V array, which uses uint32_t
 
@@ -7,6 +8,7 @@
 
 #include "eval_comp.h"
 #include "eval_general_comp.h"
+#include "eval_vertices_comp.h"
 #include "eval/evaluator.h"
 #include "vk/background_pipeline.h"
 #include "vk/buffer.h"
@@ -21,12 +23,18 @@ class VulkanEvaluator final : public PatchEvaluator {
         bicubic_(context, {"eval.comp", kSpirv_eval_comp, sizeof(kSpirv_eval_comp), 3,
                            sizeof(gpu::EvalPush), {}}),
         general_(context, {"eval_general.comp", kSpirv_eval_general_comp,
-                           sizeof(kSpirv_eval_general_comp), 4, sizeof(gpu::EvalPush), {}}) {}
+                           sizeof(kSpirv_eval_general_comp), 4, sizeof(gpu::EvalPush), {}}),
+        vertices_(context, {"eval_vertices.comp", kSpirv_eval_vertices_comp,
+                            sizeof(kSpirv_eval_vertices_comp), 3, sizeof(gpu::EvalPush), {}}) {}
 
   std::string name() const override { return "vulkan:" + context_.info().name; }
 
   void prepare(const PatchSet& patches) override {
     (patches.isBicubic() ? bicubic_ : general_).start();
+  }
+
+  void prepareVertices(const PatchSet& patches) override {
+    (patches.isBicubic() ? vertices_ : general_).start();
   }
 
   std::vector<gpu::EvalSample> evaluate(const PatchSet& patches,
@@ -35,19 +43,30 @@ class VulkanEvaluator final : public PatchEvaluator {
                                : evaluateGeneral(patches.general(), queries);
   }
 
+  std::vector<gpu::VertexSample> evaluateVertices(
+      const PatchSet& patches, const std::vector<gpu::EvalQuery>& queries) override {
+    if (!patches.isBicubic()) return PatchEvaluator::evaluateVertices(patches, queries);
+    checkQueries(patches.bicubic().size(), queries);
+    if (queries.empty()) return {};
+    uploadBicubic(patches.bicubic(), queries.size() * sizeof(gpu::VertexSample));
+    return run<gpu::VertexSample>(vertices_.get(), {&patches_, &queries_, &samples_}, queries);
+  }
+
  private:
+  // The patches uploaded, and room for the queries and `resultBytes` of results.
+  void uploadBicubic(const std::vector<gpu::BicubicPatch>& patches, size_t resultBytes) {
+    vk::ensureCapacity(context_, patches_, patches.size() * sizeof(gpu::BicubicPatch),
+                       vk::BufferUse::Upload);
+    vk::ensureCapacity(context_, samples_, resultBytes, vk::BufferUse::Readback);
+    patches_.upload(patches);
+  }
+
   std::vector<gpu::EvalSample> evaluateBicubic(const std::vector<gpu::BicubicPatch>& patches,
                                                const std::vector<gpu::EvalQuery>& queries) {
     checkQueries(patches.size(), queries);
     if (queries.empty()) return {};
-    vk::ensureCapacity(context_, patches_, patches.size() * sizeof(gpu::BicubicPatch),
-                       vk::BufferUse::Upload);
-    vk::ensureCapacity(context_, queries_, queries.size() * sizeof(gpu::EvalQuery),
-                       vk::BufferUse::Upload);
-    vk::ensureCapacity(context_, samples_, queries.size() * sizeof(gpu::EvalSample),
-                       vk::BufferUse::Readback);
-    patches_.upload(patches);
-    return run(bicubic_.get(), {&patches_, &queries_, &samples_}, queries);
+    uploadBicubic(patches, queries.size() * sizeof(gpu::EvalSample));
+    return run<gpu::EvalSample>(bicubic_.get(), {&patches_, &queries_, &samples_}, queries);
   }
 
   std::vector<gpu::EvalSample> evaluateGeneral(const GeneralPatchSet& patches,
@@ -58,25 +77,27 @@ class VulkanEvaluator final : public PatchEvaluator {
                        vk::BufferUse::Upload);
     vk::ensureCapacity(context_, points_, patches.points.size() * sizeof(gpu::vec4),
                        vk::BufferUse::Upload);
-    vk::ensureCapacity(context_, queries_, queries.size() * sizeof(gpu::EvalQuery),
-                       vk::BufferUse::Upload);
     vk::ensureCapacity(context_, samples_, queries.size() * sizeof(gpu::EvalSample),
                        vk::BufferUse::Readback);
     patches_.upload(patches.patches);
     points_.upload(patches.points);
-    return run(general_.get(), {&patches_, &queries_, &samples_, &points_}, queries);
+    return run<gpu::EvalSample>(general_.get(), {&patches_, &queries_, &samples_, &points_}, queries);
   }
 
-  std::vector<gpu::EvalSample> run(vk::ComputePipeline& pipeline,
-                                   std::initializer_list<const vk::Buffer*> buffers,
-                                   const std::vector<gpu::EvalQuery>& queries) {
+  // Uploads the queries, dispatches one invocation each and reads back their results.
+  template <typename Sample>
+  std::vector<Sample> run(vk::ComputePipeline& pipeline,
+                          std::initializer_list<const vk::Buffer*> buffers,
+                          const std::vector<gpu::EvalQuery>& queries) {
+    vk::ensureCapacity(context_, queries_, queries.size() * sizeof(gpu::EvalQuery),
+                       vk::BufferUse::Upload);
     queries_.upload(queries);
     gpu::EvalPush push{static_cast<uint32_t>(queries.size()), kDegenerateEpsFp32, 0, 0};
     context_.submitAndWait([&](VkCommandBuffer cmd) {
       pipeline.dispatch(cmd, buffers, &push, push.queryCount);
       vk::computeToHostBarrier(context_, cmd);
     });
-    std::vector<gpu::EvalSample> out;
+    std::vector<Sample> out;
     samples_.download(out, queries.size());
     return out;
   }
@@ -84,6 +105,7 @@ class VulkanEvaluator final : public PatchEvaluator {
   vk::Context& context_;
   vk::BackgroundPipeline bicubic_;
   vk::BackgroundPipeline general_;
+  vk::BackgroundPipeline vertices_;
   vk::Buffer points_;
   vk::Buffer patches_;
   vk::Buffer queries_;

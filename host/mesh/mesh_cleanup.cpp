@@ -107,12 +107,12 @@ std::vector<bool> backToBackPairs(const std::vector<uint32_t>& indices) {
   return cancelled;
 }
 
-void requireFiniteSamples(const ParamMesh& param, const std::vector<gpu::EvalSample>& samples) {
+void requireFiniteSamples(const ParamMesh& param, const std::vector<gpu::VertexSample>& samples) {
   const auto finite = [](const gpu::vec4& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
   };
   for (size_t i = 0; i < samples.size(); ++i) {
-    if (finite(samples[i].position) && finite(samples[i].normalKappa)) continue;
+    if (finite(samples[i].position) && finite(samples[i].normal)) continue;
     const ParamVertex& v = param.vertices[i];
     char where[64];
     std::snprintf(where, sizeof where, "(u, v) = (%.9g, %.9g)", double(v.u), double(v.v));

@@ -26,6 +26,6 @@ std::vector<bool> backToBackPairs(const std::vector<uint32_t>& indices);
 // overflows where a rational patch's weights differ by more than its range can take (a corner
 // weight of 10⁻²⁰ against 1: derivatives of order k grow as 10²⁰ᵏ). Throws
 // std::invalid_argument naming the patch and (u, v).
-void requireFiniteSamples(const ParamMesh& param, const std::vector<gpu::EvalSample>& samples);
+void requireFiniteSamples(const ParamMesh& param, const std::vector<gpu::VertexSample>& samples);
 
 }  // namespace tessera

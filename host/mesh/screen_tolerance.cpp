@@ -160,7 +160,7 @@ Tessellation tessellateScreenTolerance(const std::vector<BezierPatch>& patches,
   const ModelFrame frame = modelFrame(patches);
   const std::vector<BezierPatch> local = toLocalFrame(patches, frame);
   const PatchSet world = toPatchSet(local);
-  backend.evaluator->prepare(world);
+  backend.evaluator->prepareVertices(world);
   const std::unique_ptr<NodeClassifier> classifier =
       makeScreenSpaceClassifier(*backend.classifier, patches, view.camera, view.eyePlaneDepth);
   QuadtreeResult tree = buildQuadtree(screen, options, *classifier);

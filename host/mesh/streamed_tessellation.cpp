@@ -196,7 +196,7 @@ class GroupStreamer {
         if (side.group >= 0) lastPatchOfSideGroup_[size_t(side.group)] = p;
     if (options.rule == SplitRule::Tolerance) options_.tolerance = options.tolerance / frame_.scale;
     gpuPatches_ = toPatchSet(local_);
-    backend_.evaluator->prepare(gpuPatches_);
+    backend_.evaluator->prepareVertices(gpuPatches_);
   }
 
   // Streams patches [first, end); throws MemoryLimitError when the group does not fit.
@@ -241,7 +241,8 @@ class GroupStreamer {
     std::vector<gpu::EvalQuery> queries(param.vertices.size());
     for (size_t i = 0; i < queries.size(); ++i)
       queries[i] = {param.vertices[i].patchIndex, param.vertices[i].u, param.vertices[i].v, 0};
-    const std::vector<gpu::EvalSample> samples = backend_.evaluator->evaluate(gpuPatches_, queries);
+    const std::vector<gpu::VertexSample> samples =
+        backend_.evaluator->evaluateVertices(gpuPatches_, queries);
     s.evaluateMs += step.elapsedMs();
     requireFiniteSamples(param, samples);
     s.degenerateTrianglesDropped += param.droppedTriangles;
@@ -261,7 +262,7 @@ class GroupStreamer {
 
   // Welds the group's vertices with each other and with the seams written before, cleans the
   // triangles as assembleTessellation does, and hands the chunk to the sink.
-  void emitChunk(const ParamMesh& param, const std::vector<gpu::EvalSample>& samples,
+  void emitChunk(const ParamMesh& param, const std::vector<gpu::VertexSample>& samples,
                  uint32_t end, TessellationStats& s) {
     const size_t n = samples.size();
     std::vector<glm::vec3> positions(n);
@@ -292,7 +293,7 @@ class GroupStreamer {
         output[i] = nextIndex_++;
         standsFor[i] = i;
         chunk.positions.push_back(glm::vec3(frame_.toModel(glm::dvec3(positions[i]))));
-        chunk.normals.push_back(glm::vec3(samples[i].normalKappa));
+        chunk.normals.push_back(glm::vec3(samples[i].normal));
         chunk.uvs.push_back({param.vertices[i].u, param.vertices[i].v});
         chunk.patchIds.push_back(param.vertices[i].patchIndex);
       }

@@ -50,7 +50,7 @@ namespace {
 
 // meshFromTree with any evaluation of the vertices' (patch, u, v) queries.
 using VertexEvaluation =
-    std::function<std::vector<gpu::EvalSample>(const std::vector<gpu::EvalQuery>&)>;
+    std::function<std::vector<gpu::VertexSample>(const std::vector<gpu::EvalQuery>&)>;
 
 Tessellation meshFromQueries(const std::vector<BezierPatch>& patches, QuadtreeResult tree,
                              const VertexEvaluation& evaluate, const ModelFrame& frame) {
@@ -65,7 +65,7 @@ Tessellation meshFromQueries(const std::vector<BezierPatch>& patches, QuadtreeRe
   std::vector<gpu::EvalQuery> queries(param.vertices.size());
   for (size_t i = 0; i < queries.size(); ++i)
     queries[i] = {param.vertices[i].patchIndex, param.vertices[i].u, param.vertices[i].v, 0};
-  const std::vector<gpu::EvalSample> samples = evaluate(queries);
+  const std::vector<gpu::VertexSample> samples = evaluate(queries);
   const double evaluateMs = step.elapsedMs();
 
   Tessellation result =
@@ -80,7 +80,7 @@ Tessellation meshFromQueries(const std::vector<BezierPatch>& patches, QuadtreeRe
 }  // namespace
 
 Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, ParamMesh param,
-                                  const std::vector<gpu::EvalSample>& samples, unsigned threads) {
+                                  const std::vector<gpu::VertexSample>& samples, unsigned threads) {
   requireFiniteSamples(param, samples);
   Tessellation result;
   result.tree = std::move(tree);
@@ -91,7 +91,7 @@ Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, ParamM
   mesh.patchIds.resize(samples.size());
   for (size_t i = 0; i < samples.size(); ++i) {
     mesh.positions[i] = glm::vec3(samples[i].position);
-    mesh.normals[i] = glm::vec3(samples[i].normalKappa);
+    mesh.normals[i] = glm::vec3(samples[i].normal);
     mesh.uvs[i] = glm::vec2(param.vertices[i].u, param.vertices[i].v);
     mesh.patchIds[i] = param.vertices[i].patchIndex;
   }
@@ -147,7 +147,7 @@ Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeO
   // the first level waits for (lavapipe builds on the calling threads; bench/README.md).
   bool evaluatorPrepared = false;
   localOptions.onLevel = [&, outer = options.onLevel](const LevelStats& level) {
-    if (!evaluatorPrepared) backend.evaluator->prepare(gpuPatches);
+    if (!evaluatorPrepared) backend.evaluator->prepareVertices(gpuPatches);
     evaluatorPrepared = true;
     if (outer) outer(level);
   };
@@ -164,7 +164,9 @@ Tessellation meshFromTree(const std::vector<BezierPatch>& patches, const PatchSe
                           QuadtreeResult tree, PatchEvaluator& evaluator, const ModelFrame& frame) {
   return meshFromQueries(
       patches, std::move(tree),
-      [&](const std::vector<gpu::EvalQuery>& q) { return evaluator.evaluate(gpuPatches, q); },
+      [&](const std::vector<gpu::EvalQuery>& q) {
+        return evaluator.evaluateVertices(gpuPatches, q);
+      },
       frame);
 }
 

@@ -60,7 +60,7 @@ Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeO
                         Backend& backend);
 
 // The second half of tessellate(): a finished tree → watertight mesh, vertices evaluated by
-// `evaluator` (timings in stats.triangulateMs and stats.evaluateMs). `patches` and
+// `evaluator` (evaluateVertices; timings in stats.triangulateMs and stats.evaluateMs). `patches` and
 // `gpuPatches` are in `frame` (toLocalFrame); the mesh comes back in model coordinates
 // (toModelCoordinates).
 Tessellation meshFromTree(const std::vector<BezierPatch>& patches, const PatchSet& gpuPatches,
@@ -75,7 +75,7 @@ Tessellation meshFromTree(const std::vector<BezierPatch>& patches, const PatchSe
 // The triangles' arrays are taken over from `param` (move it in where it is not needed after).
 // Welding looks positions up on `threads` threads (0: all); the mesh is the same.
 Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, ParamMesh param,
-                                  const std::vector<gpu::EvalSample>& samples,
+                                  const std::vector<gpu::VertexSample>& samples,
                                   unsigned threads = 1);
 
 // Hands a tessellation made in `frame` out in model coordinates: each position mapped back in

@@ -46,7 +46,7 @@ void tessellateGroup(const TrimmedModel& model, const FaceGroup& group, const Mo
                      unsigned threads, FaceTessellations& out) {
   Stopwatch step;
   const PatchSet patchSet = toPatchSet(group.patches);
-  backend.evaluator->prepare(patchSet);  // overlaps the tree on backends that can
+  backend.evaluator->prepareVertices(patchSet);  // overlaps the tree on backends that can
   // Faces known as surfaces of revolution are decided by their distance bound
   // (revolution_bound.h), the others by rule T's parametric one.
   std::vector<std::unique_ptr<FaceSurface>> surfaces(group.faces.size());
@@ -112,14 +112,14 @@ void tessellateGroup(const TrimmedModel& model, const FaceGroup& group, const Mo
       const ParamVertex& v = params[k].vertices[i];
       queries[firstQuery[k] + i] = {v.patchIndex + group.firstPatch[k], v.u, v.v, 0};
     }
-  std::vector<gpu::EvalSample> samples;
-  if (!queries.empty()) samples = backend.evaluator->evaluate(patchSet, queries);
+  std::vector<gpu::VertexSample> samples;
+  if (!queries.empty()) samples = backend.evaluator->evaluateVertices(patchSet, queries);
   out.evaluateMs += step.elapsedMs();
 
   step.restart();
   parallelForChunks(faceCount, 1, threads, [&](size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k) {
-      const std::vector<gpu::EvalSample> faceSamples(samples.begin() + long(firstQuery[k]),
+      const std::vector<gpu::VertexSample> faceSamples(samples.begin() + long(firstQuery[k]),
                                                      samples.begin() + long(firstQuery[k + 1]));
       Tessellation& face = out.faces[group.faces[k]];
       face = assembleTessellation(group.facePatches[k].size(), std::move(faceTrees[k]),

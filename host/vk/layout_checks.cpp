@@ -16,6 +16,8 @@ static_assert(sizeof(EvalSample) == 64, "EvalSample: 4 vec4");
 static_assert(offsetof(EvalSample, du) == 16 && offsetof(EvalSample, dv) == 32 &&
                   offsetof(EvalSample, normalKappa) == 48,
               "EvalSample member offsets");
+static_assert(sizeof(VertexSample) == 32 && offsetof(VertexSample, normal) == 16,
+              "VertexSample: 2 vec4");
 static_assert(sizeof(EvalPush) == 16, "EvalPush: 4 scalars");
 static_assert(sizeof(QuadNode) == 32 && offsetof(QuadNode, patchIndex) == 16 &&
                   offsetof(QuadNode, level) == 20,

@@ -1,5 +1,6 @@
 // Bicubic Bézier evaluation in fp32: derivatives to third order, the unit normal with the
-// degenerate-point rule and κ, both as in docs/conventions.md.
+// degenerate-point rule and κ, both as in docs/conventions.md; and a mesh vertex's position and
+// normal alone (evalBicubicVertex), the same bits for less work.
 // Compiled twice from this one text: as GLSL in shaders/*.comp.glsl and as C++ in
 // host/eval/bicubic_mirror.cpp. Include shared_glsl_cpp.h and layout.h first.
 #ifndef TESSERA_BICUBIC_EVAL_H
@@ -104,6 +105,45 @@ BicubicDerivs evalBicubic(IN(BicubicPatch) bp, float u, float v) {
   return d;
 }
 
+// A mesh vertex's share of evalBicubic: the position and the first partials, which are all the
+// normal needs away from degenerate points.
+struct BicubicFirstDerivs {
+  vec3 p;
+  vec3 pu;
+  vec3 pv;
+};
+
+// evalBicubic's p, pu and pv by the very operations, in the same order, that evalBicubic runs
+// for them: each of its ten sums is a chain of its own (r0 and r1 feed them, r2 and r3 only the
+// higher partials), so leaving the other seven out changes no bit.
+BicubicFirstDerivs evalBicubicFirst(IN(BicubicPatch) bp, float u, float v) {
+  vec3 origin = vec3(bp.cp[0]);
+  CubicBasis bu = cubicBasis(u);
+  CubicBasis bv = cubicBasis(v);
+  BicubicFirstDerivs d;
+  d.p = vec3(0.0f);
+  d.pu = vec3(0.0f);
+  d.pv = vec3(0.0f);
+  BICUBIC_EVAL_UNROLL for (int i = 0; i < 4; ++i) {
+    PRECISE vec3 r0 = vec3(0.0f);
+    PRECISE vec3 r1 = vec3(0.0f);
+    BICUBIC_EVAL_UNROLL for (int j = 0; j < 4; ++j) {
+      PRECISE vec3 q = vec3(bp.cp[i * 4 + j]) - origin;
+      r0 = r0 + bv.b0[j] * q;
+      r1 = r1 + bv.b1[j] * q;
+    }
+    PRECISE vec3 p = d.p + bu.b0[i] * r0;
+    PRECISE vec3 pu = d.pu + bu.b1[i] * r0;
+    PRECISE vec3 pv = d.pv + bu.b0[i] * r1;
+    d.p = p;
+    d.pu = pu;
+    d.pv = pv;
+  }
+  PRECISE vec3 position = d.p + origin;
+  d.p = position;
+  return d;
+}
+
 // Diagonal of the control net's bounding box: the length scale L of the degeneracy test.
 float bicubicScale(IN(BicubicPatch) bp) {
   PRECISE vec3 lo = vec3(bp.cp[0]);
@@ -191,6 +231,28 @@ EvalSample sampleFromDerivs(IN(BicubicDerivs) d, float u, float v, float scale, 
 
 EvalSample evalBicubicSample(IN(BicubicPatch) bp, float u, float v, float eps) {
   return sampleFromDerivs(evalBicubic(bp, u, v), u, v, bicubicScale(bp), eps);
+}
+
+// evalBicubicSample's position and normal, bit for bit, without κ and the partials a mesh does
+// not keep: the first partials give the normal where |Pu × Pv| > tol (bicubicNormal's first
+// case, the same operations); elsewhere the full derivatives are evaluated and bicubicNormal's
+// degenerate rule runs as in evalBicubicSample.
+VertexSample evalBicubicVertex(IN(BicubicPatch) bp, float u, float v, float eps) {
+  PRECISE float scale = bicubicScale(bp);
+  PRECISE float tol = eps * scale * scale;
+  BicubicFirstDerivs d = evalBicubicFirst(bp, u, v);
+  PRECISE vec3 n0 = cross(d.pu, d.pv);
+  PRECISE float len0 = sqrt(dot(n0, n0));
+  vec3 n;
+  if (len0 > tol) {
+    n = scaleToUnit(n0, len0);
+  } else {
+    n = bicubicNormal(evalBicubic(bp, u, v), u, v, tol);
+  }
+  VertexSample s;
+  s.position = vec4(d.p, 1.0f);
+  s.normal = vec4(n, 0.0f);
+  return s;
 }
 
 #endif

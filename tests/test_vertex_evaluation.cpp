@@ -1,0 +1,152 @@
+// PatchEvaluator::evaluateVertices, the evaluation meshes use (shaders/eval_vertices.comp.glsl
+// and its fp32 mirror, lib/bicubic_eval.h's evalBicubicVertex): the position and normal bits of
+// evaluate()'s samples, so switching the mesh path to it changes no mesh byte; the GPU equal to
+// its mirror bit for bit on lavapipe; and tessellate() taking it, not evaluate().
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstring>
+
+#include "eval/evaluator.h"
+#include "gpu_test_context.h"
+#include "io/bpt_reader.h"
+#include "mesh/tessellate.h"
+#include "patch_samples.h"
+#include "quadtree/tolerance.h"
+
+using namespace tessera;
+
+namespace {
+
+bool sameBits(const gpu::vec4& a, const gpu::vec4& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// Vertices whose position or normal differs in any bit from the samples'.
+size_t differingVertices(const std::vector<gpu::VertexSample>& vertices,
+                         const std::vector<gpu::EvalSample>& samples) {
+  REQUIRE(vertices.size() == samples.size());
+  size_t differing = 0;
+  for (size_t i = 0; i < vertices.size(); ++i) {
+    const gpu::vec4 normal(glm::vec3(samples[i].normalKappa), 0.0f);
+    differing += !sameBits(vertices[i].position, samples[i].position) ||
+                 !sameBits(vertices[i].normal, normal);
+  }
+  return differing;
+}
+
+// Samples where Pu × Pv vanishes, so the normal comes from the degenerate rule (the vertex
+// variant's second branch); |Pu × Pv| ≤ 1e-12 is far below any of these sets' ε·L².
+size_t degenerateSamples(const std::vector<gpu::EvalSample>& samples) {
+  size_t count = 0;
+  for (const gpu::EvalSample& s : samples)
+    count += glm::length(glm::cross(glm::vec3(s.du), glm::vec3(s.dv))) <= 1e-12f;
+  return count;
+}
+
+struct PatchCase {
+  const char* name;
+  std::vector<gpu::BicubicPatch> patches;
+};
+
+std::vector<PatchCase> patchCases() {
+  return {{"random patches", toGpuPatches(test::randomBicubicPatches(200, 42))},
+          {"collapsed-edge patches", toGpuPatches(test::collapsedEdgePatches())}};
+}
+
+// Counts which evaluation the mesh path asks for, and evaluates with the mirror.
+class CountingEvaluator final : public PatchEvaluator {
+ public:
+  std::string name() const override { return "counting"; }
+  std::vector<gpu::EvalSample> evaluate(const PatchSet& patches,
+                                        const std::vector<gpu::EvalQuery>& queries) override {
+    ++sampleCalls;
+    return mirror_->evaluate(patches, queries);
+  }
+  std::vector<gpu::VertexSample> evaluateVertices(
+      const PatchSet& patches, const std::vector<gpu::EvalQuery>& queries) override {
+    ++vertexCalls;
+    return mirror_->evaluateVertices(patches, queries);
+  }
+  void prepare(const PatchSet&) override { ++samplePrepares; }
+  void prepareVertices(const PatchSet&) override { ++vertexPrepares; }
+
+  int sampleCalls = 0, vertexCalls = 0, samplePrepares = 0, vertexPrepares = 0;
+
+ private:
+  std::unique_ptr<PatchEvaluator> mirror_ = makeMirrorEvaluator();
+};
+
+}  // namespace
+
+TEST_CASE("fp32 mirror: evaluateVertices gives evaluate's positions and normals bit for bit",
+          "[eval][mirror]") {
+  for (const PatchCase& c : patchCases()) {
+    // 13² + 40 queries a patch, edges and corners included: over 8,192 for the random set, so
+    // the batch takes the mirror's parallel path too.
+    const auto queries = test::gridQueries(c.patches.size(), 13, 40, 7);
+    auto mirror = makeMirrorEvaluator();
+    const auto samples = mirror->evaluate(c.patches, queries);
+    const auto vertices = mirror->evaluateVertices(c.patches, queries);
+    INFO(c.name << ": " << queries.size() << " queries, " << degenerateSamples(samples)
+                << " degenerate");
+    CHECK(differingVertices(vertices, samples) == 0);
+    for (const gpu::VertexSample& v : vertices) REQUIRE((v.position.w == 1 && v.normal.w == 0));
+  }
+  // The collapsed edges do reach the degenerate rule, the branch that evaluates everything.
+  const PatchCase collapsed = patchCases()[1];
+  CHECK(degenerateSamples(makeMirrorEvaluator()->evaluate(
+            collapsed.patches, test::gridQueries(collapsed.patches.size(), 13, 40, 7))) > 0);
+}
+
+TEST_CASE("eval_vertices shader equals its fp32 mirror and eval.comp's positions and normals",
+          "[gpu][parity]") {
+  vk::Context& context = test::gpuContext();
+  for (const PatchCase& c : patchCases()) {
+    const auto queries = test::gridQueries(c.patches.size(), 9, 64, 1234);
+    auto vulkan = makeVulkanEvaluator(context);
+    const auto gpu = vulkan->evaluateVertices(c.patches, queries);
+    const auto gpuSamples = vulkan->evaluate(c.patches, queries);
+    const auto cpu = makeMirrorEvaluator()->evaluateVertices(c.patches, queries);
+    REQUIRE(gpu.size() == queries.size());
+    size_t mirrorMismatches = 0;
+    double maxPositionDiff = 0, maxNormalDiff = 0, maxCoordinate = 0;
+    for (size_t i = 0; i < gpu.size(); ++i) {
+      mirrorMismatches += !sameBits(gpu[i].position, cpu[i].position) ||
+                          !sameBits(gpu[i].normal, cpu[i].normal);
+      for (int k = 0; k < 3; ++k) {
+        maxCoordinate = std::max(maxCoordinate, double(std::fabs(gpu[i].position[k])));
+        maxPositionDiff =
+            std::max(maxPositionDiff, double(std::fabs(gpu[i].position[k] - cpu[i].position[k])));
+        maxNormalDiff =
+            std::max(maxNormalDiff, double(std::fabs(gpu[i].normal[k] - cpu[i].normal[k])));
+      }
+    }
+    const size_t sampleMismatches = differingVertices(gpu, gpuSamples);
+    WARN(c.name << " on " << context.info().name << ": " << queries.size() << " vertices, "
+                << mirrorMismatches << " differ from the mirror in any bit (max |Δp| "
+                << maxPositionDiff << ", max |Δn| " << maxNormalDiff << "), "
+                << sampleMismatches << " from eval.comp's samples");
+    if (test::exactMirrorArithmetic()) {
+      REQUIRE(mirrorMismatches == 0);
+      REQUIRE(sampleMismatches == 0);
+    } else {
+      REQUIRE(maxPositionDiff <= 1e-6 * std::max(1.0, maxCoordinate));
+      REQUIRE(maxNormalDiff <= 3e-5);
+    }
+  }
+  test::requireValidationClean();
+}
+
+TEST_CASE("tessellate evaluates its vertices with evaluateVertices, not evaluate", "[eval]") {
+  const std::vector<BezierPatch> teapot = readBpt(TESSERA_SOURCE_DIR "/data/teapot.bpt");
+  Backend backend = makeMirrorBackend();
+  auto counting = std::make_unique<CountingEvaluator>();
+  CountingEvaluator& calls = *counting;
+  backend.evaluator = std::move(counting);
+  const Tessellation t =
+      tessellate(teapot, toleranceOptions(resolveTolerance(parseTolerance("1%"), teapot)), backend);
+  CHECK(t.mesh.vertexCount() > 0);
+  CHECK(calls.vertexCalls == 1);
+  CHECK(calls.vertexPrepares == 1);
+  CHECK(calls.sampleCalls == 0);
+  CHECK(calls.samplePrepares == 0);
+}
