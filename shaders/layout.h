@@ -53,7 +53,19 @@ struct VertexSample {
   vec4 normal;
 };
 
-// Push constants of eval.comp.glsl and eval_vertices.comp.glsl.
+// eval_vertices.comp.glsl: one invocation per run of consecutive queries on one patch, at most
+// kVertexRunLength long, so the patch's 16 control points are read once a run (lavapipe reads a
+// storage buffer lane by lane: those reads were most of eval.comp's time). Run r is queries
+// runStarts[r] .. runStarts[r + 1] − 1 (a uint buffer of runCount + 1 entries).
+TESSERA_CONST(uint, kVertexRunLength, 8u);
+struct VertexEvalPush {
+  uint runCount;
+  float degenerateEps;  // ε of docs/conventions.md (1e-5 in fp32)
+  uint pad0;
+  uint pad1;
+};
+
+// Push constants of eval.comp.glsl.
 struct EvalPush {
   uint queryCount;
   float degenerateEps;  // ε of docs/conventions.md (1e-5 in fp32)

@@ -16,6 +16,19 @@
 namespace tessera {
 namespace {
 
+// eval_vertices.comp's runs (layout.h, VertexEvalPush): consecutive queries on one patch, at
+// most kVertexRunLength each; the mesh's queries come a patch at a time, so runs are mostly full.
+std::vector<uint32_t> vertexRuns(const std::vector<gpu::EvalQuery>& queries) {
+  std::vector<uint32_t> starts;
+  starts.reserve(queries.size() / gpu::kVertexRunLength + 2);
+  for (uint32_t i = 0; i < queries.size(); ++i)
+    if (starts.empty() || i - starts.back() == gpu::kVertexRunLength ||
+        queries[i].patchIndex != queries[starts.back()].patchIndex)
+      starts.push_back(i);
+  starts.push_back(uint32_t(queries.size()));
+  return starts;
+}
+
 class VulkanEvaluator final : public PatchEvaluator {
  public:
   explicit VulkanEvaluator(vk::Context& context)
@@ -25,7 +38,8 @@ class VulkanEvaluator final : public PatchEvaluator {
         general_(context, {"eval_general.comp", kSpirv_eval_general_comp,
                            sizeof(kSpirv_eval_general_comp), 4, sizeof(gpu::EvalPush), {}}),
         vertices_(context, {"eval_vertices.comp", kSpirv_eval_vertices_comp,
-                            sizeof(kSpirv_eval_vertices_comp), 3, sizeof(gpu::EvalPush), {}}) {}
+                            sizeof(kSpirv_eval_vertices_comp), 4, sizeof(gpu::VertexEvalPush),
+                            {}}) {}
 
   std::string name() const override { return "vulkan:" + context_.info().name; }
 
@@ -49,7 +63,12 @@ class VulkanEvaluator final : public PatchEvaluator {
     checkQueries(patches.bicubic().size(), queries);
     if (queries.empty()) return {};
     uploadBicubic(patches.bicubic(), queries.size() * sizeof(gpu::VertexSample));
-    return run<gpu::VertexSample>(vertices_.get(), {&patches_, &queries_, &samples_}, queries);
+    const std::vector<uint32_t> runStarts = vertexRuns(queries);
+    vk::ensureCapacity(context_, runs_, runStarts.size() * sizeof(uint32_t), vk::BufferUse::Upload);
+    runs_.upload(runStarts);
+    const gpu::VertexEvalPush push{uint32_t(runStarts.size() - 1), kDegenerateEpsFp32, 0, 0};
+    return run<gpu::VertexSample>(vertices_.get(), {&patches_, &queries_, &samples_, &runs_},
+                                  queries, &push, push.runCount);
   }
 
  private:
@@ -66,7 +85,9 @@ class VulkanEvaluator final : public PatchEvaluator {
     checkQueries(patches.size(), queries);
     if (queries.empty()) return {};
     uploadBicubic(patches, queries.size() * sizeof(gpu::EvalSample));
-    return run<gpu::EvalSample>(bicubic_.get(), {&patches_, &queries_, &samples_}, queries);
+    const gpu::EvalPush push{uint32_t(queries.size()), kDegenerateEpsFp32, 0, 0};
+    return run<gpu::EvalSample>(bicubic_.get(), {&patches_, &queries_, &samples_}, queries, &push,
+                                push.queryCount);
   }
 
   std::vector<gpu::EvalSample> evaluateGeneral(const GeneralPatchSet& patches,
@@ -81,20 +102,22 @@ class VulkanEvaluator final : public PatchEvaluator {
                        vk::BufferUse::Readback);
     patches_.upload(patches.patches);
     points_.upload(patches.points);
-    return run<gpu::EvalSample>(general_.get(), {&patches_, &queries_, &samples_, &points_}, queries);
+    const gpu::EvalPush push{uint32_t(queries.size()), kDegenerateEpsFp32, 0, 0};
+    return run<gpu::EvalSample>(general_.get(), {&patches_, &queries_, &samples_, &points_},
+                                queries, &push, push.queryCount);
   }
 
-  // Uploads the queries, dispatches one invocation each and reads back their results.
+  // Uploads the queries, dispatches `invocations` and reads back one result per query.
   template <typename Sample>
   std::vector<Sample> run(vk::ComputePipeline& pipeline,
                           std::initializer_list<const vk::Buffer*> buffers,
-                          const std::vector<gpu::EvalQuery>& queries) {
+                          const std::vector<gpu::EvalQuery>& queries, const void* push,
+                          uint32_t invocations) {
     vk::ensureCapacity(context_, queries_, queries.size() * sizeof(gpu::EvalQuery),
                        vk::BufferUse::Upload);
     queries_.upload(queries);
-    gpu::EvalPush push{static_cast<uint32_t>(queries.size()), kDegenerateEpsFp32, 0, 0};
     context_.submitAndWait([&](VkCommandBuffer cmd) {
-      pipeline.dispatch(cmd, buffers, &push, push.queryCount);
+      pipeline.dispatch(cmd, buffers, push, invocations);
       vk::computeToHostBarrier(context_, cmd);
     });
     std::vector<Sample> out;
@@ -110,6 +133,7 @@ class VulkanEvaluator final : public PatchEvaluator {
   vk::Buffer patches_;
   vk::Buffer queries_;
   vk::Buffer samples_;
+  vk::Buffer runs_;
 };
 
 }  // namespace

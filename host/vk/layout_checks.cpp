@@ -18,6 +18,8 @@ static_assert(offsetof(EvalSample, du) == 16 && offsetof(EvalSample, dv) == 32 &
               "EvalSample member offsets");
 static_assert(sizeof(VertexSample) == 32 && offsetof(VertexSample, normal) == 16,
               "VertexSample: 2 vec4");
+static_assert(sizeof(VertexEvalPush) == 16 && offsetof(VertexEvalPush, degenerateEps) == 4,
+              "VertexEvalPush: 4 scalars");
 static_assert(sizeof(EvalPush) == 16, "EvalPush: 4 scalars");
 static_assert(sizeof(QuadNode) == 32 && offsetof(QuadNode, patchIndex) == 16 &&
                   offsetof(QuadNode, level) == 20,

@@ -237,9 +237,8 @@ EvalSample evalBicubicSample(IN(BicubicPatch) bp, float u, float v, float eps) {
 // not keep: the first partials give the normal where |Pu × Pv| > tol (bicubicNormal's first
 // case, the same operations); elsewhere the full derivatives are evaluated and bicubicNormal's
 // degenerate rule runs as in evalBicubicSample.
-VertexSample evalBicubicVertex(IN(BicubicPatch) bp, float u, float v, float eps) {
-  PRECISE float scale = bicubicScale(bp);
-  PRECISE float tol = eps * scale * scale;
+// `tol` is ε·L² (bicubicTolerance), sampleFromDerivs' tol.
+VertexSample bicubicVertex(IN(BicubicPatch) bp, float u, float v, float tol) {
   BicubicFirstDerivs d = evalBicubicFirst(bp, u, v);
   PRECISE vec3 n0 = cross(d.pu, d.pv);
   PRECISE float len0 = sqrt(dot(n0, n0));
@@ -253,6 +252,17 @@ VertexSample evalBicubicVertex(IN(BicubicPatch) bp, float u, float v, float eps)
   s.position = vec4(d.p, 1.0f);
   s.normal = vec4(n, 0.0f);
   return s;
+}
+
+// ε·L², as sampleFromDerivs computes it from bicubicScale: one patch's, for all its vertices.
+float bicubicTolerance(IN(BicubicPatch) bp, float eps) {
+  PRECISE float scale = bicubicScale(bp);
+  PRECISE float tol = eps * scale * scale;
+  return tol;
+}
+
+VertexSample evalBicubicVertex(IN(BicubicPatch) bp, float u, float v, float eps) {
+  return bicubicVertex(bp, u, v, bicubicTolerance(bp, eps));
 }
 
 #endif
