@@ -4,8 +4,10 @@
 // its mirror bit for bit on lavapipe; and tessellate() taking it, not evaluate().
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <random>
 
 #include "eval/evaluator.h"
 #include "gpu_test_context.h"
@@ -100,39 +102,44 @@ TEST_CASE("fp32 mirror: evaluateVertices gives evaluate's positions and normals 
 TEST_CASE("eval_vertices shader equals its fp32 mirror and eval.comp's positions and normals",
           "[gpu][parity]") {
   vk::Context& context = test::gpuContext();
-  for (const PatchCase& c : patchCases()) {
-    const auto queries = test::gridQueries(c.patches.size(), 9, 64, 1234);
-    auto vulkan = makeVulkanEvaluator(context);
-    const auto gpu = vulkan->evaluateVertices(c.patches, queries);
-    const auto gpuSamples = vulkan->evaluate(c.patches, queries);
-    const auto cpu = makeMirrorEvaluator()->evaluateVertices(c.patches, queries);
-    REQUIRE(gpu.size() == queries.size());
-    size_t mirrorMismatches = 0;
-    double maxPositionDiff = 0, maxNormalDiff = 0, maxCoordinate = 0;
-    for (size_t i = 0; i < gpu.size(); ++i) {
-      mirrorMismatches += !sameBits(gpu[i].position, cpu[i].position) ||
-                          !sameBits(gpu[i].normal, cpu[i].normal);
-      for (int k = 0; k < 3; ++k) {
-        maxCoordinate = std::max(maxCoordinate, double(std::fabs(gpu[i].position[k])));
-        maxPositionDiff =
-            std::max(maxPositionDiff, double(std::fabs(gpu[i].position[k] - cpu[i].position[k])));
-        maxNormalDiff =
-            std::max(maxNormalDiff, double(std::fabs(gpu[i].normal[k] - cpu[i].normal[k])));
+  for (const PatchCase& c : patchCases())
+    for (const bool shuffled : {false, true}) {
+      // In patch order the shader's runs (VertexEvalPush) are full, cut at patch changes; shuffled,
+      // nearly every run is one query long.
+      auto queries = test::gridQueries(c.patches.size(), 9, 64, 1234);
+      if (shuffled) std::shuffle(queries.begin(), queries.end(), std::mt19937(5));
+      auto vulkan = makeVulkanEvaluator(context);
+      const auto gpu = vulkan->evaluateVertices(c.patches, queries);
+      const auto gpuSamples = vulkan->evaluate(c.patches, queries);
+      const auto cpu = makeMirrorEvaluator()->evaluateVertices(c.patches, queries);
+      REQUIRE(gpu.size() == queries.size());
+      size_t mirrorMismatches = 0;
+      double maxPositionDiff = 0, maxNormalDiff = 0, maxCoordinate = 0;
+      for (size_t i = 0; i < gpu.size(); ++i) {
+        mirrorMismatches +=
+            !sameBits(gpu[i].position, cpu[i].position) || !sameBits(gpu[i].normal, cpu[i].normal);
+        for (int k = 0; k < 3; ++k) {
+          maxCoordinate = std::max(maxCoordinate, double(std::fabs(gpu[i].position[k])));
+          maxPositionDiff =
+              std::max(maxPositionDiff, double(std::fabs(gpu[i].position[k] - cpu[i].position[k])));
+          maxNormalDiff =
+              std::max(maxNormalDiff, double(std::fabs(gpu[i].normal[k] - cpu[i].normal[k])));
+        }
+      }
+      const size_t sampleMismatches = differingVertices(gpu, gpuSamples);
+      WARN(c.name << (shuffled ? ", shuffled," : "") << " on " << context.info().name << ": "
+                  << queries.size() << " vertices, " << mirrorMismatches
+                  << " differ from the mirror in any bit (max |Δp| " << maxPositionDiff
+                  << ", max |Δn| " << maxNormalDiff << "), " << sampleMismatches
+                  << " from eval.comp's samples");
+      if (test::exactMirrorArithmetic()) {
+        REQUIRE(mirrorMismatches == 0);
+        REQUIRE(sampleMismatches == 0);
+      } else {
+        REQUIRE(maxPositionDiff <= 1e-6 * std::max(1.0, maxCoordinate));
+        REQUIRE(maxNormalDiff <= 3e-5);
       }
     }
-    const size_t sampleMismatches = differingVertices(gpu, gpuSamples);
-    WARN(c.name << " on " << context.info().name << ": " << queries.size() << " vertices, "
-                << mirrorMismatches << " differ from the mirror in any bit (max |Δp| "
-                << maxPositionDiff << ", max |Δn| " << maxNormalDiff << "), "
-                << sampleMismatches << " from eval.comp's samples");
-    if (test::exactMirrorArithmetic()) {
-      REQUIRE(mirrorMismatches == 0);
-      REQUIRE(sampleMismatches == 0);
-    } else {
-      REQUIRE(maxPositionDiff <= 1e-6 * std::max(1.0, maxCoordinate));
-      REQUIRE(maxNormalDiff <= 3e-5);
-    }
-  }
   test::requireValidationClean();
 }
 

@@ -120,7 +120,7 @@ void tessellateGroup(const TrimmedModel& model, const FaceGroup& group, const Mo
   parallelForChunks(faceCount, 1, threads, [&](size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k) {
       const std::vector<gpu::VertexSample> faceSamples(samples.begin() + long(firstQuery[k]),
-                                                     samples.begin() + long(firstQuery[k + 1]));
+                                                       samples.begin() + long(firstQuery[k + 1]));
       Tessellation& face = out.faces[group.faces[k]];
       face = assembleTessellation(group.facePatches[k].size(), std::move(faceTrees[k]),
                                   std::move(params[k]), faceSamples);
