@@ -91,6 +91,7 @@ std::vector<WireEdge> orderedEdges(const TopoDS_Wire& wire, const TopoDS_Face& f
   // edge: a torus's seams all meet at its one vertex) or is used twice (a seam, once per side):
   // then only the pcurves tell the order.
   std::vector<const TopoDS_TShape*> tshapes;  // sorted: an edge used twice sits beside itself
+  tshapes.reserve(edges.size());
   bool vertexOrderHolds = true;
   for (const WireEdge& edge : edges) {
     if (edge.firstId == edge.lastId && edges.size() > 1) vertexOrderHolds = false;
