@@ -6,17 +6,24 @@
 namespace tessera {
 namespace {
 
-// The control-point indices of side `side` in increasing t, into `out` (cleared first).
-void sideIndices(const BezierPatch& patch, int side, std::vector<size_t>& out) {
-  out.clear();
+// Visits the control-point indices of side `side` in increasing t: the one statement of a
+// side's order, for its index list and its points alike.
+template <typename Visit>
+void forEachSideIndex(const BezierPatch& patch, int side, Visit&& visit) {
   const int n = patch.degreeU, m = patch.degreeV;
   const auto index = [m](int i, int j) { return size_t(i * (m + 1) + j); };
   switch (side) {
-    case kSideV0: for (int i = 0; i <= n; ++i) out.push_back(index(i, 0)); break;
-    case kSideV1: for (int i = 0; i <= n; ++i) out.push_back(index(i, m)); break;
-    case kSideU0: for (int j = 0; j <= m; ++j) out.push_back(index(0, j)); break;
-    default: for (int j = 0; j <= m; ++j) out.push_back(index(n, j)); break;
+    case kSideV0: for (int i = 0; i <= n; ++i) visit(index(i, 0)); break;
+    case kSideV1: for (int i = 0; i <= n; ++i) visit(index(i, m)); break;
+    case kSideU0: for (int j = 0; j <= m; ++j) visit(index(0, j)); break;
+    default: for (int j = 0; j <= m; ++j) visit(index(n, j)); break;
   }
+}
+
+// The control-point indices of side `side` in increasing t, into `out` (cleared first).
+void sideIndices(const BezierPatch& patch, int side, std::vector<size_t>& out) {
+  out.clear();
+  forEachSideIndex(patch, side, [&](size_t k) { out.push_back(k); });
 }
 
 uint64_t bitsOf(double x) {
@@ -42,18 +49,9 @@ void appendKey(const BezierPatch& patch, const Indices& indices, std::vector<uin
 }  // namespace
 
 std::vector<glm::dvec3> sideControlPoints(const BezierPatch& patch, int side) {
-  // sideIndices' order, without its index list (one allocation, not five).
-  const int n = patch.degreeU, m = patch.degreeV;
-  const bool alongU = side == kSideV0 || side == kSideV1;
   std::vector<glm::dvec3> points;
-  points.reserve(size_t(alongU ? n : m) + 1);
-  if (alongU) {
-    const int j = side == kSideV0 ? 0 : m;
-    for (int i = 0; i <= n; ++i) points.push_back(patch.cp[size_t(i * (m + 1) + j)]);
-  } else {
-    const int i = side == kSideU0 ? 0 : n;
-    for (int j = 0; j <= m; ++j) points.push_back(patch.cp[size_t(i * (m + 1) + j)]);
-  }
+  points.reserve(size_t(side == kSideV0 || side == kSideV1 ? patch.degreeU : patch.degreeV) + 1);
+  forEachSideIndex(patch, side, [&](size_t k) { points.push_back(patch.cp[k]); });
   return points;
 }
 

@@ -1,12 +1,16 @@
-// triangulateLeaves (triangulate.h): sets up what a leaf's vertices are (seam_vertices.cpp,
-// line_points.cpp, near_point_merge.cpp), walks the leaves in runs on threads
+// triangulateLeaves (triangulate.h): a one-leaf tree directly (one_leaf.cpp); else sets up
+// what a leaf's vertices are (seam_vertices.cpp, line_points.cpp, near_point_merge.cpp), walks the leaves in runs on threads
 // (leaf_walk.cpp), and numbers the vertices the walk asked for in leaf order, as one walk
 // would have, so that the mesh does not depend on the thread count.
 #include "mesh/triangulate.h"
 
+#include <optional>
+#include <utility>
+
 #include "common/first_occurrence.h"
 #include "common/parallel_for.h"
 #include "mesh/detail/leaf_walk.h"
+#include "mesh/detail/one_leaf.h"
 
 namespace tessera {
 
@@ -15,6 +19,7 @@ using namespace triangulate_detail;
 ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
                             const std::vector<BezierPatch>& patches,
                             const TriangulationScope& scope) {
+  if (std::optional<ParamMesh> one = triangulateOneLeaf(leaves, patches, scope)) return std::move(*one);
   const PatchTopology ownTopology = scope.topology ? PatchTopology{} : findSharedEdges(patches);
   const PatchTopology& topology = scope.topology ? *scope.topology : ownTopology;
   ParamMesh mesh;
