@@ -5,8 +5,8 @@
 #include <numeric>
 #include <set>
 
-#include "common/hash_map.h"
 #include "common/small_id_list.h"
+#include "trim/detail/flip_edge_table.h"
 #include "trim/trim_cut.h"
 
 namespace tessera {
@@ -306,64 +306,6 @@ namespace {
 
 using EdgeKey64 = uint64_t;  // an edge as one exact key: smaller vertex in the high word
 
-// The edge → triangles map of a hashed flip: the flips below ask only for an edge's users, so
-// any map gives the same flips (the queue is sorted before it is used).
-struct HashedEdgeUsers {
-  HashMap<EdgeKey64, SmallIdList> map;
-  explicit HashedEdgeUsers(size_t triangles) { map.reserve(2 * triangles); }  // ~3/2 a triangle
-  SmallIdList& operator[](EdgeKey64 e) { return map[e]; }
-  SmallIdList* find(EdgeKey64 e) {
-    const auto found = map.find(e);
-    return found == map.end() ? nullptr : &found.value();
-  }
-  void erase(EdgeKey64 e) { map.erase(e); }
-  template <class F>
-  void forEach(F&& f) const {
-    for (const auto& [edge, ts] : map) f(edge, ts);
-  }
-};
-
-// The same map for a few triangles (most gaps): one vector searched from the front, without the
-// hashed map's buckets allocated for every gap.
-struct FewEdgeUsers {
-  // A buffer kept for the thread, emptied for each gap: no allocation per gap. So at most one
-  // FewEdgeUsers may be alive on a thread at a time (flipWith makes one and does not recurse).
-  std::vector<std::pair<EdgeKey64, SmallIdList>>& entries = buffer();
-  explicit FewEdgeUsers(size_t triangles) {
-    entries.clear();
-    entries.reserve(2 * triangles);
-  }
-  static std::vector<std::pair<EdgeKey64, SmallIdList>>& buffer() {
-    thread_local std::vector<std::pair<EdgeKey64, SmallIdList>> entries;
-    return entries;
-  }
-  SmallIdList& operator[](EdgeKey64 e) {
-    if (SmallIdList* found = find(e)) return *found;
-    return entries.emplace_back(e, SmallIdList()).second;
-  }
-  SmallIdList* find(EdgeKey64 e) {
-    for (auto& [edge, ts] : entries)
-      if (edge == e) return &ts;
-    return nullptr;
-  }
-  void erase(EdgeKey64 e) {
-    for (size_t k = 0; k < entries.size(); ++k)
-      if (entries[k].first == e) {
-        entries[k] = std::move(entries.back());
-        entries.pop_back();
-        return;
-      }
-  }
-  template <class F>
-  void forEach(F&& f) const {
-    for (const auto& [edge, ts] : entries) f(edge, ts);
-  }
-};
-
-// Up to this many triangles, FewEdgeUsers: its searches cost less than hashing below it.
-constexpr size_t kFewTriangles = 24;
-
-template <class Users>
 void flipWith(const std::vector<glm::dvec2>& points,
               const std::vector<std::pair<uint32_t, uint32_t>>& fixed,
               std::vector<std::array<uint32_t, 3>>& triangles) {
@@ -382,7 +324,7 @@ void flipWith(const std::vector<glm::dvec2>& points,
   const auto isConstrained = [&](Edge e) {
     return std::binary_search(constrained.begin(), constrained.end(), e);
   };
-  Users users(triangles.size());  // edge → the triangles using it
+  trim_detail::FlipEdgeTable users(triangles.size());  // edge → the triangles using it
   for (uint32_t t = 0; t < triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) users[key(triangles[t][k], triangles[t][(k + 1) % 3])].push_back(t);
   thread_local std::vector<Edge> queue;
@@ -439,10 +381,7 @@ void flipTowardsDelaunay(const std::vector<glm::dvec2>& points,
                          const std::vector<std::pair<uint32_t, uint32_t>>& fixed,
                          std::vector<std::array<uint32_t, 3>>& triangles) {
   if (triangles.size() < 2) return;  // no edge has two triangles
-  if (triangles.size() <= kFewTriangles)
-    flipWith<FewEdgeUsers>(points, fixed, triangles);
-  else
-    flipWith<HashedEdgeUsers>(points, fixed, triangles);
+  flipWith(points, fixed, triangles);
 }
 
 }  // namespace tessera
