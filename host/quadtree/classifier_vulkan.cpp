@@ -84,17 +84,11 @@ class VulkanClassifier final : public NodeClassifier {
     const bool general = !patches.isBicubic();
     if (uploadedCount_ != patches.size() || uploadedGeneral_ != general)
       throw std::logic_error("VulkanClassifier: classify() without beginTree() for these patches");
-    if (general)
-      run(true, {&patches_, &nodes_, &decisions_, &points_}, nodes, options, decisions, stats);
-    else if (options.rule == SplitRule::Tolerance)
-      run(false, {}, nodes, options, decisions, stats);
-    else
-      run(false, {&patches_, &nodes_, &decisions_}, nodes, options, decisions, stats);
+    run(general, nodes, options, decisions, stats);
   }
 
  private:
-  void run(bool general, std::initializer_list<const vk::Buffer*> buffers,
-           const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
+  void run(bool general, const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
            std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) {
     const Stopwatch stopwatch;
     decisions.resize(nodes.size());
@@ -125,8 +119,10 @@ class VulkanClassifier final : public NodeClassifier {
         vk::computeToComputeBarrier(context_, cmd);
         pipeline.dispatchBindings(cmd, {points, nodeTexels, netTexels, &decisions_}, &push,
                                   push.nodeCount);
+      } else if (general) {
+        pipeline.dispatch(cmd, {&patches_, &nodes_, &decisions_, &points_}, &push, push.nodeCount);
       } else {
-        pipeline.dispatch(cmd, buffers, &push, push.nodeCount);
+        pipeline.dispatch(cmd, {&patches_, &nodes_, &decisions_}, &push, push.nodeCount);
       }
       timer_.mark(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
       vk::computeToHostBarrier(context_, cmd);

@@ -95,6 +95,17 @@ void ComputePipeline::dispatch(VkCommandBuffer cmd, std::initializer_list<const 
   dispatch(cmd, infos, pushConstants, invocations);
 }
 
+namespace {
+// One binding's descriptor write, its buffer or view filled in by the caller.
+VkWriteDescriptorSet bindingWrite(uint32_t binding, VkDescriptorType type) {
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstBinding = binding;
+  write.descriptorCount = 1;
+  write.descriptorType = type;
+  return write;
+}
+}  // namespace
+
 VkDescriptorType ComputePipeline::descriptorType(uint32_t binding) const {
   return (texelMask_ >> binding) & 1u ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER
                                       : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
@@ -115,10 +126,7 @@ void ComputePipeline::dispatchBindings(VkCommandBuffer cmd, std::initializer_lis
     if (texel != (b.texelView != VK_NULL_HANDLE))
       throw std::invalid_argument(name_ + ": binding " + std::to_string(i) + " must be a " +
                                   (texel ? "texel buffer view" : "storage buffer"));
-    writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-    writes[i].dstBinding = i;
-    writes[i].descriptorCount = 1;
-    writes[i].descriptorType = type;
+    writes[i] = bindingWrite(i, type);
     if (texel) {
       views[i] = b.texelView;
       writes[i].pTexelBufferView = &views[i];
@@ -128,12 +136,7 @@ void ComputePipeline::dispatchBindings(VkCommandBuffer cmd, std::initializer_lis
     }
     ++i;
   }
-  if (invocations == 0) return;
-  const DeviceTable& vk = context_.vk();
-  vk.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
-  vk.vkCmdPushDescriptorSetKHR(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0,
-                               static_cast<uint32_t>(writes.size()), writes.data());
-  recordDispatch(cmd, pushConstants, invocations);
+  bindAndDispatch(cmd, writes, pushConstants, invocations);
 }
 
 void ComputePipeline::dispatch(VkCommandBuffer cmd,
@@ -150,25 +153,22 @@ void ComputePipeline::dispatch(VkCommandBuffer cmd,
                                   " is not a multiple of minStorageBufferOffsetAlignment (" +
                                   std::to_string(context_.minStorageBufferOffsetAlignment()) +
                                   ")");
+  std::vector<VkWriteDescriptorSet> writes(infos.size());
+  for (uint32_t i = 0; i < infos.size(); ++i) {
+    writes[i] = bindingWrite(i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    writes[i].pBufferInfo = &infos[i];
+  }
+  bindAndDispatch(cmd, writes, pushConstants, invocations);
+}
+
+void ComputePipeline::bindAndDispatch(VkCommandBuffer cmd,
+                                      const std::vector<VkWriteDescriptorSet>& writes,
+                                      const void* pushConstants, uint32_t invocations) const {
   if (invocations == 0) return;
   const DeviceTable& vk = context_.vk();
   vk.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
-  std::vector<VkWriteDescriptorSet> writes(infos.size());
-  for (uint32_t i = 0; i < infos.size(); ++i) {
-    writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-    writes[i].dstBinding = i;
-    writes[i].descriptorCount = 1;
-    writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    writes[i].pBufferInfo = &infos[i];
-  }
   vk.vkCmdPushDescriptorSetKHR(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0,
                                static_cast<uint32_t>(writes.size()), writes.data());
-  recordDispatch(cmd, pushConstants, invocations);
-}
-
-void ComputePipeline::recordDispatch(VkCommandBuffer cmd, const void* pushConstants,
-                                     uint32_t invocations) const {
-  const DeviceTable& vk = context_.vk();
   if (pushBytes_)
     vk.vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes_,
                           pushConstants);

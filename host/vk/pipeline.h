@@ -62,8 +62,10 @@ class ComputePipeline {
   const std::string& name() const { return name_; }
 
  private:
-  // Push constants and the dispatch, after the pipeline and its descriptors are bound.
-  void recordDispatch(VkCommandBuffer cmd, const void* pushConstants, uint32_t invocations) const;
+  // Binds the pipeline, pushes `writes` as its descriptors, the push constants, and records
+  // the dispatch (nothing for 0 invocations): the one path of both dispatch functions.
+  void bindAndDispatch(VkCommandBuffer cmd, const std::vector<VkWriteDescriptorSet>& writes,
+                       const void* pushConstants, uint32_t invocations) const;
 
   Context& context_;
   std::string name_;
