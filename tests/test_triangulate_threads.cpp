@@ -11,36 +11,10 @@
 #include "mesh/shared_edges.h"
 #include "mesh/tessellate.h"
 #include "mesh/triangulate.h"
+#include "param_mesh_compare.h"
 #include "quadtree/tolerance.h"
 
 using namespace tessera;
-
-namespace {
-
-void requireSameMesh(const ParamMesh& a, const ParamMesh& b) {
-  REQUIRE(a.vertices.size() == b.vertices.size());
-  for (size_t i = 0; i < a.vertices.size(); ++i) {
-    INFO("vertex " << i);
-    REQUIRE(a.vertices[i].patchIndex == b.vertices[i].patchIndex);
-    REQUIRE(a.vertices[i].u == b.vertices[i].u);
-    REQUIRE(a.vertices[i].v == b.vertices[i].v);
-  }
-  REQUIRE(a.indices == b.indices);
-  REQUIRE(a.trianglePatch == b.trianglePatch);
-  REQUIRE(a.cornerUv == b.cornerUv);
-  REQUIRE(a.droppedTriangles == b.droppedTriangles);
-  REQUIRE(a.diagonalFans == b.diagonalFans);
-  REQUIRE(a.seamKeys.size() == b.seamKeys.size());
-  for (size_t i = 0; i < a.seamKeys.size(); ++i) {
-    INFO("seam key " << i);
-    REQUIRE(a.seamKeys[i].kind == b.seamKeys[i].kind);
-    REQUIRE(a.seamKeys[i].group == b.seamKeys[i].group);
-    REQUIRE(a.seamKeys[i].parameter == b.seamKeys[i].parameter);
-    REQUIRE(a.seamKeys[i].point == b.seamKeys[i].point);
-  }
-}
-
-}  // namespace
 
 TEST_CASE("triangulation: the same mesh on 1, 3 and all threads", "[triangulate][mesh]") {
   Backend mirror = makeMirrorBackend();
@@ -72,7 +46,7 @@ TEST_CASE("triangulation: the same mesh on 1, 3 and all threads", "[triangulate]
         for (unsigned threads : {3u, 0u}) {
           INFO(threads << " threads (0: all), scope " << scope.endPatch);
           scope.threads = threads;
-          requireSameMesh(one, triangulateLeaves(leaves, local, scope));
+          test::requireSameParamMesh(one, triangulateLeaves(leaves, local, scope));
         }
       }
     }
