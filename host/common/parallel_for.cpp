@@ -5,7 +5,8 @@
 #include <exception>
 #include <mutex>
 #include <thread>
-#include <vector>
+
+#include "common/worker_pool.h"
 
 namespace tessera {
 
@@ -25,16 +26,7 @@ void parallelParts(unsigned parts, const std::function<void(unsigned part)>& bod
       if (!firstError) firstError = std::current_exception();
     }
   };
-  std::vector<std::thread> workers;
-  try {
-    for (unsigned part = 1; part < parts; ++part) workers.emplace_back(guarded, part);
-  } catch (...) {
-    // A thread could not start: finish the started ones before reporting it.
-    for (std::thread& worker : workers) worker.join();
-    throw;
-  }
-  if (parts > 0) guarded(0);
-  for (std::thread& worker : workers) worker.join();
+  worker_pool::runParts(parts, guarded);
   if (firstError) std::rethrow_exception(firstError);
 }
 

@@ -10,8 +10,10 @@ namespace tessera {
 // Threads to use for `requested`: requested itself, or all hardware threads (at least 1) when 0.
 unsigned resolveThreadCount(unsigned requested);
 
-// Runs body(part) for part 0 … parts − 1 at once, part 0 on the calling thread. Returns after
-// every part has finished; the first exception any part threw is then rethrown here.
+// Runs body(part) for part 0 … parts − 1, part 0 on the calling thread, the others on the
+// process's kept worker threads (worker_pool.h) or, when none is free, on the calling thread
+// after its own: parts must not wait for each other. Returns after every part has finished;
+// the first exception any part threw is then rethrown here.
 void parallelParts(unsigned parts, const std::function<void(unsigned part)>& body);
 
 // Splits [0, count) into min(threads, count) shares [count·k/n, count·(k+1)/n) and runs
