@@ -41,13 +41,20 @@ class NearPointMerger {
           const uint32_t patch = uint32_t(line->key(l) >> 32);
           const float fixed = fromBits(uint32_t(line->key(l)));
           const auto uvOf = [&](float t) { return alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t); };
+          // A side's points are merged by the side's own rules: its pairs are dropped, so
+          // nothing on it needs evaluating (its points are still sorted and folded).
+          const bool side = lineIsSide(patch, alongU, fixed);
+          LastPoint last;
           const auto distinct = [&](float a, float b) {
-            return distinctOnModel(patch, uvOf(a), uvOf(b));
+            if (side) return true;
+            const auto at = [&](float t) { return last.at(t, [&] { return pointOf(patch, uvOf(t)); }); };
+            const glm::dvec3 pa = at(a);
+            return distinctOnModel(pa, at(b));
           };
           size_t count = line->points(l).size();
           pairs[l] = nearPairs(line->points(l).begin(), count, distinct);
           line->shrink(l, count);
-          if (lineIsSide(patch, alongU, fixed)) pairs[l].clear();  // merged by the side's own rules
+          if (side) pairs[l].clear();
         }
       });
       const bool any = std::any_of(pairs.begin(), pairs.end(), [](const auto& p) { return !p.empty(); });
@@ -70,8 +77,11 @@ class NearPointMerger {
         const float t = canonical(s, c);
         return alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
       };
+      LastPoint last;
       const auto distinct = [&, patch = patch](float a, float b) {
-        return distinctOnModel(patch, uvOf(a), uvOf(b));
+        const auto at = [&](float c) { return last.at(c, [&] { return pointOf(patch, uvOf(c)); }); };
+        const glm::dvec3 pa = at(a);
+        return distinctOnModel(pa, at(b));
       };
       for (const auto& [a, b] : nearPairs(lines_.shared[g], distinct))
         merge(groupKey(g, a), groupKey(g, b));
@@ -159,13 +169,35 @@ class NearPointMerger {
 
   // Whether fp32 positions tell two points of a patch apart (near_points.h): farther apart
   // on the model, in double, than kDistinctUlps units in the last place of their coordinates.
-  bool distinctOnModel(uint32_t patch, glm::vec2 a, glm::vec2 b) const {
-    const std::vector<BezierPatch>& patches = seams_.patches();
-    const glm::dvec3 pa = patchPoint(patches[patch], a.x, a.y);
-    const glm::dvec3 pb = patchPoint(patches[patch], b.x, b.y);
+  static bool distinctOnModel(const glm::dvec3& pa, const glm::dvec3& pb) {
     const glm::dvec3 m = glm::max(glm::abs(pa), glm::abs(pb));
     return glm::length(pa - pb) > kDistinctUlps * 0x1p-23 * std::max({m.x, m.y, m.z});
   }
+
+  glm::dvec3 pointOf(uint32_t patch, glm::vec2 uv) const {
+    return patchPoint(seams_.patches()[patch], uv.x, uv.y);
+  }
+
+  // nearPairs asks about adjacent pairs in turn, so a pair's first point is mostly the last
+  // pair's second: kept, each point is evaluated once, not twice (the same t bits, the same
+  // point).
+  class LastPoint {
+   public:
+    template <class Evaluate>
+    glm::dvec3 at(float t, const Evaluate& evaluate) {
+      if (!held_ || bits(t) != tBits_) {
+        point_ = evaluate();
+        tBits_ = bits(t);
+        held_ = true;
+      }
+      return point_;
+    }
+
+   private:
+    bool held_ = false;
+    uint32_t tBits_ = 0;
+    glm::dvec3 point_{0.0};
+  };
 
   VertexKey lineKeyOf(uint32_t patch, bool alongU, float fixed, float t) {
     return alongU ? seams_.baseKey(patch, t, fixed) : seams_.baseKey(patch, fixed, t);
