@@ -1,13 +1,18 @@
 // parallelParts on the kept worker threads (common/worker_pool.h): threads are not started
-// anew at every call, nested and concurrent calls finish with every part run once, and more
-// parts than threads all run.
+// anew at every call, nested and concurrent calls finish with every part run once, more
+// parts than threads all run, and a forked child computes and exits without the parent's.
 #include <catch2/catch.hpp>
 
 #include <atomic>
+#include <cstdio>
+#include <cstdlib>
 #include <thread>
 #include <vector>
 
 #include "common/parallel_for.h"
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 using namespace tessera;
 
@@ -61,4 +66,25 @@ TEST_CASE("parallelFor from several threads at once covers each range once", "[c
   for (std::thread& caller : callers) caller.join();
   for (auto& v : visits)
     for (auto& count : v) REQUIRE(count == 20);
+}
+
+TEST_CASE("parallelFor in a forked child runs on the child and exits cleanly", "[common]") {
+  parallelFor(64, 0, [](size_t, size_t) {});  // the parent's workers exist
+  std::fflush(nullptr);                         // nothing buffered twice
+  const pid_t child = ::fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    ::alarm(20);  // a hang fails the test instead of stalling it
+    std::vector<std::atomic<int>> visits(1000);
+    parallelForChunks(visits.size(), 16, 0, [&](size_t begin, size_t end) {
+      for (size_t i = begin; i < end; ++i) ++visits[i];
+    });
+    bool once = true;
+    for (auto& v : visits) once = once && v == 1;
+    std::exit(once ? 0 : 1);  // runs the pool's destructor, which must not join the parent's threads
+  }
+  int status = 0;
+  REQUIRE(::waitpid(child, &status, 0) == child);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
 }

@@ -7,6 +7,8 @@
 #include <thread>
 #include <vector>
 
+#include <unistd.h>
+
 namespace tessera::worker_pool {
 namespace {
 
@@ -21,21 +23,20 @@ struct Job {
 
 class Pool {
  public:
+  // Never destroyed: its workers sleep until the process ends. Destroying the condition
+  // variable at exit would wait for its waiters, which in a forked child never come.
   static Pool& instance() {
-    static Pool pool;
-    return pool;
-  }
-
-  ~Pool() {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      stopping_ = true;
-    }
-    wake_.notify_all();
-    for (std::thread& worker : workers_) worker.join();
+    static Pool* pool = new Pool;
+    return *pool;
   }
 
   void run(unsigned parts, const std::function<void(unsigned)>& body) {
+    // A forked child must not touch the lock or the condition variable, whose waiters are
+    // the parent's threads: its calls run every part themselves.
+    if (::getpid() != owner_) {
+      for (unsigned part = 0; part < parts; ++part) body(part);
+      return;
+    }
     Job job{&body, parts};
     {
       std::lock_guard<std::mutex> lock(mutex_);
@@ -64,7 +65,7 @@ class Pool {
   void startWorkers(unsigned wanted) {
     const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
     wanted = std::min(wanted, hardware - 1);
-    while (workers_.size() < wanted && !stopping_) {
+    while (workers_.size() < wanted) {
       try {
         workers_.emplace_back([this] { work(); });
       } catch (...) {
@@ -84,8 +85,7 @@ class Pool {
   void work() {
     std::unique_lock<std::mutex> lock(mutex_);
     for (;;) {
-      wake_.wait(lock, [&] { return stopping_ || !jobs_.empty(); });
-      if (stopping_) return;
+      wake_.wait(lock, [&] { return !jobs_.empty(); });
       Job& job = *jobs_.front();
       const unsigned part = take(job);
       lock.unlock();
@@ -99,7 +99,7 @@ class Pool {
   std::condition_variable wake_;
   std::deque<Job*> jobs_;  // the jobs with parts not yet taken, oldest first
   std::vector<std::thread> workers_;
-  bool stopping_ = false;
+  const pid_t owner_ = ::getpid();  // the process whose threads workers_ are
 };
 
 }  // namespace
