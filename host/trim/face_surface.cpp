@@ -129,6 +129,9 @@ FaceSurface::FaceSurface(const TrimmedFace& face) : face_(&face) {
     } catch (const std::invalid_argument&) {
       checked_ = false;
     }
+  for (const BezierPatchPiece& p : face.pieces)
+    for (const glm::dvec3& c : p.patch.cp)
+      netReach_ = std::max({netReach_, std::abs(c.x), std::abs(c.y), std::abs(c.z)});
   rational_.resize(face.pieces.size());
   for (size_t k = 0; k < face.pieces.size(); ++k)
     if (!face.pieces[k].patch.weights.empty()) rational_[k] = toRationalPatch(face.pieces[k].patch);

@@ -32,6 +32,9 @@ class FaceSurface {
   // `guess` started there (closest_point.h): an upper bound of the true distance. With
   // `enough` > 0 the search ends once within it (closestPointOnPatch's `enough`).
   double distance(const glm::dvec3& target, glm::dvec2 guess, double enough = 0.0) const;
+  // The largest |coordinate| of the pieces' control points: every evaluation is a convex mix
+  // of them (weights ≥ 0), so its rounding is a few ulps of this.
+  double netReach() const { return netReach_; }
   // Means over a 6 × 6 grid of [lo, hi], by central differences (one set of five points per
   // grid point).
   struct Scales {
@@ -60,6 +63,7 @@ class FaceSurface {
   std::vector<double> us_, vs_;       // the pieces' sorted distinct sides
   std::vector<int> cellPiece_;        // (us_.size()−1)·(vs_.size()−1) cells → piece or −1
   std::vector<std::optional<RationalBezierPatch>> rational_;  // per rational piece, its form
+  double netReach_ = 0;
   bool checked_ = false;  // every piece passes validateTessellationPatch: the fast point()
 };
 

@@ -83,7 +83,7 @@ int sideOf(const std::array<uint32_t, 3>& v, uint32_t a, uint32_t b) {
 // A triangle's measures (negative: not taken yet), by its corners in any order.
 struct Measures {
   SampledDeviations sampled{-1.0, -1.0};  // interpolation and parametric (with the corners' offsets)
-  double geometric = -1.0;
+  double geometric = -1.0;  // 0 within δ (interpolationWithinFrom), +∞ over it
 };
 class MeasureCache {
  public:
@@ -236,6 +236,50 @@ double interpolationDistanceFrom(const FaceSurface& surface, const std::vector<F
   return worst;
 }
 
+// Whether interpolationDistanceFrom(…, limit) ≤ limit, with fewer searches: a sample whose
+// surface point S(uv) lies within limit − slack of its target Σ bᵢ S(uvᵢ) needs none, since
+// the search starts at that uv and only ever lowers the distance, and its first evaluation of
+// S(uv) (the partials' code, not point()'s) differs from point()'s by rounding, a few ulps of
+// the net's coordinates, which `slack` covers many times over. The other samples are searched
+// as interpolationDistanceFrom searches them (same target, guess and `enough`), so the answer
+// is its answer. Most of a sphere's samples are skipped: its rational parametrisation slides
+// along the surface (the parametric error over δ) only towards the triangle's middle.
+constexpr double kWithinSlack = 1e-12;  // of the net's reach: thousands of ulps
+bool interpolationWithinFrom(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
+                             const std::array<uint32_t, 3>& t,
+                             const std::array<glm::dvec3, 3>& s, int n, double limit,
+                             double slack) {
+  const glm::dvec3 &s0 = s[0], &s1 = s[1], &s2 = s[2];
+  thread_local std::vector<glm::dvec2> uvBuffer;
+  thread_local std::vector<glm::dvec3> onSurfaceBuffer;
+  const size_t interior = size_t(n + 1) * size_t(n + 2) / 2;
+  if (uvBuffer.size() < interior) uvBuffer.resize(interior), onSurfaceBuffer.resize(interior);
+  glm::dvec2* const uvs = uvBuffer.data();
+  const glm::dvec2 uv0 = vs[t[0]].uv, uv1 = vs[t[1]].uv, uv2 = vs[t[2]].uv;
+  size_t count = 0;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j) {
+      if (i == n || j == n || i + j == 0) continue;
+      const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
+      uvs[count++] = a * uv0 + b * uv1 + c * uv2;
+    }
+  surface.points(uvs, count, onSurfaceBuffer.data());
+  const double skip = limit - slack;
+  const double skip2 = skip > 0 ? skip * skip : -1.0;
+  size_t next = 0;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j) {
+      if (i == n || j == n || i + j == 0) continue;
+      const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
+      const glm::dvec3 target = a * s0 + b * s1 + c * s2;
+      const glm::dvec3 d = target - onSurfaceBuffer[next];
+      const glm::dvec2 uv = uvs[next++];
+      if (glm::dot(d, d) <= skip2) continue;
+      if (surface.distance(target, uv, limit) > limit) return false;
+    }
+  return true;
+}
+
 std::array<glm::dvec3, 3> cornerSurfacePoints(const FaceSurface& surface,
                                               const std::vector<FaceVertex>& vs,
                                               const std::array<uint32_t, 3>& t) {
@@ -270,6 +314,12 @@ double interpolationDistance(const FaceSurface& surface, const std::vector<FaceV
                              const std::array<uint32_t, 3>& t, int n) {
   return interpolationDistanceFrom(surface, vs, t, cornerSurfacePoints(surface, vs, t), n,
                                    std::numeric_limits<double>::infinity());
+}
+
+bool interpolationWithin(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
+                         const std::array<uint32_t, 3>& t, int n, double limit) {
+  return interpolationWithinFrom(surface, vs, t, cornerSurfacePoints(surface, vs, t), n, limit,
+                                 kWithinSlack * surface.netReach());
 }
 
 double cornerOffset(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
@@ -368,8 +418,10 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
   // Vertices never move, so a triangle's measures depend on its corners alone: each is taken
   // once per set of corners (a triangle left alone by a round, or rebuilt by a flip back, is
   // not sampled again).
-  // m.geometric is only compared with δ: its search stops at the first sample over δ.
+  // m.geometric is only compared with δ: its check stops at the first sample over δ.
   MeasureCache cache(2 * triangles.size());
+  // interpolationWithinFrom's allowance for the rounding of two evaluations of one S(uv).
+  const double slack = kWithinSlack * surface.netReach();
   const bool geometric = options.measure == GapMeasure::Geometric;
   const auto deviation = [&](const std::array<uint32_t, 3>& v) {
     Measures& m = cache.of(v);
@@ -382,8 +434,10 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
     if (!geometric) return false;
     Measures& m = cache.of(v);
     if (m.geometric < 0)
-      m.geometric = interpolationDistanceFrom(surface, vs, v, onSurface.of(v),
-                                              options.subdivisions, options.tolerance);
+      m.geometric = interpolationWithinFrom(surface, vs, v, onSurface.of(v), options.subdivisions,
+                                            options.tolerance, slack)
+                        ? 0.0
+                        : std::numeric_limits<double>::infinity();
     return m.geometric <= options.tolerance;
   };
 

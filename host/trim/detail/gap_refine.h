@@ -62,6 +62,12 @@ double cornerOffset(const FaceSurface& surface, const std::vector<FaceVertex>& v
 double interpolationDistance(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
                              const std::array<uint32_t, 3>& t, int n);
 
+// Whether interpolationDistance(…) ≤ limit, as the refinement asks it: samples whose surface
+// point already lies within limit less a rounding allowance of their target need no
+// closest-point search (the search starts there and only lowers the distance).
+bool interpolationWithin(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
+                         const std::array<uint32_t, 3>& t, int n, double limit);
+
 struct GapRefineOptions {
   double tolerance = 0;         // δ
   int subdivisions = 8;         // samples per triangle side
