@@ -15,30 +15,8 @@ using namespace tessera;
 using namespace tessera::test;
 using trim_detail::FaceVertex;
 
-namespace {
-
-// A quarter of a torus (tube radius 1 round a circle of radius 2): a rational 2 × 2 piece whose
-// parametrisation slides along the surface, so triangles measure over the limit parametrically
-// and within it geometrically, the case the check exists for.
-TrimmedFace quarterTorus() {
-  const double w = std::sqrt(0.5);
-  const glm::dvec2 around[3] = {{1, 0}, {1, 1}, {0, 1}};     // the big circle's quarter
-  const glm::dvec2 profile[3] = {{3, 0}, {3, 1}, {2, 1}};   // (distance from the axis, height)
-  const double weight[3] = {1, w, 1};
-  BezierPatch patch;
-  patch.degreeU = 2, patch.degreeV = 2;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      patch.cp.push_back({profile[j].x * around[i].x, profile[j].x * around[i].y, profile[j].y});
-      patch.weights.push_back(weight[i] * weight[j]);
-    }
-  return faceOf(patch, {}, false, 0);
-}
-
-}  // namespace
-
 TEST_CASE("gap refinement: the geometric check answers as the full measure", "[trim]") {
-  const TrimmedFace face = quarterTorus();
+  const TrimmedFace face = quarterTorusFace();
   const FaceSurface surface(face);
   std::mt19937 random(17);
   std::uniform_real_distribution<double> unit(0.0, 1.0), size(0.05, 0.6);

@@ -103,4 +103,40 @@ inline TrimmedFace faceOf(const BezierPatch& patch, std::vector<TrimLoop> loops,
   return face;
 }
 
+// A quarter of a torus (tube radius 1 round a circle of radius 2) over [0,1]², one rational
+// 2 × 2 piece: its parametrisation slides along the surface (not by angle), so gap triangles
+// measure more parametrically than geometrically.
+inline TrimmedFace quarterTorusFace() {
+  const double w = std::sqrt(0.5);
+  const glm::dvec2 around[3] = {{1, 0}, {1, 1}, {0, 1}};    // the big circle's quarter
+  const glm::dvec2 profile[3] = {{3, 0}, {3, 1}, {2, 1}};  // (distance from the axis, height)
+  const double weight[3] = {1, w, 1};
+  BezierPatch patch;
+  patch.degreeU = 2, patch.degreeV = 2;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      patch.cp.push_back({profile[j].x * around[i].x, profile[j].x * around[i].y, profile[j].y});
+      patch.weights.push_back(weight[i] * weight[j]);
+    }
+  return faceOf(patch, {}, false, 0);
+}
+
+// A cylinder's side (radius 1, height 1) over u ∈ [0, 2π], v ∈ [0, 1] in four quarter-circle
+// pieces (degree 2 × 1, weights 1, √2/2, 1), no loops.
+inline TrimmedFace fourPieceCylinderSide() {
+  TrimmedFace side;
+  for (int q = 0; q < 4; ++q) {
+    const double a = q * kPi / 2, w = std::sqrt(0.5);
+    const glm::dvec3 p0(std::cos(a), std::sin(a), 0), p2(-std::sin(a), std::cos(a), 0);
+    BezierPatch piece;
+    piece.degreeU = 2;
+    piece.degreeV = 1;
+    for (glm::dvec3 p : {p0, p0 + p2, p2})
+      for (double z : {0.0, 1.0}) piece.cp.push_back(p + glm::dvec3(0, 0, z));
+    piece.weights = {1, 1, w, w, 1, 1};
+    side.pieces.push_back({piece, a, a + kPi / 2, 0, 1});
+  }
+  return side;
+}
+
 }  // namespace tessera::test

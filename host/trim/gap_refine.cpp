@@ -161,18 +161,74 @@ double largestOverSamples(const std::vector<FaceVertex>& vs, const std::array<ui
 
 namespace {
 
-// sampledDeviations with the corners' surface points s = S(uvᵢ) given.
+// The largest squared interpolation and parametric terms over the n − 1 samples inside one
+// side of a triangle. With n a power of two every weight i/n and 1 − a − b is exact, so such a
+// sample's weights are (w, 1 − w) on the side's two corners and exactly 0 on the third: its uv,
+// point, target and surface point are the same doubles in both triangles on the side (x·A +
+// y·B = y·B + x·A, and adding 0·C changes at most a zero's sign, never a square), so the side's
+// largest terms, a function of its two corners alone (vertices never move), are computed once
+// for the two triangles.
+struct SideSampleMax {
+  double interpolation2 = 0, parametric2 = 0;
+};
+class SideSampleCache {
+ public:
+  explicit SideSampleCache(size_t expected) { bySide_.reserve(expected); }
+  const SideSampleMax* find(uint32_t a, uint32_t b) const {
+    const auto it = bySide_.find(key(a, b));
+    return it == bySide_.end() ? nullptr : &it->second;
+  }
+  void store(uint32_t a, uint32_t b, const SideSampleMax& m) { bySide_[key(a, b)] = m; }
+
+ private:
+  static uint64_t key(uint32_t a, uint32_t b) {
+    return uint64_t(std::min(a, b)) << 32 | uint64_t(std::max(a, b));
+  }
+  HashMap<uint64_t, SideSampleMax> bySide_;
+};
+
+// Whether a triangle's side samples may be shared (SideSampleCache): n a power of two, and every
+// corner's uv, point and surface point finite (0·C is then ±0).
+bool sidesShareable(const std::vector<FaceVertex>& vs, const std::array<uint32_t, 3>& t,
+                    const std::array<glm::dvec3, 3>& s, int n) {
+  if (n < 1 || (n & (n - 1)) != 0) return false;
+  for (int k = 0; k < 3; ++k) {
+    const FaceVertex& v = vs[t[k]];
+    if (!(std::isfinite(v.uv.x) && std::isfinite(v.uv.y) && std::isfinite(v.position.x) &&
+          std::isfinite(v.position.y) && std::isfinite(v.position.z) && std::isfinite(s[k].x) &&
+          std::isfinite(s[k].y) && std::isfinite(s[k].z)))
+      return false;
+  }
+  return true;
+}
+
+// sampledDeviations with the corners' surface points s = S(uvᵢ) given. `sides`, when given,
+// holds the side samples' largest terms of triangles measured before (SideSampleCache): a side
+// found there is not sampled again, one not found is stored.
 SampledDeviations sampledDeviationsFrom(const FaceSurface& surface,
                                         const std::vector<FaceVertex>& vs,
                                         const std::array<uint32_t, 3>& t,
-                                        const std::array<glm::dvec3, 3>& s, int n) {
+                                        const std::array<glm::dvec3, 3>& s, int n,
+                                        SideSampleCache* sides = nullptr) {
   const glm::dvec3 &s0 = s[0], &s1 = s[1], &s2 = s[2];
   const glm::dvec3 &p0 = vs[t[0]].position, &p1 = vs[t[1]].position, &p2 = vs[t[2]].position;
   // The largest squared lengths, one square root each at the end: √ is correctly rounded and
   // monotonic, so √(max d²) is max √(d²), glm::length's value, bit for bit (two roots a sample
-  // were a fifth of the refinement's time).
+  // were a fifth of the refinement's time). A max is the same whatever order its terms come in
+  // (std::max drops a NaN term either way), so a side's terms may come from the cache.
   const auto squared = [](const glm::dvec3& d) { return glm::dot(d, d); };
-  // The interior samples' surface points in one call (FaceSurface::points), then the measures.
+  // [0]: the inner samples; [1 + k]: side k, 0 = (t0, t1) where i + j = n, 1 = (t1, t2) where
+  // i = 0, 2 = (t2, t0) where j = 0.
+  std::array<SideSampleMax, 4> part{};
+  std::array<bool, 4> known{false, false, false, false};
+  const bool share = sides && sidesShareable(vs, t, s, n);
+  if (share)
+    for (int k = 0; k < 3; ++k)
+      if (const SideSampleMax* m = sides->find(t[k], t[(k + 1) % 3]))
+        part[size_t(1 + k)] = *m, known[size_t(1 + k)] = true;
+  const auto partOf = [n](int i, int j) {
+    return size_t(i + j == n ? 1 : i == 0 ? 2 : j == 0 ? 3 : 0);
+  };
   // The buffers sized once per thread and written through plain pointers: a push_back stored
   // the thread-local vector's end after every sample (an eighth of this function's time).
   thread_local std::vector<glm::dvec2> uvBuffer;
@@ -189,10 +245,12 @@ SampledDeviations sampledDeviationsFrom(const FaceSurface& surface,
   glm::dvec2* const uvs = uvBuffer.data();
   const glm::dvec3* const onSurface = onSurfaceBuffer.data();
   const glm::dvec2 uv0 = vs[t[0]].uv, uv1 = vs[t[1]].uv, uv2 = vs[t[2]].uv;
+  // The surface points of the samples still to take (not a corner, not on a known side) in one
+  // call (FaceSurface::points), then the measures.
   size_t count = 0;
   for (int i = 0; i <= n; ++i)
     for (int j = 0; i + j <= n; ++j) {
-      if (i == n || j == n || i + j == 0) continue;
+      if (i == n || j == n || i + j == 0 || known[partOf(i, j)]) continue;
       const double a = fraction[size_t(i)], b = fraction[size_t(j)], c = 1 - a - b;
       uvs[count++] = a * uv0 + b * uv1 + c * uv2;
     }
@@ -202,15 +260,24 @@ SampledDeviations sampledDeviationsFrom(const FaceSurface& surface,
   for (int i = 0; i <= n; ++i)
     for (int j = 0; i + j <= n; ++j) {
       const double a = fraction[size_t(i)], b = fraction[size_t(j)], c = 1 - a - b;
-      const glm::dvec3 p = a * p0 + b * p1 + c * p2;
       if (i == n || j == n || i + j == 0) {  // a corner: its own offset, no interpolation error
+        const glm::dvec3 p = a * p0 + b * p1 + c * p2;
         worst2.parametric = std::max(worst2.parametric, squared(p - (i == n ? s0 : j == n ? s1 : s2)));
         continue;
       }
+      const size_t into = partOf(i, j);
+      if (known[into]) continue;
+      const glm::dvec3 p = a * p0 + b * p1 + c * p2;
       const glm::dvec3& on = onSurface[next++];
-      worst2.parametric = std::max(worst2.parametric, squared(p - on));
-      worst2.interpolation = std::max(worst2.interpolation, squared(a * s0 + b * s1 + c * s2 - on));
+      part[into].parametric2 = std::max(part[into].parametric2, squared(p - on));
+      part[into].interpolation2 =
+          std::max(part[into].interpolation2, squared(a * s0 + b * s1 + c * s2 - on));
     }
+  for (size_t k = 0; k < part.size(); ++k) {
+    worst2.parametric = std::max(worst2.parametric, part[k].parametric2);
+    worst2.interpolation = std::max(worst2.interpolation, part[k].interpolation2);
+    if (share && k > 0 && !known[k]) sides->store(t[k - 1], t[k % 3], part[k]);
+  }
   return {std::sqrt(worst2.interpolation), std::sqrt(worst2.parametric)};
 }
 
@@ -291,6 +358,18 @@ std::array<glm::dvec3, 3> cornerSurfacePoints(const FaceSurface& surface,
 SampledDeviations sampledDeviations(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
                                     const std::array<uint32_t, 3>& t, int n) {
   return sampledDeviationsFrom(surface, vs, t, cornerSurfacePoints(surface, vs, t), n);
+}
+
+std::vector<SampledDeviations> sampledDeviationsSharingSides(
+    const FaceSurface& surface, const std::vector<FaceVertex>& vs,
+    const std::vector<std::array<uint32_t, 3>>& triangles, int n) {
+  SideSampleCache sides(3 * triangles.size());
+  std::vector<SampledDeviations> out;
+  out.reserve(triangles.size());
+  for (const std::array<uint32_t, 3>& t : triangles)
+    out.push_back(
+        sampledDeviationsFrom(surface, vs, t, cornerSurfacePoints(surface, vs, t), n, &sides));
+  return out;
 }
 
 double parametricDeviation(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
@@ -420,13 +499,15 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
   // not sampled again).
   // m.geometric is only compared with δ: its check stops at the first sample over δ.
   MeasureCache cache(2 * triangles.size());
+  SideSampleCache sides(3 * triangles.size());
   // interpolationWithinFrom's allowance for the rounding of two evaluations of one S(uv).
   const double slack = kWithinSlack * surface.netReach();
   const bool geometric = options.measure == GapMeasure::Geometric;
   const auto deviation = [&](const std::array<uint32_t, 3>& v) {
     Measures& m = cache.of(v);
     if (m.sampled.interpolation < 0)
-      m.sampled = sampledDeviationsFrom(surface, vs, v, onSurface.of(v), options.subdivisions);
+      m.sampled =
+          sampledDeviationsFrom(surface, vs, v, onSurface.of(v), options.subdivisions, &sides);
     return m.sampled.interpolation;
   };
   const auto withinTolerance = [&](const std::array<uint32_t, 3>& v) {
