@@ -203,6 +203,33 @@ size_t FaceSurface::commonPiece(const glm::dvec2* uvs, size_t count) const {
   return index;
 }
 
+bool FaceSurface::piecesInBox(const glm::dvec2* uvs, size_t count,
+                              std::vector<size_t>& pieces) const {
+  if (cellPiece_.empty()) return false;
+  glm::dvec2 lo = uvs[0], hi = uvs[0];
+  for (size_t k = 0; k < count; ++k) {
+    const glm::dvec2 uv = uvs[k];
+    if (!(uv.x == uv.x && uv.y == uv.y)) return false;  // NaN: pieceAt's own answer
+    lo = glm::min(lo, uv), hi = glm::max(hi, uv);
+  }
+  const size_t i0 = cellOf(us_, lo.x), i1 = cellOf(us_, hi.x);
+  const size_t j0 = cellOf(vs_, lo.y), j1 = cellOf(vs_, hi.y);
+  const size_t cellsV = vs_.size() - 1;
+  for (size_t i = i0; i <= i1; ++i)  // a hole in the grid: pieceAt's nearest rectangle
+    for (size_t j = j0; j <= j1; ++j)
+      if (cellPiece_[i * cellsV + j] < 0) return false;
+  pieces.resize(count);
+  for (size_t k = 0; k < count; ++k) {
+    // cellOf is monotone, so a uv's cell lies in the box's range: the last side of the range
+    // at or below its coordinate, as cellOf's search finds it.
+    size_t i = i0, j = j0;
+    while (i < i1 && us_[i + 1] <= uvs[k].x) ++i;
+    while (j < j1 && vs_[j + 1] <= uvs[k].y) ++j;
+    pieces[k] = size_t(cellPiece_[i * cellsV + j]);
+  }
+  return true;
+}
+
 glm::dvec2 FaceSurface::localUv(size_t piece, glm::dvec2 uv) const {
   return localUvOf(face_->pieces[piece], uv);
 }
@@ -212,8 +239,9 @@ glm::dvec2 FaceSurface::faceUv(size_t piece, glm::dvec2 local) const {
   return {p.u0 + local.x * (p.u1 - p.u0), p.v0 + local.y * (p.v1 - p.v0)};
 }
 
-glm::dvec3 FaceSurface::point(glm::dvec2 uv) const {
-  const size_t piece = pieceAt(uv);
+glm::dvec3 FaceSurface::point(glm::dvec2 uv) const { return pointOnPiece(pieceAt(uv), uv); }
+
+glm::dvec3 FaceSurface::pointOnPiece(size_t piece, glm::dvec2 uv) const {
   const glm::dvec2 local = localUvOf(face_->pieces[piece], uv);
   // The pieces passed validateTessellationPatch (degrees ≤ kMaxDegree, finite, weights ≥ 0)
   // before the mesher measures them; a face built otherwise takes patchPoint's checked path.
@@ -236,7 +264,13 @@ void FaceSurface::points(const glm::dvec2* uvs, size_t count, glm::dvec3* out) c
   if (!checked_ || count == 0) return oneByOne();
   // Every uv in one piece (a triangle's samples nearly always are): that piece's loop.
   const size_t index = commonPiece(uvs, count);
-  if (index == kNoPiece) return oneByOne();
+  if (index == kNoPiece) {
+    // Across pieces' sides: each uv's piece from the few cells of the batch's box.
+    thread_local std::vector<size_t> pieces;
+    if (!piecesInBox(uvs, count, pieces)) return oneByOne();
+    for (size_t k = 0; k < count; ++k) out[k] = pointOnPiece(pieces[k], uvs[k]);
+    return;
+  }
   const BezierPatchPiece& piece = face_->pieces[index];
   const BezierPatch& patch = piece.patch;
   if (!rational_[index]) {

@@ -57,6 +57,11 @@ class FaceSurface {
   static constexpr size_t kNoPiece = ~size_t(0);
   // The cell of the pieces' grid along one axis holding x (clamped to the grid).
   static size_t cellOf(const std::vector<double>& sides, double x);
+  // point() on a known piece (pieceAt's answer for uv).
+  glm::dvec3 pointOnPiece(size_t piece, glm::dvec2 uv) const;
+  // pieceAt of each uv into `pieces`, from the cells of the uvs' box (no search per uv); false
+  // where that box holds a hole of the pieces' grid or a uv is NaN (then pieceAt decides).
+  bool piecesInBox(const glm::dvec2* uvs, size_t count, std::vector<size_t>& pieces) const;
   // pieceAt of every uv when they all agree, kNoPiece otherwise.
   size_t commonPiece(const glm::dvec2* uvs, size_t count) const;
   const TrimmedFace* face_;
