@@ -1,9 +1,10 @@
-// Geom_BSplineSurface::D1 (OCCT 7.6) without its two span lookups per call.
+// Geom_BSplineSurface::D1 (OCCT 7.6) along an iso-line, with the span's work done once.
 #include "cad/iso_line_d1.h"
 
 #include <BSplCLib.hxx>
 #include <BSplSLib.hxx>
 #include <Standard_Real.hxx>
+#include <algorithm>
 #include <cmath>
 
 namespace tessera {
@@ -12,10 +13,15 @@ IsoLineD1::IsoLineD1(const Geom_BSplineSurface& surface, bool alongU, double fix
     : surface_(surface),
       alongU_(alongU),
       fixed_(fixed),
-      periodic_(surface.IsUPeriodic() || surface.IsVPeriodic()) {
-  if (periodic_) return;
+      kept_(!surface.IsUPeriodic() && !surface.IsVPeriodic() &&
+            std::max(surface.UDegree(), surface.VDegree()) <= kMaxKeptDegree) {
+  if (!kept_) return;
   fixedIndex_ = alongU ? locate(surface.VDegree(), surface.VKnots(), surface.VMultiplicities(), fixed, nullptr)
                        : locate(surface.UDegree(), surface.UKnots(), surface.UMultiplicities(), fixed, nullptr);
+  const bool uFirst = surface.UDegree() <= surface.VDegree();
+  fixedFirst_ = uFirst != alongU;
+  degree1_ = uFirst ? surface.UDegree() : surface.VDegree();
+  degree2_ = uFirst ? surface.VDegree() : surface.UDegree();
 }
 
 int IsoLineD1::locate(int degree, const TColStd_Array1OfReal& knots,
@@ -33,9 +39,55 @@ int IsoLineD1::locate(int degree, const TColStd_Array1OfReal& knots,
   return BSplCLib::FlatIndex(degree, index, mults, Standard_False);
 }
 
+void IsoLineD1::prepareSpan() {
+  // BSplSLib::D1's arguments: flat knots without multiplicities, flat span indices.
+  const int uIndex = alongU_ ? moving_.flatIndex : fixedIndex_;
+  const int vIndex = alongU_ ? fixedIndex_ : moving_.flatIndex;
+  const bool uFirst = fixedFirst_ != alongU_;
+  const int uDegree = surface_.UDegree(), vDegree = surface_.VDegree();
+  const TColStd_Array1OfReal& uKnots = surface_.UKnotSequence();
+  const TColStd_Array1OfReal& vKnots = surface_.VKnotSequence();
+  BSplCLib::BuildKnots(uDegree, uIndex, Standard_False, uKnots, BSplCLib::NoMults(), *(uFirst ? knots1_ : knots2_));
+  BSplCLib::BuildKnots(vDegree, vIndex, Standard_False, vKnots, BSplCLib::NoMults(), *(uFirst ? knots2_ : knots1_));
+  // The span's first pole (without multiplicities: the flat index less the degree and the
+  // sequence's lower bound), and whether its weights differ by more than the first one's
+  // Epsilon: else D1 evaluates it as polynomial, without the weights.
+  const TColgp_Array2OfPnt& poles = surface_.Poles();
+  const TColStd_Array2OfReal* weights = surface_.Weights();
+  const int row0 = poles.LowerRow() + uIndex - (uKnots.Lower() + uDegree);
+  const int column0 = poles.LowerCol() + vIndex - (vKnots.Lower() + vDegree);
+  rational_ = false;
+  if ((surface_.IsURational() || surface_.IsVRational()) && weights) {
+    const double w = weights->Value(row0, column0), eps = Epsilon(w);
+    for (int i = 0; i <= uDegree && !rational_; ++i)
+      for (int j = 0; j <= vDegree && !rational_; ++j)
+        rational_ = std::abs(weights->Value(row0 + i, column0 + j) - w) > eps;
+  }
+  dimension_ = rational_ ? 4 : 3;
+  // PrepareEval's layout: degree1_ + 1 rows (the first direction) of degree2_ + 1 points.
+  double* pole = prepared_;
+  for (int a = 0; a <= degree1_; ++a)
+    for (int b = 0; b <= degree2_; ++b) {
+      const int row = row0 + (uFirst ? a : b), column = column0 + (uFirst ? b : a);
+      const gp_Pnt& p = poles.Value(row, column);
+      if (rational_) {
+        const double w = weights->Value(row, column);
+        pole[0] = p.X() * w, pole[1] = p.Y() * w, pole[2] = p.Z() * w, pole[3] = w;
+      } else {
+        pole[0] = p.X(), pole[1] = p.Y(), pole[2] = p.Z();
+      }
+      pole += dimension_;
+    }
+  // D1's first step, Bohm along the first direction at `fixed`: its value row (row 0, the same
+  // for any number of derivatives asked) is all the second step reads of it for this line.
+  if (fixedFirst_)
+    BSplCLib::Bohm(fixed_, degree1_, 0, *knots1_, dimension_ * (degree2_ + 1), *prepared_);
+  preparedIndex_ = moving_.flatIndex;
+}
+
 void IsoLineD1::d1(double x, gp_Pnt& p, gp_Vec& d) {
-  gp_Vec du, dv;
-  if (periodic_) {
+  if (!kept_) {
+    gp_Vec du, dv;
     if (alongU_) surface_.D1(x, fixed_, p, du, dv); else surface_.D1(fixed_, x, p, du, dv);
     d = alongU_ ? du : dv;
     return;
@@ -43,15 +95,42 @@ void IsoLineD1::d1(double x, gp_Pnt& p, gp_Vec& d) {
   if (!(x > moving_.lo && x < moving_.hi))
     moving_.flatIndex = alongU_ ? locate(surface_.UDegree(), surface_.UKnots(), surface_.UMultiplicities(), x, &moving_)
                                 : locate(surface_.VDegree(), surface_.VKnots(), surface_.VMultiplicities(), x, &moving_);
-  const double u = alongU_ ? x : fixed_, v = alongU_ ? fixed_ : x;
-  const int uIndex = alongU_ ? moving_.flatIndex : fixedIndex_;
-  const int vIndex = alongU_ ? fixedIndex_ : moving_.flatIndex;
-  // Geom_BSplineSurface::D1's own call: flat knots, no multiplicities, its rational flags.
-  BSplSLib::D1(u, v, uIndex, vIndex, surface_.Poles(), surface_.Weights(), surface_.UKnotSequence(),
-               surface_.VKnotSequence(), BSplCLib::NoMults(), BSplCLib::NoMults(), surface_.UDegree(),
-               surface_.VDegree(), surface_.IsURational(), surface_.IsVRational(), Standard_False,
-               Standard_False, p, du, dv);
-  d = alongU_ ? du : dv;
+  if (moving_.flatIndex != preparedIndex_) prepareSpan();
+  const int dim = dimension_;
+  const int row = dim * (degree2_ + 1);  // one row of the first direction
+  double work[kMaxBlock];
+  double ders[6];
+  const double* result;      // P (rational: after the division by the weight)
+  const double* derivative;  // along the line
+  if (fixedFirst_) {
+    // The line runs along the second direction: D1's second Bohm step on the kept row gives
+    // the point and its derivative there; the first direction's derivative is not needed.
+    std::copy(prepared_, prepared_ + row, work);
+    BSplCLib::Bohm(x, degree2_, 1, *knots2_, dim, *work);
+    if (rational_) {
+      // The derivatives (0, 0) and (0, 1) of the (N, M) = (1, 1) call read rows 0 only.
+      BSplSLib::RationalDerivative(degree1_, degree2_, 0, 1, *work, *ders);
+      result = ders, derivative = ders + 3;
+    } else {
+      result = work, derivative = work + 3;
+    }
+  } else {
+    // The line runs along the first direction: D1's first step in full, then the second
+    // direction's value at `fixed` of the value row and of the derivative row.
+    std::copy(prepared_, prepared_ + row * (degree1_ + 1), work);
+    BSplCLib::Bohm(x, degree1_, 1, *knots1_, row, *work);
+    BSplCLib::Bohm(fixed_, degree2_, 0, *knots2_, dim, *work);  // value row 0 (N leaves it)
+    BSplCLib::Eval(fixed_, degree2_, *knots2_, dim, *(work + row));
+    if (rational_) {
+      // (0, 0) and (1, 0) of the (1, 1) call: they read (0, 0) and (1, 0) only.
+      BSplSLib::RationalDerivative(degree1_, degree2_, 1, 0, *work, *ders);
+      result = ders, derivative = ders + 3;
+    } else {
+      result = work, derivative = work + row;
+    }
+  }
+  p.SetCoord(result[0], result[1], result[2]);
+  d.SetCoord(derivative[0], derivative[1], derivative[2]);
 }
 
 }  // namespace tessera

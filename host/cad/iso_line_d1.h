@@ -1,7 +1,12 @@
 // Geom_BSplineSurface::D1 along one iso-line, for the Newton solves of CadSurface::mapParameter.
-// OCCT's D1 looks up both knot spans at every call (half its time in the solves); here the fixed
-// parameter's span is found once and the moving one's kept while the parameter stays well inside
-// it. The same BSplSLib::D1 call with the same indices as D1 makes: the same bits.
+// OCCT's D1 looks up both knot spans at every call, gathers the span's poles (times their
+// weights) and evaluates both directions and every first derivative. Here the spans are found
+// once (the fixed one per line, the moving one while the parameter stays well inside it), the
+// span's poles gathered once per span, and only what the line needs is evaluated, with the
+// same OCCT calls (BSplCLib::Bohm, BSplCLib::Eval, BSplSLib::RationalDerivative) on the same
+// numbers as BSplSLib::D1 makes: the same bits. Where the fixed direction is the one D1
+// evaluates first (the lower degree), that first evaluation depends on the span alone and is
+// kept too (docs/cad.md, step 5).
 #pragma once
 #include <Geom_BSplineSurface.hxx>
 #include <gp_Pnt.hxx>
@@ -18,6 +23,10 @@ class IsoLineD1 {
   void d1(double x, gp_Pnt& p, gp_Vec& d);
 
  private:
+  // Degrees up to this take the kept span (the import refuses higher ones); above, D1 itself.
+  static constexpr int kMaxKeptDegree = 7;
+  static constexpr int kMaxBlock = 4 * (kMaxKeptDegree + 1) * (kMaxKeptDegree + 1);
+
   struct Span {
     int flatIndex = 0;
     double lo = 1.0, hi = 0.0;  // x in (lo, hi) takes flatIndex without a lookup; empty at first
@@ -25,13 +34,28 @@ class IsoLineD1 {
   // BSplCLib::LocateParameter and FlatIndex as Geom_BSplineSurface::D1 calls them.
   static int locate(int degree, const TColStd_Array1OfReal& knots,
                     const TColStd_Array1OfInteger& mults, double t, Span* span);
+  // What BSplSLib::D1's PrepareEval makes of the span (its knots, its poles, whether it is
+  // locally rational), and, when the fixed direction comes first, its first Bohm step.
+  void prepareSpan();
 
   const Geom_BSplineSurface& surface_;
   const bool alongU_;
   const double fixed_;
-  const bool periodic_;  // then surface.D1 itself (its periodic normalisation), no cache
+  const bool kept_;  // else surface.D1 itself (a periodic surface's normalisation, a high degree)
   int fixedIndex_ = 0;
   Span moving_;
+  int preparedIndex_ = -1;  // the moving span's flat index that the fields below are for
+
+  // D1 evaluates the lower degree's direction first (u on a tie): `fixedFirst_` when that is
+  // the fixed direction.
+  bool fixedFirst_ = false;
+  int degree1_ = 0, degree2_ = 0;  // first and second direction's degrees
+  bool rational_ = false;          // the span's weights differ (PrepareEval's test)
+  int dimension_ = 3;              // 4 when rational: (w·x, w·y, w·z, w)
+  double knots1_[2 * kMaxKeptDegree] = {}, knots2_[2 * kMaxKeptDegree] = {};
+  // fixedFirst_: the first direction's values at `fixed` (one row of degree2_ + 1 points);
+  // otherwise the span's poles, degree1_ + 1 rows of degree2_ + 1, as PrepareEval lays them.
+  double prepared_[kMaxBlock] = {};
 };
 
 }  // namespace tessera
