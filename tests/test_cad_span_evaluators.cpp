@@ -1,5 +1,6 @@
 // IsoLineD1 (host/cad/): OCCT's own evaluation with the knot span kept between calls must give
-// OCCT's bits, at knots, between them, a hair off them and outside the domain.
+// OCCT's bits, at knots, between them, a hair off them and outside the domain; and Bohm's two
+// steps (cad/detail/bohm_steps.h) BSplCLib::Bohm's.
 #ifdef TESSERA_HAVE_CAD
 #include <catch2/catch.hpp>
 #include <Geom_BSplineSurface.hxx>
@@ -13,6 +14,9 @@
 #include <utility>
 #include <vector>
 
+#include <BSplCLib.hxx>
+
+#include "cad/detail/bohm_steps.h"
 #include "cad/iso_line_d1.h"
 
 namespace {
@@ -79,6 +83,32 @@ TEST_CASE("cad: the iso-line evaluator with a kept span gives Geom_BSplineSurfac
         }
     }
   CHECK(compared > 50000);
+  CHECK(differing == 0);
+}
+
+TEST_CASE("cad: Bohm's two steps give BSplCLib::Bohm's bits", "[cad]") {
+  // Degrees 1-7, dimensions 2-12 (one point, a homogeneous point, rows of them), every number of
+  // derivatives, parameters inside, at and outside the span, knots with repeats.
+  size_t compared = 0, differing = 0;
+  for (int degree = 1; degree <= 7; ++degree)
+    for (int dimension = 2; dimension <= 12; ++dimension)
+      for (int derivatives = 0; derivatives <= degree + 1; ++derivatives)
+        for (const double u : {0.37, 0.5, 0.0, 1.0, -0.3, 1.9}) {
+          double knots[14];
+          for (int k = 0; k < 2 * degree; ++k) knots[k] = (k - degree + 1) * 0.5 + (k % 3 == 0 ? 0.0 : 0.1 * k);
+          if (degree > 2) knots[1] = knots[0];  // a double knot, as at a multiplicity
+          double poles[8 * 12], reference[8 * 12];
+          for (int k = 0; k < (degree + 1) * dimension; ++k)
+            poles[k] = reference[k] = std::sin(1.3 * k + degree) * (1.0 + dimension);
+          BSplCLib::Bohm(u, degree, derivatives, *knots, dimension, *reference);
+          tessera::cad_detail::bohmDifferences(degree, knots, dimension, poles);
+          tessera::cad_detail::bohmAt(u, degree, derivatives, knots, dimension, poles);
+          for (int k = 0; k < (degree + 1) * dimension; ++k) {
+            ++compared;
+            if (!sameBits(poles[k], reference[k])) ++differing;
+          }
+        }
+  CHECK(compared > 20000);
   CHECK(differing == 0);
 }
 

@@ -2,10 +2,11 @@
 #include "cad/iso_line_d1.h"
 
 #include <BSplCLib.hxx>
-#include <BSplSLib.hxx>
 #include <Standard_Real.hxx>
 #include <algorithm>
 #include <cmath>
+
+#include "cad/detail/bohm_steps.h"
 
 namespace tessera {
 
@@ -78,10 +79,17 @@ void IsoLineD1::prepareSpan() {
       }
       pole += dimension_;
     }
-  // D1's first step, Bohm along the first direction at `fixed`: its value row (row 0, the same
-  // for any number of derivatives asked) is all the second step reads of it for this line.
-  if (fixedFirst_)
-    BSplCLib::Bohm(fixed_, degree1_, 0, *knots1_, dimension_ * (degree2_ + 1), *prepared_);
+  // Bohm's first step (cad_detail::bohmDifferences) does not depend on the parameter: kept.
+  // Fixed first: D1's first Bohm, along the first direction at `fixed`, gives the one row the
+  // second reads (its value row, the same for any number of derivatives), then that row's
+  // differences along the second; else the differences of the block along the first direction.
+  const int row = dimension_ * (degree2_ + 1);
+  if (fixedFirst_) {
+    BSplCLib::Bohm(fixed_, degree1_, 0, *knots1_, row, *prepared_);
+    cad_detail::bohmDifferences(degree2_, knots2_, dimension_, prepared_);
+  } else {
+    cad_detail::bohmDifferences(degree1_, knots1_, row, prepared_);
+  }
   preparedIndex_ = moving_.flatIndex;
 }
 
@@ -99,35 +107,34 @@ void IsoLineD1::d1(double x, gp_Pnt& p, gp_Vec& d) {
   const int dim = dimension_;
   const int row = dim * (degree2_ + 1);  // one row of the first direction
   double work[kMaxBlock];
-  double ders[6];
-  const double* result;      // P (rational: after the division by the weight)
-  const double* derivative;  // along the line
+  const double* value;       // homogeneous when rational: (w·x, w·y, w·z, w)
+  const double* derivative;  // along the line, likewise
   if (fixedFirst_) {
-    // The line runs along the second direction: D1's second Bohm step on the kept row gives
-    // the point and its derivative there; the first direction's derivative is not needed.
+    // The line runs along the second direction: D1's second Bohm on the kept row gives the
+    // point and its derivative there; the first direction's derivative is not needed.
     std::copy(prepared_, prepared_ + row, work);
-    BSplCLib::Bohm(x, degree2_, 1, *knots2_, dim, *work);
-    if (rational_) {
-      // The derivatives (0, 0) and (0, 1) of the (N, M) = (1, 1) call read rows 0 only.
-      BSplSLib::RationalDerivative(degree1_, degree2_, 0, 1, *work, *ders);
-      result = ders, derivative = ders + 3;
-    } else {
-      result = work, derivative = work + 3;
-    }
+    cad_detail::bohmAt(x, degree2_, 1, knots2_, dim, work);
+    value = work, derivative = work + dim;
   } else {
-    // The line runs along the first direction: D1's first step in full, then the second
-    // direction's value at `fixed` of the value row and of the derivative row.
+    // The line runs along the first direction: D1's first Bohm in full, then the second
+    // direction's value at `fixed` of the value row (Bohm) and of the derivative row (Eval).
     std::copy(prepared_, prepared_ + row * (degree1_ + 1), work);
-    BSplCLib::Bohm(x, degree1_, 1, *knots1_, row, *work);
+    cad_detail::bohmAt(x, degree1_, 1, knots1_, row, work);
     BSplCLib::Bohm(fixed_, degree2_, 0, *knots2_, dim, *work);  // value row 0 (N leaves it)
     BSplCLib::Eval(fixed_, degree2_, *knots2_, dim, *(work + row));
-    if (rational_) {
-      // (0, 0) and (1, 0) of the (1, 1) call: they read (0, 0) and (1, 0) only.
-      BSplSLib::RationalDerivative(degree1_, degree2_, 1, 0, *work, *ders);
-      result = ders, derivative = ders + 3;
-    } else {
-      result = work, derivative = work + row;
+    value = work, derivative = work + row;
+  }
+  double ders[6];
+  const double* result = value;
+  if (rational_) {
+    // BSplSLib::RationalDerivative's (0, 0) and first derivative along the line: the quotient
+    // rule, 1/w as a product, the weight's derivative times the point subtracted first.
+    const double inverse = 1.0e0 / value[3];
+    for (int k = 0; k < 3; ++k) {
+      ders[k] = value[k] * inverse;
+      ders[3 + k] = (derivative[k] - derivative[3] * ders[k]) * inverse;
     }
+    result = ders, derivative = ders + 3;
   }
   p.SetCoord(result[0], result[1], result[2]);
   d.SetCoord(derivative[0], derivative[1], derivative[2]);

@@ -1,12 +1,13 @@
 // Geom_BSplineSurface::D1 along one iso-line, for the Newton solves of CadSurface::mapParameter.
 // OCCT's D1 looks up both knot spans at every call, gathers the span's poles (times their
 // weights) and evaluates both directions and every first derivative. Here the spans are found
-// once (the fixed one per line, the moving one while the parameter stays well inside it), the
-// span's poles gathered once per span, and only what the line needs is evaluated, with the
-// same OCCT calls (BSplCLib::Bohm, BSplCLib::Eval, BSplSLib::RationalDerivative) on the same
-// numbers as BSplSLib::D1 makes: the same bits. Where the fixed direction is the one D1
-// evaluates first (the lower degree), that first evaluation depends on the span alone and is
-// kept too (docs/cad.md, step 5).
+// once (the fixed one per line, the moving one while the parameter stays well inside it), and
+// what does not depend on the moving parameter is done once per span: the gathered poles,
+// Bohm's first step (cad_detail::bohmDifferences), and, where the fixed direction is the one
+// D1 evaluates first (the lower degree), that whole first evaluation. Each call then does the
+// rest of D1's arithmetic for the point and the derivative along the line only, the same
+// operations on the same numbers (BSplCLib::Bohm's second step, BSplCLib::Eval,
+// BSplSLib::RationalDerivative's quotient): the same bits (docs/cad.md, step 5).
 #pragma once
 #include <Geom_BSplineSurface.hxx>
 #include <gp_Pnt.hxx>
@@ -35,7 +36,7 @@ class IsoLineD1 {
   static int locate(int degree, const TColStd_Array1OfReal& knots,
                     const TColStd_Array1OfInteger& mults, double t, Span* span);
   // What BSplSLib::D1's PrepareEval makes of the span (its knots, its poles, whether it is
-  // locally rational), and, when the fixed direction comes first, its first Bohm step.
+  // locally rational), and what of D1's evaluation does not depend on the moving parameter.
   void prepareSpan();
 
   const Geom_BSplineSurface& surface_;
@@ -53,8 +54,9 @@ class IsoLineD1 {
   bool rational_ = false;          // the span's weights differ (PrepareEval's test)
   int dimension_ = 3;              // 4 when rational: (w·x, w·y, w·z, w)
   double knots1_[2 * kMaxKeptDegree] = {}, knots2_[2 * kMaxKeptDegree] = {};
-  // fixedFirst_: the first direction's values at `fixed` (one row of degree2_ + 1 points);
-  // otherwise the span's poles, degree1_ + 1 rows of degree2_ + 1, as PrepareEval lays them.
+  // fixedFirst_: the first direction's values at `fixed` (one row of degree2_ + 1 points), its
+  // differences along the second direction taken; otherwise the span's poles, degree1_ + 1 rows
+  // of degree2_ + 1 as PrepareEval lays them, their differences along the first direction taken.
   double prepared_[kMaxBlock] = {};
 };
 
