@@ -1,5 +1,8 @@
 #include "bspline/to_bezier.h"
 
+#include <stdexcept>
+#include <string>
+
 #include "bspline/knots.h"
 #include "bspline/oslo.h"
 #include "common/memory_budget.h"
@@ -52,6 +55,62 @@ std::vector<BezierCurvePiece> bezierPieces(const BSplineCurve& curve) {
 
 namespace {
 
+// The Oslo matrix (osloMatrix, oslo.h) as its rows' nonzero windows: row r holds values
+// [r·(p + 1), (r + 1)·(p + 1)) for columns first[r] … first[r] + p, the entries osloMatrix
+// writes into its dense matrix of zeros. A piece conversion spent more on that matrix's zeros
+// (allocating, clearing, scanning m × n entries per direction) than on its p + 1 per row.
+struct InsertionRows {
+  int rows = 0, cols = 0, degree = 0;
+  std::vector<int> first;
+  std::vector<double> values;
+};
+
+// Validated as osloMatrix validates (the same messages).
+InsertionRows insertionRows(int degree, const std::vector<double>& x, const std::vector<double>& y) {
+  const int p = degree;
+  const int n = static_cast<int>(x.size()) - p - 1;
+  const int m = static_cast<int>(y.size()) - p - 1;
+  validateKnots(p, n, x, "osloMatrix old knots");
+  validateKnots(p, m, y, "osloMatrix new knots");
+  if (!knotsContain(y, x)) throw std::invalid_argument("osloMatrix: new knots do not contain every old knot");
+  if (y.front() != x.front() || y.back() != x.back())
+    throw std::invalid_argument("osloMatrix: new knots reach outside [x_0, x_last]");
+  InsertionRows a{m, n, p, std::vector<int>(size_t(m)), std::vector<double>(size_t(m) * size_t(p + 1))};
+  for (int j = 0; j < m; ++j) a.first[size_t(j)] = osloRow(p, x, y, j, a.values.data() + size_t(j) * size_t(p + 1));
+  return a;
+}
+
+// applyToNet (oslo.h) of the rows' matrix: each output point sums w·Q over the row's nonzero
+// w in ascending column order from 0, as applyToNet sums over the dense row: the same bits.
+std::vector<glm::dvec3> applyRowsToNet(const InsertionRows& a, const std::vector<glm::dvec3>& cp,
+                                       int countU, int countV, ParamDirection direction) {
+  const bool alongU = direction == ParamDirection::U;
+  if (cp.size() != size_t(countU) * size_t(countV) || a.cols != (alongU ? countU : countV))
+    throw std::invalid_argument("applyToNet: a " + std::to_string(a.rows) + " x " + std::to_string(a.cols) +
+                                " matrix does not fit a " + std::to_string(countU) + " x " +
+                                std::to_string(countV) + " net along " + (alongU ? "u" : "v"));
+  const int outU = alongU ? a.rows : countU;
+  const int outV = alongU ? countV : a.rows;
+  std::vector<glm::dvec3> out(size_t(outU) * size_t(outV), glm::dvec3(0.0));
+  for (int r = 0; r < a.rows; ++r) {
+    const double* row = a.values.data() + size_t(r) * size_t(a.degree + 1);
+    for (int t = 0; t <= a.degree; ++t) {
+      const double w = row[t];
+      if (w == 0.0) continue;
+      const int c = a.first[size_t(r)] + t;
+      if (alongU) {
+        const glm::dvec3* in = cp.data() + size_t(c) * size_t(countV);
+        glm::dvec3* at = out.data() + size_t(r) * size_t(outV);
+        for (int j = 0; j < countV; ++j) at[j] += w * in[j];
+      } else {
+        for (int i = 0; i < countU; ++i)
+          out[size_t(i) * size_t(outV) + size_t(r)] += w * cp[size_t(i) * size_t(countV) + size_t(c)];
+      }
+    }
+  }
+  return out;
+}
+
 // The pieces of `surface`'s knots and degrees for each net in `nets` (each countU × countV,
 // `surface.cp` among them or not): every knot raised to multiplicity p, then a piece per pair
 // of non-empty spans. The insertion's two matrices are built once for all the nets; each net
@@ -81,13 +140,13 @@ std::vector<std::vector<BezierPatchPiece>> patchesOfNets(
                                          " B-spline of " + std::to_string(surface.countU) + "×" +
                                          std::to_string(surface.countV) + " control points as " +
                                          std::to_string(pieces) + " Bézier pieces");
-  const Eigen::MatrixXd alongU = osloMatrix(p, surface.knotsU, knotsU);
-  const Eigen::MatrixXd alongV = osloMatrix(q, surface.knotsV, knotsV);
-  const int countU = int(alongU.rows()), countV = int(alongV.rows());
+  const InsertionRows alongU = insertionRows(p, surface.knotsU, knotsU);
+  const InsertionRows alongV = insertionRows(q, surface.knotsV, knotsV);
+  const int countU = alongU.rows, countV = alongV.rows;
   std::vector<std::vector<BezierPatchPiece>> out;
   for (const std::vector<glm::dvec3>* net : nets) {
-    const std::vector<glm::dvec3> refined = applyToNet(
-        alongV, applyToNet(alongU, *net, surface.countU, surface.countV, ParamDirection::U),
+    const std::vector<glm::dvec3> refined = applyRowsToNet(
+        alongV, applyRowsToNet(alongU, *net, surface.countU, surface.countV, ParamDirection::U),
         countU, surface.countV, ParamDirection::V);
     const auto at = [&](int i, int j) { return refined[size_t(i) * size_t(countV) + size_t(j)]; };
     std::vector<BezierPatchPiece> patches;
