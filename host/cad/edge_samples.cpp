@@ -30,10 +30,11 @@ glm::dvec3 pointAt(const BRepAdaptor_Curve& curve, double t) { return toGlm(curv
 bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 // A circle's (parametrised by angle) largest distance to the chord of [a, b]: its sagitta
-// R·(1 − cos((b − a)/2)), exactly.
-double circleSagitta(const BRepAdaptor_Curve& curve, double a, double b) {
+// R·(1 − cos((b − a)/2)), exactly. `radius`: curve.Circle().Radius(), read once per edge (each
+// Circle() builds the located circle).
+double circleSagitta(double radius, double a, double b) {
   const double s = std::sin(0.25 * (b - a));
-  return curve.Circle().Radius() * 2.0 * s * s;
+  return radius * 2.0 * s * s;
 }
 
 // Largest distance from the curve on [a, b] to the chord pa pb (its points at a and b), measured
@@ -108,11 +109,11 @@ EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta,
       const double radius = curve.Circle().Radius();
       const double widest = radius > delta ? 2.0 * std::acos(1.0 - delta / radius) : last - first;
       int count = std::max(4, int(std::ceil((last - first) / widest)));
-      while (circleSagitta(curve, first, first + (last - first) / count) > delta) ++count;  // rounding
+      while (circleSagitta(radius, first, first + (last - first) / count) > delta) ++count;  // rounding
       samples.params.reserve(size_t(count) + 1);
       samples.params.push_back(first);
       for (int k = 1; k <= count; ++k) samples.params.push_back(first + (last - first) * k / count);
-      samples.maxChordDeviation = circleSagitta(curve, first, first + (last - first) / count);
+      samples.maxChordDeviation = circleSagitta(radius, first, first + (last - first) / count);
     }
     // The ends at the range's own ends (the last parameter can be an ulp from `last`).
     samples.curvePoints.reserve(samples.params.size());

@@ -517,6 +517,9 @@ CadSurface convertFaceSurface(const Handle(Geom_Surface)& basis, double u0, doub
 
 RevolutionForm revolutionFormOf(const Handle(Geom_Surface)& surface) {
   RevolutionForm form;
+  // Planes and B-splines, most faces, are none of the four: no four failed DownCasts for them.
+  const Handle(Standard_Type)& type = surface->DynamicType();
+  if (type == STANDARD_TYPE(Geom_Plane) || type == STANDARD_TYPE(Geom_BSplineSurface)) return form;
   const auto axisOf = [&](const gp_Ax3& position) {
     form.origin = toGlm(position.Location());
     const gp_Dir& d = position.Direction();
