@@ -1,7 +1,6 @@
 // IsoLineD1 (host/cad/): OCCT's own evaluation with the knot span kept between calls must give
 // OCCT's bits, at knots, between them, a hair off them and outside the domain; and Bohm's two
-// steps (cad/detail/bohm_steps.h) BSplCLib::Bohm's; SurfacePoint Geom_Surface::Value's;
-// EdgePoints BRepAdaptor_Curve::Value's.
+// steps (cad/detail/bohm_steps.h) BSplCLib::Bohm's; SurfacePoint Geom_Surface::Value's.
 #ifdef TESSERA_HAVE_CAD
 #include <catch2/catch.hpp>
 #include <Geom_BSplineSurface.hxx>
@@ -17,16 +16,7 @@
 
 #include <BSplCLib.hxx>
 
-#include <BRepAdaptor_Curve.hxx>
-#include <BRepBuilderAPI_MakeEdge.hxx>
-#include <Geom_BSplineCurve.hxx>
-#include <TColgp_Array1OfPnt.hxx>
-#include <TopoDS.hxx>
-#include <TopoDS_Edge.hxx>
-#include <gp_Trsf.hxx>
-
 #include "cad/detail/bohm_steps.h"
-#include "cad/edge_points.h"
 #include "cad/iso_line_d1.h"
 #include "cad/surface_point.h"
 
@@ -117,53 +107,6 @@ TEST_CASE("cad: the surface point with kept spans gives Geom_Surface::Value's bi
     }
   CHECK(compared > 50000);
   CHECK(differing == 0);
-}
-
-TEST_CASE("cad: the edge points with a cache per span give BRepAdaptor_Curve::Value's bits", "[cad]") {
-  // A cubic B-spline of 12 spans (rational or not), on a moved edge over part of its range;
-  // parameters in the bisection's order (coarse samples over many spans, then back to the
-  // start), at the knots, a hair off them and at the range's ends. Near a knot the adaptor's
-  // span depends on the calls before (its cache stays valid up to the span's rounded end, a
-  // rebuild locates t in the next): a store that located every parameter afresh differed from
-  // Value at 14 of these points, so both must see the same sequence.
-  for (const bool rational : {false, true}) {
-    const int poles = 15;
-    TColgp_Array1OfPnt cp(1, poles);
-    TColStd_Array1OfReal weights(1, poles);
-    for (int i = 1; i <= poles; ++i) {
-      cp(i) = gp_Pnt(i, std::sin(0.9 * i), 0.3 * std::cos(1.7 * i));
-      weights(i) = 1.0 + 0.3 * (i % 4);
-    }
-    TColStd_Array1OfReal knots(1, 13);
-    TColStd_Array1OfInteger mults(1, 13);
-    for (int k = 1; k <= 13; ++k) knots(k) = 0.1 * (k - 1) * (k - 1), mults(k) = k == 1 || k == 13 ? 4 : 1;
-    const Handle(Geom_BSplineCurve) bspline = rational
-        ? new Geom_BSplineCurve(cp, weights, knots, mults, 3)
-        : new Geom_BSplineCurve(cp, knots, mults, 3);
-    gp_Trsf move;
-    move.SetTranslation(gp_Vec(0.5, -2.0, 3.0));
-    const double first = 0.05, last = 13.9;
-    const TopoDS_Edge edge = TopoDS::Edge(BRepBuilderAPI_MakeEdge(bspline, first, last).Edge().Moved(TopLoc_Location(move)));
-    const BRepAdaptor_Curve reference(edge), curve(edge);
-    tessera::EdgePoints points(curve);
-    std::vector<double> ts = {first, last};
-    for (int depth = 0; depth < 5; ++depth) {
-      const int segments = 4 << depth;
-      for (int s = 0; s < segments; ++s)
-        for (int k = 0; k <= 16; ++k) ts.push_back(first + (last - first) * (s + k / 16.0) / segments);
-    }
-    for (int k = 1; k <= 13; ++k)
-      for (const double t : {knots(k), std::nextafter(knots(k), -1.0), std::nextafter(knots(k), 99.0)})
-        ts.push_back(t);
-    size_t differing = 0;
-    for (const double t : ts) {
-      const glm::dvec3 p = points.at(t);
-      const gp_Pnt q = reference.Value(t);
-      if (!sameBits(p.x, q.X()) || !sameBits(p.y, q.Y()) || !sameBits(p.z, q.Z())) ++differing;
-    }
-    CHECK(ts.size() > 2000);
-    CHECK(differing == 0);
-  }
 }
 
 TEST_CASE("cad: Bohm's two steps give BSplCLib::Bohm's bits", "[cad]") {

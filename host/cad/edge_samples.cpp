@@ -1,8 +1,6 @@
 // The once-per-edge discretisation (adaptive bisection with a measured chord deviation).
 #include "cad/edge_samples.h"
 
-#include "cad/edge_points.h"
-
 #include <BRepAdaptor_Curve.hxx>
 #include <BRep_Tool.hxx>
 #include <TopExp.hxx>
@@ -41,12 +39,12 @@ double circleSagitta(double radius, double a, double b) {
 
 // Largest distance from the curve on [a, b] to the chord pa pb (its points at a and b), measured
 // at kChecksPerSegment samples; the middle sample's parameter and point go to `middle`.
-double measuredDeviation(EdgePoints& curve, double a, double b, glm::dvec3 pa,
+double measuredDeviation(const BRepAdaptor_Curve& curve, double a, double b, glm::dvec3 pa,
                          glm::dvec3 pb, double& middleT, glm::dvec3& middle) {
   double worst = 0.0;
   for (int k = 1; k <= kChecksPerSegment; ++k) {
     const double t = a + (b - a) * k / (kChecksPerSegment + 1.0);
-    const glm::dvec3 p = curve.at(t);
+    const glm::dvec3 p = pointAt(curve, t);
     if (2 * k == kChecksPerSegment + 1) middleT = t, middle = p;
     worst = std::max(worst, pointSegmentDistance(p, pa, pb));
   }
@@ -56,7 +54,7 @@ double measuredDeviation(EdgePoints& curve, double a, double b, glm::dvec3 pa,
 // Halves [a, b] while the curve lies farther than delta from its chord; each kept segment's end
 // and its point are appended. Every point is evaluated once, at its own parameter: the ends come
 // from the parent, the middle from the parent's middle check where the parameters agree.
-void refine(EdgePoints& curve, double a, double b, glm::dvec3 pa, glm::dvec3 pb,
+void refine(const BRepAdaptor_Curve& curve, double a, double b, glm::dvec3 pa, glm::dvec3 pb,
             double delta, int depth, std::vector<double>& params, std::vector<glm::dvec3>& points,
             double& worst) {
   double middleT = 0.0;
@@ -64,7 +62,7 @@ void refine(EdgePoints& curve, double a, double b, glm::dvec3 pa, glm::dvec3 pb,
   const double deviation = measuredDeviation(curve, a, b, pa, pb, middleT, middle);
   if (deviation > delta && depth < kMaxDepth) {
     const double m = 0.5 * (a + b);
-    const glm::dvec3 pm = sameBits(m, middleT) ? middle : curve.at(m);
+    const glm::dvec3 pm = sameBits(m, middleT) ? middle : pointAt(curve, m);
     refine(curve, a, m, pa, pm, delta, depth + 1, params, points, worst);
     refine(curve, m, b, pm, pb, delta, depth + 1, params, points, worst);
     return;
@@ -127,18 +125,17 @@ EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta,
     // Any other curve: its points come with the bisection, each evaluated once.
     thread_local std::vector<double> params;
     thread_local std::vector<glm::dvec3> points;
-    EdgePoints onCurve(curve);  // a B-spline's span caches kept for the edge
     params.assign(1, first);
-    glm::dvec3 previous = onCurve.at(first + (last - first) * 0 / 4.0);
-    points.assign(1, sameBits(first + (last - first) * 0 / 4.0, first) ? previous : onCurve.at(first));
+    glm::dvec3 previous = pointAt(curve, first + (last - first) * 0 / 4.0);
+    points.assign(1, sameBits(first + (last - first) * 0 / 4.0, first) ? previous : pointAt(curve, first));
     for (int k = 0; k < 4; ++k) {
       const double a = first + (last - first) * k / 4.0, b = first + (last - first) * (k + 1) / 4.0;
-      const glm::dvec3 next = onCurve.at(b);
-      refine(onCurve, a, b, previous, next, delta, 0, params, points, samples.maxChordDeviation);
+      const glm::dvec3 next = pointAt(curve, b);
+      refine(curve, a, b, previous, next, delta, 0, params, points, samples.maxChordDeviation);
       previous = next;
     }
     // The end at the range's own end (the last parameter can be an ulp from `last`).
-    if (!sameBits(params.back(), last)) points.back() = onCurve.at(last);
+    if (!sameBits(params.back(), last)) points.back() = pointAt(curve, last);
     samples.params.assign(params.begin(), params.end());
     samples.curvePoints.assign(points.begin(), points.end());
   }
