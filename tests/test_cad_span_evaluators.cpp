@@ -1,6 +1,6 @@
 // IsoLineD1 (host/cad/): OCCT's own evaluation with the knot span kept between calls must give
 // OCCT's bits, at knots, between them, a hair off them and outside the domain; and Bohm's two
-// steps (cad/detail/bohm_steps.h) BSplCLib::Bohm's; SurfacePoint Geom_Surface::Value's.
+// steps (cad/detail/bohm_steps.h) BSplCLib::Bohm's.
 #ifdef TESSERA_HAVE_CAD
 #include <catch2/catch.hpp>
 #include <Geom_BSplineSurface.hxx>
@@ -18,7 +18,6 @@
 
 #include "cad/detail/bohm_steps.h"
 #include "cad/iso_line_d1.h"
-#include "cad/surface_point.h"
 
 namespace {
 
@@ -82,28 +81,6 @@ TEST_CASE("cad: the iso-line evaluator with a kept span gives Geom_BSplineSurfac
               ++differing;
           }
         }
-    }
-  CHECK(compared > 50000);
-  CHECK(differing == 0);
-}
-
-TEST_CASE("cad: the surface point with kept spans gives Geom_Surface::Value's bits", "[cad]") {
-  // A walk over the domain and past it, along u at each v of walk() (spans change in one
-  // direction at a time) and along a diagonal (both at once), on every kind of span.
-  size_t compared = 0, differing = 0;
-  const std::vector<double> ts = walk();
-  for (const auto& [uDegree, vDegree] : {std::pair{2, 3}, {3, 2}, {2, 2}, {1, 1}, {3, 3}})
-    for (const int weighting : {0, 1, 2}) {
-      const Handle(Geom_BSplineSurface) surface = testSurface(uDegree, vDegree, weighting);
-      tessera::SurfacePoint point(surface);
-      const auto compare = [&](double u, double v) {
-        const gp_Pnt p = point.value(u, v), q = surface->Value(u, v);
-        ++compared;
-        if (!sameBits(p.X(), q.X()) || !sameBits(p.Y(), q.Y()) || !sameBits(p.Z(), q.Z())) ++differing;
-      };
-      for (size_t a = 0; a < ts.size(); a += 7)
-        for (const double u : ts) compare(u, ts[a]);
-      for (size_t k = 0; k < ts.size(); ++k) compare(ts[k], ts[ts.size() - 1 - k]);
     }
   CHECK(compared > 50000);
   CHECK(differing == 0);

@@ -24,7 +24,6 @@
 #include <mutex>
 
 #include "cad/face_surface.h"
-#include "cad/surface_point.h"
 #include "cad/detail/number_text.h"
 #include "common/parallel_for.h"
 #include "tessera/errors.h"
@@ -182,7 +181,6 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
   const Handle(Geom_Surface)& faceSurface = BRep_Tool::Surface(face, faceLocation);
   SurfaceLocation surfaceLocation(faceLocation);
   uint32_t firstId = 0, lastId = 0;
-  SurfacePoint surfacePoint(basis);  // the gap check's points: Value's bits, spans kept
   const std::vector<WireEdge> edges = orderedEdges(wire, face, in);
   size_t points = 0;
   for (const WireEdge& edge : edges) points += in.edgeSamples[edge.index].params.size() - 1;
@@ -222,7 +220,7 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
         const double t = l > f ? pf + (samples.params[s] - f) * (pl - pf) / (l - f) : pf;
         uv = pcurve->Value(t);
       }
-      const gp_Pnt onSurface = surfacePoint.value(uv.X(), uv.Y());
+      const gp_Pnt onSurface = basis->Value(uv.X(), uv.Y());
       gap = std::max(gap, glm::length(glm::dvec3(onSurface.X(), onSurface.Y(), onSurface.Z()) -
                                       in.model.sharedPoints[samples.pointId(s)]));
       if (k + 1 == n) break;  // the next edge's first point
