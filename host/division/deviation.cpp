@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "geometry/bernstein.h"
+#include "geometry/componentwise.h"
 
 namespace tessera {
 namespace {
@@ -45,12 +46,12 @@ double gridDeviation(const HomogeneousNet& net, int nu, int nv, const DeviationS
       bernsteinBasis(net.n, double(i * su + a) / lu, basisU);
       for (int b = 0; b <= net.m; ++b) {
         glm::dvec4 q(0.0);
-        for (int k = 0; k <= net.n; ++k) q += basisU[k] * net.at(k, b);
+        for (int k = 0; k <= net.n; ++k) addScaled(q, basisU[k], net.at(k, b));  // componentwise.h
         column[b] = q;
       }
       for (int l = 0; l <= lv; ++l) {
         glm::dvec4 h(0.0);
-        for (int b = 0; b <= net.m; ++b) h += basisV[l * rowStride + b] * column[b];
+        for (int b = 0; b <= net.m; ++b) addScaled(h, basisV[l * rowStride + b], column[b]);
         if (sign == 0.0) sign = h.w > 0.0 ? 1.0 : -1.0;
         if (!(h.w * sign > 0.0) || !std::isfinite(h.w)) return INFINITY;  // w meets 0
         pts[a * (lv + 1) + l] = glm::dvec3(h) / h.w;

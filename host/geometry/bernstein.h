@@ -3,6 +3,7 @@
 #pragma once
 #include <array>
 
+#include "geometry/componentwise.h"
 #include "geometry/patch.h"
 
 namespace tessera {
@@ -56,13 +57,14 @@ double fallingFactorial(int n, int k);
 namespace bernstein_detail {
 
 // One more first difference in u (step r, r = 0, 1, …) of the net in `diff`, in place: exact
-// zero stays exact zero.
+// zero stays exact zero. Here and below component by component (geometry/componentwise.h:
+// glm's operators cost a checked memcpy a step under AddressSanitizer).
 template <class Point>
 void differenceInU(Point* diff, int n, int m, int r) {
   const int stride = m + 1;
   for (int i = 0; i < n - r; ++i)
     for (int j = 0; j <= m; ++j)
-      diff[i * stride + j] = diff[(i + 1) * stride + j] - diff[i * stride + j];
+      differenceInto(diff[i * stride + j], diff[(i + 1) * stride + j]);
 }
 
 // From the net's a-th differences in u (rows 0..n−a of `diff`): b differences in v, in place,
@@ -74,14 +76,14 @@ Point partialFromUDifferences(Point* diff, int n, int m, int a, int b, const Ber
   for (int r = 0; r < b; ++r)
     for (int i = 0; i <= n - a; ++i)
       for (int j = 0; j < m - r; ++j)
-        diff[i * stride + j] = diff[i * stride + j + 1] - diff[i * stride + j];
+        differenceInto(diff[i * stride + j], diff[i * stride + j + 1]);
   const auto& rowU = bu.b[n - a];
   const auto& rowV = bv.b[m - b];
   Point sum(0.0);
   for (int i = 0; i <= n - a; ++i) {
     Point row(0.0);
-    for (int j = 0; j <= m - b; ++j) row += rowV[j] * diff[i * stride + j];
-    sum += rowU[i] * row;
+    for (int j = 0; j <= m - b; ++j) addScaled(row, rowV[j], diff[i * stride + j]);
+    addScaled(sum, rowU[i], row);
   }
   return (fallingFactorial(n, a) * fallingFactorial(m, b)) * sum;
 }

@@ -8,6 +8,7 @@
 
 #include <vector>
 
+#include "geometry/componentwise.h"
 #include "geometry/patch.h"
 
 namespace tessera {
@@ -130,7 +131,8 @@ BernsteinNet<T> subNet(const BernsteinNet<T>& a, double u0, double u1, double v0
   return r;
 }
 
-// The polynomial's value at (u, v): de Casteljau along v in each row, then along u.
+// The polynomial's value at (u, v): de Casteljau along v in each row, then along u
+// (component by component: geometry/componentwise.h).
 template <class T>
 T evaluate(const BernsteinNet<T>& a, double u, double v) {
   T rows[kMaxNetDegree + 1] = {};
@@ -138,11 +140,11 @@ T evaluate(const BernsteinNet<T>& a, double u, double v) {
   for (int i = 0; i <= a.n; ++i) {
     for (int j = 0; j <= a.m; ++j) col[j] = a.at(i, j);
     for (int r = 1; r <= a.m; ++r)
-      for (int j = 0; j <= a.m - r; ++j) col[j] = (1.0 - v) * col[j] + v * col[j + 1];
+      for (int j = 0; j <= a.m - r; ++j) blendInto(col[j], 1.0 - v, col[j], v, col[j + 1]);
     rows[i] = col[0];
   }
   for (int r = 1; r <= a.n; ++r)
-    for (int i = 0; i <= a.n - r; ++i) rows[i] = (1.0 - u) * rows[i] + u * rows[i + 1];
+    for (int i = 0; i <= a.n - r; ++i) blendInto(rows[i], 1.0 - u, rows[i], u, rows[i + 1]);
   return rows[0];
 }
 
