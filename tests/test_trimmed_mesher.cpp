@@ -403,26 +403,15 @@ TEST_CASE("trimmed mesher: a bad model names the face and the loop", "[trim]") {
 
 TEST_CASE("trimmed mesher: a cylinder of four rational pieces with a seam, and two caps",
           "[trim]") {
-  // The side: u ∈ [0, 2π] in four quarter-circle pieces (degree 2 × 1, weights 1, √2/2, 1),
-  // v ∈ [0, 1] the height. Its loop runs round the bottom, up the seam at u = 2π, back round
-  // the top and down the seam at u = 0: the seam's points carry the same ids on both sides.
+  // The side (trimmed_models.h): u ∈ [0, 2π] in four quarter-circle pieces, v ∈ [0, 1] the
+  // height. Its loop runs round the bottom, up the seam at u = 2π, back round the top and down
+  // the seam at u = 0: the seam's points carry the same ids on both sides.
   // The caps are planes over [−1, 1]² (uv ∈ [0,1]²) trimmed by the same circles.
   const double delta = 0.005;
   const int n = 64;  // samples round the circle: chords within δ/2
   TrimmedModel model;
   SharedPoints shared(model);
-  TrimmedFace side;
-  for (int q = 0; q < 4; ++q) {
-    const double a = q * kPi / 2, w = std::sqrt(0.5);
-    const glm::dvec3 p0(std::cos(a), std::sin(a), 0), p2(-std::sin(a), std::cos(a), 0);
-    BezierPatch piece;
-    piece.degreeU = 2;
-    piece.degreeV = 1;
-    for (glm::dvec3 p : {p0, p0 + p2, p2})
-      for (double z : {0.0, 1.0}) piece.cp.push_back(p + glm::dvec3(0, 0, z));
-    piece.weights = {1, 1, w, w, 1, 1};
-    side.pieces.push_back({piece, a, a + kPi / 2, 0, 1});
-  }
+  TrimmedFace side = fourPieceCylinderSide();
   const FaceSurface sideSurface(side);
   std::vector<glm::dvec2> sideUv;
   for (int k = 0; k <= n; ++k) sideUv.push_back({2 * kPi * k / n, 0});
