@@ -69,18 +69,23 @@ std::vector<double> mergeKnots(const std::vector<double>& knots, std::vector<dou
   return inserted;
 }
 
-Eigen::MatrixXd osloMatrix(int degree, const std::vector<double>& x, const std::vector<double>& y) {
+void validateOsloKnots(int degree, const std::vector<double>& x, const std::vector<double>& y) {
   const int p = degree;
-  const int n = static_cast<int>(x.size()) - p - 1;
-  const int m = static_cast<int>(y.size()) - p - 1;
-  validateKnots(p, n, x, "osloMatrix old knots");
-  validateKnots(p, m, y, "osloMatrix new knots");
+  validateKnots(p, static_cast<int>(x.size()) - p - 1, x, "osloMatrix old knots");
+  validateKnots(p, static_cast<int>(y.size()) - p - 1, y, "osloMatrix new knots");
   if (!knotsContain(y, x)) {
     throw std::invalid_argument("osloMatrix: new knots do not contain every old knot");
   }
   if (y.front() != x.front() || y.back() != x.back()) {
     throw std::invalid_argument("osloMatrix: new knots reach outside [x_0, x_last]");
   }
+}
+
+Eigen::MatrixXd osloMatrix(int degree, const std::vector<double>& x, const std::vector<double>& y) {
+  const int p = degree;
+  const int n = static_cast<int>(x.size()) - p - 1;
+  const int m = static_cast<int>(y.size()) - p - 1;
+  validateOsloKnots(p, x, y);
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(m, n);
   std::array<double, kMaxDegree + 1> row{};
   for (int j = 0; j < m; ++j) {

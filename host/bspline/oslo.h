@@ -24,6 +24,11 @@ std::vector<double> mergeKnots(const std::vector<double>& knots, std::vector<dou
 Eigen::MatrixXd osloMatrix(int degree, const std::vector<double>& oldKnots,
                            const std::vector<double>& newKnots);
 
+// What osloMatrix asks of its knots, checked with its messages (also by to_bezier.cpp's sparse
+// rows): throws std::invalid_argument naming the violation.
+void validateOsloKnots(int degree, const std::vector<double>& oldKnots,
+                       const std::vector<double>& newKnots);
+
 // Row j of the Oslo matrix for degree p, coarse knots x ⊂ fine knots y: writes p + 1 values
 // for columns first .. first + p (zeros where the row is shorter) and returns first. The knots
 // are not validated here (osloMatrix and osloBand in banded_oslo.h do that once).

@@ -65,16 +65,12 @@ struct InsertionRows {
   std::vector<double> values;
 };
 
-// Validated as osloMatrix validates (the same messages).
+// Validated as osloMatrix validates (validateOsloKnots, the same messages).
 InsertionRows insertionRows(int degree, const std::vector<double>& x, const std::vector<double>& y) {
   const int p = degree;
   const int n = static_cast<int>(x.size()) - p - 1;
   const int m = static_cast<int>(y.size()) - p - 1;
-  validateKnots(p, n, x, "osloMatrix old knots");
-  validateKnots(p, m, y, "osloMatrix new knots");
-  if (!knotsContain(y, x)) throw std::invalid_argument("osloMatrix: new knots do not contain every old knot");
-  if (y.front() != x.front() || y.back() != x.back())
-    throw std::invalid_argument("osloMatrix: new knots reach outside [x_0, x_last]");
+  validateOsloKnots(p, x, y);
   InsertionRows a{m, n, p, std::vector<int>(size_t(m)), std::vector<double>(size_t(m) * size_t(p + 1))};
   for (int j = 0; j < m; ++j) a.first[size_t(j)] = osloRow(p, x, y, j, a.values.data() + size_t(j) * size_t(p + 1));
   return a;
