@@ -47,7 +47,7 @@ int loopCount(const fs::path& path) {
 
 // README command 1's shaders reach the driver unrolled (lib/tolerance_bound.h, TOLERANCE_UNROLL;
 // shaders/CMakeLists.txt optimizes them twice): lavapipe compiles every pipeline at every run, and
-// unrolling the bound's loops itself cost it ~4× the compile (bench/README.md, "The Vulkan path's
+// unrolling the bound's loops itself cost it ~4× the compile (bench/HISTORY.md, "The Vulkan path's
 // fixed cost"). A `break` in those loops, or one spirv-opt run, leaves loops here.
 TEST_CASE("rule T's bicubic shaders are compiled with their loops unrolled", "[spirv]") {
   const fs::path dir = fs::path(TESSERA_BINARY_DIR) / "shaders";

@@ -21,7 +21,8 @@ namespace first_occurrence_detail {
 // The shards' tables, kept from call to call. A table of a large mesh is megabytes that malloc
 // hands back to the kernel when it is freed (heap trimming, or munmap above the mmap threshold)
 // and that fault in again, page by page, in the next call: rule T's vertex numbering and
-// welding took ~40% of a tessellation's page faults that way (bench/README.md, case 3). A
+// welding took ~40% of a tessellation's page faults that way (bench/HISTORY.md, "Where the
+// time after the tree goes"). A
 // table comes back cleared (its buckets kept); one far larger than a call needs is freed
 // rather than kept, so a small mesh after a large one does not clear megabytes, and a few
 // tables at most wait here.

@@ -2,7 +2,7 @@
 // tsl::robin_map (Debian robin-map-dev, header only): one flat array, robin-hood probing,
 // erase by backward shift, no node per entry. std::unordered_map allocated a node per entry
 // and followed a pointer per probe; malloc was a third of the gap triangulation's time and the
-// node-based maps a quarter of rule T's stages after the tree (bench/README.md). Its iteration
+// node-based maps a quarter of rule T's stages after the tree (bench/HISTORY.md). Its iteration
 // order is its own: callers that walk a map sort what they walk.
 #pragma once
 

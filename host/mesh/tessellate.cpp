@@ -144,7 +144,8 @@ Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeO
   const PatchSet gpuPatches = toPatchSet(local);
   // The evaluator's setup (a pipeline build) overlaps the quad-tree from its first level on:
   // started before it, it would take cores from the classifier's own pipeline builds, which
-  // the first level waits for (lavapipe builds on the calling threads; bench/README.md).
+  // the first level waits for (lavapipe builds on the calling threads;
+  // bench/HISTORY.md, "The Vulkan path's fixed cost").
   bool evaluatorPrepared = false;
   localOptions.onLevel = [&, outer = options.onLevel](const LevelStats& level) {
     if (!evaluatorPrepared) backend.evaluator->prepareVertices(gpuPatches);

@@ -79,7 +79,7 @@ Counted countsOf(const glm::dvec4* screen, int degreeV, const RationalBezierPatc
 
 // The work items ordered by their patches' (N_u, N_v): on a CPU driver neighbouring
 // invocations are SIMD lanes, and a lane group runs each loop as long as its longest lane, so
-// patches with equal grids side by side waste the least (bench/README.md, case 5). Two stable
+// patches with equal grids side by side waste the least (bench/HISTORY.md, case 5). Two stable
 // counting passes, by N_v then N_u.
 void orderBySize(const std::vector<gpu::StitchPatch>& records, std::vector<uint32_t>& items,
                  std::vector<uint32_t>& scratch) {

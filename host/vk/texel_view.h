@@ -3,7 +3,7 @@
 // 22.3) loads a storage buffer at an index that differs per invocation one lane at a time,
 // with a bounds test per component (~70 instructions a lane for a vec4), while a texel fetch
 // gathers the 8 lanes' texels at once; rule T's bicubic shaders spent about two thirds of their
-// instructions on such loads (bench/README.md, rule T section).
+// instructions on such loads (bench/HISTORY.md, rule T section, `levels15`).
 #pragma once
 #include "vk/backend_only.h"
 

@@ -9,7 +9,7 @@
 // eval.comp.glsl defines BICUBIC_EVAL_UNROLL [[unroll]]: these loops have constant trip counts
 // and no break, so spirv-opt unrolls them and lavapipe, which compiles the pipeline at every
 // run, gets straight-line code instead of unrolling them itself (vkCreateComputePipelines
-// ~4.5 → ~3.7 ms of thread CPU; bench/README.md). The same operations in the same order.
+// ~4.5 → ~3.7 ms of thread CPU; bench/HISTORY.md). The same operations in the same order.
 // Elsewhere (the mirror, the other shaders) they stay loops.
 #ifndef BICUBIC_EVAL_UNROLL
 #define BICUBIC_EVAL_UNROLL

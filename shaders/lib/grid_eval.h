@@ -3,7 +3,8 @@
 // through that row and of its u-derivative curve; each vertex of the row is then a cubic in v
 // (12 multiply-adds for P, Pu, Pv instead of 48 for a full point evaluation from 16 points).
 // Reading the control points once per row instead of once per point is what lets lavapipe
-// reach the memory-bandwidth cap (bench/README.md, case 1).
+// reach half the 5 GB/s cap (bench/README.md, case 1; one invocation per vertex was
+// 2-5x slower: bench/HISTORY.md, "Findings behind the numbers").
 // Compiled as GLSL (shaders/grid_eval.comp.glsl, shaders/stitch_pattern.comp.glsl) and as C++
 // (host/realtime/grid_mirror.cpp, host/realtime/stitch_mirror.cpp).
 // Include shared_glsl_cpp.h, layout.h and bicubic_eval.h first.

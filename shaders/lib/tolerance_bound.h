@@ -37,7 +37,7 @@ const float kToleranceUnbounded = 1.0e30f;
 // counts (the degrees are constants there) and neither break nor continue, the entries past
 // the degree skipped by a test, so spirv-opt unrolls them (run twice: it unrolls a level of
 // nesting per run) and lavapipe gets straight-line code instead of unrolling 48 loops itself at
-// every run, which was most of its compile (bench/README.md, "The Vulkan path's fixed cost").
+// every run, which was most of its compile (bench/HISTORY.md, "The Vulkan path's fixed cost").
 // Elsewhere (the general shaders, whose degrees vary per patch, and the mirrors) the loops stay
 // loops and break at the degree. TOLERANCE_WHILE(c) { … } runs the block while c holds: the
 // bicubic shaders test c at every iteration, the others break at the first where it fails.
