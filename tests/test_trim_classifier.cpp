@@ -160,6 +160,32 @@ TEST_CASE("Trim classification: Vulkan equals the fp32 mirror bit for bit", "[tr
   requireValidationClean();
 }
 
+TEST_CASE("Trim classification: Vulkan's started classification, finished after other "
+          "submissions, is classify()'s",
+          "[trim][gpu]") {
+  auto vulkan = makeVulkanTrimClassifier(gpuContext());
+  auto mirror = makeMirrorTrimClassifier();
+  const TrimSet samples = trimSampleSet();
+  const NearSideSamples nearSide = nearSideTrimSamples(3000, 406);
+  const std::vector<gpu::TrimQuery> queries = trimSampleQueries(samples, 2000, 1703);
+  // As the trimmed quad-tree does: start, another classifier's submission on the same queue
+  // (its wait covers the started dispatch too), then finish.
+  auto other = makeVulkanTrimClassifier(gpuContext());
+  vulkan->startClassify(samples, queries);
+  const auto between = other->classify(nearSide.set, nearSide.queries);
+  const auto started = vulkan->finishClassify();
+  CHECK(between == mirror->classify(nearSide.set, nearSide.queries));
+  CHECK(started == mirror->classify(samples, queries));
+  CHECK(started == vulkan->classify(samples, queries));
+  CHECK(vulkan->finishClassify().empty());  // one finish per start
+  // The default halves (the mirror's) and an empty start.
+  mirror->startClassify(samples, queries);
+  CHECK(mirror->finishClassify() == started);
+  vulkan->startClassify(samples, {});
+  CHECK(vulkan->finishClassify().empty());
+  requireValidationClean();
+}
+
 // Timing, not a check (hidden: `tessera_tests "[trim-bench]"`): `nodes` tree cells of levels
 // 5..10 on one face whose loop has 1000 segments (a wavy circle filling most of the piece).
 TEST_CASE("Trim classification timing: 100k nodes against 1000 segments", "[.][trim-bench]") {

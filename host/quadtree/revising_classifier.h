@@ -34,6 +34,7 @@ class RevisingClassifier : public NodeClassifier {
     // decision for them would never be read. Every classifier decides a node from that node
     // and its patch alone (the batch only groups the work), so the others' decisions are
     // those of the whole batch.
+    beforeInner(nodes, options);
     innerNodes_.clear();
     innerIndex_.clear();
     for (size_t i = 0; i < nodes.size(); ++i)
@@ -63,6 +64,10 @@ class RevisingClassifier : public NodeClassifier {
   // nodes[i].patchIndex).
   virtual void revise(const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
                       std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) = 0;
+  // Called with each batch before the inner classifier sees it: a revision that does not read
+  // the inner decisions may start its own work here, to overlap the inner classification.
+  virtual void beforeInner(const std::vector<gpu::QuadNode>& /*nodes*/,
+                           const QuadtreeOptions& /*options*/) {}
   // True where revise() assigns decisions[i] whole, reading nothing of it, for every node of
   // patch `patch` (over all groups) under `options`: the inner classifier skips those nodes.
   virtual bool rewritesWhole(size_t /*patch*/, const QuadtreeOptions& /*options*/) const {

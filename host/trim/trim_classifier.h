@@ -63,6 +63,18 @@ class TrimClassifier {
   // One gpu::kTrim* per query, in order. Throws as validateTrimQueries does.
   virtual std::vector<uint32_t> classify(const TrimSet& set,
                                          const std::vector<gpu::TrimQuery>& queries) = 0;
+  // classify() in two halves, for a caller with other work to submit meanwhile (the trimmed
+  // quad-tree's level classification): startClassify takes the queries (neither argument is
+  // read after it returns), finishClassify returns what classify() would have. A device
+  // backend submits at the start and waits at the finish; by default the start does it all.
+  // Nothing else is called on the classifier between the two halves.
+  virtual void startClassify(const TrimSet& set, const std::vector<gpu::TrimQuery>& queries) {
+    started_ = classify(set, queries);
+  }
+  virtual std::vector<uint32_t> finishClassify() { return std::move(started_); }
+
+ private:
+  std::vector<uint32_t> started_;
 };
 
 std::unique_ptr<TrimClassifier> makeReferenceTrimClassifier();  // double, the specification

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "trim_classify_comp.h"
+#include "vk/async_submission.h"
 #include "vk/buffer.h"
 #include "vk/pipeline.h"
 
@@ -26,28 +27,57 @@ class VulkanTrimClassifier final : public TrimClassifier {
 
   std::vector<uint32_t> classify(const TrimSet& set,
                                  const std::vector<gpu::TrimQuery>& queries) override {
-    validateTrimQueries(set, queries);
     std::vector<uint32_t> out;
-    if (queries.empty()) return out;
+    if (!prepare(set, queries)) return out;
+    context_.submitAndWait([&](VkCommandBuffer cmd) { record(cmd); });
+    results_.download(out, queries.size());
+    return out;
+  }
+
+  // The same dispatch, submitted without waiting: the trimmed quad-tree's level classification,
+  // submitted next, runs after it on the queue, and its wait covers both.
+  void startClassify(const TrimSet& set, const std::vector<gpu::TrimQuery>& queries) override {
+    startedCount_ = 0;
+    if (!prepare(set, queries)) return;
+    submission_.submit([&](VkCommandBuffer cmd) { record(cmd); });
+    startedCount_ = queries.size();
+  }
+
+  std::vector<uint32_t> finishClassify() override {
+    std::vector<uint32_t> out;
+    if (startedCount_ == 0) return out;
+    submission_.wait();
+    results_.download(out, startedCount_);
+    startedCount_ = 0;
+    return out;
+  }
+
+ private:
+  // Uploads the set and the queries for record(); false when there is nothing to classify.
+  // Waits first for a started dispatch, which reads the buffers this overwrites.
+  bool prepare(const TrimSet& set, const std::vector<gpu::TrimQuery>& queries) {
+    validateTrimQueries(set, queries);
+    submission_.wait();
+    startedCount_ = 0;
+    if (queries.empty()) return false;
     if (queries.size() > UINT32_MAX)
       throw std::length_error("trim classification: more than 2³² − 1 nodes in one call");
-    const gpu::TrimPush push{uint32_t(queries.size()), 0u, 0u, 0u};
+    push_ = {uint32_t(queries.size()), 0u, 0u, 0u};
     // Buffers only grow, so the frontier's levels and repeated batches reuse them.
     upload(faces_, set.faces.data(), set.faces.size() * sizeof(gpu::TrimFace));
     upload(pieces_, set.pieces.data(), set.pieces.size() * sizeof(gpu::TrimPiece));
     upload(segments_, set.segments.data(), set.segments.size() * sizeof(gpu::vec4));
     upload(queries_, queries.data(), queries.size() * sizeof(gpu::TrimQuery));
     ensure(results_, queries.size() * sizeof(uint32_t), vk::BufferUse::Readback);
-    context_.submitAndWait([&](VkCommandBuffer cmd) {
-      pipeline_.dispatch(cmd, {&faces_, &pieces_, &segments_, &queries_, &results_}, &push,
-                         push.queryCount);
-      vk::computeToHostBarrier(context_, cmd);
-    });
-    results_.download(out, queries.size());
-    return out;
+    return true;
   }
 
- private:
+  void record(VkCommandBuffer cmd) {
+    pipeline_.dispatch(cmd, {&faces_, &pieces_, &segments_, &queries_, &results_}, &push_,
+                       push_.queryCount);
+    vk::computeToHostBarrier(context_, cmd);
+  }
+
   void ensure(vk::Buffer& buffer, size_t bytes, vk::BufferUse use) {
     vk::requireStorageRange(context_, bytes, "trim classification");
     vk::ensureCapacity(context_, buffer, std::max<size_t>(bytes, 16), use);
@@ -61,6 +91,9 @@ class VulkanTrimClassifier final : public TrimClassifier {
   vk::Context& context_;
   vk::ComputePipeline pipeline_;
   vk::Buffer faces_, pieces_, segments_, queries_, results_;
+  gpu::TrimPush push_{};
+  vk::AsyncSubmission submission_{context_};  // declared last: destroyed (waited for) first
+  size_t startedCount_ = 0;                   // queries of the started dispatch
 };
 
 }  // namespace

@@ -15,19 +15,29 @@ std::string TrimmingClassifier::name() const {
   return inner().name() + " (trimmed by " + trim_.name() + ")";
 }
 
-void TrimmingClassifier::revise(const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions&,
-                                std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) {
+void TrimmingClassifier::beforeInner(const std::vector<gpu::QuadNode>& nodes,
+                                     const QuadtreeOptions&) {
   const Stopwatch stopwatch;
   queries_.resize(nodes.size());
   for (size_t i = 0; i < nodes.size(); ++i)
     queries_[i] = {nodes[i].rect, uint32_t(groupFirst() + nodes[i].patchIndex), 0u, 0u, 0u};
-  const std::vector<uint32_t> where = trim_.classify(set_, queries_);
+  trim_.startClassify(set_, queries_);
+  startMs_ = stopwatch.elapsedMs();
+}
+
+void TrimmingClassifier::revise(const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions&,
+                                std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) {
+  const Stopwatch stopwatch;
+  const std::vector<uint32_t> where = trim_.finishClassify();
+  if (where.size() != nodes.size())
+    throw std::logic_error(name() + ": " + std::to_string(where.size()) +
+                           " trim classes for " + std::to_string(nodes.size()) + " nodes");
   for (size_t i = 0; i < nodes.size(); ++i)
     if (where[i] == gpu::kTrimOutside) {
       decisions[i].cause = gpu::kCauseTrimmedAway;
       ++trimmedAway_;
     }
-  const double ms = stopwatch.elapsedMs();
+  const double ms = startMs_ + stopwatch.elapsedMs();
   trimMs_ += ms;
   stats.classifyMs += ms;
 }

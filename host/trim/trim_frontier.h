@@ -23,6 +23,9 @@ class TrimmingClassifier final : public RevisingClassifier {
   double trimMs() const { return trimMs_; }             // time in the trim classifier
 
  private:
+  // The trim classification starts before the inner classifier's (its queries are the nodes
+  // alone) and is read in revise(): on Vulkan both dispatches then cost one wait.
+  void beforeInner(const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options) override;
   void revise(const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
               std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) override;
 
@@ -30,6 +33,7 @@ class TrimmingClassifier final : public RevisingClassifier {
   TrimClassifier& trim_;
   size_t trimmedAway_ = 0;
   double trimMs_ = 0;
+  double startMs_ = 0;  // the current batch's beforeInner
   std::vector<gpu::TrimQuery> queries_;
 };
 
