@@ -30,8 +30,8 @@ void TrimmingClassifier::revise(const std::vector<gpu::QuadNode>& nodes, const Q
   const Stopwatch stopwatch;
   const std::vector<uint32_t> where = trim_.finishClassify();
   if (where.size() != nodes.size())
-    throw std::logic_error(name() + ": " + std::to_string(where.size()) +
-                           " trim classes for " + std::to_string(nodes.size()) + " nodes");
+    throw std::logic_error(name() + ": " + std::to_string(where.size()) + " trim classes for " +
+                           std::to_string(nodes.size()) + " nodes");
   for (size_t i = 0; i < nodes.size(); ++i)
     if (where[i] == gpu::kTrimOutside) {
       decisions[i].cause = gpu::kCauseTrimmedAway;

@@ -25,7 +25,8 @@ class TrimmingClassifier final : public RevisingClassifier {
  private:
   // The trim classification starts before the inner classifier's (its queries are the nodes
   // alone) and is read in revise(): on Vulkan both dispatches then cost one wait.
-  void beforeInner(const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options) override;
+  void beforeInner(const std::vector<gpu::QuadNode>& nodes,
+                   const QuadtreeOptions& options) override;
   void revise(const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
               std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) override;
 
