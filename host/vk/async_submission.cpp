@@ -2,6 +2,7 @@
 
 #include "vk/errors.h"
 #include "vk/loader.h"
+#include "vk/one_time_commands.h"
 
 namespace tessera::vk {
 
@@ -29,24 +30,7 @@ AsyncSubmission::~AsyncSubmission() {
 
 void AsyncSubmission::submit(const std::function<void(VkCommandBuffer)>& record) {
   wait();
-  const DeviceTable& vk = context_.vk();
-  VK_CHECK(vk.vkResetCommandPool(context_.device(), pool_, 0));
-  VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  allocInfo.commandPool = pool_;
-  allocInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  allocInfo.commandBufferCount = 1;
-  VkCommandBuffer cmd = VK_NULL_HANDLE;
-  VK_CHECK(vk.vkAllocateCommandBuffers(context_.device(), &allocInfo, &cmd));
-  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  VK_CHECK(vk.vkBeginCommandBuffer(cmd, &begin));
-  record(cmd);
-  VK_CHECK(vk.vkEndCommandBuffer(cmd));
-  VkSubmitInfo submitInfo{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-  submitInfo.commandBufferCount = 1;
-  submitInfo.pCommandBuffers = &cmd;
-  VK_CHECK(vk.vkResetFences(context_.device(), 1, &fence_));
-  VK_CHECK(vk.vkQueueSubmit(context_.queue(), 1, &submitInfo, fence_));
+  recordAndSubmit(context_.vk(), context_.device(), context_.queue(), pool_, fence_, record);
   pending_ = true;
 }
 

@@ -8,6 +8,7 @@
 #include "common/stopwatch.h"
 #include "vk/device_select.h"
 #include "vk/loader.h"
+#include "vk/one_time_commands.h"
 #include "vk/pipeline_cache.h"
 
 namespace tessera::vk {
@@ -315,23 +316,7 @@ void Context::savePipelineCache() {
 
 void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {
   const Stopwatch stopwatch;
-  VK_CHECK(deviceTable_->vkResetCommandPool(device_, commandPool_, 0));
-  VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  allocInfo.commandPool = commandPool_;
-  allocInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  allocInfo.commandBufferCount = 1;
-  VkCommandBuffer cmd = VK_NULL_HANDLE;
-  VK_CHECK(deviceTable_->vkAllocateCommandBuffers(device_, &allocInfo, &cmd));
-  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  VK_CHECK(deviceTable_->vkBeginCommandBuffer(cmd, &begin));
-  record(cmd);
-  VK_CHECK(deviceTable_->vkEndCommandBuffer(cmd));
-  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-  submit.commandBufferCount = 1;
-  submit.pCommandBuffers = &cmd;
-  VK_CHECK(deviceTable_->vkResetFences(device_, 1, &fence_));
-  VK_CHECK(deviceTable_->vkQueueSubmit(queue_, 1, &submit, fence_));
+  recordAndSubmit(*deviceTable_, device_, queue_, commandPool_, fence_, record);
   VK_CHECK(deviceTable_->vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX));
   const double ms = stopwatch.elapsedMs();
   std::lock_guard<std::mutex> lock(timingsMutex_);
