@@ -329,6 +329,58 @@ TEST_CASE("rule T: GPU trees equal the fp32 mirror's", "[gpu][tolerance][parity]
   test::requireValidationClean();
 }
 
+TEST_CASE("rule T: each polynomial degree pair up to 3 x 3 takes its own GPU shader, with the "
+          "mirror's decisions",
+          "[gpu][tolerance][parity]") {
+  // Polynomial patches of degree ≤ 3 × 3 go to the variant built for their degree pair, the
+  // others to the generic shader, each shader's nodes one range of the node buffer
+  // (classifier_vulkan.cpp): a set with every variant, rational patches and degree 5, and sets
+  // of one variant alone (the nodes as they are), each tree equal to the mirror's.
+  vk::Context& context = test::gpuContext();
+  auto gpu = makeVulkanClassifier(context);
+  auto cpu = makeMirrorClassifier();
+  std::vector<BezierPatch> mixed, planes, bicubics;
+  uint32_t seed = 7100;
+  for (int n = 1; n <= 3; ++n)
+    for (int m = 1; m <= 3; ++m)
+      for (BezierPatch& p : test::randomGeneralPatches(2, n, m, false, false, ++seed))
+        mixed.push_back(normalised(p));
+  for (BezierPatch& p : test::randomGeneralPatches(2, 2, 2, true, true, ++seed))
+    mixed.push_back(normalised(p));
+  for (BezierPatch& p : test::randomGeneralPatches(2, 5, 3, false, false, ++seed))
+    mixed.push_back(normalised(p));
+  for (BezierPatch& p : test::randomGeneralPatches(3, 1, 1, false, false, ++seed))
+    planes.push_back(normalised(p));
+  // Bicubic patches beside a rational one: the general set, polynomial 3 × 3 on its variant.
+  for (BezierPatch& p : test::randomGeneralPatches(3, 3, 3, false, false, ++seed))
+    bicubics.push_back(normalised(p));
+  for (BezierPatch& p : test::randomGeneralPatches(1, 2, 1, true, false, ++seed))
+    bicubics.push_back(normalised(p));
+  for (const auto& [name, patches] : {std::pair<const char*, const std::vector<BezierPatch>&>{
+                                          "every variant, rational, degree 5", mixed},
+                                      {"degree 1 x 1 alone", planes},
+                                      {"3 x 3 beside a rational 2 x 1", bicubics}}) {
+    const PatchSet set = toPatchSet(patches);
+    REQUIRE_FALSE(set.isBicubic());
+    for (double relative : {3e-2, 3e-3}) {
+      const QuadtreeOptions options = toleranceOptions(relative * setDiagonal(patches));
+      const QuadtreeResult a = buildQuadtree(set, options, *gpu);
+      const QuadtreeResult b = buildQuadtree(set, options, *cpu);
+      const bool identical = test::identicalTrees(a, b);
+      WARN(name << " at δ = " << relative << " of the size on " << context.info().name << ": GPU "
+                << a.leaves.size() << " leaves, mirror " << b.leaves.size()
+                << (identical ? " (identical)" : " (DIFFERENT)"));
+      REQUIRE(b.leaves.size() > patches.size());  // the trees do split
+      if (context.info().isLavapipe()) {
+        REQUIRE(identical);
+      } else {
+        REQUIRE(double(a.leaves.size()) == Approx(double(b.leaves.size())).epsilon(0.02));
+      }
+    }
+  }
+  test::requireValidationClean();
+}
+
 namespace {
 
 // Triangles of rule T on one tea-set model at δ with at most `cap` equal children a direction.

@@ -4,8 +4,13 @@
 // quadtree_general_tolerance.comp.glsl, and for bicubic patches two dispatches a level,
 // quadtree_tolerance_nets.comp.glsl then quadtree_tolerance.comp.glsl, whose pipelines are built
 // on two threads and which read the patches, the nodes and the nets as uniform texel buffers
-// (shaders/lib/tolerance_texels.glsl). Pipelines are made once per (shader, rule, S) and
-// buffers grow and are kept between levels.
+// (shaders/lib/tolerance_texels.glsl). Rule T on general patches sends the nodes of polynomial
+// patches of degree ≤ 3 × 3 to the variant built for their degree pair
+// (quadtree_general_tolerance_p<n>x<m>.comp, shaders/CMakeLists.txt), each variant's nodes one
+// range of the node buffer, all dispatched in one submission. Pipelines are made once per
+// (shader, rule, S), when first needed, and buffers grow and are kept between levels.
+#include <algorithm>
+#include <array>
 #include <cstdint>  // before the generated SPIR-V array, which uses uint32_t
 #include <map>
 #include <tuple>
@@ -18,6 +23,15 @@
 #include "quadtree_general_comp.h"
 #include "quadtree_general_midpoint_comp.h"
 #include "quadtree_general_tolerance_comp.h"
+#include "quadtree_general_tolerance_p1x1_comp.h"
+#include "quadtree_general_tolerance_p1x2_comp.h"
+#include "quadtree_general_tolerance_p1x3_comp.h"
+#include "quadtree_general_tolerance_p2x1_comp.h"
+#include "quadtree_general_tolerance_p2x2_comp.h"
+#include "quadtree_general_tolerance_p2x3_comp.h"
+#include "quadtree_general_tolerance_p3x1_comp.h"
+#include "quadtree_general_tolerance_p3x2_comp.h"
+#include "quadtree_general_tolerance_p3x3_comp.h"
 #include "quadtree_midpoint_comp.h"
 #include "quadtree_tolerance_comp.h"
 #include "quadtree_tolerance_nets_comp.h"
@@ -38,6 +52,36 @@ constexpr VkBufferUsageFlags kTexelUsage =
 // shader reads patches, nodes and nets (0-2) and writes the decisions (3).
 constexpr uint32_t kNetsTexelBindings = 0b011u;
 constexpr uint32_t kDecidingTexelBindings = 0b0111u;
+
+struct ShaderCode {
+  const char* name;
+  const uint32_t* spirv;
+  size_t bytes;
+};
+
+#define TESSERA_GENERAL_VARIANT(n, m)                                       \
+  ShaderCode {                                                              \
+    "quadtree_general_tolerance_p" #n "x" #m ".comp",                       \
+        kSpirv_quadtree_general_tolerance_p##n##x##m##_comp,                \
+        sizeof(kSpirv_quadtree_general_tolerance_p##n##x##m##_comp)         \
+  }
+// Rule T's general shader for polynomial patches of one degree pair: (n, m) at (n − 1)·3 + m − 1.
+constexpr int kVariantMaxDegree = 3;
+constexpr size_t kGeneralVariants = kVariantMaxDegree * kVariantMaxDegree;
+const std::array<ShaderCode, kGeneralVariants> kGeneralToleranceVariants = {
+    TESSERA_GENERAL_VARIANT(1, 1), TESSERA_GENERAL_VARIANT(1, 2), TESSERA_GENERAL_VARIANT(1, 3),
+    TESSERA_GENERAL_VARIANT(2, 1), TESSERA_GENERAL_VARIANT(2, 2), TESSERA_GENERAL_VARIANT(2, 3),
+    TESSERA_GENERAL_VARIANT(3, 1), TESSERA_GENERAL_VARIANT(3, 2), TESSERA_GENERAL_VARIANT(3, 3)};
+#undef TESSERA_GENERAL_VARIANT
+// The generic shader's place after the variants (variantOf's answer for the other patches).
+constexpr size_t kGenericShader = kGeneralVariants;
+
+// Which rule T shader classifies a patch's nodes: its variant, or the generic shader.
+size_t variantOf(const gpu::GeneralPatch& patch) {
+  const bool fits = patch.rational == 0u && patch.degreeU >= 1 && patch.degreeV >= 1 &&
+                    patch.degreeU <= kVariantMaxDegree && patch.degreeV <= kVariantMaxDegree;
+  return fits ? (patch.degreeU - 1) * kVariantMaxDegree + (patch.degreeV - 1) : kGenericShader;
+}
 
 class VulkanClassifier final : public NodeClassifier {
  public:
@@ -70,6 +114,9 @@ class VulkanClassifier final : public NodeClassifier {
       return;
     }
     const GeneralPatchSet& general = patches.general();
+    patchShader_.resize(general.patches.size());
+    for (size_t p = 0; p < general.patches.size(); ++p)
+      patchShader_[p] = variantOf(general.patches[p]);
     vk::ensureCapacity(context_, patches_, general.patches.size() * sizeof(gpu::GeneralPatch),
                        vk::BufferUse::Upload, kTexelUsage);
     vk::ensureCapacity(context_, points_, general.points.size() * sizeof(gpu::vec4),
@@ -84,10 +131,112 @@ class VulkanClassifier final : public NodeClassifier {
     const bool general = !patches.isBicubic();
     if (uploadedCount_ != patches.size() || uploadedGeneral_ != general)
       throw std::logic_error("VulkanClassifier: classify() without beginTree() for these patches");
-    run(general, nodes, options, decisions, stats);
+    if (general && options.rule == SplitRule::Tolerance)
+      runGeneralTolerance(nodes, options, decisions, stats);
+    else
+      run(general, nodes, options, decisions, stats);
   }
 
  private:
+  // Rule T on general patches: each shader's nodes (a variant's, or the generic shader's) one
+  // range of the node and decision buffers, in their order, starting where the device can bind
+  // it; one dispatch a range, one submission, the decisions put back in the nodes' order.
+  void runGeneralTolerance(const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
+                           std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) {
+    static_assert(sizeof(gpu::QuadNode) == sizeof(gpu::NodeDecision),
+                  "one slot holds a node, then its decision");
+    const Stopwatch stopwatch;
+    decisions.resize(nodes.size());
+    if (nodes.empty()) return;
+    constexpr size_t kShaders = kGeneralVariants + 1;
+    std::array<size_t, kShaders> count{};
+    for (const gpu::QuadNode& node : nodes) ++count[patchShader_[node.patchIndex]];
+    const size_t slotAlignment = std::max<size_t>(
+        1, size_t(context_.minStorageBufferOffsetAlignment()) / sizeof(gpu::QuadNode));
+    std::array<size_t, kShaders> first{};
+    size_t slots = 0;
+    for (size_t k = 0; k < kShaders; ++k) {
+      if (count[k] == 0) continue;
+      slots = (slots + slotAlignment - 1) / slotAlignment * slotAlignment;
+      first[k] = slots;
+      slots += count[k];
+    }
+    // One shader: the nodes as they are. Else each node's slot, in the nodes' order per shader.
+    const bool oneShader = slots == nodes.size() &&
+                           std::count(count.begin(), count.end(), size_t(0)) == kShaders - 1;
+    std::vector<uint32_t> slotOf;
+    if (!oneShader) {
+      slotOf.resize(nodes.size());
+      sortedNodes_.assign(slots, gpu::QuadNode{});
+      std::array<size_t, kShaders> next = first;
+      for (size_t i = 0; i < nodes.size(); ++i) {
+        slotOf[i] = uint32_t(next[patchShader_[nodes[i].patchIndex]]++);
+        sortedNodes_[slotOf[i]] = nodes[i];
+      }
+    }
+    std::array<vk::ComputePipeline*, kShaders> pipelines{};
+    for (size_t k = 0; k < kShaders; ++k)
+      if (count[k]) pipelines[k] = &generalTolerancePipeline(k, options.samples);
+    vk::ensureCapacity(context_, nodes_, slots * sizeof(gpu::QuadNode), vk::BufferUse::Upload,
+                       kTexelUsage);
+    vk::ensureCapacity(context_, decisions_, slots * sizeof(gpu::NodeDecision),
+                       vk::BufferUse::Readback);
+    if (oneShader)
+      nodes_.upload(nodes);
+    else
+      nodes_.upload(sortedNodes_);
+    const auto whole = [](const vk::Buffer& b) {
+      return VkDescriptorBufferInfo{b.handle(), 0, VK_WHOLE_SIZE};
+    };
+    const auto range = [](const vk::Buffer& b, size_t firstSlot, size_t slotCount) {
+      return VkDescriptorBufferInfo{b.handle(), firstSlot * sizeof(gpu::QuadNode),
+                                    slotCount * sizeof(gpu::QuadNode)};
+    };
+    context_.submitAndWait([&](VkCommandBuffer cmd) {
+      timer_.reset(cmd);
+      timer_.mark(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+      for (size_t k = 0; k < kShaders; ++k) {
+        if (count[k] == 0) continue;
+        const gpu::ClassifyPush push = classifyParams(options, uint32_t(count[k]));
+        pipelines[k]->dispatch(cmd,
+                               {whole(patches_), range(nodes_, first[k], count[k]),
+                                range(decisions_, first[k], count[k]), whole(points_)},
+                               &push, push.nodeCount);
+      }
+      timer_.mark(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
+      vk::computeToHostBarrier(context_, cmd);
+    });
+    if (oneShader) {
+      decisions_.download(decisions.data(), nodes.size() * sizeof(gpu::NodeDecision));
+    } else {
+      sortedDecisions_.resize(slots);
+      decisions_.download(sortedDecisions_.data(), slots * sizeof(gpu::NodeDecision));
+      for (size_t i = 0; i < nodes.size(); ++i) decisions[i] = sortedDecisions_[slotOf[i]];
+    }
+    auto intervals = timer_.intervalsNs();
+    if (!intervals.empty()) stats.gpuMs += intervals[0] * 1e-6;
+    stats.classifyMs += stopwatch.elapsedMs();
+  }
+
+  // Rule T's pipeline for general patches: variant k, or the generic shader (kGenericShader).
+  // Rule T reads no S (the rule-T-only shaders leave rules C and D out): a variant is made once.
+  vk::ComputePipeline& generalTolerancePipeline(size_t k, int samples) {
+    if (k == kGenericShader) return pipelineFor(true, gpu::kSplitRuleTolerance, samples);
+    std::unique_ptr<vk::ComputePipeline>& pipeline = variantPipelines_[k];
+    if (!pipeline) {
+      const ShaderCode& code = kGeneralToleranceVariants[k];
+      pipeline = std::make_unique<vk::ComputePipeline>(
+          context_, vk::ComputePipelineDesc{code.name,
+                                            code.spirv,
+                                            code.bytes,
+                                            4u,
+                                            sizeof(gpu::ClassifyPush),
+                                            {{0, gpu::kSplitRuleTolerance}},
+                                            0u});
+    }
+    return *pipeline;
+  }
+
   void run(bool general, const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
            std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) {
     const Stopwatch stopwatch;
@@ -151,12 +300,6 @@ class VulkanClassifier final : public NodeClassifier {
     return *it->second;
   }
 
-  struct ShaderCode {
-    const char* name;
-    const uint32_t* spirv;
-    size_t bytes;
-  };
-
   // Rules B and T run the variants built for them alone (without rules C and D's searches;
   // without the frames and rules B-D): the driver compiles a pipeline at every run, and the whole
   // shader costs it several times as long.
@@ -187,6 +330,11 @@ class VulkanClassifier final : public NodeClassifier {
        sizeof(kSpirv_quadtree_tolerance_nets_comp), 3, sizeof(gpu::ClassifyPush), {},
        kNetsTexelBindings}};
   std::map<std::tuple<bool, uint32_t, int>, std::unique_ptr<vk::ComputePipeline>> pipelines_;
+  // Rule T's general variants (kGeneralToleranceVariants), built when a level first needs one.
+  std::array<std::unique_ptr<vk::ComputePipeline>, kGeneralVariants> variantPipelines_;
+  std::vector<size_t> patchShader_;  // per uploaded general patch: variantOf
+  std::vector<gpu::QuadNode> sortedNodes_;  // a level's nodes by shader (runGeneralTolerance)
+  std::vector<gpu::NodeDecision> sortedDecisions_;
   vk::Buffer patches_, nodes_, decisions_, points_, netBounds_;
   // Rule T's bicubic shaders' views of the buffers, all RGBA32UI (lib/tolerance_texels.glsl).
   vk::TexelView patchTexels_{context_, VK_FORMAT_R32G32B32A32_UINT};

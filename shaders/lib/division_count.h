@@ -31,6 +31,17 @@ struct DivisionNet {
 #define DIVISION_STORAGE
 #endif
 DIVISION_STORAGE DivisionNet gNet;
+// The net's degrees as the arithmetic reads them: gNet.n and gNet.m, or constants in a shader
+// built for one degree pair (DIVISION_FIXED_DEGREE_U and _V: the quadtree_general_tolerance_*
+// variants), where every loop over the net then has a constant trip count and the driver can
+// keep the nets in registers instead of indexing memory lane by lane.
+#ifdef DIVISION_FIXED_DEGREE_U
+#define DIVISION_NET_N DIVISION_FIXED_DEGREE_U
+#define DIVISION_NET_M DIVISION_FIXED_DEGREE_V
+#else
+#define DIVISION_NET_N gNet.n
+#define DIVISION_NET_M gNet.m
+#endif
 // The scalar nets (w, β, ω) of one piece, packed so that one de Casteljau pass restricts all
 // three.
 DIVISION_STORAGE vec3 gPiece[DIVISION_MAX_POINTS];
@@ -44,8 +55,8 @@ vec4 divisionSource(int which, int k) {
 }
 
 vec4 degreeKeepingDerivative(int which, int dir, int a, int b) {
-  int s = gNet.m + 1;
-  int deg = dir == 0 ? gNet.n : gNet.m;
+  int s = DIVISION_NET_M + 1;
+  int deg = dir == 0 ? DIVISION_NET_N : DIVISION_NET_M;
   int idx = dir == 0 ? a : b;
   int step = dir == 0 ? s : 1;
   int k = a * s + b;
@@ -62,14 +73,14 @@ vec4 degreeKeepingDerivative(int which, int dir, int a, int b) {
 }
 
 void divisionDerivativeNets() {
-  int s = gNet.m + 1;
-  for (int a = 0; a <= gNet.n; ++a)
-    for (int b = 0; b <= gNet.m; ++b) {
+  int s = DIVISION_NET_M + 1;
+  for (int a = 0; a <= DIVISION_NET_N; ++a)
+    for (int b = 0; b <= DIVISION_NET_M; ++b) {
       gNet.d1u[a * s + b] = degreeKeepingDerivative(0, 0, a, b);
       gNet.d1v[a * s + b] = degreeKeepingDerivative(0, 1, a, b);
     }
-  for (int a = 0; a <= gNet.n; ++a)
-    for (int b = 0; b <= gNet.m; ++b) {
+  for (int a = 0; a <= DIVISION_NET_N; ++a)
+    for (int b = 0; b <= DIVISION_NET_M; ++b) {
       gNet.d2u[a * s + b] = degreeKeepingDerivative(1, 0, a, b);
       gNet.d2v[a * s + b] = degreeKeepingDerivative(2, 1, a, b);
       gNet.d11[a * s + b] = degreeKeepingDerivative(1, 1, a, b);
@@ -121,9 +132,9 @@ void restrictPieceRow(int first, int stride, int degree, float t0, float t1) {
 // ρ ≥ sup β/|w| (ratios.x), σ ≥ sup ω/|w| (ratios.y) over q×q pieces; false when some piece's
 // w coefficients are not all of one strict sign, or two pieces disagree.
 bool divisionWeightRatios(int q, OUT(vec2) ratios) {
-  int count = (gNet.n + 1) * (gNet.m + 1);
-  int s = gNet.m + 1;
-  int qv = gNet.m == 0 ? 1 : q;
+  int count = (DIVISION_NET_N + 1) * (DIVISION_NET_M + 1);
+  int s = DIVISION_NET_M + 1;
+  int qv = DIVISION_NET_M == 0 ? 1 : q;
   int sign = 0;
   ratios = vec2(0.0f, 0.0f);
   for (int pu = 0; pu < q; ++pu)
@@ -138,9 +149,9 @@ bool divisionWeightRatios(int q, OUT(vec2) ratios) {
       float v0 = exactRatio(uint(pv), uint(qv));
       float v1 = exactRatio(uint(pv + 1), uint(qv));
       if (u0 != 0.0f || u1 != 1.0f)
-        for (int j = 0; j <= gNet.m; ++j) restrictPieceRow(j, s, gNet.n, u0, u1);
+        for (int j = 0; j <= DIVISION_NET_M; ++j) restrictPieceRow(j, s, DIVISION_NET_N, u0, u1);
       if (v0 != 0.0f || v1 != 1.0f)
-        for (int i = 0; i <= gNet.n; ++i) restrictPieceRow(i * s, 1, gNet.m, v0, v1);
+        for (int i = 0; i <= DIVISION_NET_N; ++i) restrictPieceRow(i * s, 1, DIVISION_NET_M, v0, v1);
       bool positive = true;
       bool negative = true;
       for (int k = 0; k < count; ++k) {
@@ -177,7 +188,7 @@ struct DivisionKRange {
 };
 
 DivisionKRange divisionKRange(bool alongU) {
-  int count = (gNet.n + 1) * (gNet.m + 1);
+  int count = (DIVISION_NET_N + 1) * (DIVISION_NET_M + 1);
   DivisionKRange r;
   r.sMin = 0.0f;
   r.sMax = 0.0f;
@@ -234,7 +245,7 @@ void divisionAccumulate(int partial, vec3 e, vec3 f, float den, int cls, IN(Divi
 // All four numerators' class maxima in one pass over the (i, j) pairs (each control-net entry
 // is loaded once per pair; the GPU keeps these arrays in scratch memory).
 void divisionClassMaxima() {
-  int count = (gNet.n + 1) * (gNet.m + 1);
+  int count = (DIVISION_NET_N + 1) * (DIVISION_NET_M + 1);
   DivisionKRange ru = divisionKRange(true);
   DivisionKRange rv = divisionKRange(false);
   for (int c = 0; c < 32; ++c) gClass[c] = 0.0f;
@@ -326,7 +337,7 @@ DivisionResult divisionCounts(IN(DivisionPush) params) {
   res.uu = 0.0f;
   res.uv = 0.0f;
   res.vv = 0.0f;
-  int count = (gNet.n + 1) * (gNet.m + 1);
+  int count = (DIVISION_NET_N + 1) * (DIVISION_NET_M + 1);
   bool anyVanished = false;
   bool anyNegative = false;
   bool anyPositive = false;
@@ -342,7 +353,7 @@ DivisionResult divisionCounts(IN(DivisionPush) params) {
   divisionDerivativeNets();
   divisionClassMaxima();
   res.uu = divisionCombine(0, ratios.x, ratios.y);
-  if (gNet.m > 0) {
+  if (DIVISION_NET_M > 0) {
     res.uv = min(divisionCombine(1, ratios.x, ratios.y), divisionCombine(3, ratios.x, ratios.y));
     res.vv = divisionCombine(2, ratios.x, ratios.y);
   }

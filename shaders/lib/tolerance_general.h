@@ -8,11 +8,15 @@
 #define TESSERA_TOLERANCE_GENERAL_H
 
 ToleranceTerms generalSecondBounds(IN(GeneralPatch) gp, vec4 rect) {
-  int n = int(gp.degreeU);
-  int m = int(gp.degreeV);
-  gNet.n = n;
-  gNet.m = m;
+  gNet.n = int(gp.degreeU);
+  gNet.m = int(gp.degreeV);
+  int n = DIVISION_NET_N;
+  int m = DIVISION_NET_M;
+#ifdef DIVISION_FIXED_POLYNOMIAL
+  const bool rational = false;  // a variant for polynomial patches only: the rational path goes
+#else
   bool rational = gp.rational != 0u;
+#endif
   // Rational: P_h − w·O, the Cartesian part moved to O, the control point of largest weight
   // (the first of equals; none if no weight is > 0): S − O has the same derivatives as S. Not
   // simply P₀₀: a screen-space patch (screen_tolerance.h) may have w₀₀ ≤ 0, or w₀₀ near 0 and

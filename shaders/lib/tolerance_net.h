@@ -30,8 +30,8 @@ void restrictDivisionNetRows(int count, int degree, int rowStride, int entryStri
 // gNet.h restricted to rect = (u0, v0, u1, v1) and reparametrised to [0,1]², in place: along u
 // (the m + 1 columns j, entries i at i·(m+1) + j), then along v (the n + 1 rows i).
 void restrictDivisionNet(vec4 rect) {
-  int n = gNet.n;
-  int m = gNet.m;
+  int n = DIVISION_NET_N;
+  int m = DIVISION_NET_M;
   if (rect.x != 0.0f || rect.z != 1.0f) restrictDivisionNetRows(m + 1, n, 1, m + 1, rect.x, rect.z);
   if (rect.y != 0.0f || rect.w != 1.0f) restrictDivisionNetRows(n + 1, m, m + 1, 1, rect.y, rect.w);
 }
@@ -41,8 +41,8 @@ void restrictDivisionNet(vec4 rect) {
 // i·(dv + 1) + j for its degrees du × dv, restricted to rect; returns its terms, and its
 // error term of differenceNetError in `error`.
 NetTerms restrictedDifferenceNet(int kind, vec4 rect, OUT(float) error) {
-  int n = gNet.n;
-  int m = gNet.m;
+  int n = DIVISION_NET_N;
+  int m = DIVISION_NET_M;
   int s = m + 1;
   int du = kind == 0 ? n - 2 : (kind == 1 ? n - 1 : n);
   int dv = kind == 0 ? m : (kind == 1 ? m - 1 : m - 2);
@@ -95,7 +95,7 @@ ToleranceTerms polynomialNetSecondBounds(vec4 rect) {
   NetTerms ss = restrictedDifferenceNet(0, rect, errors.x);
   NetTerms st = restrictedDifferenceNet(1, rect, errors.y);
   NetTerms tt = restrictedDifferenceNet(2, rect, errors.z);
-  return differenceTerms(ss, st, tt, errors, gNet.n, gNet.m, rect);
+  return differenceTerms(ss, st, tt, errors, DIVISION_NET_N, DIVISION_NET_M, rect);
 }
 
 // (M_ss, M_st, M_tt, guard) of the rational net in gNet.h (translated to its control point of
@@ -106,7 +106,7 @@ ToleranceTerms polynomialNetSecondBounds(vec4 rect) {
 // check it against the double reference). Every M is kToleranceUnbounded when the
 // weight ratios fail (w may vanish on the node).
 vec4 rationalNetSecondBounds() {
-  int count = (gNet.n + 1) * (gNet.m + 1);
+  int count = (DIVISION_NET_N + 1) * (DIVISION_NET_M + 1);
   bool anyVanished = false;
   bool anyNegative = false;
   PRECISE float big = 0.0f;
@@ -130,8 +130,8 @@ vec4 rationalNetSecondBounds() {
   PRECISE float mst = min(divisionCombine(1, ratios.x, ratios.y),
                           divisionCombine(3, ratios.x, ratios.y));
   PRECISE float mtt = divisionCombine(2, ratios.x, ratios.y);
-  int n = gNet.n;
-  int m = gNet.m;
+  int n = DIVISION_NET_N;
+  int m = DIVISION_NET_M;
   PRECISE float guard = kToleranceRoundingGuard * float(n * n + m * m) * big;
   return vec4(mss, mst, mtt, guard);
 }
