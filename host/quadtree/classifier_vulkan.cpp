@@ -32,6 +32,9 @@
 #include "quadtree_general_tolerance_p3x1_comp.h"
 #include "quadtree_general_tolerance_p3x2_comp.h"
 #include "quadtree_general_tolerance_p3x3_comp.h"
+#include "quadtree_general_tolerance_r1x2_comp.h"
+#include "quadtree_general_tolerance_r2x1_comp.h"
+#include "quadtree_general_tolerance_r2x2_comp.h"
 #include "quadtree_midpoint_comp.h"
 #include "quadtree_tolerance_comp.h"
 #include "quadtree_tolerance_nets_comp.h"
@@ -59,28 +62,39 @@ struct ShaderCode {
   size_t bytes;
 };
 
-#define TESSERA_GENERAL_VARIANT(n, m)                                       \
-  ShaderCode {                                                              \
-    "quadtree_general_tolerance_p" #n "x" #m ".comp",                       \
-        kSpirv_quadtree_general_tolerance_p##n##x##m##_comp,                \
-        sizeof(kSpirv_quadtree_general_tolerance_p##n##x##m##_comp)         \
+#define TESSERA_GENERAL_VARIANT(kind, n, m)                                   \
+  ShaderCode {                                                                \
+    "quadtree_general_tolerance_" #kind #n "x" #m ".comp",                    \
+        kSpirv_quadtree_general_tolerance_##kind##n##x##m##_comp,             \
+        sizeof(kSpirv_quadtree_general_tolerance_##kind##n##x##m##_comp)      \
   }
-// Rule T's general shader for polynomial patches of one degree pair: (n, m) at (n − 1)·3 + m − 1.
-constexpr int kVariantMaxDegree = 3;
-constexpr size_t kGeneralVariants = kVariantMaxDegree * kVariantMaxDegree;
-const std::array<ShaderCode, kGeneralVariants> kGeneralToleranceVariants = {
-    TESSERA_GENERAL_VARIANT(1, 1), TESSERA_GENERAL_VARIANT(1, 2), TESSERA_GENERAL_VARIANT(1, 3),
-    TESSERA_GENERAL_VARIANT(2, 1), TESSERA_GENERAL_VARIANT(2, 2), TESSERA_GENERAL_VARIANT(2, 3),
-    TESSERA_GENERAL_VARIANT(3, 1), TESSERA_GENERAL_VARIANT(3, 2), TESSERA_GENERAL_VARIANT(3, 3)};
+// Rule T's general shader for one degree pair (shaders/CMakeLists.txt): polynomial (n, m) up to
+// 3 × 3 at (n − 1)·3 + m − 1, then the rational pairs of conics and lines.
+constexpr uint32_t kVariantMaxDegree = 3;
+constexpr size_t kPolynomialVariants = kVariantMaxDegree * kVariantMaxDegree;
+const std::array<ShaderCode, kPolynomialVariants + 3> kGeneralToleranceVariants = {
+    TESSERA_GENERAL_VARIANT(p, 1, 1), TESSERA_GENERAL_VARIANT(p, 1, 2),
+    TESSERA_GENERAL_VARIANT(p, 1, 3), TESSERA_GENERAL_VARIANT(p, 2, 1),
+    TESSERA_GENERAL_VARIANT(p, 2, 2), TESSERA_GENERAL_VARIANT(p, 2, 3),
+    TESSERA_GENERAL_VARIANT(p, 3, 1), TESSERA_GENERAL_VARIANT(p, 3, 2),
+    TESSERA_GENERAL_VARIANT(p, 3, 3), TESSERA_GENERAL_VARIANT(r, 2, 1),
+    TESSERA_GENERAL_VARIANT(r, 1, 2), TESSERA_GENERAL_VARIANT(r, 2, 2)};
 #undef TESSERA_GENERAL_VARIANT
+constexpr size_t kGeneralVariants = kGeneralToleranceVariants.size();
 // The generic shader's place after the variants (variantOf's answer for the other patches).
 constexpr size_t kGenericShader = kGeneralVariants;
 
 // Which rule T shader classifies a patch's nodes: its variant, or the generic shader.
 size_t variantOf(const gpu::GeneralPatch& patch) {
-  const bool fits = patch.rational == 0u && patch.degreeU >= 1 && patch.degreeV >= 1 &&
-                    patch.degreeU <= kVariantMaxDegree && patch.degreeV <= kVariantMaxDegree;
-  return fits ? (patch.degreeU - 1) * kVariantMaxDegree + (patch.degreeV - 1) : kGenericShader;
+  const uint32_t n = patch.degreeU, m = patch.degreeV;
+  if (patch.rational == 0u)
+    return n >= 1 && m >= 1 && n <= kVariantMaxDegree && m <= kVariantMaxDegree
+               ? (n - 1) * kVariantMaxDegree + (m - 1)
+               : kGenericShader;
+  if (n == 2 && m == 1) return kPolynomialVariants;
+  if (n == 1 && m == 2) return kPolynomialVariants + 1;
+  if (n == 2 && m == 2) return kPolynomialVariants + 2;
+  return kGenericShader;
 }
 
 class VulkanClassifier final : public NodeClassifier {

@@ -42,6 +42,14 @@ DIVISION_STORAGE DivisionNet gNet;
 #define DIVISION_NET_N gNet.n
 #define DIVISION_NET_M gNet.m
 #endif
+// The weight ratios' q × q pieces (divisionWeightRatios, a rare path) stay a loop in those
+// variants: unrolled with everything else, they made llvmpipe's build of a rational variant
+// take 8–42 s. (GLSL's [[dont_unroll]]: the shader enables GL_EXT_control_flow_attributes.)
+#ifdef DIVISION_FIXED_DEGREE_U
+#define DIVISION_KEEP_LOOP [[dont_unroll]]
+#else
+#define DIVISION_KEEP_LOOP
+#endif
 // The scalar nets (w, β, ω) of one piece, packed so that one de Casteljau pass restricts all
 // three.
 DIVISION_STORAGE vec3 gPiece[DIVISION_MAX_POINTS];
@@ -137,8 +145,8 @@ bool divisionWeightRatios(int q, OUT(vec2) ratios) {
   int qv = DIVISION_NET_M == 0 ? 1 : q;
   int sign = 0;
   ratios = vec2(0.0f, 0.0f);
-  for (int pu = 0; pu < q; ++pu)
-    for (int pv = 0; pv < qv; ++pv) {
+  DIVISION_KEEP_LOOP for (int pu = 0; pu < q; ++pu)
+    DIVISION_KEEP_LOOP for (int pv = 0; pv < qv; ++pv) {
       for (int k = 0; k < count; ++k) {
         float wk = gNet.h[k].w;
         gPiece[k] = vec3(wk, wk == 0.0f ? 1.0f : 0.0f, abs(wk));
@@ -249,7 +257,7 @@ void divisionClassMaxima() {
   DivisionKRange ru = divisionKRange(true);
   DivisionKRange rv = divisionKRange(false);
   for (int c = 0; c < 32; ++c) gClass[c] = 0.0f;
-  for (int i = 0; i < count; ++i) {
+  DIVISION_KEEP_LOOP for (int i = 0; i < count; ++i) {
     vec4 hi = gNet.h[i];
     vec4 d1ui = gNet.d1u[i];
     vec4 d1vi = gNet.d1v[i];
@@ -257,7 +265,7 @@ void divisionClassMaxima() {
     vec4 d2vi = gNet.d2v[i];
     vec4 d11i = gNet.d11[i];
     bool vi = hi.w == 0.0f;
-    for (int j = 0; j < count; ++j) {
+    DIVISION_KEEP_LOOP for (int j = 0; j < count; ++j) {
       vec4 hj = gNet.h[j];
       vec4 d1uj = gNet.d1u[j];
       vec4 d1vj = gNet.d1v[j];

@@ -12,8 +12,10 @@ ToleranceTerms generalSecondBounds(IN(GeneralPatch) gp, vec4 rect) {
   gNet.m = int(gp.degreeV);
   int n = DIVISION_NET_N;
   int m = DIVISION_NET_M;
-#ifdef DIVISION_FIXED_POLYNOMIAL
+#if defined(DIVISION_FIXED_POLYNOMIAL)
   const bool rational = false;  // a variant for polynomial patches only: the rational path goes
+#elif defined(DIVISION_FIXED_RATIONAL)
+  const bool rational = true;  // a variant for rational patches only
 #else
   bool rational = gp.rational != 0u;
 #endif
