@@ -5,9 +5,10 @@
 // quadtree_tolerance_nets.comp.glsl then quadtree_tolerance.comp.glsl, whose pipelines are built
 // on two threads and which read the patches, the nodes and the nets as uniform texel buffers
 // (shaders/lib/tolerance_texels.glsl). Rule T on general patches sends the nodes of polynomial
-// patches of degree ≤ 3 × 3 to the variant built for their degree pair
-// (quadtree_general_tolerance_p<n>x<m>.comp, shaders/CMakeLists.txt), each variant's nodes one
-// range of the node buffer, all dispatched in one submission. Pipelines are made once per
+// patches of degree ≤ 3 × 3 and of rational ones of degree 2 × 1, 1 × 2 and 2 × 2 to the
+// variant built for their degree pair (quadtree_general_tolerance_{p,r}<n>x<m>.comp,
+// shaders/CMakeLists.txt), each shader's nodes one range of the node buffer, all dispatched in
+// one submission. Pipelines are made once per
 // (shader, rule, S), when first needed, and buffers grow and are kept between levels.
 #include <algorithm>
 #include <array>
