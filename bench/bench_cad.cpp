@@ -14,13 +14,18 @@
 // off a thin face, is projected onto the whole surface and kept if its foot lies within the
 // box grown by 1%), the largest over the corpus, as a
 // multiple of δ. A point the projection cannot place is counted, not guessed.
+// Then, at equal measured deviation (the comparison): each model meshed again by Tessera
+// at the largest scale s ≤ 1 of δ whose measured distance is no larger than OCCT's on that
+// model (matchOcctDistance), timed on every backend; the rows "at OCCT's measured distance".
 // Usage: bench_cad [relative tolerances = 0.001,0.0001] [--dir folder] [--json file] [--cpu]
 //        [--model name-part] [--detail] [--tessera-only] [--tessera-scale s] [--threads n]
+//        [--no-match]
 // --cpu leaves Vulkan out; --model keeps the models whose file name contains the text;
 // --detail prints each model's worst faces (distance, unprojected samples) for both meshers;
 // --tessera-only runs Tessera alone, unmeasured (for profiling its stages).
 // --tessera-scale s meshes Tessera at s·δ while OCCT keeps δ, distances still over δ: set s to
-// OCCT's measured distance / Tessera's to compare triangles at equal measured deviation.
+// OCCT's measured distance / Tessera's to compare the corpus at one scale (no matched rows then).
+// --no-match leaves out the rows at OCCT's measured distance.
 // --threads n gives Tessera's import and per-face stages n threads (TrimmedMeshOptions::threads,
 // default 0: all cores; 1: serial); the CPU backend's tree keeps all cores.
 #include <BRepAdaptor_Surface.hxx>
@@ -336,12 +341,92 @@ struct TesseraBackend {
 bool tesseraOnly = false;
 double tesseraScale = 1.0;
 unsigned tesseraThreads = 0;
+bool matchOcct = true;
+
+// One backend's Tessera mesh of one model at `tolerance`: conversion plus meshing, timed over
+// kMinRuns runs (after a warm-up) or run once; the fastest run's stage split.
+struct TesseraRun {
+  bench::Timing time;
+  CadImport import;
+  TrimmedMesh mesh;
+  double convertMs = 0, convertCpuMs = 0;
+  TrimmedMeshTimings timings;
+};
+
+TesseraRun runTessera(const CadFile& file, double tolerance, const TesseraBackend& backend,
+                      bool timed) {
+  TrimmedMeshOptions options;
+  options.tolerance = tolerance;
+  options.threads = tesseraThreads;
+  options.measureGeometric = false;  // measured by the bench's own code
+  // Rule T proves the kept quad-tree triangles; the gap ones are measured (refinement).
+  options.measureKeptTriangles = false;
+  TesseraRun run;
+  double fastest = 1e300;
+  const auto once = [&] {
+    const Stopwatch clock;
+    const double cpuBefore = processCpuMs();
+    run.import = toTrimmedModel(file, options.tolerance, options.threads);
+    const double convertMs = clock.elapsedMs(), convertCpuMs = processCpuMs() - cpuBefore;
+    run.mesh = meshTrimmedModel(run.import.model, options, *backend.backend, backend.trim);
+    if (clock.elapsedMs() < fastest)
+      fastest = clock.elapsedMs(), run.convertMs = convertMs, run.convertCpuMs = convertCpuMs,
+      run.timings = run.mesh.timings;
+  };
+  if (timed)
+    run.time = bench::timeRepeated(bench::kMinRuns, once);
+  else
+    once();
+  return run;
+}
+
+// Measured distances up to this share of δ count as equal when matching: both meshes are then
+// far inside δ (planes and cylinders' straight sides give fp32 rounding, 10⁻⁴ δ and less).
+constexpr double kMatchFloor = 0.05;
+
+// The scale s ≤ 1 of δ at which Tessera's measured distance on a model is no larger than
+// OCCT's there (the "at equal measured deviation"), searched on the first backend:
+// s shrinks by the ratio of the distances and 2% more, and by at least 10% a step (a tree's
+// leaves can stay the same over a small change of δ), until Tessera's distance is within
+// OCCT's. A model still above it at s = 1/4 is not matched and keeps s = 1: its distance is
+// not set by δ (e.g. edges whose 3D curves and pcurves part by more than δ, docs/cad.md).
+struct MatchedScale {
+  double scale = 1;
+  Deviation deviation;  // Tessera's at that scale
+  bool matched = true;
+};
+
+constexpr double kSmallestMatchScale = 1.0 / 16;
+
+MatchedScale matchOcctDistance(const CadFile& file, double delta, double occtDistance,
+                               const Deviation& atDelta, const TesseraBackend& backend) {
+  MatchedScale m;
+  m.deviation = atDelta;
+  const double target = std::max(occtDistance, kMatchFloor * delta);
+  while (m.deviation.max > target && m.scale > kSmallestMatchScale) {
+    m.scale = std::max(kSmallestMatchScale,
+                       m.scale * std::min(0.9, 0.98 * target / m.deviation.max));
+    const TesseraRun run = runTessera(file, m.scale * delta, backend, false);
+    m.deviation = measureDistance(tesseraTriangles(run.mesh, run.import));
+  }
+  if (gDetail)
+    std::fprintf(stderr, "  matched: OCCT %.3f δ, Tessera %.3f δ at δ, %.3f δ at %.4g δ%s\n",
+                 occtDistance / delta, atDelta.max / delta, m.deviation.max / delta, m.scale,
+                 m.deviation.max > target ? " (not matched: kept at δ)" : "");
+  if (m.deviation.max > target) m = {1, atDelta, false};
+  return m;
+}
 
 void runTolerance(bench::Report& report, const Models& models, double relative,
                   std::vector<TesseraBackend>& backends) {
   Totals occt[2];
   std::vector<Totals> tessera(backends.size());
   std::vector<Stages> stages(backends.size());
+  // At equal measured deviation (matchOcctDistance): each model at its own scale of δ.
+  std::vector<Totals> matched(backends.size());
+  std::vector<std::string> unmatched;
+  double matchedWorst = 0;  // the largest distance / δ over the models that were matched
+  const bool matching = matchOcct && !tesseraOnly && tesseraScale == 1.0;
   size_t failedFaces = 0, faces = 0;
   for (size_t f = 0; f < models.files.size(); ++f) {
     const CadFile& file = models.files[f];
@@ -351,6 +436,7 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
     // also pcurves on planes and updated tolerances), so a later mesher would see another
     // shape: OCCT meshes a copy made for this tolerance, Tessera the file's shape as read.
     const TopoDS_Shape occtShape = BRepBuilderAPI_Copy(file.shape).Shape();
+    double occtDistance = 0;  // OCCT's largest measured distance on this model
     for (int parallel = 0; parallel < (tesseraOnly ? 0 : 2); ++parallel) {
       size_t count = 0;
       std::vector<double> seconds;
@@ -367,42 +453,43 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
       TopTools_IndexedMapOfShape faceMap;
       TopExp::MapShapes(occtShape, TopAbs_FACE, faceMap);
       const Deviation d = parallel ? Deviation{} : measureDistance(soup, &faceMap, "OCCT", delta);
+      if (!parallel) occtDistance = d.max;
       occt[parallel].add(name, {seconds.front(), seconds[seconds.size() / 2], int(seconds.size())},
                          count, parallel ? Deviation{} : d, delta);
     }
     FaceTriangles lastTessera;  // the first backend's, for --detail
+    Deviation tesseraDeviation;   // the first backend's (the mirror's: the backends agree bit for bit)
+    std::vector<std::pair<bench::Timing, size_t>> atDelta;  // per backend: time, triangles
     for (size_t b = 0; b < backends.size(); ++b) {
-      TrimmedMeshOptions options;
-      options.tolerance = tesseraScale * delta;
-      options.threads = tesseraThreads;
-      options.measureGeometric = false;  // measured below by the bench's own code
-      // Rule T proves the kept quad-tree triangles; the gap ones are measured (refinement).
-      options.measureKeptTriangles = false;
-      CadImport import;
-      TrimmedMesh mesh;
-      double fastest = 1e300, fastestConvertMs = 0, fastestConvertCpuMs = 0;
-      TrimmedMeshTimings fastestTimings;
-      const bench::Timing time = bench::timeRepeated(bench::kMinRuns, [&] {
-        const Stopwatch clock;
-        const double cpuBefore = processCpuMs();
-        import = toTrimmedModel(file, options.tolerance, options.threads);
-        const double convertMs = clock.elapsedMs(), convertCpuMs = processCpuMs() - cpuBefore;
-        mesh = meshTrimmedModel(import.model, options, *backends[b].backend, backends[b].trim);
-        if (clock.elapsedMs() < fastest)
-          fastest = clock.elapsedMs(), fastestConvertMs = convertMs,
-          fastestConvertCpuMs = convertCpuMs, fastestTimings = mesh.timings;
-      });
-      stages[b].add(fastestConvertMs, fastestConvertCpuMs, fastestTimings);
+      const TesseraRun run = runTessera(file, tesseraScale * delta, backends[b], true);
+      stages[b].add(run.convertMs, run.convertCpuMs, run.timings);
       if (b == 0) {
-        faces += import.model.faces.size() + import.failures.size();
-        failedFaces += import.failures.size();
+        faces += run.import.model.faces.size() + run.import.failures.size();
+        failedFaces += run.import.failures.size();
       }
-      if (b == 0) lastTessera = tesseraTriangles(mesh, import);
-      tessera[b].add(name, time, mesh.mesh.triangleCount(),
-                     tesseraOnly ? Deviation{}
-                                 : measureDistance(b == 0 ? lastTessera : tesseraTriangles(mesh, import),
-                                                   &import.faces, "Tessera", delta),
-                     delta);
+      if (b == 0) lastTessera = tesseraTriangles(run.mesh, run.import);
+      const Deviation d =
+          tesseraOnly ? Deviation{}
+                      : measureDistance(b == 0 ? lastTessera : tesseraTriangles(run.mesh, run.import),
+                                        &run.import.faces, "Tessera", delta);
+      if (b == 0) tesseraDeviation = d;
+      tessera[b].add(name, run.time, run.mesh.mesh.triangleCount(), d, delta);
+      atDelta.emplace_back(run.time, run.mesh.mesh.triangleCount());
+    }
+    if (matching) {
+      const MatchedScale m = matchOcctDistance(file, delta, occtDistance, tesseraDeviation,
+                                               backends.front());
+      if (!m.matched) unmatched.push_back(name);
+      if (m.matched) matchedWorst = std::max(matchedWorst, m.deviation.max / delta);
+      for (size_t b = 0; b < backends.size(); ++b) {
+        if (m.scale == 1.0) {  // the mesh at δ already is
+          matched[b].add(name, atDelta[b].first, atDelta[b].second, m.deviation, delta);
+        } else {
+          const TesseraRun run = runTessera(file, m.scale * delta, backends[b], true);
+          matched[b].add(name, run.time, run.mesh.mesh.triangleCount(), m.deviation, delta);
+        }
+        matched[b].perModel.back()["scale"] = m.scale;
+      }
     }
     if (gDetail && !tesseraOnly) {
       TopTools_IndexedMapOfShape faceMap;
@@ -470,6 +557,22 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
                  t.gapCpuMs, t.refineCpuMs, t.measureCpuMs, t.emitMs, t.totalMs,
                  t.trees, t.leaves, t.trimmedAwayLeaves);
   }
+  if (matching) {
+    for (size_t b = 0; b < backends.size(); ++b) {
+      addCase("Tessera trimmed faces, " + backends[b].name + ", at OCCT's measured distance",
+              matched[b], nullptr);
+      table.cases.back().extra["unmatchedModels"] = unmatched;
+      table.cases.back().extra["distanceOverDeltaMatchedModels"] = matchedWorst;
+    }
+    std::fprintf(stderr,
+                 "  at OCCT's measured distance: each model at the largest scale of δ (at most 1) "
+                 "whose measured distance is no larger than OCCT's on it (or than %g δ), largest "
+                 "over those models %.3f δ; %zu model(s) not matched even at %g δ, kept at δ "
+                 "(their distance is not set by δ):",
+                 kMatchFloor, matchedWorst, unmatched.size(), kSmallestMatchScale);
+    for (const std::string& name : unmatched) std::fprintf(stderr, " %s", name.c_str());
+    std::fprintf(stderr, "\n");
+  }
   report.print(table);
 }
 
@@ -504,6 +607,8 @@ int main(int argc, char** argv) {
       tesseraOnly = true;
     else if (arg == "--tessera-scale" && i + 1 < argc)
       tesseraScale = std::stod(argv[++i]);
+    else if (arg == "--no-match")
+      matchOcct = false;
     else if (arg == "--threads" && i + 1 < argc)
       tesseraThreads = unsigned(std::stoul(argv[++i]));
     else
@@ -520,6 +625,7 @@ int main(int argc, char** argv) {
   report.note("occtVersion", OCC_VERSION_COMPLETE);
   report.note("tesseraScale", tesseraScale);
   report.note("tesseraThreads", tesseraThreads);
+  report.note("matchedOnOcctDistance", matchOcct && !tesseraOnly && tesseraScale == 1.0);
 
   Backend cpu = makeMirrorBackend();
   const std::unique_ptr<TrimClassifier> cpuTrim = makeMirrorTrimClassifier();
