@@ -8,8 +8,8 @@
 // patches of degree ≤ 3 × 3 and of rational ones of degree 2 × 1, 1 × 2 and 2 × 2 to the
 // variant built for their degree pair (quadtree_general_tolerance_{p,r}<n>x<m>.comp,
 // shaders/CMakeLists.txt), each shader's nodes one range of the node buffer, all dispatched in
-// one submission. Pipelines are made once per
-// (shader, rule, S), when first needed, and buffers grow and are kept between levels.
+// one submission. Pipelines are made once per (shader, rule, S), when first needed, and
+// buffers grow and are kept between levels.
 #include <algorithm>
 #include <array>
 #include <cstdint>  // before the generated SPIR-V array, which uses uint32_t

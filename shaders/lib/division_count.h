@@ -42,9 +42,11 @@ DIVISION_STORAGE DivisionNet gNet;
 #define DIVISION_NET_N gNet.n
 #define DIVISION_NET_M gNet.m
 #endif
-// The weight ratios' q × q pieces (divisionWeightRatios, a rare path) stay a loop in those
-// variants: unrolled with everything else, they made llvmpipe's build of a rational variant
-// take 8–42 s. (GLSL's [[dont_unroll]]: the shader enables GL_EXT_control_flow_attributes.)
+// Two loops of the rational path stay loops in those variants: over the pairs of control
+// points (divisionClassMaxima: (n+1)²(m+1)² pairs) and over the weight ratios' q × q pieces
+// (divisionWeightRatios, a rare path). Unrolled with everything else, they made llvmpipe's
+// build of a rational variant take 7–37 s instead of 1–2. (GLSL's [[dont_unroll]]: the shader
+// enables GL_EXT_control_flow_attributes.)
 #ifdef DIVISION_FIXED_DEGREE_U
 #define DIVISION_KEEP_LOOP [[dont_unroll]]
 #else
