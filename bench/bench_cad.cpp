@@ -15,8 +15,8 @@
 // box grown by 1%), the largest over the corpus, as a
 // multiple of δ. A point the projection cannot place is counted, not guessed.
 // Then, at equal measured deviation (the comparison): each model meshed again by Tessera
-// at the largest scale s ≤ 1 of δ whose measured distance is no larger than OCCT's on that
-// model (matchOcctDistance), timed on every backend; the rows "at OCCT's measured distance".
+// at a scale s ≤ 1 of δ at which its measured distance is no larger than OCCT's on that model
+// (matchOcctDistance), timed on every backend; the rows "at OCCT's measured distance".
 // Usage: bench_cad [relative tolerances = 0.001,0.0001] [--dir folder] [--json file] [--cpu]
 //        [--model name-part] [--detail] [--tessera-only] [--tessera-scale s] [--threads n]
 //        [--no-match]
@@ -384,11 +384,11 @@ TesseraRun runTessera(const CadFile& file, double tolerance, const TesseraBacken
 // far inside δ (planes and cylinders' straight sides give fp32 rounding, 10⁻⁴ δ and less).
 constexpr double kMatchFloor = 0.05;
 
-// The scale s ≤ 1 of δ at which Tessera's measured distance on a model is no larger than
-// OCCT's there (the "at equal measured deviation"), searched on the first backend:
-// s shrinks by the ratio of the distances and 2% more, and by at least 10% a step (a tree's
+// A scale s ≤ 1 of δ at which Tessera's measured distance on a model is no larger than OCCT's
+// there (the "at equal measured deviation"), searched on the first backend: from 1, s
+// shrinks by the ratio of the distances and 2% more, and by at least 10% a step (a tree's
 // leaves can stay the same over a small change of δ), until Tessera's distance is within
-// OCCT's. A model still above it at s = 1/4 is not matched and keeps s = 1: its distance is
+// OCCT's. A model still above it at s = 1/16 is not matched and keeps s = 1: its distance is
 // not set by δ (e.g. edges whose 3D curves and pcurves part by more than δ, docs/cad.md).
 struct MatchedScale {
   double scale = 1;
@@ -565,8 +565,8 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
       table.cases.back().extra["distanceOverDeltaMatchedModels"] = matchedWorst;
     }
     std::fprintf(stderr,
-                 "  at OCCT's measured distance: each model at the largest scale of δ (at most 1) "
-                 "whose measured distance is no larger than OCCT's on it (or than %g δ), largest "
+                 "  at OCCT's measured distance: each model at a scale of δ (at most 1) at which "
+                 "its measured distance is no larger than OCCT's on it (or than %g δ), largest "
                  "over those models %.3f δ; %zu model(s) not matched even at %g δ, kept at δ "
                  "(their distance is not set by δ):",
                  kMatchFloor, matchedWorst, unmatched.size(), kSmallestMatchScale);
