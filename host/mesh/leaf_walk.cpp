@@ -38,7 +38,8 @@ class LeafWalker {
       : seams_(tables.seams),
         topology_(tables.seams.topology()),
         lines_(tables.lines),
-        merges_(tables.merges) {}
+        merges_(tables.merges),
+        mergeTargets_(tables.mergeTargets) {}
 
   void walk(const std::vector<QuadLeaf>& leaves, size_t begin, size_t end, uint32_t firstPatch,
             uint32_t endPatch, LeafRun& run) {
@@ -46,11 +47,18 @@ class LeafWalker {
     work.out = &run;
     // About one distinct vertex per leaf in a run, a few more on its border.
     work.place.reserve(2 * (end - begin));
+    work.cover.reserve(2 * (end - begin));
     for (size_t l = begin; l < end; ++l) {
       const QuadLeaf& leaf = leaves[l];
       work.silent = leaf.patchIndex < firstPatch || leaf.patchIndex >= endPatch;
       triangulateLeaf(leaf, lines_.leafLinesU[l], lines_.leafLinesV[l], work);
     }
+    // A merge target is also asked for by the leaves around the points merged into it.
+    const bool anyTargets = !mergeTargets_.empty();
+    for (uint32_t k = 0; k < work.cover.size(); ++k)
+      if (work.cover[k] != kAllAround ||
+          (anyTargets && mergeTargets_.count(run.vertices[k].key) != 0))
+        run.border.push_back(k);
   }
 
  private:
@@ -60,10 +68,19 @@ class LeafWalker {
     bool operator==(const RingVertex& o) const { return vertex == o.vertex; }
   };
 
+  // How much of the neighbourhood of a vertex's point the run's leaves cover, in quarters:
+  // a leaf asks for a point as its corner (1), inside its edge (2) or inside itself (4, the
+  // fan's centre). The leaves of a patch tile it, so 4 quarters are all the leaves that touch
+  // the point. kElsewhere: the key is not the point's own (a patch corner, a shared or folded
+  // side's point, a merged one), so leaves away from the point may ask for it too.
+  static constexpr uint32_t kCorner = 1, kEdge = 2, kInside = 4, kAllAround = 4,
+                            kElsewhere = 0x100;
+
   // One thread's walk: where it writes, and the leaf being triangulated.
   struct LeafWork {
     LeafRun* out = nullptr;
     HashMap<VertexKey, uint32_t, VertexKeyHash> place;  // key → its place in out->vertices
+    std::vector<uint32_t> cover;  // per place, the quarters covered (kAllAround …)
     bool silent = false;        // the leaf is outside the scope
     bool touchesFold = false;   // it has a vertex on a folded side
     bool touchesMerge = false;  // ... or a vertex merged into a near one
@@ -74,21 +91,28 @@ class LeafWalker {
     std::vector<float> scratch;
   };
 
-  static RingVertex query(LeafWork& work, const VertexKey& key, uint32_t patch, glm::vec2 uv) {
+  // `cover`: the quarters around the vertex's point that the leaf covers (kCorner …).
+  static RingVertex query(LeafWork& work, const VertexKey& key, uint32_t patch, glm::vec2 uv,
+                          uint32_t cover) {
     std::vector<VertexQuery>& vertices = work.out->vertices;
     const auto [place, added] = work.place.try_emplace(key, uint32_t(vertices.size()));
-    if (added) vertices.push_back({key, patch, uv});
+    if (added) {
+      vertices.push_back({key, patch, uv});
+      work.cover.push_back(0);
+    }
+    work.cover[place->second] += key.kind == kPatchParam ? cover : kElsewhere;
     return {place->second, uv};
   }
 
   // The vertex at (u, v) of `patch`, welded with every other patch's vertex at that point and
   // with the near points merged into it.
-  RingVertex vertexAt(LeafWork& work, uint32_t patch, float u, float v) {
+  RingVertex vertexAt(LeafWork& work, uint32_t patch, float u, float v, uint32_t cover) {
     int side;
     float t;
     if (onSide(u, v, side, t) && seams_.foldOf(patch, side) >= 0) work.touchesFold = true;
-    return query(work, merges_.resolve(seams_.baseKey(patch, u, v), work.touchesMerge), patch,
-                 glm::vec2(u, v));
+    const VertexKey base = seams_.baseKey(patch, u, v);
+    const VertexKey key = merges_.resolve(base, work.touchesMerge);
+    return query(work, key, patch, glm::vec2(u, v), key == base ? cover : kElsewhere);
   }
 
   // Appends the vertices strictly inside the leaf edge from t0 to t1 (in ring order) on the
@@ -100,11 +124,6 @@ class LeafWalker {
     int side = -1;
     if (alongU && (fixed == 0.0f || fixed == 1.0f)) side = fixed == 0.0f ? kSideV0 : kSideV1;
     if (!alongU && (fixed == 0.0f || fixed == 1.0f)) side = fixed == 0.0f ? kSideU0 : kSideU1;
-    // A listed point is a vertex of its own: no merge to look up.
-    auto place = [&](float t) {
-      const glm::vec2 uv = alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
-      ring.push_back(query(work, seams_.baseKey(patch, uv.x, uv.y), patch, uv));
-    };
     if (side >= 0) {
       const SideInfo& s = topology_.sides[patch][side];
       if (s.collapsed) return;  // every point of it is the same vertex
@@ -120,7 +139,7 @@ class LeafWalker {
           float t = s.reversed ? 1.0f - c : c;
           glm::vec2 uv = alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
           // A listed point is a vertex of its own: no merge to look up.
-          ring.push_back(query(work, {kEdgeParam, uint32_t(s.group), bits(c)}, patch, uv));
+          ring.push_back(query(work, {kEdgeParam, uint32_t(s.group), bits(c)}, patch, uv, kElsewhere));
         }
         return;
       }
@@ -133,7 +152,7 @@ class LeafWalker {
         if (t0 > t1) std::reverse(inside.begin(), inside.end());
         for (const auto& [t, key] : inside) {
           glm::vec2 uv = alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
-          ring.push_back(query(work, key, patch, uv));
+          ring.push_back(query(work, key, patch, uv, kElsewhere));
         }
         return;
       }
@@ -141,12 +160,18 @@ class LeafWalker {
     const LineIndex& lines = alongU ? lines_.alongU : lines_.alongV;
     const PointRange<const LinePoint> points = lines.points(line);
     const auto& movedOn = alongU ? merges_.movedAlongU : merges_.movedAlongV;
+    const float lo = std::min(t0, t1), hi = std::max(t0, t1);  // the edge, before moving
     if (!movedOn.empty())
       if (auto moved = movedOn.find(lineKey(patch, fixed)); moved != movedOn.end())
         t0 = movedTo(moved->second, t0), t1 = movedTo(moved->second, t1);
     between(points, std::min(t0, t1), std::max(t0, t1), scratch);
     if (t0 > t1) std::reverse(scratch.begin(), scratch.end());
-    for (float t : scratch) place(t);
+    for (float t : scratch) {
+      const glm::vec2 uv = alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
+      // A listed point is a vertex of its own: no merge to look up.
+      ring.push_back(query(work, seams_.baseKey(patch, uv.x, uv.y), patch, uv,
+                           t > lo && t < hi ? kEdge : kElsewhere));
+    }
   }
 
   static void emit(LeafWork& work, uint32_t patch, const RingVertex& a, const RingVertex& b,
@@ -236,13 +261,13 @@ class LeafWalker {
     work.touchesFold = work.touchesMerge = false;
     // Counter-clockwise: bottom (v0, u rising), right (u1, v rising), top (v1, u falling),
     // left (u0, v falling); each edge contributes its start corner and interior vertices.
-    ring.push_back(vertexAt(work, p, r.x, r.y));
+    ring.push_back(vertexAt(work, p, r.x, r.y, kCorner));
     edgeInterior(work, p, true, r.y, linesU[0], r.x, r.z);
-    ring.push_back(vertexAt(work, p, r.z, r.y));
+    ring.push_back(vertexAt(work, p, r.z, r.y, kCorner));
     edgeInterior(work, p, false, r.z, linesV[1], r.y, r.w);
-    ring.push_back(vertexAt(work, p, r.z, r.w));
+    ring.push_back(vertexAt(work, p, r.z, r.w, kCorner));
     edgeInterior(work, p, true, r.w, linesU[1], r.z, r.x);
-    ring.push_back(vertexAt(work, p, r.x, r.w));
+    ring.push_back(vertexAt(work, p, r.x, r.w, kCorner));
     edgeInterior(work, p, false, r.x, linesV[0], r.w, r.y);
 
     const bool folded = work.touchesFold && dropFoldedBack(ring);
@@ -267,7 +292,7 @@ class LeafWalker {
       us = 0.5f * (r.x + r.z);
       vs = 0.5f * (r.y + r.w);
     }
-    const RingVertex center = vertexAt(work, p, us, vs);
+    const RingVertex center = vertexAt(work, p, us, vs, kInside);
     for (size_t k = 0; k < ring.size(); ++k)
       emit(work, p, center, ring[k], ring[(k + 1) % ring.size()]);
   }
@@ -276,6 +301,7 @@ class LeafWalker {
   const PatchTopology& topology_;
   const LinePoints& lines_;
   const NearPointMerges& merges_;
+  const HashSet<VertexKey, VertexKeyHash>& mergeTargets_;
 };
 
 }  // namespace

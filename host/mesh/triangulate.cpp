@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "common/first_occurrence.h"
+#include "common/hash_map.h"
 #include "common/parallel_for.h"
 #include "mesh/detail/leaf_walk.h"
 #include "mesh/detail/one_leaf.h"
@@ -40,7 +41,9 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
   // the same order as in the whole mesh, so a shared vertex takes the same patch's (u, v).
   // The walk reads the line indices, merges and folds only, so runs of leaves are walked on
   // several threads (LeafRun).
-  const LeafWalkTables tables{seams, lines, merges};
+  HashSet<VertexKey, VertexKeyHash> mergeTargets;
+  for (const auto& [key, target] : merges.merged) mergeTargets.insert(target);
+  const LeafWalkTables tables{seams, lines, merges, mergeTargets};
   const size_t runLength = 512;
   std::vector<LeafRun> runs((leaves.size() + runLength - 1) / runLength);
   parallelForChunks(leaves.size(), runLength, scope.threads, [&](size_t begin, size_t end) {
@@ -53,25 +56,34 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
 
   // A key's first query in leaf order is its first query in the first run that has it: the
   // runs' vertices, run by run, meet the keys in the order one walk would. The vertices are
-  // numbered in that order.
-  std::vector<size_t> runStart(runs.size() + 1, 0);
-  for (size_t r = 0; r < runs.size(); ++r) runStart[r + 1] = runStart[r] + runs[r].vertices.size();
+  // numbered in that order. Only a run's border keys (LeafRun::border) can be another run's.
+  std::vector<size_t> borderStart(runs.size() + 1, 0);
+  for (size_t r = 0; r < runs.size(); ++r)
+    borderStart[r + 1] = borderStart[r] + runs[r].border.size();
   const auto forEachKey = [&](auto&& visit) {
     for (size_t r = 0; r < runs.size(); ++r)
-      for (size_t k = 0; k < runs[r].vertices.size(); ++k)
-        visit(runStart[r] + k, runs[r].vertices[k].key);
+      for (size_t j = 0; j < runs[r].border.size(); ++j)
+        visit(borderStart[r] + j, runs[r].vertices[runs[r].border[j]].key);
   };
   const std::vector<uint32_t> first = firstOccurrences<VertexKey, VertexKeyHash>(
-      runStart.back(), leaves.size() * 5 / 4, forEachKey, scope.threads);
+      borderStart.back(), borderStart.back(), forEachKey, scope.threads);
+  std::vector<uint32_t> borderIds(borderStart.back());
+  std::vector<size_t> runStart(runs.size() + 1, 0);
+  for (size_t r = 0; r < runs.size(); ++r) runStart[r + 1] = runStart[r] + runs[r].vertices.size();
   std::vector<uint32_t> ids(runStart.back());
   size_t triangles = 0;
   std::vector<size_t> firstTriangle(runs.size());
   for (size_t r = 0; r < runs.size(); ++r) {
     const LeafRun& run = runs[r];
+    size_t j = 0;  // the run's next border place
     for (size_t k = 0, q = runStart[r]; k < run.vertices.size(); ++k, ++q) {
-      if (first[q] != q) {
-        ids[q] = ids[first[q]];
-        continue;
+      if (j < run.border.size() && run.border[j] == k) {
+        const size_t b = borderStart[r] + j++;
+        if (first[b] != b) {
+          ids[q] = borderIds[b] = borderIds[first[b]];
+          continue;
+        }
+        borderIds[b] = uint32_t(mesh.vertices.size());
       }
       const VertexQuery& query = run.vertices[k];
       ids[q] = uint32_t(mesh.vertices.size());

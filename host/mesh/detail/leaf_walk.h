@@ -35,6 +35,11 @@ struct RunTriangle {
 // walk finds a run's own repeats in a table small enough for the cache, on the run's thread.
 struct LeafRun {
   std::vector<VertexQuery> vertices;
+  // The places in `vertices` whose keys other runs may also ask for, ascending: the rest are
+  // points of a patch that this run's leaves surround on all four sides (and no near point is
+  // merged into), which no leaf of another run touches: the quad-tree's leaves tile each patch.
+  // Only these need the numbering's cross-run lookup.
+  std::vector<uint32_t> border;
   std::vector<RunTriangle> triangles;
   size_t droppedTriangles = 0, diagonalFans = 0;
 };
@@ -45,6 +50,7 @@ struct LeafWalkTables {
   SeamVertices& seams;
   const LinePoints& lines;
   const NearPointMerges& merges;
+  const HashSet<VertexKey, VertexKeyHash>& mergeTargets;  // the keys near points merge into
 };
 
 // Walks leaves [begin, end) into `run`; leaves of patches outside [firstPatch, endPatch) are
