@@ -225,6 +225,15 @@ class LeafWalker {
            cause == gpu::kCauseEyePlane;
   }
 
+  // Whether the ring is the leaf's four corners (of a rectangle of some area), four vertices.
+  static bool cornerRing(const std::vector<RingVertex>& ring, const gpu::vec4& r) {
+    const auto distinct = [&](size_t a, size_t b) { return !(ring[a] == ring[b]); };
+    return r.x < r.z && r.y < r.w && ring[0].uv == glm::vec2(r.x, r.y) &&
+           ring[1].uv == glm::vec2(r.z, r.y) && ring[2].uv == glm::vec2(r.z, r.w) &&
+           ring[3].uv == glm::vec2(r.x, r.w) && distinct(0, 1) && distinct(0, 2) &&
+           distinct(0, 3) && distinct(1, 2) && distinct(1, 3) && distinct(2, 3);
+  }
+
   // The ring as n − 2 triangles without a new vertex (ring_triangulation.h). Only where every
   // vertex is met once, or twice in a row (a collapsed side's two corners, whose triangle
   // collapses and is dropped as in the fan): otherwise the fan, whose triangles each hold one
@@ -233,6 +242,19 @@ class LeafWalker {
                               uint32_t diagonal) {
     const std::vector<RingVertex>& ring = work.ring;
     const size_t n = ring.size();
+    if (n == 4 && cornerRing(ring, r)) {
+      // What triangulateRectangleRingAlong gives four distinct corners: a triangle per half.
+      if (diagonal == gpu::kToleranceAntiDiagonal) {
+        emit(work, patch, ring[3], ring[1], ring[2]);
+        emit(work, patch, ring[1], ring[3], ring[0]);
+        return true;
+      }
+      if (diagonal == gpu::kToleranceMainDiagonal) {
+        emit(work, patch, ring[2], ring[0], ring[1]);
+        emit(work, patch, ring[0], ring[2], ring[3]);
+        return true;
+      }
+    }
     work.ringUv.resize(n);
     work.ringVertices.resize(n);
     for (size_t k = 0; k < n; ++k) {
@@ -242,8 +264,8 @@ class LeafWalker {
     std::sort(work.ringVertices.begin(), work.ringVertices.end());
     std::vector<uint32_t>& sorted = work.ringVertices;
     const size_t distinct = size_t(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
-    size_t repeats = 0;
-    for (size_t k = 0; k < n; ++k) repeats += ring[k] == ring[(k + 1) % n];
+    size_t repeats = ring[n - 1] == ring[0];
+    for (size_t k = 0; k + 1 < n; ++k) repeats += ring[k] == ring[k + 1];
     if (distinct + repeats != n) return false;
     if (!triangulateRectangleRingAlong(work.ringUv, {r.x, r.y}, {r.z, r.w}, diagonal,
                                        work.ringTriangles))

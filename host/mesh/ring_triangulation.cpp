@@ -30,6 +30,7 @@ double boundaryPosition(glm::dvec2 s, uint32_t sides) {
 struct RingWork {
   std::vector<uint32_t> sides, prev, next;
   std::vector<glm::dvec2> local;
+  std::vector<double> position;  // boundaryPosition of each point
   std::vector<uint8_t> alive;
   std::vector<glm::vec2> half;  // triangulateRectangleRingAlong's halves
   std::vector<uint32_t> original;
@@ -49,19 +50,24 @@ bool triangulateRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, glm::vec2
   const glm::dvec2 origin(lo), size = glm::dvec2(hi) - glm::dvec2(lo);
   std::vector<uint32_t>& sides = work.sides;
   std::vector<glm::dvec2>& local = work.local;
+  std::vector<double>& position = work.position;
   sides.resize(n);
   local.resize(n);
-  uint32_t descents = 0;  // a counter-clockwise ring of distinct points wraps around once
+  position.resize(n);
   for (size_t i = 0; i < n; ++i) {
     sides[i] = sidesOf(ring[i], lo, hi);
     if (sides[i] == 0) return false;
     local[i] = (glm::dvec2(ring[i]) - origin) / size;
+    position[i] = boundaryPosition(local[i], sides[i]);
   }
-  for (size_t i = 0; i < n; ++i) {
-    const size_t j = (i + 1) % n;
-    if (boundaryPosition(local[j], sides[j]) <= boundaryPosition(local[i], sides[i])) ++descents;
-  }
+  uint32_t descents = position[0] <= position[n - 1];  // a ring of distinct points wraps once
+  for (size_t i = 0; i + 1 < n; ++i) descents += position[i + 1] <= position[i];
   if (descents != 1) return false;
+  if (n == 3) {  // the one ear, as the clipping below would give it, unless on one side
+    if (sides[0] & sides[1] & sides[2]) return false;
+    triangles.push_back({2, 0, 1});
+    return true;
+  }
 
   std::vector<uint32_t>& prev = work.prev;
   std::vector<uint32_t>& next = work.next;
@@ -71,8 +77,8 @@ bool triangulateRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, glm::vec2
   alive.assign(n, 1);
   uint32_t onSide[4] = {0, 0, 0, 0};  // points left on each side
   for (size_t i = 0; i < n; ++i) {
-    prev[i] = uint32_t((i + n - 1) % n);
-    next[i] = uint32_t((i + 1) % n);
+    prev[i] = uint32_t(i == 0 ? n - 1 : i - 1);
+    next[i] = uint32_t(i + 1 == n ? 0 : i + 1);
     for (int s = 0; s < 4; ++s) onSide[s] += (sides[i] >> s) & 1u;
   }
   for (int s = 0; s < 4; ++s)
@@ -81,14 +87,18 @@ bool triangulateRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, glm::vec2
   for (size_t left = n; left > 3; --left) {
     size_t best = n;
     double shortest = std::numeric_limits<double>::infinity();
+    // The sides whose points would be all the other left − 1 points with point i gone: those
+    // holding left − 1 points and not i, or left points and i.
+    uint32_t flatWithout = 0, flatWith = 0;
+    for (uint32_t s = 0; s < 4; ++s) {
+      flatWithout |= uint32_t(onSide[s] == left - 1) << s;
+      flatWith |= uint32_t(onSide[s] == left) << s;
+    }
     for (size_t i = 0; i < n; ++i) {
       if (!alive[i]) continue;
       const uint32_t a = prev[i], c = next[i];
       if (sides[a] & sides[i] & sides[c]) continue;  // collinear: zero area
-      bool leftoverFlat = false;                     // the other left − 1 points all on one side
-      for (int s = 0; s < 4; ++s)
-        leftoverFlat = leftoverFlat || onSide[s] - ((sides[i] >> s) & 1u) == left - 1;
-      if (leftoverFlat) continue;
+      if ((~sides[i] & flatWithout) | (sides[i] & flatWith)) continue;  // leftover on one side
       const glm::dvec2 d = local[c] - local[a];
       const double length2 = glm::dot(d, d);
       if (length2 < shortest) shortest = length2, best = i;
