@@ -4,6 +4,7 @@
 // meshes keep, so the numbering is a contract.
 #include <catch2/catch.hpp>
 
+#include "mesh/detail/run_places.h"
 #include "mesh/line_index.h"
 
 using namespace tessera;
@@ -56,4 +57,27 @@ TEST_CASE("line index: the merge walk order is std::unordered_map's", "[triangul
   std::vector<uint32_t> lines;
   for (const auto& entry : expected) lines.push_back(entry.second);
   REQUIRE(index.unorderedMapOrder(16) == lines);
+}
+
+// The leaf walk's key → place table (mesh/detail/run_places.h), past the size it was made for:
+// every key keeps the place it was first given, whatever its kind, however the table grew.
+TEST_CASE("run places: a key keeps its first place as the table grows", "[triangulate]") {
+  using namespace tessera::triangulate_detail;
+  RunPlaces places(4);
+  const auto keyOf = [](uint32_t k) {
+    return VertexKey{k % 4, k / 3, uint64_t(k) * 0x10001ull};
+  };
+  for (uint32_t k = 0; k < 3000; ++k) {
+    bool added = false;
+    REQUIRE(places.findOrAdd(keyOf(k), k, added) == k);
+    REQUIRE(added);
+    // Asked again with another place: the first one, nothing added.
+    REQUIRE(places.findOrAdd(keyOf(k), 99999, added) == k);
+    REQUIRE_FALSE(added);
+  }
+  for (uint32_t k = 0; k < 3000; ++k) {
+    bool added = true;
+    REQUIRE(places.findOrAdd(keyOf(k), 99999, added) == k);
+    REQUIRE_FALSE(added);
+  }
 }

@@ -10,6 +10,7 @@
 #include <map>
 
 #include "common/hash_map.h"
+#include "mesh/detail/run_places.h"
 #include "mesh/ring_triangulation.h"
 
 namespace tessera::triangulate_detail {
@@ -46,7 +47,7 @@ class LeafWalker {
     LeafWork work;
     work.out = &run;
     // About one distinct vertex per leaf in a run, a few more on its border.
-    work.place.reserve(2 * (end - begin));
+    work.place = RunPlaces(3 * (end - begin) / 2);
     work.cover.reserve(2 * (end - begin));
     for (size_t l = begin; l < end; ++l) {
       const QuadLeaf& leaf = leaves[l];
@@ -79,7 +80,7 @@ class LeafWalker {
   // One thread's walk: where it writes, and the leaf being triangulated.
   struct LeafWork {
     LeafRun* out = nullptr;
-    HashMap<VertexKey, uint32_t, VertexKeyHash> place;  // key → its place in out->vertices
+    RunPlaces place{0};  // key → its place in out->vertices
     std::vector<uint32_t> cover;  // per place, the quarters covered (kAllAround …)
     bool silent = false;        // the leaf is outside the scope
     bool touchesFold = false;   // it has a vertex on a folded side
@@ -95,13 +96,14 @@ class LeafWalker {
   static RingVertex query(LeafWork& work, const VertexKey& key, uint32_t patch, glm::vec2 uv,
                           uint32_t cover) {
     std::vector<VertexQuery>& vertices = work.out->vertices;
-    const auto [place, added] = work.place.try_emplace(key, uint32_t(vertices.size()));
+    bool added;
+    const uint32_t place = work.place.findOrAdd(key, uint32_t(vertices.size()), added);
     if (added) {
       vertices.push_back({key, patch, uv});
       work.cover.push_back(0);
     }
-    work.cover[place->second] += key.kind == kPatchParam ? cover : kElsewhere;
-    return {place->second, uv};
+    work.cover[place] += key.kind == kPatchParam ? cover : kElsewhere;
+    return {place, uv};
   }
 
   // The vertex at (u, v) of `patch`, welded with every other patch's vertex at that point and
