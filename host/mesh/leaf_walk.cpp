@@ -106,26 +106,34 @@ class LeafWalker {
     return {place, uv};
   }
 
+  // The key of a point strictly inside its patch: baseKey's, without looking for a side.
+  static VertexKey innerKey(uint32_t patch, float u, float v) {
+    return {kPatchParam, patch, (uint64_t(bits(u)) << 32) | bits(v)};
+  }
+
   // The vertex at (u, v) of `patch`, welded with every other patch's vertex at that point and
-  // with the near points merged into it.
-  RingVertex vertexAt(LeafWork& work, uint32_t patch, float u, float v, uint32_t cover) {
+  // with the near points merged into it. `inner`: (u, v) is strictly inside the patch.
+  RingVertex vertexAt(LeafWork& work, uint32_t patch, float u, float v, uint32_t cover,
+                      bool inner) {
     int side;
     float t;
-    if (onSide(u, v, side, t) && seams_.foldOf(patch, side) >= 0) work.touchesFold = true;
-    const VertexKey base = seams_.baseKey(patch, u, v);
+    if (!inner && onSide(u, v, side, t) && seams_.foldOf(patch, side) >= 0) work.touchesFold = true;
+    const VertexKey base = inner ? innerKey(patch, u, v) : seams_.baseKey(patch, u, v);
     const VertexKey key = merges_.resolve(base, work.touchesMerge);
     return query(work, key, patch, glm::vec2(u, v), key == base ? cover : kElsewhere);
   }
 
   // Appends the vertices strictly inside the leaf edge from t0 to t1 (in ring order) on the
   // line `fixed` (v = fixed when alongU, else u = fixed), number `line` in its LineIndex.
+  // `inner`: the leaf is strictly inside its patch (so is every point of its edges' lines
+  // between its corners).
   void edgeInterior(LeafWork& work, uint32_t patch, bool alongU, float fixed, uint32_t line,
-                    float t0, float t1) {
+                    float t0, float t1, bool inner) {
     std::vector<RingVertex>& ring = work.ring;
     std::vector<float>& scratch = work.scratch;
     int side = -1;
-    if (alongU && (fixed == 0.0f || fixed == 1.0f)) side = fixed == 0.0f ? kSideV0 : kSideV1;
-    if (!alongU && (fixed == 0.0f || fixed == 1.0f)) side = fixed == 0.0f ? kSideU0 : kSideU1;
+    if (!inner && alongU && (fixed == 0.0f || fixed == 1.0f)) side = fixed == 0.0f ? kSideV0 : kSideV1;
+    if (!inner && !alongU && (fixed == 0.0f || fixed == 1.0f)) side = fixed == 0.0f ? kSideU0 : kSideU1;
     if (side >= 0) {
       const SideInfo& s = topology_.sides[patch][side];
       if (s.collapsed) return;  // every point of it is the same vertex
@@ -166,14 +174,21 @@ class LeafWalker {
     if (!movedOn.empty())
       if (auto moved = movedOn.find(lineKey(patch, fixed)); moved != movedOn.end())
         t0 = movedTo(moved->second, t0), t1 = movedTo(moved->second, t1);
-    between(points, std::min(t0, t1), std::max(t0, t1), scratch);
-    if (t0 > t1) std::reverse(scratch.begin(), scratch.end());
-    for (float t : scratch) {
+    // The points strictly between the (moved) ends, in ring order. A listed point is a vertex
+    // of its own: no merge to look up.
+    const LinePoint* first = std::upper_bound(points.begin(), points.end(), std::min(t0, t1),
+                                              [](float t, const LinePoint& p) { return t < p.t; });
+    const LinePoint* last = first;
+    for (const float end = std::max(t0, t1); last != points.end() && last->t < end;) ++last;
+    const auto place = [&](float t) {
       const glm::vec2 uv = alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
-      // A listed point is a vertex of its own: no merge to look up.
-      ring.push_back(query(work, seams_.baseKey(patch, uv.x, uv.y), patch, uv,
-                           t > lo && t < hi ? kEdge : kElsewhere));
-    }
+      const VertexKey key = inner ? innerKey(patch, uv.x, uv.y) : seams_.baseKey(patch, uv.x, uv.y);
+      ring.push_back(query(work, key, patch, uv, t > lo && t < hi ? kEdge : kElsewhere));
+    };
+    if (t0 <= t1)
+      for (const LinePoint* p = first; p != last; ++p) place(p->t);
+    else
+      for (const LinePoint* p = last; p != first;) place((--p)->t);
   }
 
   static void emit(LeafWork& work, uint32_t patch, const RingVertex& a, const RingVertex& b,
@@ -285,14 +300,16 @@ class LeafWalker {
     work.touchesFold = work.touchesMerge = false;
     // Counter-clockwise: bottom (v0, u rising), right (u1, v rising), top (v1, u falling),
     // left (u0, v falling); each edge contributes its start corner and interior vertices.
-    ring.push_back(vertexAt(work, p, r.x, r.y, kCorner));
-    edgeInterior(work, p, true, r.y, linesU[0], r.x, r.z);
-    ring.push_back(vertexAt(work, p, r.z, r.y, kCorner));
-    edgeInterior(work, p, false, r.z, linesV[1], r.y, r.w);
-    ring.push_back(vertexAt(work, p, r.z, r.w, kCorner));
-    edgeInterior(work, p, true, r.w, linesU[1], r.z, r.x);
-    ring.push_back(vertexAt(work, p, r.x, r.w, kCorner));
-    edgeInterior(work, p, false, r.x, linesV[0], r.w, r.y);
+    // Most leaves touch no side of their patch: no side, fold or patch corner to look for.
+    const bool inner = r.x > 0.0f && r.z < 1.0f && r.y > 0.0f && r.w < 1.0f;
+    ring.push_back(vertexAt(work, p, r.x, r.y, kCorner, inner));
+    edgeInterior(work, p, true, r.y, linesU[0], r.x, r.z, inner);
+    ring.push_back(vertexAt(work, p, r.z, r.y, kCorner, inner));
+    edgeInterior(work, p, false, r.z, linesV[1], r.y, r.w, inner);
+    ring.push_back(vertexAt(work, p, r.z, r.w, kCorner, inner));
+    edgeInterior(work, p, true, r.w, linesU[1], r.z, r.x, inner);
+    ring.push_back(vertexAt(work, p, r.x, r.w, kCorner, inner));
+    edgeInterior(work, p, false, r.x, linesV[0], r.w, r.y, inner);
 
     const bool folded = work.touchesFold && dropFoldedBack(ring);
     if (work.touchesMerge) dropRepeats(ring);
@@ -316,7 +333,7 @@ class LeafWalker {
       us = 0.5f * (r.x + r.z);
       vs = 0.5f * (r.y + r.w);
     }
-    const RingVertex center = vertexAt(work, p, us, vs, kInside);
+    const RingVertex center = vertexAt(work, p, us, vs, kInside, false);
     for (size_t k = 0; k < ring.size(); ++k)
       emit(work, p, center, ring[k], ring[(k + 1) % ring.size()]);
   }
