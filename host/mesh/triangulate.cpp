@@ -7,11 +7,11 @@
 #include <optional>
 #include <utility>
 
-#include "common/first_occurrence.h"
 #include "common/hash_map.h"
 #include "common/parallel_for.h"
 #include "mesh/detail/leaf_walk.h"
 #include "mesh/detail/one_leaf.h"
+#include "mesh/detail/run_places.h"
 
 namespace tessera {
 
@@ -56,18 +56,11 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
 
   // A key's first query in leaf order is its first query in the first run that has it: the
   // runs' vertices, run by run, meet the keys in the order one walk would. The vertices are
-  // numbered in that order. Only a run's border keys (LeafRun::border) can be another run's.
-  std::vector<size_t> borderStart(runs.size() + 1, 0);
-  for (size_t r = 0; r < runs.size(); ++r)
-    borderStart[r + 1] = borderStart[r] + runs[r].border.size();
-  const auto forEachKey = [&](auto&& visit) {
-    for (size_t r = 0; r < runs.size(); ++r)
-      for (size_t j = 0; j < runs[r].border.size(); ++j)
-        visit(borderStart[r] + j, runs[r].vertices[runs[r].border[j]].key);
-  };
-  const std::vector<uint32_t> first = firstOccurrences<VertexKey, VertexKeyHash>(
-      borderStart.back(), borderStart.back(), forEachKey, scope.threads);
-  std::vector<uint32_t> borderIds(borderStart.back());
+  // numbered in that order. Only a run's border keys (LeafRun::border) can be another run's:
+  // only they are looked up, in one table (a few thousand keys: one thread).
+  size_t borderKeys = 0;
+  for (const LeafRun& run : runs) borderKeys += run.border.size();
+  RunPlaces borderIds(borderKeys);
   std::vector<size_t> runStart(runs.size() + 1, 0);
   for (size_t r = 0; r < runs.size(); ++r) runStart[r + 1] = runStart[r] + runs[r].vertices.size();
   std::vector<uint32_t> ids(runStart.back());
@@ -77,16 +70,16 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
     const LeafRun& run = runs[r];
     size_t j = 0;  // the run's next border place
     for (size_t k = 0, q = runStart[r]; k < run.vertices.size(); ++k, ++q) {
-      if (j < run.border.size() && run.border[j] == k) {
-        const size_t b = borderStart[r] + j++;
-        if (first[b] != b) {
-          ids[q] = borderIds[b] = borderIds[first[b]];
-          continue;
-        }
-        borderIds[b] = uint32_t(mesh.vertices.size());
-      }
       const VertexQuery& query = run.vertices[k];
-      ids[q] = uint32_t(mesh.vertices.size());
+      const uint32_t id = uint32_t(mesh.vertices.size());
+      if (j < run.border.size() && run.border[j] == k) {
+        ++j;
+        bool added;
+        ids[q] = borderIds.findOrAdd(query.key, id, added);
+        if (!added) continue;
+      } else {
+        ids[q] = id;
+      }
       mesh.vertices.push_back({query.patch, query.uv.x, query.uv.y});
       if (scope.seamKeys) mesh.seamKeys.push_back(seams.seamKeyOf(query.key));
     }
