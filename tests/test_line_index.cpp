@@ -59,6 +59,26 @@ TEST_CASE("line index: the merge walk order is std::unordered_map's", "[triangul
   REQUIRE(index.unorderedMapOrder(16) == lines);
 }
 
+// A leaf corner met again right after on its line (the next leaf's) folds into the last point,
+// keeping the shorter spacing; the same t further back, or −0 after +0, stays a point of its own
+// (nearPairs folds those after sorting).
+TEST_CASE("line index: a repeat of the last point folds into it", "[triangulate]") {
+  LineIndex index(1);
+  REQUIRE(index.number(5) == 0);
+  index.allocatePoints({5});
+  index.addOrFold(0, {0.5f, 0.25f});
+  index.addOrFold(0, {0.5f, 0.125f});
+  REQUIRE(index.points(0).size() == 1);
+  REQUIRE(index.points(0)[0].spacing == 0.125f);
+  index.addOrFold(0, {0.5f, 0.5f});
+  REQUIRE(index.points(0)[0].spacing == 0.125f);
+  index.addOrFold(0, {0.75f, 0.25f});
+  index.addOrFold(0, {0.5f, 0.25f});
+  index.addOrFold(0, {0.0f, 0.25f});
+  index.addOrFold(0, {-0.0f, 0.25f});
+  REQUIRE(index.points(0).size() == 5);
+}
+
 // The leaf walk's key → place table (mesh/detail/run_places.h), past the size it was made for:
 // every key keeps the place it was first given, whatever its kind, however the table grew.
 TEST_CASE("run places: a key keeps its first place as the table grows", "[triangulate]") {

@@ -3,7 +3,9 @@
 // leaf edge along it passes.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <unordered_map>
 #include <vector>
 
@@ -56,6 +58,19 @@ class LineIndex {
   }
   // Appends a point to the line, within the room allocatePoints gave it.
   void add(size_t line, const LinePoint& point) { points_[ends_[line]++] = point; }
+  // The same, folded into the line's last point when that has the same t (bit for bit): the
+  // shortest spacing kept, as nearPairs folds equal t after sorting. A leaf's corner is on its
+  // line once more for the next leaf along it, most often right after: half the points to sort.
+  void addOrFold(size_t line, const LinePoint& point) {
+    if (ends_[line] > offsets_[line]) {
+      LinePoint& last = points_[ends_[line] - 1];
+      if (sameBits(last.t, point.t)) {
+        last.spacing = std::min(last.spacing, point.spacing);
+        return;
+      }
+    }
+    add(line, point);
+  }
   // Keeps the line's first `count` points.
   void shrink(size_t line, size_t count) { ends_[line] = offsets_[line] + count; }
 
@@ -87,6 +102,13 @@ class LineIndex {
   }
 
  private:
+  static bool sameBits(float a, float b) {
+    uint32_t x, y;
+    std::memcpy(&x, &a, sizeof x);
+    std::memcpy(&y, &b, sizeof y);
+    return x == y;
+  }
+
   HashMap<uint64_t, uint32_t, LineKeyHash> numbers_;
   std::vector<uint64_t> keys_;
   std::vector<LinePoint> points_;             // every line's points, line after line

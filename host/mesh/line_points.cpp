@@ -14,11 +14,22 @@ namespace {
 std::vector<LeafLines> numberLeafLines(const std::vector<QuadLeaf>& leaves, bool alongU,
                                        LineIndex& index) {
   std::vector<LeafLines> leafLines(leaves.size());
+  // Consecutive leaves mostly share lines (a row's leaves both of theirs along u, a leaf's
+  // left line its left neighbour's right one): the last leaf's two are asked first.
+  uint64_t lastKeys[2] = {UINT64_MAX, UINT64_MAX};
+  LeafLines last = {0, 0};
+  const auto number = [&](uint64_t key) {
+    for (int k = 0; k < 2; ++k)
+      if (key == lastKeys[k]) return last[k];
+    return index.number(key);
+  };
   for (size_t l = 0; l < leaves.size(); ++l) {
     const gpu::vec4& r = leaves[l].rect;
     const uint32_t p = leaves[l].patchIndex;
-    leafLines[l] = {index.number(lineKey(p, alongU ? r.y : r.x)),
-                    index.number(lineKey(p, alongU ? r.w : r.z))};
+    const uint64_t keys[2] = {lineKey(p, alongU ? r.y : r.x), lineKey(p, alongU ? r.w : r.z)};
+    leafLines[l] = {number(keys[0]), number(keys[1])};
+    lastKeys[0] = keys[0], lastKeys[1] = keys[1];
+    last = leafLines[l];
   }
   return leafLines;
 }
@@ -35,9 +46,9 @@ void fillLines(const std::vector<QuadLeaf>& leaves, bool alongU,
     for (int j = 0; j < 2; ++j)
       for (int i = 0; i < 2; ++i) {
         if (alongU)
-          index.add(leafLines[l][j], {i ? r.z : r.x, r.z - r.x});
+          index.addOrFold(leafLines[l][j], {i ? r.z : r.x, r.z - r.x});
         else
-          index.add(leafLines[l][i], {j ? r.w : r.y, r.w - r.y});
+          index.addOrFold(leafLines[l][i], {j ? r.w : r.y, r.w - r.y});
       }
   }
 }
