@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 
 #include "common/hash_map.h"
@@ -77,8 +78,38 @@ class LeafWalker {
   static constexpr uint32_t kCorner = 1, kEdge = 2, kInside = 4, kAllAround = 4,
                             kElsewhere = 0x100;
 
+  enum Edge { kBottom, kRight, kTop, kLeft };  // a leaf's edges in ring order
+
+  // Where the last searches of each leaf edge ended on their lines: the next leaf in a row
+  // starts its bottom and top edges where the last one's ended, and its left edge is the last
+  // leaf's right one. A guess is taken only where it is std::upper_bound's answer (the points
+  // before it at most t, it past t), so it is the search's result exactly; else the search.
+  struct LineHints {
+    const LinePoint* guess[4][3] = {};  // per edge: the last first, last and one past last
+
+    const LinePoint* upperBound(int edge, const PointRange<const LinePoint>& points, float t) const {
+      const auto fits = [&](const LinePoint* h) {
+        return h && std::less_equal<>()(points.begin(), h) && std::less_equal<>()(h, points.end()) &&
+               (h == points.begin() || h[-1].t <= t) && (h == points.end() || h->t > t);
+      };
+      for (const LinePoint* h : guess[edge])
+        if (fits(h)) return h;
+      if (edge == kLeft && fits(guess[kRight][0])) return guess[kRight][0];
+      return std::upper_bound(points.begin(), points.end(), t,
+                              [](float x, const LinePoint& p) { return x < p.t; });
+    }
+
+    void remember(int edge, const PointRange<const LinePoint>& points, const LinePoint* first,
+                  const LinePoint* last) {
+      guess[edge][0] = first;
+      guess[edge][1] = last;
+      guess[edge][2] = last != points.end() ? last + 1 : nullptr;
+    }
+  };
+
   // One thread's walk: where it writes, and the leaf being triangulated.
   struct LeafWork {
+    LineHints lineHints;
     LeafRun* out = nullptr;
     RunPlaces place{0};  // key → its place in out->vertices
     std::vector<uint32_t> cover;  // per place, the quarters covered (kAllAround …)
@@ -127,8 +158,9 @@ class LeafWalker {
   // line `fixed` (v = fixed when alongU, else u = fixed), number `line` in its LineIndex.
   // `inner`: the leaf is strictly inside its patch (so is every point of its edges' lines
   // between its corners).
-  void edgeInterior(LeafWork& work, uint32_t patch, bool alongU, float fixed, uint32_t line,
+  void edgeInterior(LeafWork& work, uint32_t patch, int edge, float fixed, uint32_t line,
                     float t0, float t1, bool inner) {
+    const bool alongU = edge == kBottom || edge == kTop;
     std::vector<RingVertex>& ring = work.ring;
     std::vector<float>& scratch = work.scratch;
     int side = -1;
@@ -176,10 +208,10 @@ class LeafWalker {
         t0 = movedTo(moved->second, t0), t1 = movedTo(moved->second, t1);
     // The points strictly between the (moved) ends, in ring order. A listed point is a vertex
     // of its own: no merge to look up.
-    const LinePoint* first = std::upper_bound(points.begin(), points.end(), std::min(t0, t1),
-                                              [](float t, const LinePoint& p) { return t < p.t; });
+    const LinePoint* first = work.lineHints.upperBound(edge, points, std::min(t0, t1));
     const LinePoint* last = first;
     for (const float end = std::max(t0, t1); last != points.end() && last->t < end;) ++last;
+    work.lineHints.remember(edge, points, first, last);
     const auto place = [&](float t) {
       const glm::vec2 uv = alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
       const VertexKey key = inner ? innerKey(patch, uv.x, uv.y) : seams_.baseKey(patch, uv.x, uv.y);
@@ -303,13 +335,13 @@ class LeafWalker {
     // Most leaves touch no side of their patch: no side, fold or patch corner to look for.
     const bool inner = r.x > 0.0f && r.z < 1.0f && r.y > 0.0f && r.w < 1.0f;
     ring.push_back(vertexAt(work, p, r.x, r.y, kCorner, inner));
-    edgeInterior(work, p, true, r.y, linesU[0], r.x, r.z, inner);
+    edgeInterior(work, p, kBottom, r.y, linesU[0], r.x, r.z, inner);
     ring.push_back(vertexAt(work, p, r.z, r.y, kCorner, inner));
-    edgeInterior(work, p, false, r.z, linesV[1], r.y, r.w, inner);
+    edgeInterior(work, p, kRight, r.z, linesV[1], r.y, r.w, inner);
     ring.push_back(vertexAt(work, p, r.z, r.w, kCorner, inner));
-    edgeInterior(work, p, true, r.w, linesU[1], r.z, r.x, inner);
+    edgeInterior(work, p, kTop, r.w, linesU[1], r.z, r.x, inner);
     ring.push_back(vertexAt(work, p, r.x, r.w, kCorner, inner));
-    edgeInterior(work, p, false, r.x, linesV[0], r.w, r.y, inner);
+    edgeInterior(work, p, kLeft, r.x, linesV[0], r.w, r.y, inner);
 
     const bool folded = work.touchesFold && dropFoldedBack(ring);
     if (work.touchesMerge) dropRepeats(ring);
