@@ -100,4 +100,13 @@ TEST_CASE("run places: a key keeps its first place as the table grows", "[triang
     REQUIRE(places.findOrAdd(keyOf(k), 99999, added) == k);
     REQUIRE_FALSE(added);
   }
+  // Reset for the next run (its slots kept, or fewer where far too many): empty again.
+  for (size_t keys : {size_t(2000), size_t(10)}) {
+    places.reset(keys);
+    REQUIRE(places.slotCount() >= 2 * keys + 2);
+    REQUIRE(places.slotCount() <= 8 * keys + 64);
+    bool added = false;
+    REQUIRE(places.findOrAdd(keyOf(7), 3, added) == 3);
+    REQUIRE(added);
+  }
 }

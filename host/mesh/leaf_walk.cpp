@@ -45,10 +45,12 @@ class LeafWalker {
 
   void walk(const std::vector<QuadLeaf>& leaves, size_t begin, size_t end, uint32_t firstPatch,
             uint32_t endPatch, LeafRun& run) {
-    LeafWork work;
+    // One table per thread, kept (RunPlaces::reset). About one distinct vertex per leaf in a
+    // run, a few more on its border.
+    static thread_local RunPlaces places(0);
+    places.reset(3 * (end - begin) / 2);
+    LeafWork work{places};
     work.out = &run;
-    // About one distinct vertex per leaf in a run, a few more on its border.
-    work.place = RunPlaces(3 * (end - begin) / 2);
     work.cover.reserve(2 * (end - begin));
     for (size_t l = begin; l < end; ++l) {
       const QuadLeaf& leaf = leaves[l];
@@ -111,7 +113,8 @@ class LeafWalker {
   struct LeafWork {
     LineHints lineHints;
     LeafRun* out = nullptr;
-    RunPlaces place{0};  // key → its place in out->vertices
+    explicit LeafWork(RunPlaces& places) : place(places) {}
+    RunPlaces& place;  // key → its place in out->vertices
     std::vector<uint32_t> cover;  // per place, the quarters covered (kAllAround …)
     bool silent = false;        // the leaf is outside the scope
     bool touchesFold = false;   // it has a vertex on a folded side

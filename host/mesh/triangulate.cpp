@@ -17,6 +17,10 @@ namespace tessera {
 
 using namespace triangulate_detail;
 
+namespace {
+constexpr size_t kKeptBorderKeys = size_t(1) << 15;  // 2¹⁷ slots at most: 3 MiB
+}  // namespace
+
 ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
                             const std::vector<BezierPatch>& patches,
                             const TriangulationScope& scope) {
@@ -60,7 +64,11 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
   // only they are looked up, in one table (a few thousand keys: one thread).
   size_t borderKeys = 0;
   for (const LeafRun& run : runs) borderKeys += run.border.size();
-  RunPlaces borderIds(borderKeys);
+  // Kept per calling thread up to a few MiB (RunPlaces::reset); a huge mesh's is freed.
+  thread_local RunPlaces keptBorderIds(0);
+  RunPlaces ownBorderIds(0);
+  RunPlaces& borderIds = borderKeys <= kKeptBorderKeys ? keptBorderIds : ownBorderIds;
+  borderIds.reset(borderKeys);
   std::vector<size_t> runStart(runs.size() + 1, 0);
   for (size_t r = 0; r < runs.size(); ++r) runStart[r + 1] = runStart[r] + runs[r].vertices.size();
   std::vector<uint32_t> ids(runStart.back());

@@ -4,6 +4,7 @@
 // is mostly one slot, where the general map (hash_map.h) spent about twice the instructions
 // on hashing twice and robin-hood bookkeeping. Only finds and adds; its order is never read.
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -14,6 +15,22 @@ namespace tessera::triangulate_detail {
 class RunPlaces {
  public:
   explicit RunPlaces(size_t keys) { resize(keys); }
+
+  // Empty, with room for `keys` keys: the slots kept where they are enough and not far too
+  // many. A table kept from call to call (thread_local) keeps its pages; a new one faulted
+  // them in again every call, a third of the triangulator's page faults.
+  void reset(size_t keys) {
+    if (slots_.size() < 2 * keys + 2 || slots_.size() > 8 * keys + 64) {
+      std::vector<Slot>().swap(slots_);
+      count_ = 0;
+      resize(keys);
+      return;
+    }
+    std::fill(slots_.begin(), slots_.end(), Slot{{}, kEmpty});
+    count_ = 0;
+  }
+
+  size_t slotCount() const { return slots_.size(); }
 
   // The place of `key`; `place` (then added = true) if it had none.
   uint32_t findOrAdd(const VertexKey& key, uint32_t place, bool& added) {
