@@ -1,5 +1,5 @@
-// Which item first had each key, for items met in a fixed order (vertices numbered in leaf
-// order, positions welded to the first one): one hash table per shard of the keys, the
+// Which item first had each key, for items met in a fixed order (corner positions welded to
+// the first one, mesh_cleanup.cpp): one hash table per shard of the keys, the
 // shards on threads, so the lookups of a large serial pass run on all cores. The answer is
 // the sequence's, so it does not depend on the thread count.
 #pragma once

@@ -1,5 +1,6 @@
 // A run's vertex keys → their places in LeafRun::vertices (leaf_walk.cpp): looked up once per
-// leaf corner and edge point, the walk's hottest table. Open addressing with linear probing in
+// leaf corner and edge point, the walk's hottest table; also the runs' border keys → their
+// vertex indices in the numbering (triangulate.cpp). Open addressing with linear probing in
 // one array kept at most half full, a key's slot from the high bits of one multiply: a lookup
 // is mostly one slot, where the general map (hash_map.h) spent about twice the instructions
 // on hashing twice and robin-hood bookkeeping. Only finds and adds; its order is never read.
