@@ -82,30 +82,33 @@ class LeafWalker {
 
   enum Edge { kBottom, kRight, kTop, kLeft };  // a leaf's edges in ring order
 
-  // Where the last searches of each leaf edge ended on their lines: the next leaf in a row
-  // starts its bottom and top edges where the last one's ended, and its left edge is the last
-  // leaf's right one. A guess is taken only where it is std::upper_bound's answer (the points
-  // before it at most t, it past t), so it is the search's result exactly; else the search.
+  // Where the last leaf's searches on its edges' lines ended: the next leaf in a row starts its
+  // bottom and top edges one point past where the last one's ended, and its left edge is the
+  // last leaf's right one. A guess is taken only where it is std::upper_bound's answer (the
+  // points before it at most t, it past t), so it is the search's result exactly; else the
+  // search. (Along a row, two edges in three start where guessed.)
   struct LineHints {
-    const LinePoint* guess[4][3] = {};  // per edge: the last first, last and one past last
+    const LinePoint* next[2] = {};  // bottom, top: one past the last search's end
+    const LinePoint* rightFirst = nullptr;      // this leaf's right edge's search
+    const LinePoint* lastRightFirst = nullptr;  // the last leaf's
 
     const LinePoint* upperBound(int edge, const PointRange<const LinePoint>& points, float t) const {
-      const auto fits = [&](const LinePoint* h) {
-        return h && std::less_equal<>()(points.begin(), h) && std::less_equal<>()(h, points.end()) &&
-               (h == points.begin() || h[-1].t <= t) && (h == points.end() || h->t > t);
-      };
-      for (const LinePoint* h : guess[edge])
-        if (fits(h)) return h;
-      if (edge == kLeft && fits(guess[kRight][0])) return guess[kRight][0];
+      const LinePoint* h = edge == kBottom ? next[0]
+                           : edge == kTop  ? next[1]
+                           : edge == kLeft ? lastRightFirst
+                                           : nullptr;
+      if (h && std::less_equal<>()(points.begin(), h) && std::less_equal<>()(h, points.end()) &&
+          (h == points.begin() || h[-1].t <= t) && (h == points.end() || h->t > t))
+        return h;
       return std::upper_bound(points.begin(), points.end(), t,
                               [](float x, const LinePoint& p) { return x < p.t; });
     }
 
     void remember(int edge, const PointRange<const LinePoint>& points, const LinePoint* first,
                   const LinePoint* last) {
-      guess[edge][0] = first;
-      guess[edge][1] = last;
-      guess[edge][2] = last != points.end() ? last + 1 : nullptr;
+      if (edge == kRight) lastRightFirst = rightFirst, rightFirst = first;
+      if (edge == kBottom || edge == kTop)
+        next[edge == kTop] = last != points.end() ? last + 1 : nullptr;
     }
   };
 
