@@ -82,33 +82,51 @@ class LeafWalker {
 
   enum Edge { kBottom, kRight, kTop, kLeft };  // a leaf's edges in ring order
 
-  // Where the last leaf's searches on its edges' lines ended: the next leaf in a row starts its
-  // bottom and top edges one point past where the last one's ended, and its left edge is the
-  // last leaf's right one. A guess is taken only where it is std::upper_bound's answer (the
-  // points before it at most t, it past t), so it is the search's result exactly; else the
-  // search. (Along a row, two edges in three start where guessed.)
+  // Where the last leaves' searches on their edges' lines ended. The leaves come in rows of
+  // small blocks: the next leaf in a row starts its bottom and top edges one point past where
+  // the last one's ended, and its left edge is the last leaf's right one; a leaf above one of
+  // the last few starts its bottom edge where that one's top edge started, and its left and
+  // right edges one point past where that one's ended. A guess is taken only where it is
+  // std::upper_bound's answer (the points before it at most t, it past t), so it is the
+  // search's result exactly; else the search.
   struct LineHints {
+    static constexpr int kBelow = 4;  // the last leaves looked at for the one below
     const LinePoint* next[2] = {};  // bottom, top: one past the last search's end
     const LinePoint* rightFirst = nullptr;      // this leaf's right edge's search
     const LinePoint* lastRightFirst = nullptr;  // the last leaf's
+    // Of the last kBelow leaves: the top edges' starts, the right and left edges' ends + 1.
+    const LinePoint* below[3][kBelow] = {};
+    int slot[3] = {};
+
+    static bool fits(const PointRange<const LinePoint>& points, const LinePoint* h, float t) {
+      return h && std::less_equal<>()(points.begin(), h) && std::less_equal<>()(h, points.end()) &&
+             (h == points.begin() || h[-1].t <= t) && (h == points.end() || h->t > t);
+    }
 
     const LinePoint* upperBound(int edge, const PointRange<const LinePoint>& points, float t) const {
       const LinePoint* h = edge == kBottom ? next[0]
                            : edge == kTop  ? next[1]
                            : edge == kLeft ? lastRightFirst
                                            : nullptr;
-      if (h && std::less_equal<>()(points.begin(), h) && std::less_equal<>()(h, points.end()) &&
-          (h == points.begin() || h[-1].t <= t) && (h == points.end() || h->t > t))
-        return h;
+      if (fits(points, h, t)) return h;
+      if (edge != kTop) {
+        const int list = edge == kBottom ? 0 : edge == kRight ? 1 : 2;
+        for (const LinePoint* g : below[list])
+          if (fits(points, g, t)) return g;
+      }
       return std::upper_bound(points.begin(), points.end(), t,
                               [](float x, const LinePoint& p) { return x < p.t; });
     }
 
     void remember(int edge, const PointRange<const LinePoint>& points, const LinePoint* first,
                   const LinePoint* last) {
+      const LinePoint* past = last != points.end() ? last + 1 : nullptr;
       if (edge == kRight) lastRightFirst = rightFirst, rightFirst = first;
-      if (edge == kBottom || edge == kTop)
-        next[edge == kTop] = last != points.end() ? last + 1 : nullptr;
+      if (edge == kBottom || edge == kTop) next[edge == kTop] = past;
+      if (edge == kBottom) return;
+      const int list = edge == kTop ? 0 : edge == kRight ? 1 : 2;
+      below[list][slot[list]] = edge == kTop ? first : past;
+      slot[list] = (slot[list] + 1) % kBelow;
     }
   };
 
