@@ -61,8 +61,9 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
   // A key's first query in leaf order is its first query in the first run that has it: the
   // runs' vertices, run by run, meet the keys in the order one walk would. The vertices are
   // numbered in that order. Only a run's border keys (LeafRun::border) can be another run's:
-  // only they are looked up, in one table on one thread (a few thousand keys), which tells each
-  // run how many vertices it adds; the runs then number and write theirs on threads.
+  // only they are looked up, in one table on one thread (a few thousand keys), which gives
+  // them their indices and tells each run how many vertices it adds; the runs then number and
+  // write the rest, and their triangles, on threads.
   std::vector<size_t> borderStart(runs.size() + 1, 0);
   for (size_t r = 0; r < runs.size(); ++r)
     borderStart[r + 1] = borderStart[r] + runs[r].border.size();
@@ -71,16 +72,20 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
   RunPlaces ownBorderFirst(0);
   RunPlaces& borderFirst = borderStart.back() <= kKeptBorderKeys ? keptBorderFirst : ownBorderFirst;
   borderFirst.reset(borderStart.back());
-  std::vector<uint32_t> first(borderStart.back());  // per border key, the first with its key
+  std::vector<uint32_t> borderId(borderStart.back());  // per border key, its vertex index
+  std::vector<uint8_t> repeated(borderStart.back());   // ... met by an earlier run first
   std::vector<size_t> vertexStart(runs.size() + 1, 0), runStart(runs.size() + 1, 0);
   size_t triangles = 0;
   std::vector<size_t> firstTriangle(runs.size());
   for (size_t r = 0; r < runs.size(); ++r) {
     const LeafRun& run = runs[r];
-    size_t repeats = 0;
+    size_t repeats = 0;  // so far in the run: a vertex's index is its place less those before it
     for (size_t j = 0, b = borderStart[r]; j < run.border.size(); ++j, ++b) {
       bool added;
-      first[b] = borderFirst.findOrAdd(run.vertices[run.border[j]].key, uint32_t(b), added);
+      const uint32_t first =
+          borderFirst.findOrAdd(run.vertices[run.border[j]].key, uint32_t(b), added);
+      borderId[b] = added ? uint32_t(vertexStart[r] + run.border[j] - repeats) : borderId[first];
+      repeated[b] = !added;
       repeats += !added;
     }
     vertexStart[r + 1] = vertexStart[r] + run.vertices.size() - repeats;
@@ -92,8 +97,10 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
   }
   mesh.vertices.resize(vertexStart.back());
   if (scope.seamKeys) mesh.seamKeys.resize(vertexStart.back());
-  std::vector<uint32_t> ids(runStart.back());     // per run vertex, its index
-  std::vector<uint32_t> borderId(first.size());   // per border key that is first, its index
+  mesh.indices.resize(3 * triangles);
+  mesh.cornerUv.resize(3 * triangles);
+  mesh.trianglePatch.resize(triangles);
+  std::vector<uint32_t> ids(runStart.back());  // per run vertex, its index
   parallelForChunks(runs.size(), 1, scope.threads, [&](size_t begin, size_t end) {
     for (size_t r = begin; r < end; ++r) {
       const LeafRun& run = runs[r];
@@ -102,26 +109,16 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
       for (size_t k = 0, q = runStart[r]; k < run.vertices.size(); ++k, ++q) {
         if (j < run.border.size() && run.border[j] == k) {
           const size_t b = borderStart[r] + j++;
-          if (first[b] != b) continue;  // numbered by an earlier run
-          borderId[b] = id;
+          ids[q] = borderId[b];
+          if (repeated[b]) continue;  // written by the run that met it first
+        } else {
+          ids[q] = id;
         }
         const VertexQuery& query = run.vertices[k];
-        ids[q] = id;
         mesh.vertices[id] = {query.patch, query.uv.x, query.uv.y};
         if (scope.seamKeys) mesh.seamKeys[id] = seams.seamKeyOf(query.key);
         ++id;
       }
-    }
-  });
-  mesh.indices.resize(3 * triangles);
-  mesh.cornerUv.resize(3 * triangles);
-  mesh.trianglePatch.resize(triangles);
-  parallelForChunks(runs.size(), 1, scope.threads, [&](size_t begin, size_t end) {
-    for (size_t r = begin; r < end; ++r) {
-      const LeafRun& run = runs[r];
-      // A key an earlier run met first: its index, now that every run has numbered its own.
-      for (size_t j = 0, b = borderStart[r]; j < run.border.size(); ++j, ++b)
-        if (first[b] != b) ids[runStart[r] + run.border[j]] = borderId[first[b]];
       size_t t = firstTriangle[r];
       for (const RunTriangle& triangle : run.triangles) {
         for (int c = 0; c < 3; ++c) {
