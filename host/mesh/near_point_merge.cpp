@@ -100,7 +100,10 @@ class NearPointMerger {
     for (LineIndex* line : {&lines_.alongU, &lines_.alongV}) {
       const bool alongU = line == &lines_.alongU;
       auto& movedOn = alongU ? out_.movedAlongU : out_.movedAlongV;
-      for (uint32_t l : line->unorderedMapOrder(kLineIndexReserve * leafCount_)) {
+      // In the lines' own order: merging is done, so the position ids handed out here
+      // (patch corners no merge met) only tell positions apart, and each line's moved
+      // corners are its own.
+      for (uint32_t l = 0; l < line->size(); ++l) {
         const uint64_t key = line->key(l);
         const LinePointRange points = line->points(l);
         const uint32_t patch = uint32_t(key >> 32);
