@@ -51,7 +51,6 @@ class LeafWalker {
     places.reset(3 * (end - begin) / 2);
     LeafWork work{places};
     work.out = &run;
-    work.cover.reserve(2 * (end - begin));
     for (size_t l = begin; l < end; ++l) {
       const QuadLeaf& leaf = leaves[l];
       work.silent = leaf.patchIndex < firstPatch || leaf.patchIndex >= endPatch;
@@ -59,8 +58,8 @@ class LeafWalker {
     }
     // A merge target is also asked for by the leaves around the points merged into it.
     const bool anyTargets = !mergeTargets_.empty();
-    for (uint32_t k = 0; k < work.cover.size(); ++k)
-      if (work.cover[k] != kAllAround ||
+    for (uint32_t k = 0; k < run.vertices.size(); ++k)
+      if (run.vertices[k].cover != kAllAround ||
           (anyTargets && mergeTargets_.count(run.vertices[k].key) != 0))
         run.border.push_back(k);
   }
@@ -136,7 +135,6 @@ class LeafWalker {
     LeafRun* out = nullptr;
     explicit LeafWork(RunPlaces& places) : place(places) {}
     RunPlaces& place;  // key → its place in out->vertices
-    std::vector<uint32_t> cover;  // per place, the quarters covered (kAllAround …)
     bool silent = false;        // the leaf is outside the scope
     bool touchesFold = false;   // it has a vertex on a folded side
     bool touchesMerge = false;  // ... or a vertex merged into a near one
@@ -154,10 +152,9 @@ class LeafWalker {
     bool added;
     const uint32_t place = work.place.findOrAdd(key, uint32_t(vertices.size()), added);
     if (added) {
-      vertices.push_back({key, patch, uv});
-      work.cover.push_back(0);
+      vertices.push_back({key, patch, uv, 0});
     }
-    work.cover[place] += key.kind == kPatchParam ? cover : kElsewhere;
+    vertices[place].cover += key.kind == kPatchParam ? cover : kElsewhere;
     return {place, uv};
   }
 

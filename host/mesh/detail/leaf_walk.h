@@ -19,6 +19,7 @@ struct VertexQuery {
   VertexKey key;
   uint32_t patch;
   glm::vec2 uv;
+  uint32_t cover;  // the walk's: how much of the point's neighbourhood the run covers
 };
 
 // A triangle of a run: its corners as places in LeafRun::vertices, each corner's (u, v) on the
