@@ -87,6 +87,32 @@ TEST_CASE("mesh cleanup: back-to-back pairs follow the rule where vertices have 
   REQUIRE(std::count(rule.begin(), rule.end(), true) > 1000);
 }
 
+TEST_CASE("mesh cleanup: back-to-back pairs are the same on any thread count",
+          "[mesh][cleanup][threads]") {
+  // Enough triangles (30,000) for the buckets to be settled on several threads: each one of
+  // 3,000 random ones, rotated and maybe reversed; a tenth of those share one of four hub
+  // vertices, whose buckets (hundreds of triangles) take the map path.
+  std::mt19937 random(20261130);
+  std::uniform_int_distribution<uint32_t> corner(4, 49999), hub(0, 3);
+  std::vector<std::array<uint32_t, 3>> base(3000);
+  for (size_t k = 0; k < base.size(); ++k)
+    base[k] = {k % 10 == 0 ? hub(random) : corner(random), corner(random), corner(random)};
+  std::uniform_int_distribution<size_t> pick(0, base.size() - 1);
+  std::vector<uint32_t> indices;
+  for (int t = 0; t < 30000; ++t) {
+    std::array<uint32_t, 3> c = base[pick(random)];
+    if (random() % 2) std::swap(c[1], c[2]);
+    std::rotate(c.begin(), c.begin() + random() % 3, c.end());
+    indices.insert(indices.end(), c.begin(), c.end());
+  }
+  const std::vector<bool> rule = backToBackByRule(indices);
+  REQUIRE(std::count(rule.begin(), rule.end(), true) > 10000);
+  for (unsigned threads : {1u, 2u, 3u, 0u}) {
+    INFO(threads << " threads");
+    REQUIRE(backToBackPairs(indices, threads) == rule);
+  }
+}
+
 TEST_CASE("mesh cleanup: welding keeps each position's first vertex, on any thread count",
           "[mesh][cleanup][threads]") {
   // Positions drawn from a few hundred, -0 and +0 the same point: the plain rule is a map from

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "common/first_occurrence.h"
+#include "common/parallel_for.h"
 
 namespace tessera {
 
@@ -42,7 +43,7 @@ std::vector<uint32_t> weldIdenticalPositions(const std::vector<glm::vec3>& posit
                                                     forEachKey, threads);
 }
 
-std::vector<bool> backToBackPairs(const std::vector<uint32_t>& indices) {
+std::vector<bool> backToBackPairs(const std::vector<uint32_t>& indices, unsigned threads) {
   // Key: the corners rotated to start at the smallest; its reverse has the other two swapped.
   const auto keyOf = [&](size_t t, bool reversed) {
     const uint32_t* c = &indices[3 * t];
@@ -52,11 +53,11 @@ std::vector<bool> backToBackPairs(const std::vector<uint32_t>& indices) {
     return CornerKey{k[smallest], k[(smallest + 1) % 3], k[(smallest + 2) % 3]};
   };
   const size_t count = indices.size() / 3;
-  std::vector<bool> cancelled(count, false);
-  if (count == 0) return cancelled;
+  if (count == 0) return {};
   // A triangle and its reverse share their smallest corner: triangles are bucketed by it, in
-  // triangle order (a counting sort), and each bucket is settled alone. Most buckets hold a
-  // handful (the triangles whose smallest corner a vertex is), scanned directly.
+  // triangle order (a counting sort), and each bucket is settled alone, the buckets on
+  // `threads` threads. Most buckets hold a handful (the triangles whose smallest corner a
+  // vertex is), scanned directly.
   const uint32_t vertices = *std::max_element(indices.begin(), indices.end()) + 1;
   const auto smallest = [&](size_t t) {
     return std::min({indices[3 * t], indices[3 * t + 1], indices[3 * t + 2]});
@@ -70,41 +71,47 @@ std::vector<bool> backToBackPairs(const std::vector<uint32_t>& indices) {
     for (size_t t = 0; t < count; ++t) byCorner[next[smallest(t)]++] = uint32_t(t);
   }
   // Per bucket, in triangle order: a triangle cancels with the latest open one whose key is
-  // its reverse, else stays open.
+  // its reverse, else stays open. A bucket's triangles are its own, so threads settling other
+  // buckets write other bytes (bytes: vector<bool> packs eight triangles into a byte).
+  std::vector<uint8_t> cancelled(count, 0);
   constexpr size_t kScanned = 64;  // larger buckets keep their open triangles per key
-  std::vector<uint32_t> open;
-  std::map<CornerKey, std::vector<uint32_t>> openByKey;
-  for (uint32_t v = 0; v < vertices; ++v) {
-    const uint32_t* first = byCorner.data() + start[v];
-    const uint32_t* last = byCorner.data() + start[v + 1];
-    if (last - first < 2) continue;
-    const bool scanned = size_t(last - first) <= kScanned;
-    open.clear();
-    openByKey.clear();
-    for (const uint32_t* i = first; i != last; ++i) {
-      const uint32_t t = *i;
-      const CornerKey reverse = keyOf(t, true);
-      if (scanned) {
-        auto match = std::find_if(open.rbegin(), open.rend(),
-                                  [&](uint32_t o) { return keyOf(o, false) == reverse; });
-        if (match != open.rend()) {
-          cancelled[*match] = cancelled[t] = true;
-          open.erase(std::next(match).base());
-        } else {
-          open.push_back(t);
+  // A thread pays for itself from a few thousand triangles on.
+  const unsigned shares = count < 8192 ? 1 : threads;
+  parallelFor(vertices, shares, [&](size_t firstVertex, size_t endVertex) {
+    std::vector<uint32_t> open;
+    std::map<CornerKey, std::vector<uint32_t>> openByKey;
+    for (size_t v = firstVertex; v < endVertex; ++v) {
+      const uint32_t* first = byCorner.data() + start[v];
+      const uint32_t* last = byCorner.data() + start[v + 1];
+      if (last - first < 2) continue;
+      const bool scanned = size_t(last - first) <= kScanned;
+      open.clear();
+      openByKey.clear();
+      for (const uint32_t* i = first; i != last; ++i) {
+        const uint32_t t = *i;
+        const CornerKey reverse = keyOf(t, true);
+        if (scanned) {
+          auto match = std::find_if(open.rbegin(), open.rend(),
+                                    [&](uint32_t o) { return keyOf(o, false) == reverse; });
+          if (match != open.rend()) {
+            cancelled[*match] = cancelled[t] = 1;
+            open.erase(std::next(match).base());
+          } else {
+            open.push_back(t);
+          }
+          continue;
         }
-        continue;
-      }
-      const auto match = openByKey.find(reverse);
-      if (match != openByKey.end() && !match->second.empty()) {
-        cancelled[match->second.back()] = cancelled[t] = true;
-        match->second.pop_back();
-      } else {
-        openByKey[keyOf(t, false)].push_back(t);
+        const auto match = openByKey.find(reverse);
+        if (match != openByKey.end() && !match->second.empty()) {
+          cancelled[match->second.back()] = cancelled[t] = 1;
+          match->second.pop_back();
+        } else {
+          openByKey[keyOf(t, false)].push_back(t);
+        }
       }
     }
-  }
-  return cancelled;
+  });
+  return std::vector<bool>(cancelled.begin(), cancelled.end());
 }
 
 void requireFiniteSamples(const ParamMesh& param, const std::vector<gpu::VertexSample>& samples) {

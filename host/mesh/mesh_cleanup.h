@@ -19,8 +19,9 @@ std::vector<uint32_t> weldIdenticalPositions(const std::vector<glm::vec3>& posit
 
 // Triangles whose reverse is in the mesh too (a, b, c and a, c, b): where a fold's strands are
 // zipped (side_fold.h), or evaluate to one point, a fan can cover one spot from both sides.
-// The two cancel (they bound nothing), and their edges keep the neighbours they had.
-std::vector<bool> backToBackPairs(const std::vector<uint32_t>& indices);
+// The two cancel (they bound nothing), and their edges keep the neighbours they had. Settled
+// on `threads` threads (0: all); the answer is the same.
+std::vector<bool> backToBackPairs(const std::vector<uint32_t>& indices, unsigned threads = 1);
 
 // A sample that is not a number or infinite would poison the welding and the writers; fp32
 // overflows where a rational patch's weights differ by more than its range can take (a corner

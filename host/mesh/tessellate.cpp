@@ -21,10 +21,12 @@ namespace {
 // Removes the triangles marked in `drop` from the mesh and its per-triangle records, counting
 // them as degenerate.
 void dropTriangles(const std::vector<bool>& drop, Tessellation& result) {
-  if (std::find(drop.begin(), drop.end(), true) == drop.end()) return;
+  // The triangles before the first dropped one stay where they are.
+  const size_t firstDropped = size_t(std::find(drop.begin(), drop.end(), true) - drop.begin());
+  if (firstDropped == drop.size()) return;
   std::vector<uint32_t>& indices = result.mesh.indices;
-  size_t kept = 0;
-  for (size_t t = 0; t < drop.size(); ++t) {
+  size_t kept = firstDropped;
+  for (size_t t = firstDropped; t < drop.size(); ++t) {
     if (drop[t]) {
       ++result.stats.degenerateTrianglesDropped;
       continue;
@@ -113,8 +115,9 @@ Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, ParamM
     collapsed[t] = c[0] == c[1] || c[1] == c[2] || c[2] == c[0];
   }
   dropTriangles(collapsed, result);
-  dropTriangles(backToBackPairs(mesh.indices), result);
-  dropTriangles(removeCaps(mesh.positions, mesh.indices, result.trianglePatch, result.cornerUv),
+  dropTriangles(backToBackPairs(mesh.indices, threads), result);
+  dropTriangles(removeCaps(mesh.positions, mesh.indices, result.trianglePatch, result.cornerUv,
+                           threads),
                 result);
 
   TessellationStats& s = result.stats;

@@ -1,7 +1,10 @@
 #include "mesh/zero_area.h"
 
+#include <algorithm>
 #include <array>
 #include <unordered_map>
+
+#include "common/parallel_for.h"
 
 namespace tessera {
 namespace {
@@ -24,16 +27,24 @@ bool zeroArea(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
 
 std::vector<bool> removeCaps(const std::vector<glm::vec3>& positions,
                              std::vector<uint32_t>& indices, std::vector<uint32_t>& trianglePatch,
-                             std::vector<glm::vec2>& cornerUv) {
+                             std::vector<glm::vec2>& cornerUv, unsigned threads) {
   const size_t count = indices.size() / 3;
   const auto corner = [&](size_t t, int k) { return indices[3 * t + size_t(k)]; };
   const auto isCap = [&](size_t t) {
     return zeroArea(positions[corner(t, 0)], positions[corner(t, 1)], positions[corner(t, 2)]);
   };
   std::vector<bool> removed(count, false);
+  // The caps in triangle order, found on `threads` threads: each share's own list, in turn.
+  constexpr size_t kShare = 8192;
+  std::vector<std::vector<size_t>> found((count + kShare - 1) / kShare);
+  parallelForChunks(found.size(), 1, count < 2 * kShare ? 1 : threads,
+                    [&](size_t begin, size_t end) {
+                      for (size_t share = begin; share < end; ++share)
+                        for (size_t t = share * kShare; t < std::min(count, (share + 1) * kShare); ++t)
+                          if (isCap(t)) found[share].push_back(t);
+                    });
   std::vector<size_t> caps;
-  for (size_t t = 0; t < count; ++t)
-    if (isCap(t)) caps.push_back(t);
+  for (const std::vector<size_t>& share : found) caps.insert(caps.end(), share.begin(), share.end());
   if (caps.empty()) return removed;
 
   std::unordered_map<uint64_t, uint32_t> owner;  // directed edge → its triangle

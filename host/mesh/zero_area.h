@@ -27,8 +27,9 @@ bool zeroArea(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
 // would repeat an edge stays, as does one whose neighbour's far corner is on the line beyond
 // its long edge and no other flip frees it (none in the tea set, even without
 // kResolvedWidthUlps: tests/test_tea_set_watertight.cpp).
+// The caps are looked for on `threads` threads (0: all); the answer is the same.
 std::vector<bool> removeCaps(const std::vector<glm::vec3>& positions,
                              std::vector<uint32_t>& indices, std::vector<uint32_t>& trianglePatch,
-                             std::vector<glm::vec2>& cornerUv);
+                             std::vector<glm::vec2>& cornerUv, unsigned threads = 1);
 
 }  // namespace tessera
