@@ -71,7 +71,9 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
   thread_local RunPlaces keptBorderFirst(0);
   RunPlaces ownBorderFirst(0);
   RunPlaces& borderFirst = borderStart.back() <= kKeptBorderKeys ? keptBorderFirst : ownBorderFirst;
-  borderFirst.reset(borderStart.back());
+  // Most border keys are met by two runs: room for half of them (the table grows past that),
+  // at most half full, keeps a huge mesh's table to about its distinct keys' size.
+  borderFirst.reset(borderStart.back() / 2);
   std::vector<uint32_t> borderId(borderStart.back());  // per border key, its vertex index
   std::vector<uint8_t> repeated(borderStart.back());   // ... met by an earlier run first
   std::vector<size_t> vertexStart(runs.size() + 1, 0), runStart(runs.size() + 1, 0);
