@@ -39,6 +39,21 @@ std::vector<bool> backToBackByRule(const std::vector<uint32_t>& indices) {
   return cancelled;
 }
 
+// `count` triangles, each one of `base` picked at random, maybe reversed, then rotated: pairs of
+// a triangle and its reverse meet in the buckets of their smallest corner.
+std::vector<uint32_t> drawnFrom(const std::vector<std::array<uint32_t, 3>>& base, int count,
+                                std::mt19937& random) {
+  std::uniform_int_distribution<size_t> pick(0, base.size() - 1);
+  std::vector<uint32_t> indices;
+  for (int t = 0; t < count; ++t) {
+    std::array<uint32_t, 3> c = base[pick(random)];
+    if (random() % 2) std::swap(c[1], c[2]);
+    std::rotate(c.begin(), c.begin() + random() % 3, c.end());
+    indices.insert(indices.end(), c.begin(), c.end());
+  }
+  return indices;
+}
+
 }  // namespace
 
 TEST_CASE("mesh cleanup: back-to-back pairs cancel, latest first", "[mesh][cleanup]") {
@@ -74,14 +89,7 @@ TEST_CASE("mesh cleanup: back-to-back pairs follow the rule where vertices have 
   std::uniform_int_distribution<uint32_t> corner(0, 9999);
   std::vector<std::array<uint32_t, 3>> base(300);
   for (auto& b : base) b = {corner(random), corner(random), corner(random)};
-  std::uniform_int_distribution<size_t> pick(0, base.size() - 1);
-  std::vector<uint32_t> indices;
-  for (int t = 0; t < 3000; ++t) {
-    std::array<uint32_t, 3> c = base[pick(random)];
-    if (random() % 2) std::swap(c[1], c[2]);
-    std::rotate(c.begin(), c.begin() + random() % 3, c.end());
-    indices.insert(indices.end(), c.begin(), c.end());
-  }
+  const std::vector<uint32_t> indices = drawnFrom(base, 3000, random);
   const std::vector<bool> fast = backToBackPairs(indices), rule = backToBackByRule(indices);
   REQUIRE(fast == rule);
   REQUIRE(std::count(rule.begin(), rule.end(), true) > 1000);
@@ -97,14 +105,7 @@ TEST_CASE("mesh cleanup: back-to-back pairs are the same on any thread count",
   std::vector<std::array<uint32_t, 3>> base(3000);
   for (size_t k = 0; k < base.size(); ++k)
     base[k] = {k % 10 == 0 ? hub(random) : corner(random), corner(random), corner(random)};
-  std::uniform_int_distribution<size_t> pick(0, base.size() - 1);
-  std::vector<uint32_t> indices;
-  for (int t = 0; t < 30000; ++t) {
-    std::array<uint32_t, 3> c = base[pick(random)];
-    if (random() % 2) std::swap(c[1], c[2]);
-    std::rotate(c.begin(), c.begin() + random() % 3, c.end());
-    indices.insert(indices.end(), c.begin(), c.end());
-  }
+  const std::vector<uint32_t> indices = drawnFrom(base, 30000, random);
   const std::vector<bool> rule = backToBackByRule(indices);
   REQUIRE(std::count(rule.begin(), rule.end(), true) > 10000);
   for (unsigned threads : {1u, 2u, 3u, 0u}) {

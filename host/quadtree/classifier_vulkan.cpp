@@ -146,26 +146,31 @@ class VulkanClassifier final : public NodeClassifier {
     const bool general = !patches.isBicubic();
     if (uploadedCount_ != patches.size() || uploadedGeneral_ != general)
       throw std::logic_error("VulkanClassifier: classify() without beginTree() for these patches");
-    if (general && options.rule == SplitRule::Tolerance)
-      runGeneralTolerance(nodes, options, decisions, stats);
+    if (general)
+      runGeneral(nodes, options, decisions, stats);
     else
-      run(general, nodes, options, decisions, stats);
+      runBicubic(nodes, options, decisions, stats);
   }
 
  private:
-  // Rule T on general patches: each shader's nodes (a variant's, or the generic shader's) one
-  // range of the node and decision buffers, in their order, starting where the device can bind
-  // it; one dispatch a range, one submission, the decisions put back in the nodes' order.
-  void runGeneralTolerance(const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
-                           std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) {
+  // General patches: each shader's nodes (for rule T a variant's or the generic shader's, for
+  // the other rules all the generic shader's) one range of the node and decision buffers, in
+  // their order, starting where the device can bind it; one dispatch a range, one submission,
+  // the decisions put back in the nodes' order.
+  void runGeneral(const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
+                  std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) {
     static_assert(sizeof(gpu::QuadNode) == sizeof(gpu::NodeDecision),
                   "one slot holds a node, then its decision");
     const Stopwatch stopwatch;
     decisions.resize(nodes.size());
     if (nodes.empty()) return;
     constexpr size_t kShaders = kGeneralVariants + 1;
+    const bool variants = options.rule == SplitRule::Tolerance;
+    const auto shaderOf = [&](const gpu::QuadNode& node) {
+      return variants ? patchShader_[node.patchIndex] : kGenericShader;
+    };
     std::array<size_t, kShaders> count{};
-    for (const gpu::QuadNode& node : nodes) ++count[patchShader_[node.patchIndex]];
+    for (const gpu::QuadNode& node : nodes) ++count[shaderOf(node)];
     const size_t slotAlignment = std::max<size_t>(
         1, size_t(context_.minStorageBufferOffsetAlignment()) / sizeof(gpu::QuadNode));
     std::array<size_t, kShaders> first{};
@@ -185,13 +190,13 @@ class VulkanClassifier final : public NodeClassifier {
       sortedNodes_.assign(slots, gpu::QuadNode{});
       std::array<size_t, kShaders> next = first;
       for (size_t i = 0; i < nodes.size(); ++i) {
-        slotOf[i] = uint32_t(next[patchShader_[nodes[i].patchIndex]]++);
+        slotOf[i] = uint32_t(next[shaderOf(nodes[i])]++);
         sortedNodes_[slotOf[i]] = nodes[i];
       }
     }
     std::array<vk::ComputePipeline*, kShaders> pipelines{};
     for (size_t k = 0; k < kShaders; ++k)
-      if (count[k]) pipelines[k] = &generalTolerancePipeline(k, options.samples);
+      if (count[k]) pipelines[k] = &generalPipeline(k, options);
     vk::ensureCapacity(context_, nodes_, slots * sizeof(gpu::QuadNode), vk::BufferUse::Upload,
                        kTexelUsage);
     vk::ensureCapacity(context_, decisions_, slots * sizeof(gpu::NodeDecision),
@@ -233,10 +238,12 @@ class VulkanClassifier final : public NodeClassifier {
     stats.classifyMs += stopwatch.elapsedMs();
   }
 
-  // Rule T's pipeline for general patches: variant k, or the generic shader (kGenericShader).
-  // Rule T reads no S (the rule-T-only shaders leave rules C and D out): a variant is made once.
-  vk::ComputePipeline& generalTolerancePipeline(size_t k, int samples) {
-    if (k == kGenericShader) return pipelineFor(true, gpu::kSplitRuleTolerance, samples);
+  // The pipeline for general patches: rule T's variant k, or the generic shader of the rule
+  // (kGenericShader). Rule T reads no S (the rule-T-only shaders leave rules C and D out): a
+  // variant is made once.
+  vk::ComputePipeline& generalPipeline(size_t k, const QuadtreeOptions& options) {
+    if (k == kGenericShader)
+      return pipelineFor(true, ruleConstant(options.rule), options.samples);
     std::unique_ptr<vk::ComputePipeline>& pipeline = variantPipelines_[k];
     if (!pipeline) {
       const ShaderCode& code = kGeneralToleranceVariants[k];
@@ -252,16 +259,17 @@ class VulkanClassifier final : public NodeClassifier {
     return *pipeline;
   }
 
-  void run(bool general, const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
-           std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) {
+  // Bicubic patches: one dispatch, or rule T's two (the nets, then the decisions).
+  void runBicubic(const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
+                  std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) {
     const Stopwatch stopwatch;
     decisions.resize(nodes.size());
     if (nodes.empty()) return;
     // Rule T on bicubic patches: the nets' pipeline builds on a worker thread while this one
     // builds the deciding pipeline.
-    const bool twoDispatches = !general && options.rule == SplitRule::Tolerance;
+    const bool twoDispatches = options.rule == SplitRule::Tolerance;
     if (twoDispatches) toleranceNets_.start();
-    vk::ComputePipeline& pipeline = pipelineFor(general, ruleConstant(options.rule), options.samples);
+    vk::ComputePipeline& pipeline = pipelineFor(false, ruleConstant(options.rule), options.samples);
     vk::ComputePipeline* nets = twoDispatches ? &toleranceNets_.get() : nullptr;
     if (nets)
       vk::ensureCapacity(context_, netBounds_, nodes.size() * sizeof(gpu::ToleranceNetBounds),
@@ -283,8 +291,6 @@ class VulkanClassifier final : public NodeClassifier {
         vk::computeToComputeBarrier(context_, cmd);
         pipeline.dispatchBindings(cmd, {points, nodeTexels, netTexels, &decisions_}, &push,
                                   push.nodeCount);
-      } else if (general) {
-        pipeline.dispatch(cmd, {&patches_, &nodes_, &decisions_, &points_}, &push, push.nodeCount);
       } else {
         pipeline.dispatch(cmd, {&patches_, &nodes_, &decisions_}, &push, push.nodeCount);
       }
@@ -348,7 +354,7 @@ class VulkanClassifier final : public NodeClassifier {
   // Rule T's general variants (kGeneralToleranceVariants), built when a level first needs one.
   std::array<std::unique_ptr<vk::ComputePipeline>, kGeneralVariants> variantPipelines_;
   std::vector<size_t> patchShader_;  // per uploaded general patch: variantOf
-  std::vector<gpu::QuadNode> sortedNodes_;  // a level's nodes by shader (runGeneralTolerance)
+  std::vector<gpu::QuadNode> sortedNodes_;  // a level's nodes by shader (runGeneral)
   std::vector<gpu::NodeDecision> sortedDecisions_;
   vk::Buffer patches_, nodes_, decisions_, points_, netBounds_;
   // Rule T's bicubic shaders' views of the buffers, all RGBA32UI (lib/tolerance_texels.glsl).
