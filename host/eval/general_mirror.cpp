@@ -1,6 +1,7 @@
 #include "eval/general_mirror.h"
 
 #include "common/glsl_builtins.h"
+#include "eval/detail/general_tolerance_variants.h"
 
 namespace tessera::mirror {
 namespace glsl {
@@ -38,7 +39,26 @@ gpu::EvalSample evalGeneralSample(const gpu::GeneralPatch& patch, const gpu::vec
 gpu::NodeDecision classifyGeneralNode(const gpu::GeneralPatch& patch, const gpu::vec4* points,
                                       const gpu::QuadNode& node, uint32_t rule, int samples,
                                       const gpu::ClassifyPush& params) {
+  if (rule == gpu::kSplitRuleTolerance)
+    if (const GeneralToleranceClassify variant = generalToleranceVariant(patch))
+      return variant(patch, points, node, params);
   return glsl::GeneralKernel{points}.classifyNode(patch, node, rule, samples, params);
+}
+
+GeneralToleranceClassify generalToleranceVariant(const gpu::GeneralPatch& patch) {
+  const uint32_t n = patch.degreeU, m = patch.degreeV;
+  if (patch.rational == 0u) {
+    // Polynomial (n, m) up to 3 × 3, at (n − 1)·3 + m − 1.
+    static constexpr GeneralToleranceClassify kPolynomial[9] = {
+        generalTolerance_p1x1, generalTolerance_p1x2, generalTolerance_p1x3,
+        generalTolerance_p2x1, generalTolerance_p2x2, generalTolerance_p2x3,
+        generalTolerance_p3x1, generalTolerance_p3x2, generalTolerance_p3x3};
+    return n >= 1 && m >= 1 && n <= 3 && m <= 3 ? kPolynomial[(n - 1) * 3 + (m - 1)] : nullptr;
+  }
+  if (n == 2 && m == 1) return generalTolerance_r2x1;
+  if (n == 1 && m == 2) return generalTolerance_r1x2;
+  if (n == 2 && m == 2) return generalTolerance_r2x2;
+  return nullptr;
 }
 
 }  // namespace tessera::mirror

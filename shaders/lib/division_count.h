@@ -46,8 +46,8 @@ DIVISION_STORAGE DivisionNet gNet;
 // points (divisionClassMaxima: (n+1)²(m+1)² pairs) and over the weight ratios' q × q pieces
 // (divisionWeightRatios, a rare path). Unrolled with everything else, they made llvmpipe's
 // build of a rational variant take 7–37 s instead of 1–2. (GLSL's [[dont_unroll]]: the shader
-// enables GL_EXT_control_flow_attributes.)
-#ifdef DIVISION_FIXED_DEGREE_U
+// enables GL_EXT_control_flow_attributes; the C++ mirror's variants leave it to the compiler.)
+#if defined(DIVISION_FIXED_DEGREE_U) && !defined(__cplusplus)
 #define DIVISION_KEEP_LOOP [[dont_unroll]]
 #else
 #define DIVISION_KEEP_LOOP

@@ -1,0 +1,6 @@
+// Rule T's general mirror for polynomial 1 × 2 patches (eval/detail/general_tolerance_variants.h).
+#define DIVISION_FIXED_POLYNOMIAL
+#define DIVISION_FIXED_DEGREE_U 1
+#define DIVISION_FIXED_DEGREE_V 2
+#define GENERAL_TOLERANCE_VARIANT generalTolerance_p1x2
+#include "eval/detail/general_tolerance_variant.inc"
