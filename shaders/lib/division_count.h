@@ -253,8 +253,17 @@ void divisionAccumulate(int partial, vec3 e, vec3 f, float den, int cls, IN(Divi
 }
 
 // All four numerators' class maxima in one pass over the (i, j) pairs (each control-net entry
-// is loaded once per pair; the GPU keeps these arrays in scratch memory).
-void divisionClassMaxima() {
+// is loaded once per pair; the GPU keeps these arrays in scratch memory). A C++ includer that
+// defines DIVISION_CLASS_MAXIMA_ELSEWHERE supplies divisionClassMaxima itself (the mirror's
+// rule T variants: the same operations four pairs at a time, host/eval/detail/
+// division_class_maxima_sse.inc) and keeps this one as divisionClassMaximaScalar.
+#ifdef DIVISION_CLASS_MAXIMA_ELSEWHERE
+#define DIVISION_CLASS_MAXIMA_SCALAR divisionClassMaximaScalar
+void divisionClassMaxima();
+#else
+#define DIVISION_CLASS_MAXIMA_SCALAR divisionClassMaxima
+#endif
+void DIVISION_CLASS_MAXIMA_SCALAR() {
   int count = (DIVISION_NET_N + 1) * (DIVISION_NET_M + 1);
   DivisionKRange ru = divisionKRange(true);
   DivisionKRange rv = divisionKRange(false);
