@@ -42,6 +42,13 @@ gpu::NodeDecision classifyGeneralNode(const gpu::GeneralPatch& patch, const gpu:
   if (rule == gpu::kSplitRuleTolerance)
     if (const GeneralToleranceClassify variant = generalToleranceVariant(patch))
       return variant(patch, points, node, params);
+  return classifyGeneralNodeGeneric(patch, points, node, rule, samples, params);
+}
+
+gpu::NodeDecision classifyGeneralNodeGeneric(const gpu::GeneralPatch& patch,
+                                             const gpu::vec4* points, const gpu::QuadNode& node,
+                                             uint32_t rule, int samples,
+                                             const gpu::ClassifyPush& params) {
   return glsl::GeneralKernel{points}.classifyNode(patch, node, rule, samples, params);
 }
 

@@ -10,8 +10,15 @@ namespace tessera::mirror {
 gpu::EvalSample evalGeneralSample(const gpu::GeneralPatch& patch, const gpu::vec4* points,
                                   float u, float v, float eps);
 
+// Rule T on a patch of a degree pair with a variant of its own (eval/detail/
+// general_tolerance_variants.h) goes to that variant; everything else to the generic text.
 gpu::NodeDecision classifyGeneralNode(const gpu::GeneralPatch& patch, const gpu::vec4* points,
                                       const gpu::QuadNode& node, uint32_t rule, int samples,
                                       const gpu::ClassifyPush& params);
+// The generic text alone, whatever the degrees: what the variants must equal bit for bit.
+gpu::NodeDecision classifyGeneralNodeGeneric(const gpu::GeneralPatch& patch,
+                                             const gpu::vec4* points, const gpu::QuadNode& node,
+                                             uint32_t rule, int samples,
+                                             const gpu::ClassifyPush& params);
 
 }  // namespace tessera::mirror
