@@ -411,14 +411,19 @@ float betterDiagonalBound(vec3 ss, vec3 st, vec3 tt, OUT(uint) diagonal) {
 // C_tt·k_u²) + spreadShare·(m_ss·k_v² + 2·m_st·k_u·k_v + m_tt·k_u²) + its absolute guard (W
 // is homogeneous of degree 1). spreadShare = 1 is the sound estimate; the grid split takes
 // the terms' own share (spread.w).
-float toleranceGridNumerator(IN(ToleranceTerms) t, float uu, float uv, float vv, float spreadShare) {
+// knownW ≥ 0: that W, the node's own where C = 0 (toleranceGridCounts), else W is computed.
+float toleranceGridNumerator(IN(ToleranceTerms) t, float uu, float uv, float vv, float spreadShare,
+                             float knownW) {
   PRECISE float twoSt = 2.0f * t.bounds.y;
   PRECISE float plain = (t.bounds.x * vv + twoSt * uv) + t.bounds.z * uu;
-  PRECISE vec3 ss = vv * vec3(t.ss);
-  PRECISE vec3 st = uv * vec3(t.st);
-  PRECISE vec3 tt = uu * vec3(t.tt);
-  uint diagonal;
-  PRECISE float w = betterDiagonalBound(ss, st, tt, diagonal);
+  PRECISE float w = knownW;
+  if (!(knownW >= 0.0f)) {
+    PRECISE vec3 ss = vv * vec3(t.ss);
+    PRECISE vec3 st = uv * vec3(t.st);
+    PRECISE vec3 tt = uu * vec3(t.tt);
+    uint diagonal;
+    w = betterDiagonalBound(ss, st, tt, diagonal);
+  }
   PRECISE float twoSpreadSt = 2.0f * t.spread.y;
   PRECISE float rest = (t.spread.x * vv + twoSpreadSt * uv) + t.spread.z * uu;
   PRECISE float guard = plain * kToleranceCentredGuard;
@@ -436,8 +441,20 @@ float toleranceGridNumerator(IN(ToleranceTerms) t, float uu, float uv, float vv,
 // rounding; rational children just split again where it was optimistic. Compared multiplied
 // out by k_u²·k_v² (no division: GPU and mirror agree bit for bit); among equal counts, the
 // smaller estimate.
-uint toleranceGridCounts(IN(ToleranceTerms) t, float tolerance, uint cap) {
+// `nodeW`: the better diagonal's W of the node's own C (toleranceDecision's wDiagonal).
+uint toleranceGridCounts(IN(ToleranceTerms) t, float tolerance, uint cap, float nodeW) {
   PRECISE float room = tolerance - t.bounds.w;
+#ifdef __cplusplus
+  // The mirrors' shortcut, the same bits: where C = 0 (rational nets, the revolution bound:
+  // no centres) every k_u × k_v scales it to itself (±0 times a positive count, signs kept),
+  // so each W is the node's. The shaders keep the one path: no branch for lavapipe to compile.
+  bool centreless = t.ss.x == 0.0f && t.ss.y == 0.0f && t.ss.z == 0.0f && t.st.x == 0.0f &&
+                    t.st.y == 0.0f && t.st.z == 0.0f && t.tt.x == 0.0f && t.tt.y == 0.0f &&
+                    t.tt.z == 0.0f;
+  float knownW = centreless ? nodeW : -1.0f;
+#else
+  float knownW = -1.0f;
+#endif
   uint best = 0u;
   uint bestCount = cap * cap + 1u;
   PRECISE float bestNum = 0.0f;
@@ -452,7 +469,7 @@ uint toleranceGridCounts(IN(ToleranceTerms) t, float tolerance, uint cap) {
       PRECISE float uu = fu * fu;
       PRECISE float vv = fv * fv;
       PRECISE float uv = fu * fv;
-      PRECISE float num = toleranceGridNumerator(t, uu, uv, vv, t.spread.w);
+      PRECISE float num = toleranceGridNumerator(t, uu, uv, vv, t.spread.w, knownW);
       PRECISE float scaled = num * 0.125f;
       PRECISE float guarded = scaled * kToleranceRelativeGuard;
       PRECISE float den = uu * vv;
@@ -524,7 +541,7 @@ NodeDecision toleranceDecision(IN(ToleranceTerms) t, IN(QuadNode) node, IN(Class
   } else if (min(r.z - r.x, r.w - r.y) < params.minSize) {
     d.cause = kCauseMinSize;
   } else {
-    uint grid = toleranceGridCounts(t, params.tolerance, params.toleranceSplitCap);
+    uint grid = toleranceGridCounts(t, params.tolerance, params.toleranceSplitCap, wDiagonal);
     PRECISE float halfA = 0.5f * a;
     PRECISE float halfB = 0.5f * b;
     bool splitU = !(a < halfB);
