@@ -1,10 +1,7 @@
 // The fp32 mirror of shaders/trim_classify.comp.glsl: the same source text
 // (shaders/lib/trim_classify.h) compiled as C++ with -ffp-contract=off, so on lavapipe it
 // agrees with the shader bit for bit.
-#include <algorithm>
-
 #include "common/glsl_builtins.h"
-#include "common/parallel_for.h"
 #include "trim/trim_classifier.h"
 
 namespace tessera {
@@ -36,13 +33,7 @@ class MirrorTrimClassifier final : public TrimClassifier {
     mirror::glsl::TrimKernel kernel{set.faces.data(), set.pieces.data(),
                                           set.segments.data()};
     std::vector<uint32_t> out(queries.size());
-    // On all cores, in chunks from a shared counter: a node costs its face's segment count.
-    // At least 256 nodes a thread, as the node classifier: fewer are not worth a thread start.
-    const auto threads =
-        unsigned(std::min<size_t>((queries.size() + 255) / 256, resolveThreadCount(0)));
-    parallelForChunks(queries.size(), 64, std::max(1u, threads), [&](size_t begin, size_t end) {
-      for (size_t i = begin; i < end; ++i) out[i] = kernel.classifyTrimNode(queries[i]);
-    });
+    for (size_t i = 0; i < queries.size(); ++i) out[i] = kernel.classifyTrimNode(queries[i]);
     return out;
   }
 };
