@@ -303,3 +303,41 @@ TEST_CASE("segmentsFartherThan answers segmentDistance > d", "[trim]") {
   CHECK(far > 1000);
   CHECK(near > 1000);
 }
+
+TEST_CASE("Trim classification: the mirror's per-face segment runs decide as the whole scan",
+          "[trim]") {
+  // A call with many nodes on a face of many segments reads only those that can matter to
+  // each node (trim_classify_mirror.cpp, FaceSegmentIndex); one node a call scans the face
+  // whole. A wavy arc of 600 segments closed by a chord long in v, and a small hole: nodes of
+  // levels 2..9 anywhere on the piece, and the face's rectangle itself.
+  std::vector<glm::dvec2> wavy, hole;
+  for (int k = 0; k < 600; ++k) {
+    const double angle = M_PI * (k / 600.0 - 0.5), r = 0.4 + 0.05 * std::sin(17.0 * angle);
+    wavy.push_back({0.5 + r * std::cos(angle), 0.5 + r * std::sin(angle)});
+  }
+  for (int k = 0; k < 40; ++k) {
+    const double angle = -2.0 * M_PI * k / 40;
+    hole.push_back({0.5 + 0.1 * std::cos(angle), 0.6 + 0.1 * std::sin(angle)});
+  }
+  const TrimSet set = packTrimSet({{wavy, hole}}, {{0, {0, 0, 1, 1}}, {0, {0.25, 0.5, 0.75, 1}}});
+  std::mt19937 rng(17);
+  std::vector<gpu::TrimQuery> queries = {{{0, 0, 1, 1}, 0, 0, 0, 0}};
+  for (int k = 0; k < 4000; ++k) {
+    const uint32_t cells = 1u << (2 + rng() % 8);
+    const float size = 1.0f / float(cells), i = float(rng() % cells), j = float(rng() % cells);
+    queries.push_back({{i * size, j * size, (i + 1) * size, (j + 1) * size}, rng() % 2, 0, 0, 0});
+  }
+  auto mirror = makeMirrorTrimClassifier();
+  const std::vector<uint32_t> together = mirror->classify(set, queries);
+  std::array<size_t, 3> counts{};
+  size_t differ = 0;
+  for (size_t i = 0; i < queries.size(); ++i) {
+    ++counts[together[i]];
+    differ += mirror->classify(set, {queries[i]})[0] != together[i];
+  }
+  CHECK(differ == 0);
+  // Every class occurs: the runs are not trivially all of the face, nor empty.
+  CHECK(counts[gpu::kTrimInside] > 100);
+  CHECK(counts[gpu::kTrimOutside] > 100);
+  CHECK(counts[gpu::kTrimCrossing] > 100);
+}
