@@ -363,7 +363,13 @@ TesseraRun runTessera(const CadFile& file, double tolerance, const TesseraBacken
   options.measureKeptTriangles = false;
   TesseraRun run;
   double fastest = 1e300;
+  // Each run's result is kept until the timing ends, so that no run times the freeing of the
+  // run before it (OCCT's runs leave out BRepTools::Clean, the removal of theirs, alike).
+  std::vector<CadImport> earlierImports;
+  std::vector<TrimmedMesh> earlierMeshes;
   const auto once = [&] {
+    earlierImports.push_back(std::move(run.import));
+    earlierMeshes.push_back(std::move(run.mesh));
     const Stopwatch clock;
     const double cpuBefore = processCpuMs();
     run.import = toTrimmedModel(file, options.tolerance, options.threads);

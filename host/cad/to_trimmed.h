@@ -32,12 +32,24 @@ struct CadEdgeWarning {
   std::string message;
 };
 
+// An indexed map of shapes that moves by exchanging its content: OCCT 7.6's maps have no move,
+// so moving a CadImport (assigning a new import to an old one, say) copied its three maps, a
+// node and a hash per shape. The moved-from map holds what the target held.
+struct MovableShapeMap : TopTools_IndexedMapOfShape {
+  MovableShapeMap() = default;
+  MovableShapeMap(MovableShapeMap&& other) noexcept { Exchange(other); }
+  MovableShapeMap& operator=(MovableShapeMap&& other) noexcept {
+    Exchange(other);
+    return *this;
+  }
+};
+
 struct CadImport {
   TrimmedModel model;                  // the faces that converted
   std::vector<CadFaceFailure> failures;  // the faces that did not, never dropped silently
   std::vector<CadEdgeWarning> warnings;  // edges off their faces' surfaces beyond tolerance
   // The B-rep's maps (index k ↔ OCCT's index k + 1): faces in TrimmedFace::faceIndex order.
-  TopTools_IndexedMapOfShape faces, edges, vertices;
+  MovableShapeMap faces, edges, vertices;
   std::vector<EdgeSamples> edgeSamples;  // per edge of `edges`
   // Per face of model.faces: the (u0, u1, v0, v1) its surface was converted over, the extent
   // of its loops in the pcurves' (u, v) (convertFaceSurface(faceBasisSurface(face), ...)
