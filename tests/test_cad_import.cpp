@@ -3,7 +3,9 @@
 #include <catch2/catch.hpp>
 
 #include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
@@ -671,4 +673,36 @@ TEST_CASE("cad: the direct conversions match GeomConvert on whole and partial co
   CHECK(compared["whole u Geom_CylindricalSurface"] >= 1);
   CHECK(compared["Geom_CylindricalSurface"] >= 4);
   CHECK(blocks >= 8);
+}
+
+// The maps are built two ways: the faces' part of the walk on all threads where the shape is
+// faces under compounds, solids and shells, the serial walk where anything else hangs there
+// (here a free edge and a free vertex between two boxes, one of them moved and reversed and
+// one used twice). Both must number as TopExp::MapShapes does, and on any thread count alike.
+TEST_CASE("cad: the shape maps are TopExp's with and without free edges and vertices", "[cad]") {
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(1.0, 2.0, 3.0).Shape();
+  gp_Trsf shift;
+  shift.SetTranslation(gp_Vec(5.0, 0.0, 0.0));
+  const TopoDS_Shape moved = box.Moved(TopLoc_Location(shift)).Reversed();
+  const TopoDS_Shape other = BRepPrimAPI_MakeBox(gp_Pnt(0.0, 5.0, 0.0), 1.0, 1.0, 1.0).Shape();
+  const TopoDS_Shape edge = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 9), gp_Pnt(1, 1, 9)).Shape();
+  const TopoDS_Shape vertex = BRepBuilderAPI_MakeVertex(gp_Pnt(0, 0, 7)).Shape();
+  for (const bool loose : {false, true}) {
+    TopoDS_Compound all;
+    BRep_Builder builder;
+    builder.MakeCompound(all);
+    builder.Add(all, moved);
+    if (loose) builder.Add(all, edge), builder.Add(all, vertex);
+    builder.Add(all, other);
+    builder.Add(all, moved);  // met again: mapped once
+    INFO("free edge and vertex: " << loose);
+    for (const unsigned threads : {1u, 4u}) {
+      const CadImport in = toTrimmedModel(CadFile{"boxes", all, {}}, 0.01, threads);
+      checkMapsAsTopExp(in, all);
+      CHECK(in.faces.Extent() == 12);
+      CHECK(in.edges.Extent() == 24 + (loose ? 1 : 0));
+      CHECK(in.vertices.Extent() == 16 + (loose ? 3 : 0));
+      CHECK(in.failures.empty());
+    }
+  }
 }
