@@ -379,6 +379,11 @@ struct FaceWalk {
 
 FaceWalk walkFace(const TopoDS_Shape& face) {
   FaceWalk walk;
+  // Sized first (an edge has two vertices, mostly): grown, the vectors copied every shape.
+  size_t edges = 0;
+  for (TopoDS_Iterator w(face); w.More(); w.Next()) edges += size_t(w.Value().NbChildren());
+  walk.shapes.reserve(3 * edges);
+  walk.vertexCounts.reserve(edges);
   for (TopoDS_Iterator w(face); w.More() && walk.plain; w.Next()) {
     if (w.Value().ShapeType() != TopAbs_WIRE) walk.plain = false;
     for (TopoDS_Iterator e(w.Value()); e.More() && walk.plain; e.Next()) {
