@@ -149,9 +149,10 @@ CadFile readCadFile(const std::string& path) {
   return file;
 }
 
-std::string faceEntityLabel(const CadFile& file, const TopoDS_Face& face) {
+const std::string& faceEntityLabel(const CadFile& file, const TopoDS_Face& face) {
+  static const std::string none;
   auto found = file.faceEntities.find(face.TShape().get());
-  return found == file.faceEntities.end() ? "" : found->second;
+  return found == file.faceEntities.end() ? none : found->second;
 }
 
 }  // namespace tessera

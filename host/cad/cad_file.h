@@ -25,6 +25,7 @@ CadFile readCadFile(const std::string& path);
 
 // "#345 AdvancedFace" for a face transferred from a STEP entity, "entity 12 Face" for IGES;
 // empty when the reader keeps no record of the face (a .brep file, a shape built in code).
-std::string faceEntityLabel(const CadFile& file, const TopoDS_Face& face);
+// A reference into `file` (or to an empty string): no copy per face.
+const std::string& faceEntityLabel(const CadFile& file, const TopoDS_Face& face);
 
 }  // namespace tessera
