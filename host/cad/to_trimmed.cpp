@@ -409,8 +409,16 @@ FaceWalk walkFace(const TopoDS_Shape& face) {
 // The faces' edges and vertices into the maps, face by face in face order: as mapSubShapes adds
 // them (an edge's vertices only where the edge is met first). False where a face was not plain.
 bool mapWalkedFaces(const std::vector<FaceWalk>& walks, CadImport& in) {
-  for (const FaceWalk& walk : walks)
+  size_t uses = 0;
+  for (const FaceWalk& walk : walks) {
     if (!walk.plain) return false;
+    uses += walk.vertexCounts.size();
+  }
+  // Sized once for what comes (an edge is used by two faces, a closed shell has fewer vertices
+  // than edges): grown by doubling, each growth hashed every shape again. The maps' order is
+  // their indices', whatever the buckets.
+  in.edges.ReSize(int(uses / 2));
+  in.vertices.ReSize(int(uses / 2));
   for (const FaceWalk& walk : walks) {
     size_t next = 0;
     for (const uint8_t count : walk.vertexCounts) {
