@@ -477,7 +477,7 @@ CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads) {
   CadImport in;
   in.delta = delta;
   // The maps' nodes from one block allocator: a node per shape, freed together with the maps
-  // (malloc was a fifth of the walk, which runs before the threads start).
+  // (malloc was a fifth of the walk; the maps take their shapes on one thread, mapShape).
   const Handle(NCollection_BaseAllocator) nodes = new NCollection_IncAllocator;
   for (TopTools_IndexedMapOfShape* map : {&in.faces, &in.edges, &in.vertices}) map->Clear(nodes);
   mapShape(file.shape, threads, in);
