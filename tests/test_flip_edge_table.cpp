@@ -1,6 +1,7 @@
 // FlipEdgeTable (trim/detail/flip_edge_table.h): the gap flips' edge → triangles table must
 // answer as a std::map does through inserts, erases (the backward shift moves entries across
-// the array's end) and lookups, and a second table on the thread must start empty.
+// the array's end, their `fixed` flag with them) and lookups, and a second table on the thread
+// must start empty.
 #include <catch2/catch.hpp>
 
 #include <map>
@@ -28,6 +29,7 @@ TEST_CASE("flip edge table: the same answers as a std::map under random edits",
   for (size_t triangles : {1u, 3u, 20u, 200u}) {
     FlipEdgeTable table(triangles);
     std::map<uint64_t, std::vector<uint32_t>> reference;
+    std::map<uint64_t, bool> fixed;  // the keys marked fixed, while present
     // Few distinct vertices: keys collide on their home slots and clusters wrap around.
     std::uniform_int_distribution<uint32_t> vertex(0, uint32_t(2 + triangles));
     const auto randomKey = [&] {
@@ -40,31 +42,41 @@ TEST_CASE("flip edge table: the same answers as a std::map under random edits",
       const int action = int(rng() % 4);
       if (action == 0 && reference.size() < 3 * triangles) {
         const uint32_t id = uint32_t(rng() % 1000);
-        table[key].push_back(id);
+        table[key].ids.push_back(id);
         reference[key].push_back(id);
       } else if (action == 1) {
         table.erase(key);
         reference.erase(key);
+        fixed.erase(key);
       } else if (action == 2 && reference.count(key)) {
         const uint32_t to = uint32_t(rng() % 1000);
         const uint32_t from = reference[key][0];
-        table[key].replace(from, to);
+        table[key].ids.replace(from, to);
         for (uint32_t& id : reference[key])
           if (id == from) id = to;
+      } else if (action == 3 && reference.count(key)) {
+        table[key].fixed = true;
+        fixed[key] = true;
       }
-      const SmallIdList* found = table.find(key);
+      const FlipEdgeTable::Entry* found = table.find(key);
       const auto expected = reference.find(key);
       REQUIRE((found != nullptr) == (expected != reference.end()));
-      if (found) REQUIRE(idsOf(*found) == expected->second);
+      if (found) REQUIRE(idsOf(found->ids) == expected->second);
+      if (found) REQUIRE(found->fixed == (fixed.count(key) > 0));
     }
     std::map<uint64_t, std::vector<uint32_t>> walked;
-    table.forEach([&](uint64_t key, const SmallIdList& ids) { walked[key] = idsOf(ids); });
+    std::map<uint64_t, bool> walkedFixed;
+    table.forEach([&](uint64_t key, const FlipEdgeTable::Entry& e) {
+      walked[key] = idsOf(e.ids);
+      if (e.fixed) walkedFixed[key] = true;
+    });
     REQUIRE(walked == reference);
+    REQUIRE(walkedFixed == fixed);
   }
   // The next table on the thread reuses the slots, empty.
   FlipEdgeTable fresh(5);
   size_t entries = 0;
-  fresh.forEach([&](uint64_t, const SmallIdList&) { ++entries; });
+  fresh.forEach([&](uint64_t, const FlipEdgeTable::Entry&) { ++entries; });
   REQUIRE(entries == 0);
   REQUIRE(fresh.find(1) == nullptr);
 }

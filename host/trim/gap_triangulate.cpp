@@ -196,52 +196,94 @@ bool insideOrOnTriangle(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) 
   return cross(b - a, p - a) >= 0 && cross(c - b, p - b) >= 0 && cross(a - c, p - c) >= 0;
 }
 
+// One corner of the polygon being clipped, with what the ear test last found there. The
+// polygon only loses vertices, so the finding holds until the corner's neighbours change (a new
+// triangle) or, for a blocked corner, until its blocker is clipped away: an empty ear stays
+// empty, and a corner with a vertex inside stays blocked while that vertex is left.
+struct EarCorner {
+  enum Kind : uint8_t { Unknown, Reflex, Blocked, Ear, Flat };
+  uint32_t prev = 0, next = 0;  // neighbours, as positions in the polygon given
+  Kind kind = Unknown;
+  uint32_t blocker = 0;  // Blocked: the position of a vertex inside or on the ear
+  double area = 0;       // cross(b − a, c − b) of (prev, this, next): > 0 when convex
+  double ratio = 0;      // shapeRatio, for an empty ear
+};
+
 // Ear clipping of a weakly simple counter-clockwise polygon (ids may repeat at bridges and
 // pinches). A vertex is an ear when its corner is strictly convex and no other vertex, at a
-// place other than the ear's three corners, lies inside the ear or on its sides. A flat ear
-// (kFlatRatio) is taken only when no other ear is left, the fattest of them first.
-void clipEars(const std::vector<glm::dvec2>& points, std::vector<uint32_t> polygon,
+// place other than the ear's three corners, lies inside the ear or on its sides. The first ear
+// in the polygon's order is clipped; a flat ear (kFlatRatio) is taken only when no other ear is
+// left, the fattest of them first. The polygon is a linked list whose corners keep their ear
+// test (EarCorner): re-testing every corner before the first ear after each clip, each against
+// every vertex, was most of the gap's time.
+void clipEars(const std::vector<glm::dvec2>& points, const std::vector<uint32_t>& polygon,
               std::vector<std::array<uint32_t, 3>>& triangles, size_t& failures) {
-  while (polygon.size() > 3) {
-    const size_t n = polygon.size();
-    size_t ear = n, fallback = n, flat = n;
-    double fallbackArea = 0, flatRatio = 0;
-    for (size_t i = 0; i < n && ear == n; ++i) {
-      const glm::dvec2 a = points[polygon[(i + n - 1) % n]], b = points[polygon[i]],
-                       c = points[polygon[(i + 1) % n]];
-      const double area = cross(b - a, c - b);
-      if (area <= 0) continue;
-      if (area > fallbackArea) fallback = i, fallbackArea = area;
-      bool empty = true;
-      for (size_t j = 0; j < n && empty; ++j) {
-        const glm::dvec2 p = points[polygon[j]];
-        if (p == a || p == b || p == c) continue;
-        empty = !insideOrOnTriangle(p, a, b, c);
-      }
-      if (!empty) continue;
-      const double ratio = shapeRatio(a, b, c);
-      if (ratio >= kFlatRatio)
-        ear = i;
-      else if (ratio > flatRatio)
-        flat = i, flatRatio = ratio;
+  const uint32_t count = uint32_t(polygon.size());
+  if (count < 3) return;
+  std::vector<EarCorner> corners(count);
+  std::vector<char> left(count, 1);  // not clipped yet
+  for (uint32_t i = 0; i < count; ++i)
+    corners[i].prev = (i + count - 1) % count, corners[i].next = (i + 1) % count;
+  uint32_t head = 0, size = count;  // head: the first vertex left, in the polygon's order
+  const auto at = [&](uint32_t i) { return points[polygon[i]]; };
+  // The corner's ear test, re-done only when what it found may no longer hold.
+  const auto test = [&](uint32_t i) -> const EarCorner& {
+    EarCorner& corner = corners[i];
+    if (corner.kind != EarCorner::Unknown &&
+        !(corner.kind == EarCorner::Blocked && !left[corner.blocker]))
+      return corner;
+    const glm::dvec2 a = at(corner.prev), b = at(i), c = at(corner.next);
+    corner.area = cross(b - a, c - b);
+    if (corner.area <= 0) {
+      corner.kind = EarCorner::Reflex;
+      return corner;
     }
-    if (ear == n) ear = flat;
-    if (ear == n) {
+    uint32_t j = head;
+    for (uint32_t k = 0; k < size; ++k, j = corners[j].next) {
+      const glm::dvec2 p = at(j);
+      if (p == a || p == b || p == c) continue;
+      if (insideOrOnTriangle(p, a, b, c)) {
+        corner.kind = EarCorner::Blocked, corner.blocker = j;
+        return corner;
+      }
+    }
+    corner.ratio = shapeRatio(a, b, c);
+    corner.kind = corner.ratio >= kFlatRatio ? EarCorner::Ear : EarCorner::Flat;
+    return corner;
+  };
+  while (size > 3) {
+    constexpr uint32_t kNone = ~0u;
+    uint32_t ear = kNone, fallback = kNone, flat = kNone;
+    double fallbackArea = 0, flatRatio = 0;
+    uint32_t i = head;
+    for (uint32_t k = 0; k < size && ear == kNone; ++k, i = corners[i].next) {
+      const EarCorner& corner = test(i);
+      if (corner.kind == EarCorner::Reflex) continue;
+      if (corner.area > fallbackArea) fallback = i, fallbackArea = corner.area;
+      if (corner.kind == EarCorner::Ear)
+        ear = i;
+      else if (corner.kind == EarCorner::Flat && corner.ratio > flatRatio)
+        flat = i, flatRatio = corner.ratio;
+    }
+    if (ear == kNone) ear = flat;
+    if (ear == kNone) {
       ++failures;
-      if (fallback == n) return;  // nothing convex is left: a degenerate remainder
+      if (fallback == kNone) return;  // nothing convex is left: a degenerate remainder
       ear = fallback;
     }
-    triangles.push_back({polygon[(ear + n - 1) % n], polygon[ear], polygon[(ear + 1) % n]});
-    polygon.erase(polygon.begin() + ear);
+    const uint32_t before = corners[ear].prev, after = corners[ear].next;
+    triangles.push_back({polygon[before], polygon[ear], polygon[after]});
+    left[ear] = 0, --size;
+    corners[before].next = after, corners[after].prev = before;
+    corners[before].kind = corners[after].kind = EarCorner::Unknown;  // a new triangle each
+    if (head == ear) head = after;
   }
-  if (polygon.size() == 3) {
-    const double area =
-        cross(points[polygon[1]] - points[polygon[0]], points[polygon[2]] - points[polygon[1]]);
-    if (area > 0)
-      triangles.push_back({polygon[0], polygon[1], polygon[2]});
-    else if (area < 0)
-      ++failures;  // a clockwise remainder: the polygon crossed itself (a bow tie's other lobe)
-  }
+  const uint32_t v0 = head, v1 = corners[v0].next, v2 = corners[v1].next;
+  const double area = cross(at(v1) - at(v0), at(v2) - at(v1));
+  if (area > 0)
+    triangles.push_back({polygon[v0], polygon[v1], polygon[v2]});
+  else if (area < 0)
+    ++failures;  // a clockwise remainder: the polygon crossed itself (a bow tie's other lobe)
 }
 
 }  // namespace
@@ -310,12 +352,14 @@ void flipWith(const std::vector<glm::dvec2>& points,
               const std::vector<std::pair<uint32_t, uint32_t>>& fixed,
               std::vector<std::array<uint32_t, 3>>& triangles) {
   using Edge = EdgeKey64;
+  using Entry = trim_detail::FlipEdgeTable::Entry;
   const auto key = [](uint32_t a, uint32_t b) {
     return Edge(std::min(a, b)) << 32 | Edge(std::max(a, b));
   };
-  // The constrained edges sorted: a binary search instead of a hashed set built for every gap.
-  // It and the queue are buffers kept for the thread (most gaps are a few triangles, where
-  // their allocations cost more than the flips).
+  // The constrained edges sorted: a binary search instead of a hashed set built for every gap,
+  // asked once for each edge of the table as it enters (FlipEdgeTable::Entry::fixed). It and
+  // the queue are buffers kept for the thread (most gaps are a few triangles, where their
+  // allocations cost more than the flips).
   thread_local std::vector<Edge> constrained;
   constrained.clear();
   constrained.reserve(fixed.size());
@@ -326,18 +370,21 @@ void flipWith(const std::vector<glm::dvec2>& points,
   };
   trim_detail::FlipEdgeTable users(triangles.size());  // edge → the triangles using it
   for (uint32_t t = 0; t < triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k) users[key(triangles[t][k], triangles[t][(k + 1) % 3])].push_back(t);
+    for (int k = 0; k < 3; ++k)
+      users[key(triangles[t][k], triangles[t][(k + 1) % 3])].ids.push_back(t);
   thread_local std::vector<Edge> queue;
   queue.clear();
   // Every flip queues four edges: room for the first pass and a few flips, so the queue does not
   // grow by doubling from nothing (its reallocations were a tenth of the gap's time).
   queue.reserve(3 * triangles.size() + 64);
-  users.forEach([&](Edge edge, const SmallIdList& ts) {
-    if (ts.size() == 2 && !isConstrained(edge)) queue.push_back(edge);
+  users.forEach([&](Edge edge, Entry& entry) {
+    entry.fixed = isConstrained(edge);
+    if (entry.ids.size() == 2 && !entry.fixed) queue.push_back(edge);
   });
   std::sort(queue.begin(), queue.end());  // a deterministic order, whatever the map's
-  const auto moveUser = [&](Edge edge, uint32_t from, uint32_t to) {
-    users[edge].replace(from, to);
+  // Queues an edge of the triangulation (in the table) unless it is constrained.
+  const auto queueFree = [&](Edge edge, const Entry& entry) {
+    if (!entry.fixed) queue.push_back(edge);
   };
   // Each flip lowers the triangulation's lifted volume, so this ends; the cap is a guard
   // against rounding cycling two nearly cocircular flips.
@@ -345,9 +392,9 @@ void flipWith(const std::vector<glm::dvec2>& points,
   while (!queue.empty() && budget-- > 0) {
     const Edge edge = queue.back();
     queue.pop_back();
-    const SmallIdList* found = users.find(edge);
-    if (!found || found->size() != 2 || isConstrained(edge)) continue;
-    const uint32_t t0 = (*found)[0], t1 = (*found)[1];
+    const Entry* found = users.find(edge);
+    if (!found || found->ids.size() != 2 || found->fixed) continue;
+    const uint32_t t0 = found->ids[0], t1 = found->ids[1];
     // t0 = (a, b, c) counter-clockwise with the edge a→b; t1 holds b→a and d.
     int k0 = 0;
     while (key(triangles[t0][k0], triangles[t0][(k0 + 1) % 3]) != edge) ++k0;
@@ -367,11 +414,19 @@ void flipWith(const std::vector<glm::dvec2>& points,
     triangles[t0] = {c, a, d};
     triangles[t1] = {d, b, c};
     users.erase(edge);
-    users[key(c, d)] = SmallIdList(t0, t1);
-    moveUser(key(a, d), t1, t0);
-    moveUser(key(b, c), t0, t1);
-    for (Edge e : {key(a, c), key(a, d), key(b, c), key(b, d)})
-      if (!isConstrained(e)) queue.push_back(e);
+    Entry& newEdge = users[key(c, d)];
+    newEdge.ids = SmallIdList(t0, t1);
+    newEdge.fixed = isConstrained(key(c, d));  // true only where an input edge was missing
+    Entry& aToD = users[key(a, d)];
+    aToD.ids.replace(t1, t0);
+    Entry& bToC = users[key(b, c)];
+    bToC.ids.replace(t0, t1);
+    // The four sides of the quadrilateral, all edges of t0 or t1, in this order: the queue is a
+    // stack, and its order is the flips'.
+    queueFree(key(a, c), *users.find(key(a, c)));
+    queueFree(key(a, d), aToD);
+    queueFree(key(b, c), bToC);
+    queueFree(key(b, d), *users.find(key(b, d)));
   }
 }
 

@@ -3,7 +3,9 @@
 // thread and sized once for the gap. A flip erases one edge and adds one, so the table never
 // grows; most gaps are a few triangles, where the hashed map's buckets (allocated per gap) and
 // the short list searched from the front (quadratic in the triangles) both cost more than the
-// flips. The flips ask only for an edge's users, so any table gives the same flips.
+// flips. The flips ask only for an edge's users, so any table gives the same flips. Each entry
+// also carries whether its edge is constrained (an input edge, never flipped), which the flips
+// asked a sorted list for, by binary search, five times a flip.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -16,6 +18,11 @@ namespace tessera::trim_detail {
 
 class FlipEdgeTable {
  public:
+  struct Entry {
+    SmallIdList ids;     // the triangles using the edge
+    bool fixed = false;  // a constrained edge
+  };
+
   // Room for every edge of `triangles` triangles (at most 3 a triangle) at a load of ≤ ¾. The
   // slots are the thread's: at most one table may be alive on a thread at a time.
   explicit FlipEdgeTable(size_t triangles) : slots_(buffer()) {
@@ -29,21 +36,21 @@ class FlipEdgeTable {
   FlipEdgeTable(const FlipEdgeTable&) = delete;
   FlipEdgeTable& operator=(const FlipEdgeTable&) = delete;
 
-  // The key's list, added empty if absent. Keys are edges (smaller id in the high word), never
-  // kEmpty.
-  SmallIdList& operator[](uint64_t key) {
+  // The key's entry, added (no triangles, not fixed) if absent. Keys are edges (smaller id in
+  // the high word), never kEmpty.
+  Entry& operator[](uint64_t key) {
     size_t k = home(key);
     while (slots_[k].key != kEmpty) {
-      if (slots_[k].key == key) return slots_[k].ids;
+      if (slots_[k].key == key) return slots_[k].entry;
       k = (k + 1) & mask_;
     }
     slots_[k].key = key;
-    slots_[k].ids = SmallIdList();
-    return slots_[k].ids;
+    slots_[k].entry = Entry();
+    return slots_[k].entry;
   }
-  SmallIdList* find(uint64_t key) {
+  Entry* find(uint64_t key) {
     for (size_t k = home(key); slots_[k].key != kEmpty; k = (k + 1) & mask_)
-      if (slots_[k].key == key) return &slots_[k].ids;
+      if (slots_[k].key == key) return &slots_[k].entry;
     return nullptr;
   }
   void erase(uint64_t key) {
@@ -63,19 +70,19 @@ class FlipEdgeTable {
       hole = next;
     }
     slots_[hole].key = kEmpty;
-    slots_[hole].ids = SmallIdList();
+    slots_[hole].entry = Entry();
   }
   template <class F>
-  void forEach(F&& f) const {
+  void forEach(F&& f) {
     for (size_t k = 0; k <= mask_; ++k)
-      if (slots_[k].key != kEmpty) f(slots_[k].key, slots_[k].ids);
+      if (slots_[k].key != kEmpty) f(slots_[k].key, slots_[k].entry);
   }
 
  private:
   static constexpr uint64_t kEmpty = ~uint64_t(0);
   struct Slot {
     uint64_t key = kEmpty;
-    SmallIdList ids;
+    Entry entry;
   };
   static std::vector<Slot>& buffer() {
     thread_local std::vector<Slot> slots;
