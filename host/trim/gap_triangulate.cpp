@@ -156,9 +156,20 @@ bool bridgeHole(const std::vector<glm::dvec2>& points, std::vector<uint32_t>& po
   // instead (the first few usually bridge; sorting them all was a tenth of the gap's time): the
   // heap's first that bridges is the sorted loop's when no other candidate has its distance, as
   // every nearer one failed in both; with ties, the order among them is the sort's own, so the
-  // sorted loop then runs as it did.
+  // sorted loop then runs as it did. Which of several at one distance the heap gives first does
+  // not matter (any of them that bridges sends the search to the sort), so the nearest, when it
+  // alone has its distance and bridges (most holes), is the answer, found in one pass without
+  // the heap's copy and build.
   const auto nearer = [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; };
   const auto farther = [](const Candidate& a, const Candidate& b) { return a.distance > b.distance; };
+  size_t nearest = 0, atNearest = 0;  // the first nearest candidate, and how many share its distance
+  for (size_t c = 0; c < candidates.size(); ++c) {
+    if (c == 0 || candidates[c].distance < candidates[nearest].distance)
+      nearest = c, atNearest = 1;
+    else if (candidates[c].distance == candidates[nearest].distance)
+      ++atNearest;
+  }
+  if (atNearest == 1 && bridges(candidates[nearest])) return join(candidates[nearest]);
   std::vector<Candidate> heap = candidates;
   std::make_heap(heap.begin(), heap.end(), farther);
   bool tied = false;
@@ -356,29 +367,34 @@ void flipWith(const std::vector<glm::dvec2>& points,
   const auto key = [](uint32_t a, uint32_t b) {
     return Edge(std::min(a, b)) << 32 | Edge(std::max(a, b));
   };
-  // The constrained edges sorted: a binary search instead of a hashed set built for every gap,
-  // asked once for each edge of the table as it enters (FlipEdgeTable::Entry::fixed). It and
-  // the queue are buffers kept for the thread (most gaps are a few triangles, where their
-  // allocations cost more than the flips).
-  thread_local std::vector<Edge> constrained;
-  constrained.clear();
-  constrained.reserve(fixed.size());
-  for (const auto& e : fixed) constrained.push_back(key(e.first, e.second));
-  std::sort(constrained.begin(), constrained.end());
-  const auto isConstrained = [&](Edge e) {
-    return std::binary_search(constrained.begin(), constrained.end(), e);
-  };
   trim_detail::FlipEdgeTable users(triangles.size());  // edge → the triangles using it
   for (uint32_t t = 0; t < triangles.size(); ++t)
     for (int k = 0; k < 3; ++k)
       users[key(triangles[t][k], triangles[t][(k + 1) % 3])].ids.push_back(t);
+  // The constrained edges marked in the table (Entry::fixed), once. A constrained edge is never
+  // flipped, so never erased: a flip's new edge is constrained only if some input edge is
+  // missing from the triangulation (a loop that did not close), and only then is it looked up
+  // in the sorted list, a buffer kept for the thread like the queue (most gaps are a few
+  // triangles, where allocations cost more than the flips).
+  thread_local std::vector<Edge> missing;
+  missing.clear();
+  for (const auto& e : fixed) {
+    const Edge edge = key(e.first, e.second);
+    if (Entry* entry = users.find(edge))
+      entry->fixed = true;
+    else
+      missing.push_back(edge);
+  }
+  std::sort(missing.begin(), missing.end());
+  const auto isMissingConstrained = [&](Edge e) {
+    return !missing.empty() && std::binary_search(missing.begin(), missing.end(), e);
+  };
   thread_local std::vector<Edge> queue;
   queue.clear();
   // Every flip queues four edges: room for the first pass and a few flips, so the queue does not
   // grow by doubling from nothing (its reallocations were a tenth of the gap's time).
   queue.reserve(3 * triangles.size() + 64);
-  users.forEach([&](Edge edge, Entry& entry) {
-    entry.fixed = isConstrained(edge);
+  users.forEach([&](Edge edge, const Entry& entry) {
     if (entry.ids.size() == 2 && !entry.fixed) queue.push_back(edge);
   });
   std::sort(queue.begin(), queue.end());  // a deterministic order, whatever the map's
@@ -416,7 +432,7 @@ void flipWith(const std::vector<glm::dvec2>& points,
     users.erase(edge);
     Entry& newEdge = users[key(c, d)];
     newEdge.ids = SmallIdList(t0, t1);
-    newEdge.fixed = isConstrained(key(c, d));  // true only where an input edge was missing
+    if (isMissingConstrained(key(c, d))) newEdge.fixed = true;  // else as it was, if present
     Entry& aToD = users[key(a, d)];
     aToD.ids.replace(t1, t0);
     Entry& bToC = users[key(b, c)];
