@@ -138,6 +138,33 @@ class CornerPoints {
   }
 };
 
+// When each triangle last changed and when each edge was last found not worth a deviation flip,
+// on one clock. The finding reads only the edge's two triangles and measures fixed by their
+// corners, so while neither triangle changes it stands, and the edge is not judged again (each
+// flip pass judged every shared edge, most of them unchanged since the pass before). Only
+// findings on an edge with exactly two triangles are kept: those two are then its triangles
+// for as long as neither changes.
+class FlipFindings {
+ public:
+  void changed(uint32_t t) {
+    if (t >= changedAt_.size()) changedAt_.resize(size_t(t) + 1, 0);
+    changedAt_[t] = ++clock_;
+  }
+  void noFlip(const EdgeKey& edge) { noFlipAt_[key(edge)] = clock_; }
+  bool stillNoFlip(const EdgeKey& edge, uint32_t t, uint32_t s) const {
+    const auto found = noFlipAt_.find(key(edge));
+    return found != noFlipAt_.end() && lastChange(t) <= found->second &&
+           lastChange(s) <= found->second;
+  }
+
+ private:
+  static uint64_t key(const EdgeKey& e) { return uint64_t(e.first) << 32 | e.second; }
+  uint64_t lastChange(uint32_t t) const { return t < changedAt_.size() ? changedAt_[t] : 0; }
+  uint64_t clock_ = 0;
+  std::vector<uint64_t> changedAt_;  // 0: not changed since the refinement began
+  HashMap<uint64_t, uint64_t> noFlipAt_;
+};
+
 }  // namespace
 
 namespace {
@@ -450,6 +477,7 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
   // t = (a, b, c) with a → b its longest side, s = (b, a, d) across it: (c, a, d) and (d, b, c)
   // when both are counter-clockwise and the thinner of them is kFlipSliverGain times as fat as
   // the thinner of t and s (so a flip is never undone).
+  FlipFindings findings;  // for flipByDeviation, kept in step with every change below
   const auto flipSliver = [&](uint32_t t, int longest) {
     const std::array<uint32_t, 3> v = rotated(triangles[t].v, longest);
     const uint32_t a = v[0], b = v[1], c = v[2];
@@ -468,6 +496,7 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
       return false;
     triangles[t] = {t2, true};
     triangles[s] = {s2, true};
+    findings.changed(t), findings.changed(s);
     users.erase(a, b);
     users.replace(a, d, s, t);
     users.replace(b, c, t, s);
@@ -488,6 +517,7 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
       const uint32_t p = w[0], q = w[1], r = w[2], n = uint32_t(triangles.size());
       triangles[u].v = {p, m, r};
       triangles.push_back({{m, q, r}, triangles[u].gap});
+      findings.changed(u), findings.changed(n);
       users.replace(q, r, u, n);
       users.add(p, m, u), users.add(m, r, u);
       users.add(m, r, n), users.add(m, q, n);
@@ -504,6 +534,7 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
     triangles[t] = {{v[0], v[1], m}, true};
     triangles.push_back({{v[1], v[2], m}, true});
     triangles.push_back({{v[2], v[0], m}, true});
+    findings.changed(t), findings.changed(n1), findings.changed(n2);
     users.replace(v[1], v[2], t, n1);
     users.replace(v[2], v[0], t, n2);
     users.add(v[0], m, t), users.add(v[0], m, n2);
@@ -552,6 +583,36 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
   // ruled one would not (a fillet's two sides); a gap edge between two gap triangles is flipped
   // when the worse of the two new triangles deviates less than 0.9 of the worse old one (the
   // margin keeps rounding from flipping back and forth). Passes until none flips, at most 8.
+  // The flip of the gap edge a → b between t = (a, b, c) and s (d across it), if it pays.
+  const auto flipIfLessDeviation = [&](const EdgeKey& edge, uint32_t t, uint32_t s) {
+    const std::array<uint32_t, 3> v = rotated(triangles[t].v,
+                                              sideOf(triangles[t].v, edge.first, edge.second));
+    const uint32_t a = v[0], b = v[1], c = v[2];
+    const int k = sideOf(triangles[s].v, a, b);
+    const uint32_t d = triangles[s].v[(k + 2) % 3];
+    if (d == c) return false;
+    const std::array<uint32_t, 3> t2 = {c, a, d}, s2 = {d, b, c};
+    if (!(ratioOf(t2) >= 1e-5 && ratioOf(s2) >= 1e-5)) return false;  // ccw and not flat
+    const double before = std::max(deviation(v), deviation(triangles[s].v));
+    if (before <= options.tolerance) return false;  // nothing to gain for the refinement
+    // Both new triangles must deviate less than 0.9 of the worse old one. Nearly every flip
+    // fails on t2 alone (s2 is then not sampled), often already on the side terms t2 shares
+    // with t and s, sampled with them (t2 is then not sampled either). A triangle left
+    // unsampled here is sampled, to the same doubles, if it is ever made.
+    const double limit = 0.9 * before;
+    if (deviationAtLeast(t2, limit)) return false;
+    const double t2Deviation = deviation(t2);
+    if (!(t2Deviation < limit)) return false;
+    if (!(std::max(t2Deviation, deviation(s2)) < limit)) return false;
+    triangles[t] = {t2, true};
+    triangles[s] = {s2, true};
+    findings.changed(t), findings.changed(s);
+    users.erase(a, b);
+    users.replace(a, d, s, t);
+    users.replace(b, c, t, s);
+    users.add(c, d, t), users.add(c, d, s);
+    return true;
+  };
   const auto flipByDeviation = [&]() {
     size_t flips = 0;
     for (int pass = 0; pass < 8; ++pass) {
@@ -560,33 +621,11 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
         if (isTrim(edge.first, edge.second)) continue;
         const SmallIdList ts = users.of(edge.first, edge.second);
         if (ts.size() != 2 || !triangles[ts[0]].gap || !triangles[ts[1]].gap) continue;
-        const uint32_t t = ts[0], s = ts[1];
-        const std::array<uint32_t, 3> v = rotated(triangles[t].v,
-                                                  sideOf(triangles[t].v, edge.first, edge.second));
-        const uint32_t a = v[0], b = v[1], c = v[2];
-        const int k = sideOf(triangles[s].v, a, b);
-        const uint32_t d = triangles[s].v[(k + 2) % 3];
-        if (d == c) continue;
-        const std::array<uint32_t, 3> t2 = {c, a, d}, s2 = {d, b, c};
-        if (!(ratioOf(t2) >= 1e-5 && ratioOf(s2) >= 1e-5)) continue;  // ccw and not flat
-        const double before = std::max(deviation(v), deviation(triangles[s].v));
-        if (before <= options.tolerance) continue;  // nothing to gain for the refinement
-        // Both new triangles must deviate less than 0.9 of the worse old one. Nearly every flip
-        // fails on t2 alone (s2 is then not sampled), often already on the side terms t2
-        // shares with t and s, sampled with them (t2 is then not sampled either). A triangle
-        // left unsampled here is sampled, to the same doubles, if it is ever made.
-        const double limit = 0.9 * before;
-        if (deviationAtLeast(t2, limit)) continue;
-        const double t2Deviation = deviation(t2);
-        if (!(t2Deviation < limit)) continue;
-        if (!(std::max(t2Deviation, deviation(s2)) < limit)) continue;
-        triangles[t] = {t2, true};
-        triangles[s] = {s2, true};
-        users.erase(a, b);
-        users.replace(a, d, s, t);
-        users.replace(b, c, t, s);
-        users.add(c, d, t), users.add(c, d, s);
-        ++passFlips;
+        if (findings.stillNoFlip(edge, ts[0], ts[1])) continue;
+        if (flipIfLessDeviation(edge, ts[0], ts[1]))
+          ++passFlips;
+        else
+          findings.noFlip(edge);
       }
       flips += passFlips;
       if (passFlips == 0) break;
