@@ -143,12 +143,17 @@ class CornerPoints {
 // corners, so while neither triangle changes it stands, and the edge is not judged again (each
 // flip pass judged every shared edge, most of them unchanged since the pass before). Only
 // findings on an edge with exactly two triangles are kept: those two are then its triangles
-// for as long as neither changes.
+// for as long as neither changes. The edges of the triangles changed since the last pass began
+// are kept too: with the edges found before, they are the only ones a pass can judge anew.
 class FlipFindings {
  public:
-  void changed(uint32_t t) {
+  static uint64_t key(const EdgeKey& e) { return uint64_t(e.first) << 32 | e.second; }
+  static EdgeKey edgeOf(uint64_t k) { return {uint32_t(k >> 32), uint32_t(k)}; }
+
+  void changed(uint32_t t, const std::array<uint32_t, 3>& v) {
     if (t >= changedAt_.size()) changedAt_.resize(size_t(t) + 1, 0);
     changedAt_[t] = ++clock_;
+    for (int k = 0; k < 3; ++k) pending_.push_back(key(edgeKey(v[k], v[(k + 1) % 3])));
   }
   void noFlip(const EdgeKey& edge) { noFlipAt_[key(edge)] = clock_; }
   bool stillNoFlip(const EdgeKey& edge, uint32_t t, uint32_t s) const {
@@ -156,13 +161,29 @@ class FlipFindings {
     return found != noFlipAt_.end() && lastChange(t) <= found->second &&
            lastChange(s) <= found->second;
   }
+  // The edges of the triangles changed since the last call, sorted and distinct; the first call
+  // answers everyEdge() (none has been judged).
+  template <class EveryEdge>
+  std::vector<uint64_t> takePending(EveryEdge&& everyEdge) {
+    std::vector<uint64_t> edges;
+    if (first_) {
+      first_ = false, pending_.clear();
+      for (const EdgeKey& e : everyEdge()) edges.push_back(key(e));
+      return edges;
+    }
+    edges.swap(pending_);
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    return edges;
+  }
 
  private:
-  static uint64_t key(const EdgeKey& e) { return uint64_t(e.first) << 32 | e.second; }
   uint64_t lastChange(uint32_t t) const { return t < changedAt_.size() ? changedAt_[t] : 0; }
   uint64_t clock_ = 0;
   std::vector<uint64_t> changedAt_;  // 0: not changed since the refinement began
   HashMap<uint64_t, uint64_t> noFlipAt_;
+  std::vector<uint64_t> pending_;
+  bool first_ = true;
 };
 
 }  // namespace
@@ -496,7 +517,7 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
       return false;
     triangles[t] = {t2, true};
     triangles[s] = {s2, true};
-    findings.changed(t), findings.changed(s);
+    findings.changed(t, t2), findings.changed(s, s2);
     users.erase(a, b);
     users.replace(a, d, s, t);
     users.replace(b, c, t, s);
@@ -517,7 +538,7 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
       const uint32_t p = w[0], q = w[1], r = w[2], n = uint32_t(triangles.size());
       triangles[u].v = {p, m, r};
       triangles.push_back({{m, q, r}, triangles[u].gap});
-      findings.changed(u), findings.changed(n);
+      findings.changed(u, triangles[u].v), findings.changed(n, triangles[n].v);
       users.replace(q, r, u, n);
       users.add(p, m, u), users.add(m, r, u);
       users.add(m, r, n), users.add(m, q, n);
@@ -534,7 +555,8 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
     triangles[t] = {{v[0], v[1], m}, true};
     triangles.push_back({{v[1], v[2], m}, true});
     triangles.push_back({{v[2], v[0], m}, true});
-    findings.changed(t), findings.changed(n1), findings.changed(n2);
+    findings.changed(t, triangles[t].v), findings.changed(n1, triangles[n1].v);
+    findings.changed(n2, triangles[n2].v);
     users.replace(v[1], v[2], t, n1);
     users.replace(v[2], v[0], t, n2);
     users.add(v[0], m, t), users.add(v[0], m, n2);
@@ -583,6 +605,29 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
   // ruled one would not (a fillet's two sides); a gap edge between two gap triangles is flipped
   // when the worse of the two new triangles deviates less than 0.9 of the worse old one (the
   // margin keeps rounding from flipping back and forth). Passes until none flips, at most 8.
+  // A pass judges the edges shared at its start, in increasing order (a flip changes what the
+  // edges after it see). Of those, only the ones that may be judged anew: the pending edges
+  // (FlipFindings), and the ones ahead that a flip of this pass changes. Whether an edge was
+  // shared at the start is its count now unless a flip of this pass changed that count (it
+  // erases one edge and adds one), which is noted before the change.
+  HashMap<uint64_t, bool> sharedAtStart;
+  std::vector<uint64_t> ahead;  // a min-heap
+  uint64_t judging = 0;         // the key being judged
+  const auto noteCount = [&](uint32_t a, uint32_t b) {
+    sharedAtStart.emplace(FlipFindings::key(edgeKey(a, b)), users.of(a, b).size() == 2);
+  };
+  const auto queueIfAhead = [&](const std::array<uint32_t, 3>& v) {
+    for (int k = 0; k < 3; ++k) {
+      const EdgeKey e = edgeKey(v[k], v[(k + 1) % 3]);
+      const uint64_t key = FlipFindings::key(e);
+      if (key <= judging) continue;
+      const auto noted = sharedAtStart.find(key);
+      if (noted != sharedAtStart.end() ? noted->second : users.of(e.first, e.second).size() == 2) {
+        ahead.push_back(key);
+        std::push_heap(ahead.begin(), ahead.end(), std::greater<uint64_t>());
+      }
+    }
+  };
   // The flip of the gap edge a → b between t = (a, b, c) and s (d across it), if it pays.
   const auto flipIfLessDeviation = [&](const EdgeKey& edge, uint32_t t, uint32_t s) {
     const std::array<uint32_t, 3> v = rotated(triangles[t].v,
@@ -604,9 +649,10 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
     const double t2Deviation = deviation(t2);
     if (!(t2Deviation < limit)) return false;
     if (!(std::max(t2Deviation, deviation(s2)) < limit)) return false;
+    noteCount(a, b), noteCount(c, d);  // the two counts the flip changes
     triangles[t] = {t2, true};
     triangles[s] = {s2, true};
-    findings.changed(t), findings.changed(s);
+    findings.changed(t, t2), findings.changed(s, s2);
     users.erase(a, b);
     users.replace(a, d, s, t);
     users.replace(b, c, t, s);
@@ -617,15 +663,38 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
     size_t flips = 0;
     for (int pass = 0; pass < 8; ++pass) {
       size_t passFlips = 0;
-      for (const EdgeKey& edge : users.sharedEdges()) {
+      std::vector<uint64_t> pending = findings.takePending([&] { return users.sharedEdges(); });
+      pending.erase(std::remove_if(pending.begin(), pending.end(),
+                                   [&](uint64_t key) {
+                                     const EdgeKey e = FlipFindings::edgeOf(key);
+                                     return users.of(e.first, e.second).size() != 2;
+                                   }),
+                    pending.end());
+      sharedAtStart.clear(), ahead.clear();
+      size_t next = 0;
+      bool any = false;
+      while (next < pending.size() || !ahead.empty()) {
+        uint64_t key;
+        if (!ahead.empty() && (next == pending.size() || ahead.front() <= pending[next])) {
+          key = ahead.front();
+          std::pop_heap(ahead.begin(), ahead.end(), std::greater<uint64_t>());
+          ahead.pop_back();
+        } else {
+          key = pending[next++];
+        }
+        if (any && key == judging) continue;  // queued twice
+        judging = key, any = true;
+        const EdgeKey edge = FlipFindings::edgeOf(key);
         if (isTrim(edge.first, edge.second)) continue;
         const SmallIdList ts = users.of(edge.first, edge.second);
         if (ts.size() != 2 || !triangles[ts[0]].gap || !triangles[ts[1]].gap) continue;
         if (findings.stillNoFlip(edge, ts[0], ts[1])) continue;
-        if (flipIfLessDeviation(edge, ts[0], ts[1]))
+        if (flipIfLessDeviation(edge, ts[0], ts[1])) {
           ++passFlips;
-        else
+          queueIfAhead(triangles[ts[0]].v), queueIfAhead(triangles[ts[1]].v);
+        } else {
           findings.noFlip(edge);
+        }
       }
       flips += passFlips;
       if (passFlips == 0) break;
