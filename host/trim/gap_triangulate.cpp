@@ -251,9 +251,10 @@ void clipEars(const std::vector<glm::dvec2>& points, const std::vector<uint32_t>
     }
     uint32_t j = head;
     for (uint32_t k = 0; k < size; ++k, j = corners[j].next) {
+      // Inside first: most vertices fail its first side, and fewer then need the three
+      // comparisons with the corners (the same answer in either order).
       const glm::dvec2 p = at(j);
-      if (p == a || p == b || p == c) continue;
-      if (insideOrOnTriangle(p, a, b, c)) {
+      if (insideOrOnTriangle(p, a, b, c) && !(p == a || p == b || p == c)) {
         corner.kind = EarCorner::Blocked, corner.blocker = j;
         return corner;
       }
