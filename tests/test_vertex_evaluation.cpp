@@ -10,6 +10,7 @@
 #include <random>
 
 #include "eval/evaluator.h"
+#include "general_samples.h"
 #include "gpu_test_context.h"
 #include "io/bpt_reader.h"
 #include "mesh/tessellate.h"
@@ -97,6 +98,41 @@ TEST_CASE("fp32 mirror: evaluateVertices gives evaluate's positions and normals 
   const PatchCase collapsed = patchCases()[1];
   CHECK(degenerateSamples(makeMirrorEvaluator()->evaluate(
             collapsed.patches, test::gridQueries(collapsed.patches.size(), 13, 40, 7))) > 0);
+}
+
+TEST_CASE("fp32 mirror: general sets' evaluateVertices gives evaluate's positions and normals",
+          "[eval][mirror][general]") {
+  // The mirror's vertex path for general patches (eval/detail/general_vertex.inc): first
+  // partials only and the length scale once per patch; polynomial and rational, degrees 1 to
+  // 7, weights that vanish inside, and a sphere whose collapsed poles take the degenerate rule.
+  struct GeneralCase {
+    const char* name;
+    std::vector<BezierPatch> patches;
+  };
+  const GeneralCase cases[] = {
+      {"degree 1x1", test::randomGeneralPatches(20, 1, 1, false, false, 61)},
+      {"degree 2x3", test::randomGeneralPatches(20, 2, 3, false, false, 62)},
+      {"degree 7x5", test::randomGeneralPatches(10, 7, 5, false, false, 63)},
+      {"rational 2x1", test::randomGeneralPatches(20, 2, 1, true, false, 64)},
+      {"rational 4x3, inner w=0", test::randomGeneralPatches(20, 4, 3, true, true, 65)},
+      {"rational sphere", test::rationalSphere(2.0)}};
+  size_t degenerate = 0;
+  for (const GeneralCase& c : cases) {
+    const PatchSet set = toPatchSet(c.patches);
+    REQUIRE(!set.isBicubic());
+    // Shuffled too: the per-patch tolerance must follow the query's patch, not the last one.
+    for (const bool shuffled : {false, true}) {
+      auto queries = test::gridQueries(c.patches.size(), 13, 40, 8);
+      if (shuffled) std::shuffle(queries.begin(), queries.end(), std::mt19937(9));
+      auto mirror = makeMirrorEvaluator();
+      const auto samples = mirror->evaluate(set, queries);
+      const auto vertices = mirror->evaluateVertices(set, queries);
+      INFO(c.name << (shuffled ? ", shuffled" : "") << ": " << queries.size() << " queries");
+      CHECK(differingVertices(vertices, samples) == 0);
+      if (!shuffled) degenerate += degenerateSamples(samples);
+    }
+  }
+  CHECK(degenerate > 0);  // the degenerate rule's branch was taken
 }
 
 TEST_CASE("eval_vertices shader equals its fp32 mirror and eval.comp's positions and normals",

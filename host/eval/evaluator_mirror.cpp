@@ -51,16 +51,23 @@ namespace {
 // The samples are independent: a large batch is evaluated on all cores, in chunks taken in
 // turn (patches differ in cost only a little; the chunk keeps a thread's queries together).
 // Each sample is the same function of its query on any thread, so the bits do not change.
-template <typename Sample, typename EvaluateOne>
-std::vector<Sample> evaluateAll(const std::vector<gpu::EvalQuery>& queries,
-                                const EvaluateOne& evaluateOne) {
+// evaluateChunk(begin, end, out) writes the samples of queries [begin, end) to out[begin, end).
+template <typename Sample, typename EvaluateChunk>
+std::vector<Sample> evaluateChunks(const std::vector<gpu::EvalQuery>& queries,
+                                   const EvaluateChunk& evaluateChunk) {
   constexpr size_t kChunk = 4096;  // below two chunks a thread costs more than it saves
   std::vector<Sample> out(queries.size());
   parallelForChunks(queries.size(), kChunk, queries.size() >= 2 * kChunk ? 0u : 1u,
-                    [&](size_t begin, size_t end) {
-                      for (size_t i = begin; i < end; ++i) out[i] = evaluateOne(queries[i]);
-                    });
+                    [&](size_t begin, size_t end) { evaluateChunk(begin, end, out.data()); });
   return out;
+}
+
+template <typename Sample, typename EvaluateOne>
+std::vector<Sample> evaluateAll(const std::vector<gpu::EvalQuery>& queries,
+                                const EvaluateOne& evaluateOne) {
+  return evaluateChunks<Sample>(queries, [&](size_t begin, size_t end, Sample* out) {
+    for (size_t i = begin; i < end; ++i) out[i] = evaluateOne(queries[i]);
+  });
 }
 
 class MirrorEvaluator final : public PatchEvaluator {
@@ -74,7 +81,7 @@ class MirrorEvaluator final : public PatchEvaluator {
 
   std::vector<gpu::VertexSample> evaluateVertices(
       const PatchSet& patches, const std::vector<gpu::EvalQuery>& queries) override {
-    if (!patches.isBicubic()) return PatchEvaluator::evaluateVertices(patches, queries);
+    if (!patches.isBicubic()) return evaluateGeneralVertices(patches.general(), queries);
     const std::vector<gpu::BicubicPatch>& bicubic = patches.bicubic();
     checkQueries(bicubic.size(), queries);
     return evaluateAll<gpu::VertexSample>(queries, [&](const gpu::EvalQuery& q) {
@@ -89,6 +96,27 @@ class MirrorEvaluator final : public PatchEvaluator {
     return evaluateAll<gpu::EvalSample>(queries, [&](const gpu::EvalQuery& q) {
       return mirror::evalBicubicSample(patches[q.patchIndex], q.u, q.v, kDegenerateEpsFp32);
     });
+  }
+
+  // The queries of a mesh come a patch after another: the patch's tolerance (its length
+  // scale, a pass over its control points) is kept while the patch repeats.
+  std::vector<gpu::VertexSample> evaluateGeneralVertices(
+      const GeneralPatchSet& patches, const std::vector<gpu::EvalQuery>& queries) {
+    checkQueries(patches.size(), queries);
+    const gpu::vec4* points = patches.points.data();
+    return evaluateChunks<gpu::VertexSample>(
+        queries, [&](size_t begin, size_t end, gpu::VertexSample* out) {
+          uint32_t patchIndex = UINT32_MAX;  // the patch whose tolerance `tol` is
+          float tol = 0.0f;
+          for (size_t i = begin; i < end; ++i) {
+            const gpu::EvalQuery& q = queries[i];
+            const gpu::GeneralPatch& patch = patches.patches[q.patchIndex];
+            if (q.patchIndex != patchIndex)
+              patchIndex = q.patchIndex,
+              tol = mirror::generalVertexTolerance(patch, points, kDegenerateEpsFp32);
+            out[i] = mirror::evalGeneralVertex(patch, points, q.u, q.v, tol);
+          }
+        });
   }
 
   std::vector<gpu::EvalSample> evaluateGeneral(const GeneralPatchSet& patches,

@@ -26,6 +26,7 @@ struct GeneralKernel {
 #define CLASSIFY_SCALE generalScale
 #define CLASSIFY_SECOND_BOUNDS generalSecondBounds
 #include "shaders/lib/quadtree_classify.h"
+#include "eval/detail/general_vertex.inc"
 };
 #pragma GCC diagnostic pop
 }  // namespace
@@ -34,6 +35,15 @@ struct GeneralKernel {
 gpu::EvalSample evalGeneralSample(const gpu::GeneralPatch& patch, const gpu::vec4* points,
                                   float u, float v, float eps) {
   return glsl::GeneralKernel{points}.evalGeneralSample(patch, u, v, eps);
+}
+
+float generalVertexTolerance(const gpu::GeneralPatch& patch, const gpu::vec4* points, float eps) {
+  return glsl::GeneralKernel{points}.generalTolerance(patch, eps);
+}
+
+gpu::VertexSample evalGeneralVertex(const gpu::GeneralPatch& patch, const gpu::vec4* points,
+                                    float u, float v, float tol) {
+  return glsl::GeneralKernel{points}.generalVertex(patch, u, v, tol);
 }
 
 gpu::NodeDecision classifyGeneralNode(const gpu::GeneralPatch& patch, const gpu::vec4* points,

@@ -10,6 +10,12 @@ namespace tessera::mirror {
 gpu::EvalSample evalGeneralSample(const gpu::GeneralPatch& patch, const gpu::vec4* points,
                                   float u, float v, float eps);
 
+// evalGeneralSample's position and normal, bit for bit, for less work (the mesh's vertices):
+// `tol` is generalVertexTolerance(patch, points, eps), one patch's for all its vertices.
+float generalVertexTolerance(const gpu::GeneralPatch& patch, const gpu::vec4* points, float eps);
+gpu::VertexSample evalGeneralVertex(const gpu::GeneralPatch& patch, const gpu::vec4* points,
+                                    float u, float v, float tol);
+
 // Rule T on a patch of a degree pair with a variant of its own (eval/detail/
 // general_tolerance_variants.h) goes to that variant; everything else to the generic text.
 gpu::NodeDecision classifyGeneralNode(const gpu::GeneralPatch& patch, const gpu::vec4* points,

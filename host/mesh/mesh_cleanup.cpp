@@ -115,10 +115,14 @@ std::vector<bool> backToBackPairs(const std::vector<uint32_t>& indices, unsigned
 }
 
 void requireFiniteSamples(const ParamMesh& param, const std::vector<gpu::VertexSample>& samples) {
+  requireFiniteSamples(param, samples.data(), samples.size());
+}
+
+void requireFiniteSamples(const ParamMesh& param, const gpu::VertexSample* samples, size_t count) {
   const auto finite = [](const gpu::vec4& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
   };
-  for (size_t i = 0; i < samples.size(); ++i) {
+  for (size_t i = 0; i < count; ++i) {
     if (finite(samples[i].position) && finite(samples[i].normal)) continue;
     const ParamVertex& v = param.vertices[i];
     char where[64];

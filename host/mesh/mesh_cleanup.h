@@ -28,5 +28,7 @@ std::vector<bool> backToBackPairs(const std::vector<uint32_t>& indices, unsigned
 // weight of 10⁻²⁰ against 1: derivatives of order k grow as 10²⁰ᵏ). Throws
 // std::invalid_argument naming the patch and (u, v).
 void requireFiniteSamples(const ParamMesh& param, const std::vector<gpu::VertexSample>& samples);
+// The same for `count` samples at `samples` (of param.vertices' first `count`).
+void requireFiniteSamples(const ParamMesh& param, const gpu::VertexSample* samples, size_t count);
 
 }  // namespace tessera

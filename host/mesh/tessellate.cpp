@@ -83,15 +83,26 @@ Tessellation meshFromQueries(const std::vector<BezierPatch>& patches, QuadtreeRe
 
 Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, ParamMesh param,
                                   const std::vector<gpu::VertexSample>& samples, unsigned threads) {
-  requireFiniteSamples(param, samples);
+  if (samples.size() != param.vertices.size())
+    throw std::invalid_argument("assembleTessellation: " + std::to_string(samples.size()) +
+                                " samples for " + std::to_string(param.vertices.size()) +
+                                " vertices");
+  return assembleTessellation(patchCount, std::move(tree), std::move(param), samples.data(),
+                              threads);
+}
+
+Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, ParamMesh param,
+                                  const gpu::VertexSample* samples, unsigned threads) {
+  const size_t count = param.vertices.size();
+  requireFiniteSamples(param, samples, count);
   Tessellation result;
   result.tree = std::move(tree);
   TriangleMesh& mesh = result.mesh;
-  mesh.positions.resize(samples.size());
-  mesh.normals.resize(samples.size());
-  mesh.uvs.resize(samples.size());
-  mesh.patchIds.resize(samples.size());
-  for (size_t i = 0; i < samples.size(); ++i) {
+  mesh.positions.resize(count);
+  mesh.normals.resize(count);
+  mesh.uvs.resize(count);
+  mesh.patchIds.resize(count);
+  for (size_t i = 0; i < count; ++i) {
     mesh.positions[i] = glm::vec3(samples[i].position);
     mesh.normals[i] = glm::vec3(samples[i].normal);
     mesh.uvs[i] = glm::vec2(param.vertices[i].u, param.vertices[i].v);

@@ -77,6 +77,10 @@ Tessellation meshFromTree(const std::vector<BezierPatch>& patches, const PatchSe
 Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, ParamMesh param,
                                   const std::vector<gpu::VertexSample>& samples,
                                   unsigned threads = 1);
+// The same with param.vertices.size() samples at `samples`: a part of a larger batch, read in
+// place (the trimmed mesher's faces share one evaluation).
+Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, ParamMesh param,
+                                  const gpu::VertexSample* samples, unsigned threads = 1);
 
 // Hands a tessellation made in `frame` out in model coordinates: each position mapped back in
 // double (frame.toModel) and rounded to fp32 once; normals and (u, v) are unchanged (the frame

@@ -119,11 +119,10 @@ void tessellateGroup(const TrimmedModel& model, const FaceGroup& group, const Mo
   step.restart();
   parallelForChunks(faceCount, 1, threads, [&](size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k) {
-      const std::vector<gpu::VertexSample> faceSamples(samples.begin() + long(firstQuery[k]),
-                                                       samples.begin() + long(firstQuery[k + 1]));
+      // The face's samples read in place, not copied out per face.
       Tessellation& face = out.faces[group.faces[k]];
       face = assembleTessellation(group.facePatches[k].size(), std::move(faceTrees[k]),
-                                  std::move(params[k]), faceSamples);
+                                  std::move(params[k]), samples.data() + firstQuery[k]);
       toModelCoordinates(face, frame);
     }
   });
