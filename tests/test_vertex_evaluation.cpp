@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <string>
+#include <utility>
 
 #include "eval/evaluator.h"
 #include "general_samples.h"
@@ -103,23 +105,30 @@ TEST_CASE("fp32 mirror: evaluateVertices gives evaluate's positions and normals 
 TEST_CASE("fp32 mirror: general sets' evaluateVertices gives evaluate's positions and normals",
           "[eval][mirror][general]") {
   // The mirror's vertex path for general patches (eval/detail/general_vertex.inc): first
-  // partials only and the length scale once per patch; polynomial and rational, degrees 1 to
-  // 7, weights that vanish inside, and a sphere whose collapsed poles take the degenerate rule.
+  // partials only, the length scale once per patch, the common degree pairs compiled apart;
+  // every such pair, polynomial and rational, others of runtime degrees up to 7, weights that
+  // vanish inside, and a sphere whose collapsed poles take the degenerate rule.
   struct GeneralCase {
-    const char* name;
+    std::string name;
     std::vector<BezierPatch> patches;
   };
-  const GeneralCase cases[] = {
-      {"degree 1x1", test::randomGeneralPatches(20, 1, 1, false, false, 61)},
-      {"degree 2x3", test::randomGeneralPatches(20, 2, 3, false, false, 62)},
-      {"degree 7x5", test::randomGeneralPatches(10, 7, 5, false, false, 63)},
-      {"rational 2x1", test::randomGeneralPatches(20, 2, 1, true, false, 64)},
-      {"rational 4x3, inner w=0", test::randomGeneralPatches(20, 4, 3, true, true, 65)},
-      {"rational sphere", test::rationalSphere(2.0)}};
+  std::vector<GeneralCase> cases;
+  uint32_t seed = 60;
+  for (int n = 1; n <= 3; ++n)
+    for (int m = 1; m <= 3; ++m)
+      cases.push_back({"degree " + std::to_string(n) + "x" + std::to_string(m),
+                       test::randomGeneralPatches(8, n, m, false, false, ++seed)});
+  for (const auto& [n, m] : {std::pair<int, int>{2, 1}, {1, 2}, {2, 2}, {3, 3}})
+    cases.push_back({"rational " + std::to_string(n) + "x" + std::to_string(m),
+                     test::randomGeneralPatches(8, n, m, true, false, ++seed)});
+  cases.push_back({"degree 7x5", test::randomGeneralPatches(8, 7, 5, false, false, ++seed)});
+  cases.push_back(
+      {"rational 4x3, inner w=0", test::randomGeneralPatches(8, 4, 3, true, true, ++seed)});
+  cases.push_back({"rational sphere", test::rationalSphere(2.0)});
   size_t degenerate = 0;
   for (const GeneralCase& c : cases) {
-    const PatchSet set = toPatchSet(c.patches);
-    REQUIRE(!set.isBicubic());
+    // A general set even for the bicubic pair (toPatchSet would take the bicubic path).
+    const PatchSet set = toGeneralPatchSet(c.patches);
     // Shuffled too: the per-patch tolerance must follow the query's patch, not the last one.
     for (const bool shuffled : {false, true}) {
       auto queries = test::gridQueries(c.patches.size(), 13, 40, 8);
