@@ -84,18 +84,21 @@ class CountingEvaluator final : public PatchEvaluator {
 
 TEST_CASE("fp32 mirror: evaluateVertices gives evaluate's positions and normals bit for bit",
           "[eval][mirror]") {
-  for (const PatchCase& c : patchCases()) {
-    // 13² + 40 queries a patch, edges and corners included: over 8,192 for the random set, so
-    // the batch takes the mirror's parallel path too.
-    const auto queries = test::gridQueries(c.patches.size(), 13, 40, 7);
-    auto mirror = makeMirrorEvaluator();
-    const auto samples = mirror->evaluate(c.patches, queries);
-    const auto vertices = mirror->evaluateVertices(c.patches, queries);
-    INFO(c.name << ": " << queries.size() << " queries, " << degenerateSamples(samples)
-                << " degenerate");
-    CHECK(differingVertices(vertices, samples) == 0);
-    for (const gpu::VertexSample& v : vertices) REQUIRE((v.position.w == 1 && v.normal.w == 0));
-  }
+  for (const PatchCase& c : patchCases())
+    // Shuffled too: the mirror keeps a patch's tolerance while its queries follow each other.
+    for (const bool shuffled : {false, true}) {
+      // 13² + 40 queries a patch, edges and corners included: over 8,192 for the random set, so
+      // the batch takes the mirror's parallel path too.
+      auto queries = test::gridQueries(c.patches.size(), 13, 40, 7);
+      if (shuffled) std::shuffle(queries.begin(), queries.end(), std::mt19937(3));
+      auto mirror = makeMirrorEvaluator();
+      const auto samples = mirror->evaluate(c.patches, queries);
+      const auto vertices = mirror->evaluateVertices(c.patches, queries);
+      INFO(c.name << (shuffled ? ", shuffled" : "") << ": " << queries.size() << " queries, "
+                  << degenerateSamples(samples) << " degenerate");
+      CHECK(differingVertices(vertices, samples) == 0);
+      for (const gpu::VertexSample& v : vertices) REQUIRE((v.position.w == 1 && v.normal.w == 0));
+    }
   // The collapsed edges do reach the degenerate rule, the branch that evaluates everything.
   const PatchCase collapsed = patchCases()[1];
   CHECK(degenerateSamples(makeMirrorEvaluator()->evaluate(

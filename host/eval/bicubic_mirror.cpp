@@ -18,4 +18,12 @@ gpu::VertexSample evalBicubicVertex(const gpu::BicubicPatch& patch, float u, flo
   return glsl::evalBicubicVertex(patch, u, v, eps);
 }
 
+float bicubicVertexTolerance(const gpu::BicubicPatch& patch, float eps) {
+  return glsl::bicubicTolerance(patch, eps);
+}
+
+gpu::VertexSample bicubicVertex(const gpu::BicubicPatch& patch, float u, float v, float tol) {
+  return glsl::bicubicVertex(patch, u, v, tol);
+}
+
 }  // namespace tessera::mirror

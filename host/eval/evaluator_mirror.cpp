@@ -79,14 +79,26 @@ class MirrorEvaluator final : public PatchEvaluator {
                                : evaluateGeneral(patches.general(), queries);
   }
 
+  // The queries of a mesh come a patch after another: the patch's tolerance (its length
+  // scale, a pass over its control points) is kept while the patch repeats.
   std::vector<gpu::VertexSample> evaluateVertices(
       const PatchSet& patches, const std::vector<gpu::EvalQuery>& queries) override {
     if (!patches.isBicubic()) return evaluateGeneralVertices(patches.general(), queries);
     const std::vector<gpu::BicubicPatch>& bicubic = patches.bicubic();
     checkQueries(bicubic.size(), queries);
-    return evaluateAll<gpu::VertexSample>(queries, [&](const gpu::EvalQuery& q) {
-      return mirror::evalBicubicVertex(bicubic[q.patchIndex], q.u, q.v, kDegenerateEpsFp32);
-    });
+    return evaluateChunks<gpu::VertexSample>(
+        queries, [&](size_t begin, size_t end, gpu::VertexSample* out) {
+          uint32_t patchIndex = UINT32_MAX;  // the patch whose tolerance `tol` is
+          float tol = 0.0f;
+          for (size_t i = begin; i < end; ++i) {
+            const gpu::EvalQuery& q = queries[i];
+            const gpu::BicubicPatch& patch = bicubic[q.patchIndex];
+            if (q.patchIndex != patchIndex)
+              patchIndex = q.patchIndex,
+              tol = mirror::bicubicVertexTolerance(patch, kDegenerateEpsFp32);
+            out[i] = mirror::bicubicVertex(patch, q.u, q.v, tol);
+          }
+        });
   }
 
  private:
@@ -98,8 +110,7 @@ class MirrorEvaluator final : public PatchEvaluator {
     });
   }
 
-  // The queries of a mesh come a patch after another: the patch's tolerance (its length
-  // scale, a pass over its control points) is kept while the patch repeats.
+  // As for bicubic sets: the patch's tolerance kept while its queries follow each other.
   std::vector<gpu::VertexSample> evaluateGeneralVertices(
       const GeneralPatchSet& patches, const std::vector<gpu::EvalQuery>& queries) {
     checkQueries(patches.size(), queries);
