@@ -499,6 +499,18 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
   // when both are counter-clockwise and the thinner of them is kFlipSliverGain times as fat as
   // the thinner of t and s (so a flip is never undone).
   FlipFindings findings;  // for flipByDeviation, kept in step with every change below
+  // t = (a, b, c) and s = (b, a, d) become (c, a, d) and (d, b, c): the side a → b becomes c → d.
+  const auto flipEdge = [&](uint32_t t, uint32_t s, uint32_t a, uint32_t b, uint32_t c,
+                            uint32_t d) {
+    const std::array<uint32_t, 3> t2 = {c, a, d}, s2 = {d, b, c};
+    triangles[t] = {t2, true};
+    triangles[s] = {s2, true};
+    findings.changed(t, t2), findings.changed(s, s2);
+    users.erase(a, b);
+    users.replace(a, d, s, t);
+    users.replace(b, c, t, s);
+    users.add(c, d, t), users.add(c, d, s);
+  };
   const auto flipSliver = [&](uint32_t t, int longest) {
     const std::array<uint32_t, 3> v = rotated(triangles[t].v, longest);
     const uint32_t a = v[0], b = v[1], c = v[2];
@@ -515,13 +527,7 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
     const double before = std::min(ratioOf(v), ratioOf(triangles[s].v));
     if (!(std::min(ratioOf(t2), ratioOf(s2)) > kFlipSliverGain * std::max(before, 0.0)))
       return false;
-    triangles[t] = {t2, true};
-    triangles[s] = {s2, true};
-    findings.changed(t, t2), findings.changed(s, s2);
-    users.erase(a, b);
-    users.replace(a, d, s, t);
-    users.replace(b, c, t, s);
-    users.add(c, d, t), users.add(c, d, s);
+    flipEdge(t, s, a, b, c, d);
     return true;
   };
 
@@ -650,13 +656,7 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
     if (!(t2Deviation < limit)) return false;
     if (!(std::max(t2Deviation, deviation(s2)) < limit)) return false;
     noteCount(a, b), noteCount(c, d);  // the two counts the flip changes
-    triangles[t] = {t2, true};
-    triangles[s] = {s2, true};
-    findings.changed(t, t2), findings.changed(s, s2);
-    users.erase(a, b);
-    users.replace(a, d, s, t);
-    users.replace(b, c, t, s);
-    users.add(c, d, t), users.add(c, d, s);
+    flipEdge(t, s, a, b, c, d);
     return true;
   };
   const auto flipByDeviation = [&]() {
