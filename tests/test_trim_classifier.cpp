@@ -325,7 +325,7 @@ TEST_CASE("Trim classification: the mirror's per-face segment runs decide as the
   for (int k = 0; k < 4000; ++k) {
     const uint32_t cells = 1u << (2 + rng() % 8);
     const float size = 1.0f / float(cells), i = float(rng() % cells), j = float(rng() % cells);
-    queries.push_back({{i * size, j * size, (i + 1) * size, (j + 1) * size}, rng() % 2, 0, 0, 0});
+    queries.push_back({{i * size, j * size, (i + 1) * size, (j + 1) * size}, uint32_t(rng() % 2), 0, 0, 0});
   }
   auto mirror = makeMirrorTrimClassifier();
   const std::vector<uint32_t> together = mirror->classify(set, queries);
