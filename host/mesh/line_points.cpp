@@ -88,7 +88,10 @@ void collectSidePoints(const std::vector<QuadLeaf>& leaves, SeamVertices& seams,
 LinePoints collectLinePoints(const std::vector<QuadLeaf>& leaves, SeamVertices& seams,
                              unsigned threads) {
   const PatchTopology& topology = seams.topology();
-  LinePoints lines{LineIndex(leaves.size() / 4), LineIndex(leaves.size() / 4), {}, {}, {}, {}};
+  // A line has ~5 (coarse trees) to ~18 (fine ones) leaves along it: a table sized by the
+  // leaves would be mostly empty, megabytes faulted in at every call; it grows when needed.
+  const size_t expectedLines = leaves.size() / 16 + 16;
+  LinePoints lines{LineIndex(expectedLines), LineIndex(expectedLines), {}, {}, {}, {}};
   lines.shared.resize(topology.groupCount);
   lines.groupSide.assign(topology.groupCount, {0, -1});
   // The two directions' lines are independent: each numbered and filled on a thread of its
