@@ -21,12 +21,6 @@ void binomialOutOfRange(int n) {
                               std::to_string(2 * kMaxDegree));
 }
 
-double fallingFactorial(int n, int k) {
-  double f = 1.0;
-  for (int i = 0; i < k; ++i) f *= n - i;
-  return f;
-}
-
 BernsteinTriangle bernsteinTriangle(int degree, double t) {
   checkDegree(degree, "bernsteinTriangle");
   // B_i,d = (1−t) B_i,d−1 + t B_i−1,d−1: only convex combinations for t ∈ [0,1], so no

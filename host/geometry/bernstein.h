@@ -51,16 +51,24 @@ struct BernsteinTriangle {
 };
 BernsteinTriangle bernsteinTriangle(int degree, double t);
 
-// n!/(n−k)!: the factor in front of the k-th hodograph.
-double fallingFactorial(int n, int k);
+// n!/(n−k)!: the factor in front of the k-th hodograph (inline: at fixed degrees the partials'
+// factors fold to constants, the same exact integers).
+inline double fallingFactorial(int n, int k) {
+  double f = 1.0;
+  for (int i = 0; i < k; ++i) f *= n - i;
+  return f;
+}
 
 namespace bernstein_detail {
 
 // One more first difference in u (step r, r = 0, 1, …) of the net in `diff`, in place: exact
 // zero stays exact zero. Here and below component by component (geometry/componentwise.h:
 // glm's operators cost a checked memcpy a step under AddressSanitizer).
-template <class Point>
+// N, M ≥ 0 fix n and m at compile time (geometry/fixed_degrees.h): the same operations.
+template <int N = -1, int M = -1, class Point>
 void differenceInU(Point* diff, int n, int m, int r) {
+  if constexpr (N >= 0) n = N;
+  if constexpr (M >= 0) m = M;
   const int stride = m + 1;
   for (int i = 0; i < n - r; ++i)
     for (int j = 0; j <= m; ++j)
@@ -69,9 +77,11 @@ void differenceInU(Point* diff, int n, int m, int r) {
 
 // From the net's a-th differences in u (rows 0..n−a of `diff`): b differences in v, in place,
 // then the sum against the Bernstein rows of degree n − a and m − b, times n!/(n−a)!·m!/(m−b)!.
-template <class Point>
+template <int N = -1, int M = -1, class Point>
 Point partialFromUDifferences(Point* diff, int n, int m, int a, int b, const BernsteinTriangle& bu,
                               const BernsteinTriangle& bv) {
+  if constexpr (N >= 0) n = N;
+  if constexpr (M >= 0) m = M;
   const int stride = m + 1;
   for (int r = 0; r < b; ++r)
     for (int i = 0; i <= n - a; ++i)
@@ -109,25 +119,28 @@ Point tensorPartial(const Point* net, int n, int m, int a, int b, const Bernstei
 // bit for bit (the same differences in the same order), from one table of u-differences
 // stepped once per a instead of a fresh copy of the net per partial. Evaluating derivatives
 // called tensorPartial ten times a point; under AddressSanitizer each call's 2 KB table made the
-// trimmed-face tests 16-23x slower than in Release.
-template <class Point, int Order>
+// trimmed-face tests 16-23x slower than in Release. N, M ≥ 0: n and m fixed at compile time
+// (the closest-point search's derivatives), the same doubles.
+template <class Point, int Order, int N = -1, int M = -1>
 void tensorPartials(const Point* net, int n, int m, const BernsteinTriangle& bu,
                     const BernsteinTriangle& bv, Point (&out)[Order + 1][Order + 1]) {
+  if constexpr (N >= 0) n = N;
+  if constexpr (M >= 0) m = M;
   constexpr int kSize = (kMaxDegree + 1) * (kMaxDegree + 1);
   const int count = (n + 1) * (m + 1);
   std::array<Point, kSize> inU;    // the net's a-th differences in u
   std::array<Point, kSize> inUV;   // then b differences in v
   for (int k = 0; k < count; ++k) inU[k] = net[k];
   for (int a = 0; a <= Order; ++a) {
-    if (a > 0 && a <= n) bernstein_detail::differenceInU(inU.data(), n, m, a - 1);
+    if (a > 0 && a <= n) bernstein_detail::differenceInU<N, M>(inU.data(), n, m, a - 1);
     for (int b = 0; a + b <= Order; ++b) {
       if (a > n || b > m) {
         out[a][b] = Point(0.0);
       } else if (b == 0) {  // no v-differences: the u-table is read, not changed
-        out[a][b] = bernstein_detail::partialFromUDifferences(inU.data(), n, m, a, 0, bu, bv);
+        out[a][b] = bernstein_detail::partialFromUDifferences<N, M>(inU.data(), n, m, a, 0, bu, bv);
       } else {
         for (int k = 0; k < (n - a + 1) * (m + 1); ++k) inUV[k] = inU[k];
-        out[a][b] = bernstein_detail::partialFromUDifferences(inUV.data(), n, m, a, b, bu, bv);
+        out[a][b] = bernstein_detail::partialFromUDifferences<N, M>(inUV.data(), n, m, a, b, bu, bv);
       }
     }
   }

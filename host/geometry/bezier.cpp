@@ -6,6 +6,7 @@
 #include <string>
 
 #include "geometry/bernstein.h"
+#include "geometry/fixed_degrees.h"
 #include "geometry/rational.h"
 
 namespace tessera {
@@ -149,6 +150,25 @@ SurfaceDerivatives patchDerivatives(const BezierPatch& patch, double u, double v
   d.puuv = partial[2][1];
   d.puvv = partial[1][2];
   d.pvvv = partial[0][3];
+  return d;
+}
+
+SurfaceDerivatives patchSecondDerivativesOfValid(const BezierPatch& patch, double u, double v) {
+  const BernsteinTriangle bu = bernsteinTriangle(patch.degreeU, u);
+  const BernsteinTriangle bv = bernsteinTriangle(patch.degreeV, v);
+  glm::dvec3 partial[3][3];  // a + b ≤ 2: tensorPartials' lower partials do not depend on Order
+  withFixedDegrees(patch.degreeU, patch.degreeV, [&](auto N, auto M) {
+    tensorPartials<glm::dvec3, 2, decltype(N)::value, decltype(M)::value>(
+        patch.cp.data(), patch.degreeU, patch.degreeV, bu, bv, partial);
+  });
+  SurfaceDerivatives d;
+  d.p = partial[0][0];
+  d.pu = partial[1][0];
+  d.pv = partial[0][1];
+  d.puu = partial[2][0];
+  d.puv = partial[1][1];
+  d.pvv = partial[0][2];
+  d.puuu = d.puuv = d.puvv = d.pvvv = glm::dvec3(0.0);
   return d;
 }
 

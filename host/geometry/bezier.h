@@ -24,6 +24,10 @@ BezierCurve subCurve(const BezierCurve& curve, double t0, double t1);
 glm::dvec3 patchPoint(const BezierPatch& patch, double u, double v);
 // Position and all partials up to third order.
 SurfaceDerivatives patchDerivatives(const BezierPatch& patch, double u, double v);
+// Its partials up to second order (third-order fields zero), the same doubles, for a patch
+// without weights that patchDerivatives accepts: no checks, the CAD import's degrees fixed at
+// compile time (geometry/fixed_degrees.h). The closest-point search's evaluation.
+SurfaceDerivatives patchSecondDerivativesOfValid(const BezierPatch& patch, double u, double v);
 // Split along u at `u` (pieces [0,u]×[0,1] and [u,1]×[0,1]), or along v at `v`.
 std::pair<BezierPatch, BezierPatch> subdividePatchU(const BezierPatch& patch, double u);
 std::pair<BezierPatch, BezierPatch> subdividePatchV(const BezierPatch& patch, double v);

@@ -65,17 +65,48 @@ ClosestPoint closestPoint(Derivatives derivativesAt, const glm::dvec3& target, g
 
 }  // namespace
 
+// The search reads only the partials up to second order. The patch does not change, so once
+// it is known to be valid (checked by the first evaluation, or by the caller) the evaluations
+// take the unchecked second-order form at fixed degrees: the same doubles. Checking the patch
+// and looping at run-time degrees over partials the search does not read was most of their
+// time.
 ClosestPoint closestPointOnPatch(const BezierPatch& patch, const glm::dvec3& target,
                                  glm::dvec2 start, int iterations, double enough) {
-  return closestPoint([&](glm::dvec2 uv) { return derivativesAt(patch, uv); }, target, start,
-                      iterations, enough);
+  const bool fast = patch.weights.empty() && !(patch.degreeU == 3 && patch.degreeV == 3);
+  bool checked = false;
+  return closestPoint(
+      [&](glm::dvec2 uv) {
+        if (!fast || !checked) return checked = true, derivativesAt(patch, uv);
+        return patchSecondDerivativesOfValid(patch, uv.x, uv.y);
+      },
+      target, start, iterations, enough);
 }
 
 ClosestPoint closestPointOnPatch(const RationalBezierPatch& patch, const glm::dvec3& target,
                                  glm::dvec2 start, int iterations, double enough) {
+  bool checked = false;
   return closestPoint(
-      [&](glm::dvec2 uv) { return rationalPatchSecondDerivatives(patch, uv.x, uv.y); }, target,
+      [&](glm::dvec2 uv) {
+        if (!checked) return checked = true, rationalPatchSecondDerivatives(patch, uv.x, uv.y);
+        return rationalPatchSecondDerivativesOfValid(patch, uv.x, uv.y);
+      },
+      target, start, iterations, enough);
+}
+
+ClosestPoint closestPointOnValidPatch(const BezierPatch& patch, const glm::dvec3& target,
+                                      glm::dvec2 start, int iterations, double enough) {
+  if (!patch.weights.empty() || (patch.degreeU == 3 && patch.degreeV == 3))
+    return closestPointOnPatch(patch, target, start, iterations, enough);
+  return closestPoint(
+      [&](glm::dvec2 uv) { return patchSecondDerivativesOfValid(patch, uv.x, uv.y); }, target,
       start, iterations, enough);
+}
+
+ClosestPoint closestPointOnValidPatch(const RationalBezierPatch& patch, const glm::dvec3& target,
+                                      glm::dvec2 start, int iterations, double enough) {
+  return closestPoint(
+      [&](glm::dvec2 uv) { return rationalPatchSecondDerivativesOfValid(patch, uv.x, uv.y); },
+      target, start, iterations, enough);
 }
 
 }  // namespace tessera

@@ -30,5 +30,12 @@ ClosestPoint closestPointOnPatch(const BezierPatch& patch, const glm::dvec3& tar
 // result bit for bit, without converting the patch at every step.
 ClosestPoint closestPointOnPatch(const RationalBezierPatch& patch, const glm::dvec3& target,
                                  glm::dvec2 start, int iterations = 12, double enough = 0.0);
+// The same for a patch that passed validateTessellationPatch (general_patch.h), or its
+// homogeneous form: the same result, without checking the patch at every evaluation
+// (FaceSurface::distance, the gap refinement's searches).
+ClosestPoint closestPointOnValidPatch(const BezierPatch& patch, const glm::dvec3& target,
+                                      glm::dvec2 start, int iterations = 12, double enough = 0.0);
+ClosestPoint closestPointOnValidPatch(const RationalBezierPatch& patch, const glm::dvec3& target,
+                                      glm::dvec2 start, int iterations = 12, double enough = 0.0);
 
 }  // namespace tessera

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "geometry/bernstein.h"
+#include "geometry/fixed_degrees.h"
 
 namespace tessera {
 
@@ -139,14 +140,17 @@ namespace {
 // Partials up to Order (2 or 3) of the projected surface; those up to second order are the
 // same doubles either way (tensorPartials' lower partials and eq. 4.20's lower terms do not
 // depend on Order).
-template <int Order>
+// Checked = false: the patch is known to pass checkPatch (the caller checked it once), and the
+// degrees N × M (−1: at run time) are its own.
+template <int Order, bool Checked = true, int N = -1, int M = -1>
 SurfaceDerivatives projectedPartials(const RationalBezierPatch& patch, double u, double v,
                                      const char* where) {
-  checkPatch(patch, where);
+  if constexpr (Checked) checkPatch(patch, where);
   const BernsteinTriangle bu = bernsteinTriangle(patch.degreeU, u);
   const BernsteinTriangle bv = bernsteinTriangle(patch.degreeV, v);
   glm::dvec4 h[Order + 1][Order + 1];  // homogeneous partials, a + b ≤ Order
-  tensorPartials<glm::dvec4, Order>(patch.cpw.data(), patch.degreeU, patch.degreeV, bu, bv, h);
+  tensorPartials<glm::dvec4, Order, N, M>(patch.cpw.data(), patch.degreeU, patch.degreeV, bu, bv,
+                                          h);
   checkDenominator(h[0][0].w, where, u, v);
 
   // S^(a,b) = (A^(a,b) − Σ_{(i,j)≠(0,0)} C(a,i) C(b,j) w^(i,j) S^(a−i,b−j)) / w
@@ -190,6 +194,14 @@ SurfaceDerivatives rationalPatchDerivatives(const RationalBezierPatch& patch, do
 SurfaceDerivatives rationalPatchSecondDerivatives(const RationalBezierPatch& patch, double u,
                                                   double v) {
   return projectedPartials<2>(patch, u, v, "rationalPatchSecondDerivatives");
+}
+
+SurfaceDerivatives rationalPatchSecondDerivativesOfValid(const RationalBezierPatch& patch, double u,
+                                                         double v) {
+  return withFixedDegrees(patch.degreeU, patch.degreeV, [&](auto N, auto M) {
+    return projectedPartials<2, false, decltype(N)::value, decltype(M)::value>(
+        patch, u, v, "rationalPatchSecondDerivatives");
+  });
 }
 
 }  // namespace tessera

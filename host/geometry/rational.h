@@ -26,5 +26,10 @@ SurfaceDerivatives rationalPatchDerivatives(const RationalBezierPatch& patch, do
 // rationalPatchDerivatives, at about half its cost: what a closest-point search needs.
 SurfaceDerivatives rationalPatchSecondDerivatives(const RationalBezierPatch& patch, double u,
                                                   double v);
+// The same for a patch known to be valid (validateRationalPatch passed): the checks of its
+// degrees, count and weights left out, its degrees fixed at compile time for the CAD import's
+// (geometry/fixed_degrees.h). The same doubles; a zero denominator still throws.
+SurfaceDerivatives rationalPatchSecondDerivativesOfValid(const RationalBezierPatch& patch, double u,
+                                                         double v);
 
 }  // namespace tessera

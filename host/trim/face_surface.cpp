@@ -9,6 +9,7 @@
 
 #include "geometry/bezier.h"
 #include "geometry/closest_point.h"
+#include "geometry/fixed_degrees.h"
 #include "geometry/general_patch.h"
 #include "geometry/rational.h"
 
@@ -48,25 +49,6 @@ Point tensorPointOfDegree(const Point* net, int n, int m, double u, double v) {
     sum += bu[i] * row;
   }
   return sum;
-}
-
-// The degrees of the import's pieces (planes 1×1, cylinders and cones 2×1 or 1×2, spheres and
-// tori 2×2, cubic extrusions 3×1 or 1×3 (the IDF library's most common pieces), bicubic
-// B-splines 3×3) at fixed degree, any other at run time: f(N, M) with N and M
-// std::integral_constant<int, degree or −1>.
-template <class F>
-decltype(auto) withFixedDegrees(int n, int m, F&& f) {
-  using std::integral_constant;
-  switch (n * (kMaxDegree + 1) + m) {
-    case 1 * (kMaxDegree + 1) + 1: return f(integral_constant<int, 1>(), integral_constant<int, 1>());
-    case 2 * (kMaxDegree + 1) + 1: return f(integral_constant<int, 2>(), integral_constant<int, 1>());
-    case 1 * (kMaxDegree + 1) + 2: return f(integral_constant<int, 1>(), integral_constant<int, 2>());
-    case 2 * (kMaxDegree + 1) + 2: return f(integral_constant<int, 2>(), integral_constant<int, 2>());
-    case 3 * (kMaxDegree + 1) + 1: return f(integral_constant<int, 3>(), integral_constant<int, 1>());
-    case 1 * (kMaxDegree + 1) + 3: return f(integral_constant<int, 1>(), integral_constant<int, 3>());
-    case 3 * (kMaxDegree + 1) + 3: return f(integral_constant<int, 3>(), integral_constant<int, 3>());
-    default: return f(integral_constant<int, -1>(), integral_constant<int, -1>());
-  }
 }
 
 template <class Point>
@@ -320,6 +302,14 @@ std::array<glm::dvec3, 3> FaceSurface::pointsAlongU(const std::array<glm::dvec2,
 
 double FaceSurface::distance(const glm::dvec3& target, glm::dvec2 guess, double enough) const {
   const size_t piece = pieceAt(guess);
+  if (checked_) {  // every piece passed validateTessellationPatch: no check per evaluation
+    if (rational_[piece])
+      return closestPointOnValidPatch(*rational_[piece], target, localUv(piece, guess), 12, enough)
+          .distance;
+    return closestPointOnValidPatch(face_->pieces[piece].patch, target, localUv(piece, guess), 12,
+                                    enough)
+        .distance;
+  }
   if (rational_[piece])  // the homogeneous form converted once (the constructor)
     return closestPointOnPatch(*rational_[piece], target, localUv(piece, guess), 12, enough)
         .distance;
