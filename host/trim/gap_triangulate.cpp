@@ -207,6 +207,95 @@ bool insideOrOnTriangle(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) 
   return cross(b - a, p - a) >= 0 && cross(c - b, p - b) >= 0 && cross(a - c, p - c) >= 0;
 }
 
+// Whether insideOrOnTriangle(p, a, b, c) is false for every p in the box [lo, hi], as rounded.
+// Each side's rounded cross(e, p − o) = e.x ⊗ (p.y ⊖ o.y) ⊖ e.y ⊗ (p.x ⊖ o.x) is monotone in
+// p.x and in p.y (rounding is monotone, and so is each step for a fixed e), so over the box it is
+// largest at the corner that e's signs pick: where that is < 0, it is < 0 for every point in
+// the box. (NaN there: not < 0, so never rejects.)
+bool boxOutsideTriangle(glm::dvec2 lo, glm::dvec2 hi, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+  const auto sideRejects = [&](glm::dvec2 o, glm::dvec2 to) {
+    const glm::dvec2 e = to - o;
+    const glm::dvec2 p(e.y >= 0 ? lo.x : hi.x, e.x >= 0 ? hi.y : lo.y);
+    return cross(e, p - o) < 0;
+  };
+  return sideRejects(a, b) || sideRejects(b, c) || sideRejects(c, a);
+}
+
+// The polygon's positions in the cells of a grid over its points, each cell with the tight box
+// of its points: an ear test skips a whole cell when boxOutsideTriangle says none of its points
+// passes, and tests the others' points as the scan over every vertex does. Any vertex found
+// inside serves as the corner's blocker (EarCorner): a corner is blocked while any vertex lies
+// in its ear, so the corners' findings, and the ears clipped, are those of the plain scan.
+class EarGrid {
+ public:
+  EarGrid() = default;  // not usable: the plain scan
+  EarGrid(const std::vector<glm::dvec2>& points, const std::vector<uint32_t>& polygon) {
+    const size_t count = polygon.size();
+    glm::dvec2 lo = points[polygon[0]], hi = lo;
+    for (uint32_t id : polygon) {
+      const glm::dvec2 p = points[id];
+      if (!(std::isfinite(p.x) && std::isfinite(p.y))) return;  // the plain scan
+      lo = glm::min(lo, p), hi = glm::max(hi, p);
+    }
+    const glm::dvec2 extent = hi - lo;
+    if (!(std::isfinite(extent.x) && std::isfinite(extent.y))) return;
+    const size_t side = size_t(std::ceil(std::sqrt(double(count) / 4)));
+    const auto cellOf = [&](glm::dvec2 p) {
+      const auto index = [&](double x, double from, double width) {
+        if (!(width > 0)) return size_t(0);
+        return std::min(side - 1, size_t(double(side) * ((x - from) / width)));
+      };
+      return index(p.y, lo.y, extent.y) * side + index(p.x, lo.x, extent.x);
+    };
+    std::vector<uint32_t> cellOfPosition(count), start(side * side + 1, 0);
+    for (size_t i = 0; i < count; ++i) ++start[(cellOfPosition[i] = uint32_t(cellOf(points[polygon[i]]))) + 1];
+    for (size_t k = 0; k < side * side; ++k) start[k + 1] += start[k];
+    positions_.resize(count);
+    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+    for (uint32_t i = 0; i < count; ++i) positions_[fill[cellOfPosition[i]]++] = i;
+    for (size_t k = 0; k < side * side; ++k) {
+      if (start[k] == start[k + 1]) continue;
+      Cell cell{points[polygon[positions_[start[k]]]], points[polygon[positions_[start[k]]]],
+                start[k], start[k + 1]};
+      for (uint32_t q = start[k]; q < start[k + 1]; ++q) {
+        const glm::dvec2 p = points[polygon[positions_[q]]];
+        cell.lo = glm::min(cell.lo, p), cell.hi = glm::max(cell.hi, p);
+      }
+      cells_.push_back(cell);
+    }
+    usable_ = true;
+  }
+  bool usable() const { return usable_; }
+  // A position left (`left`) whose point passes insideOrOnTriangle and is none of a, b, c, or
+  // none (~0u).
+  template <class At>
+  uint32_t blocker(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, const std::vector<char>& left,
+                   At at) const {
+    for (const Cell& cell : cells_) {
+      if (boxOutsideTriangle(cell.lo, cell.hi, a, b, c)) continue;
+      for (uint32_t q = cell.begin; q < cell.end; ++q) {
+        const uint32_t j = positions_[q];
+        if (!left[j]) continue;
+        const glm::dvec2 p = at(j);
+        if (insideOrOnTriangle(p, a, b, c) && !(p == a || p == b || p == c)) return j;
+      }
+    }
+    return ~0u;
+  }
+
+ private:
+  struct Cell {
+    glm::dvec2 lo, hi;
+    uint32_t begin, end;  // into positions_
+  };
+  std::vector<Cell> cells_;
+  std::vector<uint32_t> positions_;  // grouped by cell
+  bool usable_ = false;
+};
+
+// Below this many vertices the plain scan is as fast as the grid.
+constexpr size_t kEarGridFrom = 48;
+
 // One corner of the polygon being clipped, with what the ear test last found there. The
 // polygon only loses vertices, so the finding holds until the corner's neighbours change (a new
 // triangle) or, for a blocked corner, until its blocker is clipped away: an empty ear stays
@@ -237,6 +326,7 @@ void clipEars(const std::vector<glm::dvec2>& points, const std::vector<uint32_t>
     corners[i].prev = (i + count - 1) % count, corners[i].next = (i + 1) % count;
   uint32_t head = 0, size = count;  // head: the first vertex left, in the polygon's order
   const auto at = [&](uint32_t i) { return points[polygon[i]]; };
+  const EarGrid grid = count >= kEarGridFrom ? EarGrid(points, polygon) : EarGrid();
   // The corner's ear test, re-done only when what it found may no longer hold.
   const auto test = [&](uint32_t i) -> const EarCorner& {
     EarCorner& corner = corners[i];
@@ -247,6 +337,16 @@ void clipEars(const std::vector<glm::dvec2>& points, const std::vector<uint32_t>
     corner.area = cross(b - a, c - b);
     if (corner.area <= 0) {
       corner.kind = EarCorner::Reflex;
+      return corner;
+    }
+    if (grid.usable()) {
+      const uint32_t j = grid.blocker(a, b, c, left, at);
+      if (j != ~0u) {
+        corner.kind = EarCorner::Blocked, corner.blocker = j;
+        return corner;
+      }
+      corner.ratio = shapeRatio(a, b, c);
+      corner.kind = corner.ratio >= kFlatRatio ? EarCorner::Ear : EarCorner::Flat;
       return corner;
     }
     uint32_t j = head;
