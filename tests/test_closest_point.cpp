@@ -181,3 +181,44 @@ TEST_CASE("closest point: 'enough' ends the search within it and keeps the withi
   CHECK(stoppedEarly > 0);  // the bound did cut searches short
   CHECK(over > 0);          // and some targets stayed over it
 }
+
+TEST_CASE("closest point: the searches' fixed-degree second partials are the checked ones' doubles",
+          "[deviation]") {
+  // patchSecondDerivativesOfValid and rationalPatchSecondDerivativesOfValid (the degrees fixed at
+  // compile time for the CAD import's pairs, at run time otherwise) against the checked
+  // evaluators, and closestPointOnValidPatch against closestPointOnPatch.
+  std::mt19937 rng(38);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), coord(-2.0, 2.0), weight(0.3, 3.0);
+  int compared = 0;
+  for (int n = 1; n <= 4; ++n)
+    for (int m = 1; m <= 4; ++m) {
+      BezierPatch patch;
+      patch.degreeU = n, patch.degreeV = m;
+      for (int k = 0; k < (n + 1) * (m + 1); ++k)
+        patch.cp.push_back({coord(rng), coord(rng), coord(rng)});
+      BezierPatch weighted = patch;
+      for (int k = 0; k < (n + 1) * (m + 1); ++k) weighted.weights.push_back(weight(rng));
+      const RationalBezierPatch rational = toRationalPatch(weighted);
+      for (int s = 0; s < 20; ++s) {
+        const double u = unit(rng), v = unit(rng);
+        const SurfaceDerivatives a = patchDerivatives(patch, u, v);
+        const SurfaceDerivatives b = patchSecondDerivativesOfValid(patch, u, v);
+        REQUIRE((a.p == b.p && a.pu == b.pu && a.pv == b.pv && a.puu == b.puu && a.puv == b.puv &&
+                 a.pvv == b.pvv));
+        const SurfaceDerivatives c = rationalPatchSecondDerivatives(rational, u, v);
+        const SurfaceDerivatives d = rationalPatchSecondDerivativesOfValid(rational, u, v);
+        REQUIRE((c.p == d.p && c.pu == d.pu && c.pv == d.pv && c.puu == d.puu && c.puv == d.puv &&
+                 c.pvv == d.pvv));
+        const glm::dvec3 target = b.p + glm::dvec3(0.1 * coord(rng), 0.1 * coord(rng), 0.1);
+        const glm::dvec2 start(unit(rng), unit(rng));
+        const ClosestPoint e = closestPointOnPatch(patch, target, start);
+        const ClosestPoint f = closestPointOnValidPatch(patch, target, start);
+        REQUIRE((e.uv == f.uv && e.point == f.point && e.distance == f.distance));
+        const ClosestPoint g = closestPointOnPatch(rational, target, start);
+        const ClosestPoint h = closestPointOnValidPatch(rational, target, start);
+        REQUIRE((g.uv == h.uv && g.point == h.point && g.distance == h.distance));
+        ++compared;
+      }
+    }
+  CHECK(compared == 320);
+}
