@@ -366,6 +366,14 @@ struct TrimFace {
   uint segmentCount;   // 0: the face has no loops, every node is inside
   float margin;        // m: rectangles grow by m before the segment test (rounded up to fp32)
   uint pad;
+  // The face's v bins (lib/trim_classify.h, trimBin; packTrimSet builds them once per set):
+  // binWords[firstBin + b] .. binWords[firstBin + b + 1] are bin b's entries, each two words
+  // (the segment's index in segments, the first bin it lies in). 0 bins: every node reads
+  // every segment.
+  uint firstBin;
+  uint binCount;
+  float binScale;      // bins per unit of v: bin(v) = floor((v − box.y)·binScale), clamped
+  uint pad1;
 };
 
 // One Bézier piece of a face (= one patch of the quad-tree): its [0,1]² maps onto `rect`.

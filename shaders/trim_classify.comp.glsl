@@ -10,11 +10,13 @@
 layout(std430, binding = 0) readonly buffer Faces { TrimFace faces[]; };
 layout(std430, binding = 1) readonly buffer Pieces { TrimPiece pieces[]; };
 layout(std430, binding = 2) readonly buffer Segments { vec4 segments[]; };
-layout(std430, binding = 3) readonly buffer Queries { TrimQuery queries[]; };
-layout(std430, binding = 4) writeonly buffer Results { uint results[]; };
+layout(std430, binding = 3) readonly buffer BinWords { uint binWords[]; };
+layout(std430, binding = 4) readonly buffer Queries { TrimQuery queries[]; };
+layout(std430, binding = 5) writeonly buffer Results { uint results[]; };
 
 layout(push_constant) uniform Push { TrimPush pc; };
 
+#include "lib/trim_bin.h"
 #include "lib/trim_classify.h"
 
 void main() {

@@ -140,6 +140,7 @@ TEST_CASE("Trim classification: bad input names the face, loop, point or query",
 TEST_CASE("Trim classification: Vulkan equals the fp32 mirror bit for bit", "[trim][gpu]") {
   auto vulkan = makeVulkanTrimClassifier(gpuContext());
   const TrimSet samples = trimSampleSet();
+  REQUIRE(samples.faces[0].binCount > 1);  // the shader's binned reads are compared too
   const NearSideSamples nearSide = nearSideTrimSamples(20000, 405);
   const std::pair<const TrimSet*, std::vector<gpu::TrimQuery>> cases[] = {
       {&samples, trimSampleQueries(samples, 4000, 1702)}, {&nearSide.set, nearSide.queries}};
@@ -183,6 +184,14 @@ TEST_CASE("Trim classification: Vulkan's started classification, finished after 
   CHECK(mirror->finishClassify() == started);
   vulkan->startClassify(samples, {});
   CHECK(vulkan->finishClassify().empty());
+  // A bound set (uploaded once, beginSet) serves the starts that follow; a plain classify of
+  // another set in between uploads that one, and the next start uploads its own again.
+  vulkan->beginSet(samples);
+  vulkan->startClassify(samples, queries);
+  CHECK(vulkan->finishClassify() == started);
+  CHECK(vulkan->classify(nearSide.set, nearSide.queries) == between);
+  vulkan->startClassify(samples, queries);
+  CHECK(vulkan->finishClassify() == started);
   requireValidationClean();
 }
 
@@ -304,12 +313,12 @@ TEST_CASE("segmentsFartherThan answers segmentDistance > d", "[trim]") {
   CHECK(near > 1000);
 }
 
-TEST_CASE("Trim classification: the mirror's per-face segment runs decide as the whole scan",
-          "[trim]") {
-  // A call with many nodes on a face of many segments reads only those that can matter to
-  // each node (trim_classify_mirror.cpp, FaceSegmentIndex); one node a call scans the face
-  // whole. A wavy arc of 600 segments closed by a chord long in v, and a small hole: nodes of
-  // levels 2..9 anywhere on the piece, and the face's rectangle itself.
+TEST_CASE("Trim classification: the faces' v bins decide as the whole scan", "[trim]") {
+  // A face of many segments is read through its v bins (TrimFace::binCount, packTrimSet): each
+  // node reads the bins its v range reaches, each segment once. The same set without bins
+  // scans the face whole. A wavy arc of 600 segments closed by a chord long in v (in every
+  // bin), and a small hole: nodes of levels 2..9 anywhere on the piece, and the face's
+  // rectangle itself.
   std::vector<glm::dvec2> wavy, hole;
   for (int k = 0; k < 600; ++k) {
     const double angle = M_PI * (k / 600.0 - 0.5), r = 0.4 + 0.05 * std::sin(17.0 * angle);
@@ -320,6 +329,10 @@ TEST_CASE("Trim classification: the mirror's per-face segment runs decide as the
     hole.push_back({0.5 + 0.1 * std::cos(angle), 0.6 + 0.1 * std::sin(angle)});
   }
   const TrimSet set = packTrimSet({{wavy, hole}}, {{0, {0, 0, 1, 1}}, {0, {0.25, 0.5, 0.75, 1}}});
+  REQUIRE(set.faces[0].binCount > 1);
+  TrimSet whole = set;
+  whole.faces[0].binCount = 0;
+  whole.binWords.clear();
   std::mt19937 rng(17);
   std::vector<gpu::TrimQuery> queries = {{{0, 0, 1, 1}, 0, 0, 0, 0}};
   for (int k = 0; k < 4000; ++k) {
@@ -328,15 +341,16 @@ TEST_CASE("Trim classification: the mirror's per-face segment runs decide as the
     queries.push_back({{i * size, j * size, (i + 1) * size, (j + 1) * size}, uint32_t(rng() % 2), 0, 0, 0});
   }
   auto mirror = makeMirrorTrimClassifier();
-  const std::vector<uint32_t> together = mirror->classify(set, queries);
+  const std::vector<uint32_t> binned = mirror->classify(set, queries);
+  const std::vector<uint32_t> scanned = mirror->classify(whole, queries);
   std::array<size_t, 3> counts{};
   size_t differ = 0;
   for (size_t i = 0; i < queries.size(); ++i) {
-    ++counts[together[i]];
-    differ += mirror->classify(set, {queries[i]})[0] != together[i];
+    ++counts[binned[i]];
+    differ += binned[i] != scanned[i];
   }
   CHECK(differ == 0);
-  // Every class occurs: the runs are not trivially all of the face, nor empty.
+  // Every class occurs: the bins are not trivially all of the face, nor empty.
   CHECK(counts[gpu::kTrimInside] > 100);
   CHECK(counts[gpu::kTrimOutside] > 100);
   CHECK(counts[gpu::kTrimCrossing] > 100);

@@ -15,5 +15,6 @@ using glm::cross;
 using glm::dot;
 using glm::max;
 using glm::min;
+using std::isnan;
 using std::sqrt;
 }  // namespace tessera::mirror::glsl

@@ -26,6 +26,7 @@ struct TrimSet {
   std::vector<gpu::TrimFace> faces;
   std::vector<gpu::TrimPiece> pieces;
   std::vector<gpu::vec4> segments;            // (a.u, a.v, b.u, b.v), fp32
+  std::vector<uint32_t> binWords;             // the faces' v bins (gpu::TrimFace::firstBin)
   std::vector<glm::dvec4> segmentsDouble;     // the same segments in double
   std::vector<glm::dvec4> pieceRectsDouble;   // each piece's (u0, v0, u1, v1) in double
 };
@@ -72,6 +73,10 @@ class TrimClassifier {
     started_ = classify(set, queries);
   }
   virtual std::vector<uint32_t> finishClassify() { return std::move(started_); }
+  // Announces the set that the following startClassify calls pass, unchanged, until the next
+  // beginSet or classify (the trimmed quad-tree's levels): a device backend uploads it here,
+  // once, instead of at every level. The set must outlive those calls.
+  virtual void beginSet(const TrimSet& /*set*/) {}
 
  private:
   std::vector<uint32_t> started_;

@@ -1,5 +1,6 @@
 // The Vulkan backend of TrimClassifier: one dispatch of shaders/trim_classify.comp.glsl, one
-// invocation per node.
+// invocation per node. The set (faces, pieces, segments, bins) is uploaded once per beginSet,
+// so the trimmed quad-tree's levels upload only their nodes.
 #include <cstdint>  // before the generated SPIR-V array, which uses uint32_t
 
 #include "trim/trim_classifier.h"
@@ -21,13 +22,14 @@ class VulkanTrimClassifier final : public TrimClassifier {
   explicit VulkanTrimClassifier(vk::Context& context)
       : context_(context),
         pipeline_(context, {"trim_classify.comp", kSpirv_trim_classify_comp,
-                            sizeof(kSpirv_trim_classify_comp), 5, sizeof(gpu::TrimPush), {}}) {}
+                            sizeof(kSpirv_trim_classify_comp), 6, sizeof(gpu::TrimPush), {}}) {}
 
   std::string name() const override { return "vulkan: " + context_.info().name; }
 
   std::vector<uint32_t> classify(const TrimSet& set,
                                  const std::vector<gpu::TrimQuery>& queries) override {
     std::vector<uint32_t> out;
+    boundSet_ = nullptr;  // a plain call uploads its set, whichever it is
     if (!prepare(set, queries)) return out;
     context_.submitAndWait([&](VkCommandBuffer cmd) { record(cmd); });
     results_.download(out, queries.size());
@@ -52,9 +54,16 @@ class VulkanTrimClassifier final : public TrimClassifier {
     return out;
   }
 
+  void beginSet(const TrimSet& set) override {
+    submission_.wait();  // a started dispatch reads the buffers this overwrites
+    startedCount_ = 0;
+    uploadSet(set);
+    boundSet_ = &set;
+  }
+
  private:
-  // Uploads the set and the queries for record(); false when there is nothing to classify.
-  // Waits first for a started dispatch, which reads the buffers this overwrites.
+  // Uploads the queries, and the set unless beginSet bound it, for record(); false when there
+  // is nothing to classify. Waits first for a started dispatch, which reads these buffers.
   bool prepare(const TrimSet& set, const std::vector<gpu::TrimQuery>& queries) {
     validateTrimQueries(set, queries);
     submission_.wait();
@@ -63,18 +72,23 @@ class VulkanTrimClassifier final : public TrimClassifier {
     if (queries.size() > UINT32_MAX)
       throw std::length_error("trim classification: more than 2³² − 1 nodes in one call");
     push_ = {uint32_t(queries.size()), 0u, 0u, 0u};
-    // Buffers only grow, so the frontier's levels and repeated batches reuse them.
-    upload(faces_, set.faces.data(), set.faces.size() * sizeof(gpu::TrimFace));
-    upload(pieces_, set.pieces.data(), set.pieces.size() * sizeof(gpu::TrimPiece));
-    upload(segments_, set.segments.data(), set.segments.size() * sizeof(gpu::vec4));
+    if (&set != boundSet_) uploadSet(set);
     upload(queries_, queries.data(), queries.size() * sizeof(gpu::TrimQuery));
     ensure(results_, queries.size() * sizeof(uint32_t), vk::BufferUse::Readback);
     return true;
   }
 
+  // Buffers only grow, so the sets of several trees and repeated batches reuse them.
+  void uploadSet(const TrimSet& set) {
+    upload(faces_, set.faces.data(), set.faces.size() * sizeof(gpu::TrimFace));
+    upload(pieces_, set.pieces.data(), set.pieces.size() * sizeof(gpu::TrimPiece));
+    upload(segments_, set.segments.data(), set.segments.size() * sizeof(gpu::vec4));
+    upload(binWords_, set.binWords.data(), set.binWords.size() * sizeof(uint32_t));
+  }
+
   void record(VkCommandBuffer cmd) {
-    pipeline_.dispatch(cmd, {&faces_, &pieces_, &segments_, &queries_, &results_}, &push_,
-                       push_.queryCount);
+    pipeline_.dispatch(cmd, {&faces_, &pieces_, &segments_, &binWords_, &queries_, &results_},
+                       &push_, push_.queryCount);
     vk::computeToHostBarrier(context_, cmd);
   }
 
@@ -90,8 +104,9 @@ class VulkanTrimClassifier final : public TrimClassifier {
 
   vk::Context& context_;
   vk::ComputePipeline pipeline_;
-  vk::Buffer faces_, pieces_, segments_, queries_, results_;
+  vk::Buffer faces_, pieces_, segments_, binWords_, queries_, results_;
   gpu::TrimPush push_{};
+  const TrimSet* boundSet_ = nullptr;         // the set of the last beginSet, uploaded
   vk::AsyncSubmission submission_{context_};  // declared last: destroyed (waited for) first
   size_t startedCount_ = 0;                   // queries of the started dispatch
 };

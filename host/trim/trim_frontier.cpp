@@ -9,7 +9,11 @@ namespace tessera {
 
 TrimmingClassifier::TrimmingClassifier(NodeClassifier& inner, const TrimSet& set,
                                        TrimClassifier& trim)
-    : RevisingClassifier(inner, set.pieces.size()), set_(set), trim_(trim) {}
+    : RevisingClassifier(inner, set.pieces.size()), set_(set), trim_(trim) {
+  const Stopwatch stopwatch;
+  trim_.beginSet(set_);
+  trimMs_ += stopwatch.elapsedMs();
+}
 
 std::string TrimmingClassifier::name() const {
   return inner().name() + " (trimmed by " + trim_.name() + ")";

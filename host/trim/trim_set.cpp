@@ -5,8 +5,16 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "common/glsl_builtins.h"
 #include "trim/trim_classifier.h"
+
+namespace tessera::mirror::glsl {
+#include "shaders/lib/shared_glsl_cpp.h"
+#include "shaders/lib/trim_bin.h"
+}  // namespace tessera::mirror::glsl
 
 namespace tessera {
 namespace {
@@ -17,6 +25,59 @@ std::string pointText(glm::dvec2 p) {
 
 // Finite and representable in fp32 with room for the margin.
 bool fitsFloat(double x) { return std::isfinite(x) && std::abs(x) < 0.5 * double(FLT_MAX); }
+
+// Faces with fewer segments are scanned whole; the others get about one bin per
+// kSegmentsPerBin segments, at most kMaxBins, and fewer while the entries (a segment is one in
+// every bin it spans) would pass kMaxEntriesPerSegment per segment.
+constexpr uint32_t kBinnedSegments = 32;
+constexpr uint32_t kSegmentsPerBin = 4;
+constexpr uint32_t kMaxBins = 256;
+constexpr size_t kMaxEntriesPerSegment = 8;
+
+// Face `face`'s v bins appended to binWords: its bin table (binCount + 1 offsets into binWords),
+// then each bin's entries (segment index, first bin of the segment), segments in index order.
+void binFace(gpu::TrimFace& face, const std::vector<gpu::vec4>& segments,
+             std::vector<uint32_t>& binWords) {
+  const float range = face.box.w - face.box.y;
+  if (face.segmentCount < kBinnedSegments || !(range > 0.0f) || !std::isfinite(range)) return;
+  std::vector<std::pair<uint32_t, uint32_t>> spans(face.segmentCount);  // first, last bin
+  uint32_t bins = std::min(kMaxBins, face.segmentCount / kSegmentsPerBin);
+  float scale = 0.0f;
+  for (;; bins /= 2) {
+    scale = float(bins) / range;
+    if (bins <= 1 || !std::isfinite(scale)) return;  // one bin reads every segment anyway
+    size_t entries = 0;
+    for (uint32_t k = 0; k < face.segmentCount; ++k) {
+      const gpu::vec4 s = segments[face.firstSegment + k];
+      spans[k] = {mirror::glsl::trimBin(std::min(s.y, s.w), face.box.y, scale, bins),
+                  mirror::glsl::trimBin(std::max(s.y, s.w), face.box.y, scale, bins)};
+      entries += spans[k].second - spans[k].first + 1;
+    }
+    if (entries <= kMaxEntriesPerSegment * face.segmentCount) break;
+  }
+  std::vector<uint32_t> counts(bins, 0);
+  for (const auto& [first, last] : spans)
+    for (uint32_t b = first; b <= last; ++b) ++counts[b];
+  const size_t table = binWords.size();
+  size_t next = table + bins + 1;
+  binWords.resize(next);
+  for (uint32_t b = 0; b < bins; ++b) {
+    binWords[table + b] = uint32_t(next);
+    next += 2 * size_t(counts[b]);
+  }
+  binWords[table + bins] = uint32_t(next);
+  if (next > UINT32_MAX) throw std::length_error("trim: more than 2³² − 1 bin words");
+  binWords.resize(next);
+  std::vector<uint32_t> fill(binWords.begin() + table, binWords.begin() + table + bins);
+  for (uint32_t k = 0; k < face.segmentCount; ++k)
+    for (uint32_t b = spans[k].first; b <= spans[k].second; ++b) {
+      binWords[fill[b]++] = face.firstSegment + k;
+      binWords[fill[b]++] = spans[k].first;
+    }
+  face.firstBin = uint32_t(table);
+  face.binCount = bins;
+  face.binScale = scale;
+}
 
 }  // namespace
 
@@ -74,7 +135,10 @@ TrimSet packTrimSet(const std::vector<std::vector<std::vector<glm::dvec2>>>& fac
     if (face.segmentCount == 0) face.box = gpu::vec4(0.0f);
     set.faces.push_back(face);
   }
-  for (size_t f = 0; f < set.faces.size(); ++f) set.faces[f].margin = trimMargin(scale[f]);
+  for (size_t f = 0; f < set.faces.size(); ++f) {
+    set.faces[f].margin = trimMargin(scale[f]);
+    binFace(set.faces[f], set.segments, set.binWords);
+  }
   return set;
 }
 

@@ -6,9 +6,10 @@
 
 namespace tessera::gpu {
 
-static_assert(sizeof(TrimFace) == 32 && offsetof(TrimFace, box) == 0 &&
+static_assert(sizeof(TrimFace) == 48 && offsetof(TrimFace, box) == 0 &&
                   offsetof(TrimFace, firstSegment) == 16 && offsetof(TrimFace, segmentCount) == 20 &&
-                  offsetof(TrimFace, margin) == 24,
+                  offsetof(TrimFace, margin) == 24 && offsetof(TrimFace, firstBin) == 32 &&
+                  offsetof(TrimFace, binCount) == 36 && offsetof(TrimFace, binScale) == 40,
               "TrimFace layout");
 static_assert(sizeof(TrimPiece) == 32 && offsetof(TrimPiece, rect) == 0 &&
                   offsetof(TrimPiece, face) == 16,

@@ -4,7 +4,7 @@
 // pieces and segments are storage buffers, and as C++ inside the struct of
 // host/trim/trim_classify_mirror.cpp, where they are members of the same names. PRECISE on
 // every local: no fused multiply-add, so lavapipe and the mirror round identically.
-// Include shared_glsl_cpp.h first.
+// Include shared_glsl_cpp.h and lib/trim_bin.h first.
 #ifndef TESSERA_TRIM_CLASSIFY_H
 #define TESSERA_TRIM_CLASSIFY_H
 
@@ -62,10 +62,28 @@ vec4 trimFaceRect(IN(vec4) piece, IN(vec4) node) {
   return vec4(u0, v0, u1, v1);
 }
 
+// One segment's part in a node's answer: true when it meets the grown rectangle (the node is
+// crossing); else `inside` flips when it crosses the ray from the centre (cu, cv) towards +u
+// (half-open in v: its ends on opposite sides of v = cv, one strictly above).
+bool trimSegmentStep(IN(vec4) s, IN(vec4) grown, float cu, float cv, INOUT(bool) inside) {
+  if (trimSegmentMeetsBox(s, grown)) return true;
+  if ((s.y > cv) != (s.w > cv)) {
+    // The segment crosses v = cv outside the grown box, at least the margin away from the
+    // centre: the side's sign is certain (docs/trimmed_faces.md).
+    float bound = 0.0f;
+    PRECISE float side = trimOrient(s, cu, cv, bound);
+    if ((side > 0.0f) == (s.w > s.y)) inside = !inside;
+  }
+  return false;
+}
+
 // kTrimCrossing if a segment of the face meets the node's rectangle grown by the face's margin;
 // else kTrimInside or kTrimOutside by the parity of the segments a ray from the rectangle's
-// centre towards +u crosses (half-open in v: a segment counts when its ends lie on opposite
-// sides of v = centre, one strictly above). A face without loops is all inside.
+// centre towards +u crosses. A face without loops is all inside. With bins, the node reads
+// only the bins its v range [min(g_v0, cv), max(g_v1, cv)] reaches, each segment once (in the
+// first of those bins that holds it): the others fail trimSegmentMeetsBox's first comparisons
+// and the ray's v test, and the answer does not depend on the segments' order (any one meeting
+// the box makes it crossing; else the parity), so it is the whole face's bit for bit.
 uint classifyTrimNode(IN(TrimQuery) query) {
   TrimPiece piece = pieces[query.piece];
   TrimFace face = faces[piece.face];
@@ -85,15 +103,20 @@ uint classifyTrimNode(IN(TrimQuery) query) {
   PRECISE float cu = sumU * 0.5f;
   PRECISE float cv = sumV * 0.5f;
   bool inside = false;
-  for (uint k = 0u; k < face.segmentCount; ++k) {
-    vec4 s = segments[face.firstSegment + k];
-    if (trimSegmentMeetsBox(s, grown)) return kTrimCrossing;
-    if ((s.y > cv) != (s.w > cv)) {
-      // The segment crosses v = cv outside the grown box, at least the margin away from the
-      // centre: the side's sign is certain (docs/trimmed_faces.md).
-      float bound = 0.0f;
-      PRECISE float side = trimOrient(s, cu, cv, bound);
-      if ((side > 0.0f) == (s.w > s.y)) inside = !inside;
+  if (face.binCount == 0u || isnan(g1) || isnan(g3) || isnan(cv)) {
+    for (uint k = 0u; k < face.segmentCount; ++k)
+      if (trimSegmentStep(segments[face.firstSegment + k], grown, cu, cv, inside))
+        return kTrimCrossing;
+    return inside ? kTrimInside : kTrimOutside;
+  }
+  uint firstBin = trimBin(min(g1, cv), face.box.y, face.binScale, face.binCount);
+  uint lastBin = trimBin(max(g3, cv), face.box.y, face.binScale, face.binCount);
+  for (uint b = firstBin; b <= lastBin; ++b) {
+    uint end = binWords[face.firstBin + b + 1u];
+    for (uint e = binWords[face.firstBin + b]; e < end; e += 2u) {
+      // Read already in an earlier bin of this node's.
+      if (b > firstBin && binWords[e + 1u] < b) continue;
+      if (trimSegmentStep(segments[binWords[e]], grown, cu, cv, inside)) return kTrimCrossing;
     }
   }
   return inside ? kTrimInside : kTrimOutside;
