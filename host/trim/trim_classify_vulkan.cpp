@@ -1,7 +1,6 @@
 // The Vulkan backend of TrimClassifier: one dispatch of shaders/trim_classify.comp.glsl, one
 // invocation per node. The set (faces, pieces, segments, bins) is uploaded once per beginSet,
-// so the trimmed quad-tree's levels upload only their nodes; their small batches are
-// classified on the host (startClassify).
+// so the trimmed quad-tree's levels upload only their nodes.
 #include <cstdint>  // before the generated SPIR-V array, which uses uint32_t
 
 #include "trim/trim_classifier.h"
@@ -39,19 +38,8 @@ class VulkanTrimClassifier final : public TrimClassifier {
 
   // The same dispatch, submitted without waiting: the trimmed quad-tree's level classification,
   // submitted next, runs after it on the queue, and its wait covers both.
-  // A batch of fewer than kHostBatchNodes nodes is classified here, on the host, by the
-  // mirror (the shader's own text, equal bit for bit): a dispatch's fixed cost (a submission,
-  // a fence, lavapipe's thread pool woken) passes the few nodes' work. classify() always
-  // dispatches.
   void startClassify(const TrimSet& set, const std::vector<gpu::TrimQuery>& queries) override {
     startedCount_ = 0;
-    hostStarted_.clear();
-    if (queries.size() < kHostBatchNodes) {
-      validateTrimQueries(set, queries);
-      submission_.wait();
-      hostStarted_ = host_->classify(set, queries);
-      return;
-    }
     if (!prepare(set, queries)) return;
     submission_.submit([&](VkCommandBuffer cmd) { record(cmd); });
     startedCount_ = queries.size();
@@ -59,10 +47,6 @@ class VulkanTrimClassifier final : public TrimClassifier {
 
   std::vector<uint32_t> finishClassify() override {
     std::vector<uint32_t> out;
-    if (!hostStarted_.empty()) {
-      out.swap(hostStarted_);
-      return out;
-    }
     if (startedCount_ == 0) return out;
     submission_.wait();
     results_.download(out, startedCount_);
@@ -118,16 +102,8 @@ class VulkanTrimClassifier final : public TrimClassifier {
     if (bytes > 0) buffer.upload(data, bytes);
   }
 
-  // Measured on the IDF corpus at δ = 1e-4 (bench/HISTORY.md, 2026-11-28 "Trim classification
-  // on Vulkan"): nine in ten of the tree's batches have fewer nodes, each costing lavapipe
-  // 0.2–0.5 ms; the mirror takes well under 0.1 ms for them. Larger batches go to the device,
-  // where a GPU classifies them while the host prepares the level.
-  static constexpr size_t kHostBatchNodes = 1024;
-
   vk::Context& context_;
   vk::ComputePipeline pipeline_;
-  std::unique_ptr<TrimClassifier> host_ = makeMirrorTrimClassifier();
-  std::vector<uint32_t> hostStarted_;  // a started batch classified on the host
   vk::Buffer faces_, pieces_, segments_, binWords_, queries_, results_;
   gpu::TrimPush push_{};
   const TrimSet* boundSet_ = nullptr;         // the set of the last beginSet, uploaded
