@@ -70,6 +70,27 @@ std::vector<Sample> evaluateAll(const std::vector<gpu::EvalQuery>& queries,
   });
 }
 
+// A mesh's vertices: its queries come a patch after another, so the patch's tolerance (ε·L²,
+// a pass over its control points) is kept while the patch repeats. tolerance(patch) gives it,
+// vertex(patch, u, v, tol) one vertex; `patches` is indexed by the queries' patchIndex.
+template <typename Patch, typename Tolerance, typename Vertex>
+std::vector<gpu::VertexSample> evaluateVerticesPatchByPatch(
+    const std::vector<Patch>& patches, const std::vector<gpu::EvalQuery>& queries,
+    const Tolerance& tolerance, const Vertex& vertex) {
+  checkQueries(patches.size(), queries);
+  return evaluateChunks<gpu::VertexSample>(
+      queries, [&](size_t begin, size_t end, gpu::VertexSample* out) {
+        uint32_t patchIndex = UINT32_MAX;  // the patch whose tolerance `tol` is
+        float tol = 0.0f;
+        for (size_t i = begin; i < end; ++i) {
+          const gpu::EvalQuery& q = queries[i];
+          const Patch& patch = patches[q.patchIndex];
+          if (q.patchIndex != patchIndex) patchIndex = q.patchIndex, tol = tolerance(patch);
+          out[i] = vertex(patch, q.u, q.v, tol);
+        }
+      });
+}
+
 class MirrorEvaluator final : public PatchEvaluator {
  public:
   std::string name() const override { return "cpu-fp32-mirror"; }
@@ -79,25 +100,25 @@ class MirrorEvaluator final : public PatchEvaluator {
                                : evaluateGeneral(patches.general(), queries);
   }
 
-  // The queries of a mesh come a patch after another: the patch's tolerance (its length
-  // scale, a pass over its control points) is kept while the patch repeats.
   std::vector<gpu::VertexSample> evaluateVertices(
       const PatchSet& patches, const std::vector<gpu::EvalQuery>& queries) override {
-    if (!patches.isBicubic()) return evaluateGeneralVertices(patches.general(), queries);
-    const std::vector<gpu::BicubicPatch>& bicubic = patches.bicubic();
-    checkQueries(bicubic.size(), queries);
-    return evaluateChunks<gpu::VertexSample>(
-        queries, [&](size_t begin, size_t end, gpu::VertexSample* out) {
-          uint32_t patchIndex = UINT32_MAX;  // the patch whose tolerance `tol` is
-          float tol = 0.0f;
-          for (size_t i = begin; i < end; ++i) {
-            const gpu::EvalQuery& q = queries[i];
-            const gpu::BicubicPatch& patch = bicubic[q.patchIndex];
-            if (q.patchIndex != patchIndex)
-              patchIndex = q.patchIndex,
-              tol = mirror::bicubicVertexTolerance(patch, kDegenerateEpsFp32);
-            out[i] = mirror::bicubicVertex(patch, q.u, q.v, tol);
-          }
+    if (patches.isBicubic())
+      return evaluateVerticesPatchByPatch(
+          patches.bicubic(), queries,
+          [](const gpu::BicubicPatch& patch) {
+            return mirror::bicubicVertexTolerance(patch, kDegenerateEpsFp32);
+          },
+          [](const gpu::BicubicPatch& patch, float u, float v, float tol) {
+            return mirror::bicubicVertex(patch, u, v, tol);
+          });
+    const gpu::vec4* points = patches.general().points.data();
+    return evaluateVerticesPatchByPatch(
+        patches.general().patches, queries,
+        [points](const gpu::GeneralPatch& patch) {
+          return mirror::generalVertexTolerance(patch, points, kDegenerateEpsFp32);
+        },
+        [points](const gpu::GeneralPatch& patch, float u, float v, float tol) {
+          return mirror::evalGeneralVertex(patch, points, u, v, tol);
         });
   }
 
@@ -108,26 +129,6 @@ class MirrorEvaluator final : public PatchEvaluator {
     return evaluateAll<gpu::EvalSample>(queries, [&](const gpu::EvalQuery& q) {
       return mirror::evalBicubicSample(patches[q.patchIndex], q.u, q.v, kDegenerateEpsFp32);
     });
-  }
-
-  // As for bicubic sets: the patch's tolerance kept while its queries follow each other.
-  std::vector<gpu::VertexSample> evaluateGeneralVertices(
-      const GeneralPatchSet& patches, const std::vector<gpu::EvalQuery>& queries) {
-    checkQueries(patches.size(), queries);
-    const gpu::vec4* points = patches.points.data();
-    return evaluateChunks<gpu::VertexSample>(
-        queries, [&](size_t begin, size_t end, gpu::VertexSample* out) {
-          uint32_t patchIndex = UINT32_MAX;  // the patch whose tolerance `tol` is
-          float tol = 0.0f;
-          for (size_t i = begin; i < end; ++i) {
-            const gpu::EvalQuery& q = queries[i];
-            const gpu::GeneralPatch& patch = patches.patches[q.patchIndex];
-            if (q.patchIndex != patchIndex)
-              patchIndex = q.patchIndex,
-              tol = mirror::generalVertexTolerance(patch, points, kDegenerateEpsFp32);
-            out[i] = mirror::evalGeneralVertex(patch, points, q.u, q.v, tol);
-          }
-        });
   }
 
   std::vector<gpu::EvalSample> evaluateGeneral(const GeneralPatchSet& patches,
