@@ -1,7 +1,8 @@
 // PatchEvaluator::evaluateVertices, the evaluation meshes use (shaders/eval_vertices.comp.glsl
-// and its fp32 mirror, lib/bicubic_eval.h's evalBicubicVertex): the position and normal bits of
-// evaluate()'s samples, so switching the mesh path to it changes no mesh byte; the GPU equal to
-// its mirror bit for bit on lavapipe; and tessellate() taking it, not evaluate().
+// and eval_general_vertices.comp.glsl and their fp32 mirrors, lib/bicubic_eval.h's
+// evalBicubicVertex and lib/general_vertex.h): the position and normal bits of evaluate()'s
+// samples, so switching the mesh path to it changes no mesh byte; the GPU equal to its mirror
+// bit for bit on lavapipe; and tessellate() taking it, not evaluate().
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -107,7 +108,7 @@ TEST_CASE("fp32 mirror: evaluateVertices gives evaluate's positions and normals 
 
 TEST_CASE("fp32 mirror: general sets' evaluateVertices gives evaluate's positions and normals",
           "[eval][mirror][general]") {
-  // The mirror's vertex path for general patches (eval/detail/general_vertex.inc): first
+  // The mirror's vertex path for general patches (shaders/lib/general_vertex.h): first
   // partials only, the length scale once per patch, the common degree pairs compiled apart;
   // every such pair, polynomial and rational, others of runtime degrees up to 7, weights that
   // vanish inside, and a sphere whose collapsed poles take the degenerate rule.
@@ -147,47 +148,79 @@ TEST_CASE("fp32 mirror: general sets' evaluateVertices gives evaluate's position
   CHECK(degenerate > 0);  // the degenerate rule's branch was taken
 }
 
+namespace {
+
+// The Vulkan evaluator's vertices against its mirror's (bit for bit where the device rounds as
+// the mirror does, lavapipe) and against its own evaluate()'s samples; `queries` in patch
+// order make the shader's runs (VertexEvalPush) full, cut at patch changes, and shuffled
+// nearly every run is one query long. One evaluator for all cases: lavapipe compiles each
+// pipeline at its first use, a few hundred milliseconds for the general ones.
+void checkVertexShaderParity(vk::Context& context, PatchEvaluator& vulkan, const std::string& name,
+                             const PatchSet& set, std::vector<gpu::EvalQuery> queries) {
+  for (const bool shuffled : {false, true}) {
+    if (shuffled) std::shuffle(queries.begin(), queries.end(), std::mt19937(5));
+    const auto gpu = vulkan.evaluateVertices(set, queries);
+    const auto gpuSamples = vulkan.evaluate(set, queries);
+    const auto cpu = makeMirrorEvaluator()->evaluateVertices(set, queries);
+    REQUIRE(gpu.size() == queries.size());
+    size_t mirrorMismatches = 0;
+    double maxPositionDiff = 0, maxNormalDiff = 0, maxCoordinate = 0;
+    for (size_t i = 0; i < gpu.size(); ++i) {
+      mirrorMismatches +=
+          !sameBits(gpu[i].position, cpu[i].position) || !sameBits(gpu[i].normal, cpu[i].normal);
+      for (int k = 0; k < 3; ++k) {
+        maxCoordinate = std::max(maxCoordinate, double(std::fabs(gpu[i].position[k])));
+        maxPositionDiff =
+            std::max(maxPositionDiff, double(std::fabs(gpu[i].position[k] - cpu[i].position[k])));
+        maxNormalDiff =
+            std::max(maxNormalDiff, double(std::fabs(gpu[i].normal[k] - cpu[i].normal[k])));
+      }
+    }
+    const size_t sampleMismatches = differingVertices(gpu, gpuSamples);
+    WARN(name << (shuffled ? ", shuffled," : "") << " on " << context.info().name << ": "
+              << queries.size() << " vertices, " << mirrorMismatches
+              << " differ from the mirror in any bit (max |Δp| " << maxPositionDiff
+              << ", max |Δn| " << maxNormalDiff << "), " << sampleMismatches
+              << " from evaluate()'s samples");
+    if (test::exactMirrorArithmetic()) {
+      REQUIRE(mirrorMismatches == 0);
+      REQUIRE(sampleMismatches == 0);
+    } else {
+      REQUIRE(maxPositionDiff <= 1e-6 * std::max(1.0, maxCoordinate));
+      REQUIRE(maxNormalDiff <= 3e-5);
+    }
+  }
+}
+
+}  // namespace
+
 TEST_CASE("eval_vertices shader equals its fp32 mirror and eval.comp's positions and normals",
           "[gpu][parity]") {
   vk::Context& context = test::gpuContext();
+  const auto vulkan = makeVulkanEvaluator(context);
   for (const PatchCase& c : patchCases())
-    for (const bool shuffled : {false, true}) {
-      // In patch order the shader's runs (VertexEvalPush) are full, cut at patch changes; shuffled,
-      // nearly every run is one query long.
-      auto queries = test::gridQueries(c.patches.size(), 9, 64, 1234);
-      if (shuffled) std::shuffle(queries.begin(), queries.end(), std::mt19937(5));
-      auto vulkan = makeVulkanEvaluator(context);
-      const auto gpu = vulkan->evaluateVertices(c.patches, queries);
-      const auto gpuSamples = vulkan->evaluate(c.patches, queries);
-      const auto cpu = makeMirrorEvaluator()->evaluateVertices(c.patches, queries);
-      REQUIRE(gpu.size() == queries.size());
-      size_t mirrorMismatches = 0;
-      double maxPositionDiff = 0, maxNormalDiff = 0, maxCoordinate = 0;
-      for (size_t i = 0; i < gpu.size(); ++i) {
-        mirrorMismatches +=
-            !sameBits(gpu[i].position, cpu[i].position) || !sameBits(gpu[i].normal, cpu[i].normal);
-        for (int k = 0; k < 3; ++k) {
-          maxCoordinate = std::max(maxCoordinate, double(std::fabs(gpu[i].position[k])));
-          maxPositionDiff =
-              std::max(maxPositionDiff, double(std::fabs(gpu[i].position[k] - cpu[i].position[k])));
-          maxNormalDiff =
-              std::max(maxNormalDiff, double(std::fabs(gpu[i].normal[k] - cpu[i].normal[k])));
-        }
-      }
-      const size_t sampleMismatches = differingVertices(gpu, gpuSamples);
-      WARN(c.name << (shuffled ? ", shuffled," : "") << " on " << context.info().name << ": "
-                  << queries.size() << " vertices, " << mirrorMismatches
-                  << " differ from the mirror in any bit (max |Δp| " << maxPositionDiff
-                  << ", max |Δn| " << maxNormalDiff << "), " << sampleMismatches
-                  << " from eval.comp's samples");
-      if (test::exactMirrorArithmetic()) {
-        REQUIRE(mirrorMismatches == 0);
-        REQUIRE(sampleMismatches == 0);
-      } else {
-        REQUIRE(maxPositionDiff <= 1e-6 * std::max(1.0, maxCoordinate));
-        REQUIRE(maxNormalDiff <= 3e-5);
-      }
-    }
+    checkVertexShaderParity(context, *vulkan, c.name, c.patches,
+                            test::gridQueries(c.patches.size(), 9, 64, 1234));
+  test::requireValidationClean();
+}
+
+TEST_CASE("eval_general_vertices shader equals its fp32 mirror and eval_general.comp's "
+          "positions and normals",
+          "[gpu][parity][general]") {
+  // A fixed-degree pair of the mirror's and one of runtime degrees (the shader takes every
+  // patch's own), rational ones with vanishing inner weights, and a sphere whose collapsed
+  // poles take the degenerate rule.
+  vk::Context& context = test::gpuContext();
+  const auto vulkan = makeVulkanEvaluator(context);
+  const std::pair<const char*, std::vector<BezierPatch>> cases[] = {
+      {"degree 2x3", test::randomGeneralPatches(6, 2, 3, false, false, 71)},
+      {"degree 7x5", test::randomGeneralPatches(6, 7, 5, false, false, 72)},
+      {"rational 2x2", test::randomGeneralPatches(6, 2, 2, true, false, 73)},
+      {"rational 4x3, inner w=0", test::randomGeneralPatches(6, 4, 3, true, true, 74)},
+      {"rational sphere", test::rationalSphere(2.0)}};
+  for (const auto& [name, patches] : cases)
+    checkVertexShaderParity(context, *vulkan, name, toGeneralPatchSet(patches),
+                            test::gridQueries(patches.size(), 9, 64, 1235));
   test::requireValidationClean();
 }
 

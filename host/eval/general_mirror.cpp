@@ -26,7 +26,7 @@ struct GeneralKernel {
 #define CLASSIFY_SCALE generalScale
 #define CLASSIFY_SECOND_BOUNDS generalSecondBounds
 #include "shaders/lib/quadtree_classify.h"
-#include "eval/detail/general_vertex.inc"
+#include "shaders/lib/general_vertex.h"
 };
 #pragma GCC diagnostic pop
 }  // namespace
@@ -41,9 +41,22 @@ float generalVertexTolerance(const gpu::GeneralPatch& patch, const gpu::vec4* po
   return glsl::GeneralKernel{points}.generalTolerance(patch, eps);
 }
 
+// The pairs of rule T's variants (general_tolerance_variants.h: planes, cylinders, cones,
+// spheres, tori and low-degree splines, most of a CAD model's faces) pass their degrees and kind
+// as constants, so that generalVertexOfDegrees' loops unroll; the operations are those the
+// patch's own degrees run.
 gpu::VertexSample evalGeneralVertex(const gpu::GeneralPatch& patch, const gpu::vec4* points,
                                     float u, float v, float tol) {
-  return glsl::GeneralKernel{points}.generalVertex(patch, u, v, tol);
+  glsl::GeneralKernel kernel{points};
+  switch (generalDegreePairKey(patch.rational != 0u, patch.degreeU, patch.degreeV)) {
+#define TESSERA_FIXED_DEGREE_VERTEX(kind, rational, n, m) \
+  case generalDegreePairKey(rational, n, m):             \
+    return kernel.generalVertexOfDegrees(patch, n, m, rational, u, v, tol);
+    TESSERA_GENERAL_DEGREE_PAIRS(TESSERA_FIXED_DEGREE_VERTEX)
+#undef TESSERA_FIXED_DEGREE_VERTEX
+    default:
+      return kernel.generalVertex(patch, u, v, tol);
+  }
 }
 
 gpu::NodeDecision classifyGeneralNode(const gpu::GeneralPatch& patch, const gpu::vec4* points,
@@ -63,19 +76,15 @@ gpu::NodeDecision classifyGeneralNodeGeneric(const gpu::GeneralPatch& patch,
 }
 
 GeneralToleranceClassify generalToleranceVariant(const gpu::GeneralPatch& patch) {
-  const uint32_t n = patch.degreeU, m = patch.degreeV;
-  if (patch.rational == 0u) {
-    // Polynomial (n, m) up to 3 × 3, at (n − 1)·3 + m − 1.
-    static constexpr GeneralToleranceClassify kPolynomial[9] = {
-        generalTolerance_p1x1, generalTolerance_p1x2, generalTolerance_p1x3,
-        generalTolerance_p2x1, generalTolerance_p2x2, generalTolerance_p2x3,
-        generalTolerance_p3x1, generalTolerance_p3x2, generalTolerance_p3x3};
-    return n >= 1 && m >= 1 && n <= 3 && m <= 3 ? kPolynomial[(n - 1) * 3 + (m - 1)] : nullptr;
+  switch (generalDegreePairKey(patch.rational != 0u, patch.degreeU, patch.degreeV)) {
+#define TESSERA_TOLERANCE_VARIANT_CASE(kind, rational, n, m) \
+  case generalDegreePairKey(rational, n, m):                \
+    return generalTolerance_##kind##n##x##m;
+    TESSERA_GENERAL_DEGREE_PAIRS(TESSERA_TOLERANCE_VARIANT_CASE)
+#undef TESSERA_TOLERANCE_VARIANT_CASE
+    default:
+      return nullptr;
   }
-  if (n == 2 && m == 1) return generalTolerance_r2x1;
-  if (n == 1 && m == 2) return generalTolerance_r1x2;
-  if (n == 2 && m == 2) return generalTolerance_r2x2;
-  return nullptr;
 }
 
 }  // namespace tessera::mirror

@@ -11,12 +11,16 @@
 #define INOUT(T) T&
 #define PRECISE
 #define SHARED_FN inline
+// A function whose callers pass constants that should unroll its loops (the C++ mirror's
+// fixed-degree variants): inlined whatever the compiler's size estimate says.
+#define SHARED_FORCE_INLINE __attribute__((always_inline)) inline
 #else
 #define IN(T) in T
 #define OUT(T) out T
 #define INOUT(T) inout T
 #define PRECISE precise
 #define SHARED_FN
+#define SHARED_FORCE_INLINE
 #endif
 
 // i / n for the lines of a grid, with both ends exact on every driver: 0 / n = 0 and n / n = 1.

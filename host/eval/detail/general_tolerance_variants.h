@@ -7,6 +7,8 @@
 // the net; the arithmetic and its order are the generic mirror's, so the decisions are equal
 // bit for bit (tests/test_tolerance_variants.cpp).
 #pragma once
+#include <cstdint>
+
 #include "shaders/layout.h"
 
 namespace tessera::mirror {
@@ -17,24 +19,36 @@ using GeneralToleranceClassify = gpu::NodeDecision (*)(const gpu::GeneralPatch& 
                                                        const gpu::QuadNode& node,
                                                        const gpu::ClassifyPush& params);
 
-#define TESSERA_GENERAL_TOLERANCE_VARIANT(kind, n, m)                                     \
+// The Vulkan side's pairs (shaders/CMakeLists.txt, TESSERA_GENERAL_TOLERANCE_VARIANTS): polynomial
+// up to 3 × 3, rational conic × line and conic × conic. One list, X(kind, rational, n, m) a
+// pair, for the declarations below, generalToleranceVariant's dispatch and the mirror's
+// fixed-degree vertex path (general_mirror.cpp), so that they cannot drift apart.
+#define TESSERA_GENERAL_DEGREE_PAIRS(X) \
+  X(p, 0, 1, 1)                         \
+  X(p, 0, 1, 2)                         \
+  X(p, 0, 1, 3)                         \
+  X(p, 0, 2, 1)                         \
+  X(p, 0, 2, 2)                         \
+  X(p, 0, 2, 3)                         \
+  X(p, 0, 3, 1)                         \
+  X(p, 0, 3, 2)                         \
+  X(p, 0, 3, 3)                         \
+  X(r, 1, 2, 1)                         \
+  X(r, 1, 1, 2)                         \
+  X(r, 1, 2, 2)
+
+// A degree pair and kind as one number, the dispatchers' switch key; degrees past 7 (no general
+// patch has them) take a key no pair has.
+constexpr uint32_t generalDegreePairKey(bool rational, uint32_t n, uint32_t m) {
+  return n <= 7 && m <= 7 ? (rational ? 64u : 0u) + n * 8u + m : UINT32_MAX;
+}
+
+#define TESSERA_DECLARE_GENERAL_TOLERANCE_VARIANT(kind, rational, n, m)                   \
   gpu::NodeDecision generalTolerance_##kind##n##x##m(                                    \
       const gpu::GeneralPatch& patch, const gpu::vec4* points, const gpu::QuadNode& node, \
       const gpu::ClassifyPush& params);
-// The Vulkan side's pairs: polynomial up to 3 × 3, rational conic × line and conic × conic.
-TESSERA_GENERAL_TOLERANCE_VARIANT(p, 1, 1)
-TESSERA_GENERAL_TOLERANCE_VARIANT(p, 1, 2)
-TESSERA_GENERAL_TOLERANCE_VARIANT(p, 1, 3)
-TESSERA_GENERAL_TOLERANCE_VARIANT(p, 2, 1)
-TESSERA_GENERAL_TOLERANCE_VARIANT(p, 2, 2)
-TESSERA_GENERAL_TOLERANCE_VARIANT(p, 2, 3)
-TESSERA_GENERAL_TOLERANCE_VARIANT(p, 3, 1)
-TESSERA_GENERAL_TOLERANCE_VARIANT(p, 3, 2)
-TESSERA_GENERAL_TOLERANCE_VARIANT(p, 3, 3)
-TESSERA_GENERAL_TOLERANCE_VARIANT(r, 2, 1)
-TESSERA_GENERAL_TOLERANCE_VARIANT(r, 1, 2)
-TESSERA_GENERAL_TOLERANCE_VARIANT(r, 2, 2)
-#undef TESSERA_GENERAL_TOLERANCE_VARIANT
+TESSERA_GENERAL_DEGREE_PAIRS(TESSERA_DECLARE_GENERAL_TOLERANCE_VARIANT)
+#undef TESSERA_DECLARE_GENERAL_TOLERANCE_VARIANT
 
 // The variant for the patch's degree pair and kind, or null where only the generic mirror
 // (general_mirror.h, classifyGeneralNode) classifies it.
