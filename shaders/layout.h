@@ -53,8 +53,7 @@ struct VertexSample {
   vec4 normal;
 };
 
-// eval_vertices.comp.glsl (and eval_general_vertices.comp.glsl, whose patch's length scale is
-// taken once a run): one invocation per run of consecutive queries on one patch, at most
+// eval_vertices.comp.glsl: one invocation per run of consecutive queries on one patch, at most
 // kVertexRunLength long, so the patch's 16 control points are read once a run (lavapipe reads a
 // storage buffer lane by lane: those reads were most of eval.comp's time). Run r is queries
 // runStarts[r] .. runStarts[r + 1] − 1 (a uint buffer of runCount + 1 entries).

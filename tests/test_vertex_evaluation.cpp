@@ -1,8 +1,8 @@
 // PatchEvaluator::evaluateVertices, the evaluation meshes use (shaders/eval_vertices.comp.glsl
-// and eval_general_vertices.comp.glsl and their fp32 mirrors, lib/bicubic_eval.h's
-// evalBicubicVertex and lib/general_vertex.h): the position and normal bits of evaluate()'s
-// samples, so switching the mesh path to it changes no mesh byte; the GPU equal to its mirror
-// bit for bit on lavapipe; and tessellate() taking it, not evaluate().
+// and its fp32 mirror, lib/bicubic_eval.h's evalBicubicVertex; general sets' mirror,
+// lib/general_vertex.h): the position and normal bits of evaluate()'s samples, so switching the
+// mesh path to it changes no mesh byte; the GPU equal to its mirror bit for bit on lavapipe; and
+// tessellate() taking it, not evaluate().
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -154,7 +154,7 @@ namespace {
 // the mirror does, lavapipe) and against its own evaluate()'s samples; `queries` in patch
 // order make the shader's runs (VertexEvalPush) full, cut at patch changes, and shuffled
 // nearly every run is one query long. One evaluator for all cases: lavapipe compiles each
-// pipeline at its first use, a few hundred milliseconds for the general ones.
+// pipeline at its first use.
 void checkVertexShaderParity(vk::Context& context, PatchEvaluator& vulkan, const std::string& name,
                              const PatchSet& set, std::vector<gpu::EvalQuery> queries) {
   for (const bool shuffled : {false, true}) {
@@ -201,26 +201,6 @@ TEST_CASE("eval_vertices shader equals its fp32 mirror and eval.comp's positions
   for (const PatchCase& c : patchCases())
     checkVertexShaderParity(context, *vulkan, c.name, c.patches,
                             test::gridQueries(c.patches.size(), 9, 64, 1234));
-  test::requireValidationClean();
-}
-
-TEST_CASE("eval_general_vertices shader equals its fp32 mirror and eval_general.comp's "
-          "positions and normals",
-          "[gpu][parity][general]") {
-  // A fixed-degree pair of the mirror's and one of runtime degrees (the shader takes every
-  // patch's own), rational ones with vanishing inner weights, and a sphere whose collapsed
-  // poles take the degenerate rule.
-  vk::Context& context = test::gpuContext();
-  const auto vulkan = makeVulkanEvaluator(context);
-  const std::pair<const char*, std::vector<BezierPatch>> cases[] = {
-      {"degree 2x3", test::randomGeneralPatches(6, 2, 3, false, false, 71)},
-      {"degree 7x5", test::randomGeneralPatches(6, 7, 5, false, false, 72)},
-      {"rational 2x2", test::randomGeneralPatches(6, 2, 2, true, false, 73)},
-      {"rational 4x3, inner w=0", test::randomGeneralPatches(6, 4, 3, true, true, 74)},
-      {"rational sphere", test::rationalSphere(2.0)}};
-  for (const auto& [name, patches] : cases)
-    checkVertexShaderParity(context, *vulkan, name, toGeneralPatchSet(patches),
-                            test::gridQueries(patches.size(), 9, 64, 1235));
   test::requireValidationClean();
 }
 

@@ -30,9 +30,9 @@ class PatchEvaluator {
   virtual std::vector<gpu::EvalSample> evaluate(const PatchSet& patches,
                                                 const std::vector<gpu::EvalQuery>& queries) = 0;
   // What a mesh keeps of each sample: the same position and normal bits as evaluate()'s, for
-  // less work where a backend has a variant for it (bicubic sets: eval_vertices.comp.glsl,
-  // general sets: eval_general_vertices.comp.glsl, and their mirrors); elsewhere evaluate()'s
-  // samples, cut down.
+  // less work where a backend has a variant for it (bicubic sets: eval_vertices.comp.glsl and
+  // its mirror; general sets on the mirror: shaders/lib/general_vertex.h); elsewhere
+  // evaluate()'s samples, cut down.
   virtual std::vector<gpu::VertexSample> evaluateVertices(
       const PatchSet& patches, const std::vector<gpu::EvalQuery>& queries);
   // Announces that evaluate() (prepare) or evaluateVertices() (prepareVertices) will be called

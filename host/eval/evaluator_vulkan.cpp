@@ -1,7 +1,6 @@
 // The Vulkan backend of PatchEvaluator: one dispatch of shaders/eval.comp.glsl (bicubic) or
-// eval_general.comp.glsl (general patches) per call, or for mesh vertices of
-// eval_vertices.comp.glsl (bicubic) or eval_general_vertices.comp.glsl (general); buffers kept
-// and grown between calls.
+// eval_general.comp.glsl (general patches) per call, or of eval_vertices.comp.glsl for a bicubic
+// set's mesh vertices; buffers kept and grown between calls.
 // Each pipeline is made on first use, or on a worker thread from prepare() on.
 #include <cstdint>  // before the generated SPIR-V array, which uses uint32_t
 
@@ -9,7 +8,6 @@
 
 #include "eval_comp.h"
 #include "eval_general_comp.h"
-#include "eval_general_vertices_comp.h"
 #include "eval_vertices_comp.h"
 #include "eval/evaluator.h"
 #include "vk/background_pipeline.h"
@@ -18,7 +16,7 @@
 namespace tessera {
 namespace {
 
-// eval_vertices.comp's and eval_general_vertices.comp's runs (layout.h, VertexEvalPush): consecutive queries on one patch, at
+// eval_vertices.comp's runs (layout.h, VertexEvalPush): consecutive queries on one patch, at
 // most kVertexRunLength each; the mesh's queries come a patch at a time, so runs are mostly full.
 std::vector<uint32_t> vertexRuns(const std::vector<gpu::EvalQuery>& queries) {
   std::vector<uint32_t> starts;
@@ -41,10 +39,7 @@ class VulkanEvaluator final : public PatchEvaluator {
                            sizeof(kSpirv_eval_general_comp), 4, sizeof(gpu::EvalPush), {}}),
         vertices_(context, {"eval_vertices.comp", kSpirv_eval_vertices_comp,
                             sizeof(kSpirv_eval_vertices_comp), 4, sizeof(gpu::VertexEvalPush),
-                            {}}),
-        generalVertices_(context, {"eval_general_vertices.comp", kSpirv_eval_general_vertices_comp,
-                                   sizeof(kSpirv_eval_general_vertices_comp), 5,
-                                   sizeof(gpu::VertexEvalPush), {}}) {}
+                            {}}) {}
 
   std::string name() const override { return "vulkan:" + context_.info().name; }
 
@@ -53,7 +48,7 @@ class VulkanEvaluator final : public PatchEvaluator {
   }
 
   void prepareVertices(const PatchSet& patches) override {
-    (patches.isBicubic() ? vertices_ : generalVertices_).start();
+    (patches.isBicubic() ? vertices_ : general_).start();
   }
 
   std::vector<gpu::EvalSample> evaluate(const PatchSet& patches,
@@ -64,23 +59,16 @@ class VulkanEvaluator final : public PatchEvaluator {
 
   std::vector<gpu::VertexSample> evaluateVertices(
       const PatchSet& patches, const std::vector<gpu::EvalQuery>& queries) override {
-    checkQueries(patches.size(), queries);
+    if (!patches.isBicubic()) return PatchEvaluator::evaluateVertices(patches, queries);
+    checkQueries(patches.bicubic().size(), queries);
     if (queries.empty()) return {};
-    const size_t resultBytes = queries.size() * sizeof(gpu::VertexSample);
-    if (patches.isBicubic())
-      uploadBicubic(patches.bicubic(), resultBytes);
-    else
-      uploadGeneral(patches.general(), resultBytes);
+    uploadBicubic(patches.bicubic(), queries.size() * sizeof(gpu::VertexSample));
     const std::vector<uint32_t> runStarts = vertexRuns(queries);
     vk::ensureCapacity(context_, runs_, runStarts.size() * sizeof(uint32_t), vk::BufferUse::Upload);
     runs_.upload(runStarts);
     const gpu::VertexEvalPush push{uint32_t(runStarts.size() - 1), kDegenerateEpsFp32, 0, 0};
-    if (patches.isBicubic())
-      return run<gpu::VertexSample>(vertices_.get(), {&patches_, &queries_, &samples_, &runs_},
-                                    queries, &push, push.runCount);
-    return run<gpu::VertexSample>(generalVertices_.get(),
-                                  {&patches_, &queries_, &samples_, &runs_, &points_}, queries,
-                                  &push, push.runCount);
+    return run<gpu::VertexSample>(vertices_.get(), {&patches_, &queries_, &samples_, &runs_},
+                                  queries, &push, push.runCount);
   }
 
  private:
@@ -102,22 +90,18 @@ class VulkanEvaluator final : public PatchEvaluator {
                                 push.queryCount);
   }
 
-  // The patches and their control points uploaded, and room for `resultBytes` of results.
-  void uploadGeneral(const GeneralPatchSet& patches, size_t resultBytes) {
-    vk::ensureCapacity(context_, patches_, patches.size() * sizeof(gpu::GeneralPatch),
-                       vk::BufferUse::Upload);
-    vk::ensureCapacity(context_, points_, patches.points.size() * sizeof(gpu::vec4),
-                       vk::BufferUse::Upload);
-    vk::ensureCapacity(context_, samples_, resultBytes, vk::BufferUse::Readback);
-    patches_.upload(patches.patches);
-    points_.upload(patches.points);
-  }
-
   std::vector<gpu::EvalSample> evaluateGeneral(const GeneralPatchSet& patches,
                                                const std::vector<gpu::EvalQuery>& queries) {
     checkQueries(patches.size(), queries);
     if (queries.empty()) return {};
-    uploadGeneral(patches, queries.size() * sizeof(gpu::EvalSample));
+    vk::ensureCapacity(context_, patches_, patches.size() * sizeof(gpu::GeneralPatch),
+                       vk::BufferUse::Upload);
+    vk::ensureCapacity(context_, points_, patches.points.size() * sizeof(gpu::vec4),
+                       vk::BufferUse::Upload);
+    vk::ensureCapacity(context_, samples_, queries.size() * sizeof(gpu::EvalSample),
+                       vk::BufferUse::Readback);
+    patches_.upload(patches.patches);
+    points_.upload(patches.points);
     const gpu::EvalPush push{uint32_t(queries.size()), kDegenerateEpsFp32, 0, 0};
     return run<gpu::EvalSample>(general_.get(), {&patches_, &queries_, &samples_, &points_},
                                 queries, &push, push.queryCount);
@@ -145,7 +129,6 @@ class VulkanEvaluator final : public PatchEvaluator {
   vk::BackgroundPipeline bicubic_;
   vk::BackgroundPipeline general_;
   vk::BackgroundPipeline vertices_;
-  vk::BackgroundPipeline generalVertices_;
   vk::Buffer points_;
   vk::Buffer patches_;
   vk::Buffer queries_;

@@ -1,6 +1,6 @@
-// The fp32 mirrors of shaders/eval_general.comp.glsl, eval_general_vertices.comp.glsl and
-// quadtree_general.comp.glsl: the same source text (shaders/lib/general_eval.h,
-// general_vertex.h, quadtree_classify.h) compiled as C++ with
+// The fp32 mirrors of shaders/eval_general.comp.glsl and quadtree_general.comp.glsl: the same
+// source text (shaders/lib/general_eval.h, general_vertex.h, quadtree_classify.h) compiled as
+// C++ with
 // -ffp-contract=off, so on lavapipe they agree with the shaders bit for bit.
 // `points` is the homogeneous control-point buffer the patch's firstPoint indexes.
 #pragma once

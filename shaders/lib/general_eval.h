@@ -3,8 +3,8 @@
 // bicubic patches, so the unit normal (degenerate rule included) and κ are bicubic_eval.h's.
 // Every loop runs to kGeneralMaxOrder with the degree as a guard: one code path, any degree.
 // Compiled twice from this one text: GLSL (shaders/eval_general.comp.glsl,
-// eval_general_vertices.comp.glsl, quadtree_general.comp.glsl) and C++
-// (host/eval/general_mirror.cpp); a mesh vertex's share is lib/general_vertex.h. Both declare
+// quadtree_general.comp.glsl) and C++ (host/eval/general_mirror.cpp); a mesh vertex's share
+// is lib/general_vertex.h. Both declare
 // `controlPoints` (vec4 w·x, w·y, w·z, w) before including this; include shared_glsl_cpp.h,
 // layout.h and bicubic_eval.h first.
 #ifndef TESSERA_GENERAL_EVAL_H

@@ -4,8 +4,10 @@
 // evalGeneral and sampleFromDerivs compute it; only what a vertex does not keep is left out
 // (the second and third partials, κ), and the patch's length scale is computed once per patch
 // (generalTolerance) instead of once per vertex.
-// Compiled twice from this one text: GLSL (shaders/eval_general_vertices.comp.glsl) and C++
-// (host/eval/general_mirror.cpp). Include general_eval.h (and what it needs) first.
+// Written in the shared GLSL/C++ dialect beside general_eval.h, compiled today as C++ only
+// (host/eval/general_mirror.cpp): a Vulkan shader on it (eval_general_vertices.comp, branch
+// eval38) was bit-exact on lavapipe but no faster in bench_cad (bench/HISTORY.md), so Vulkan
+// keeps eval_general.comp's full samples. Include general_eval.h (and what it needs) first.
 #ifndef TESSERA_GENERAL_VERTEX_H
 #define TESSERA_GENERAL_VERTEX_H
 
