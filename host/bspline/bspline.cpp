@@ -215,18 +215,7 @@ SurfaceDerivatives surfaceDerivatives(const BSplineSurface& s, double u, double 
       for (size_t b = 0; a + b < 4; ++b) mixed[a][b] += nu[a][static_cast<size_t>(r)] * alongV[b];
     }
   }
-  SurfaceDerivatives d;
-  d.p = mixed[0][0];
-  d.pu = mixed[1][0];
-  d.pv = mixed[0][1];
-  d.puu = mixed[2][0];
-  d.puv = mixed[1][1];
-  d.pvv = mixed[0][2];
-  d.puuu = mixed[3][0];
-  d.puuv = mixed[2][1];
-  d.puvv = mixed[1][2];
-  d.pvvv = mixed[0][3];
-  return d;
+  return surfaceDerivativesFrom<3>(mixed);
 }
 
 }  // namespace tessera

@@ -139,18 +139,7 @@ SurfaceDerivatives patchDerivatives(const BezierPatch& patch, double u, double v
   const BernsteinTriangle bv = bernsteinTriangle(patch.degreeV, v);
   glm::dvec3 partial[4][4];  // a + b ≤ 3
   tensorPartials<glm::dvec3, 3>(patch.cp.data(), patch.degreeU, patch.degreeV, bu, bv, partial);
-  SurfaceDerivatives d;
-  d.p = partial[0][0];
-  d.pu = partial[1][0];
-  d.pv = partial[0][1];
-  d.puu = partial[2][0];
-  d.puv = partial[1][1];
-  d.pvv = partial[0][2];
-  d.puuu = partial[3][0];
-  d.puuv = partial[2][1];
-  d.puvv = partial[1][2];
-  d.pvvv = partial[0][3];
-  return d;
+  return surfaceDerivativesFrom<3>(partial);
 }
 
 SurfaceDerivatives patchSecondDerivativesOfValid(const BezierPatch& patch, double u, double v) {
@@ -161,15 +150,7 @@ SurfaceDerivatives patchSecondDerivativesOfValid(const BezierPatch& patch, doubl
     tensorPartials<glm::dvec3, 2, decltype(N)::value, decltype(M)::value>(
         patch.cp.data(), patch.degreeU, patch.degreeV, bu, bv, partial);
   });
-  SurfaceDerivatives d;
-  d.p = partial[0][0];
-  d.pu = partial[1][0];
-  d.pv = partial[0][1];
-  d.puu = partial[2][0];
-  d.puv = partial[1][1];
-  d.pvv = partial[0][2];
-  d.puuu = d.puuv = d.puvv = d.pvvv = glm::dvec3(0.0);
-  return d;
+  return surfaceDerivativesFrom<2>(partial);
 }
 
 std::pair<BezierPatch, BezierPatch> subdividePatchU(const BezierPatch& patch, double u) {

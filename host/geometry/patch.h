@@ -54,4 +54,28 @@ struct SurfaceDerivatives {
   glm::dvec3 puuu, puuv, puvv, pvvv;
 };
 
+// A table of partials, t[a][b] = ∂^(a+b)S / ∂u^a ∂v^b, as SurfaceDerivatives: every evaluator
+// (Bézier, rational, B-spline) fills its own table and names the members here. Order 2 leaves
+// the third-order members zero.
+template <int Order, typename Table>
+SurfaceDerivatives surfaceDerivativesFrom(const Table& t) {
+  static_assert(Order == 2 || Order == 3, "SurfaceDerivatives holds orders 2 and 3");
+  SurfaceDerivatives d;
+  d.p = t[0][0];
+  d.pu = t[1][0];
+  d.pv = t[0][1];
+  d.puu = t[2][0];
+  d.puv = t[1][1];
+  d.pvv = t[0][2];
+  if constexpr (Order == 3) {
+    d.puuu = t[3][0];
+    d.puuv = t[2][1];
+    d.puvv = t[1][2];
+    d.pvvv = t[0][3];
+  } else {
+    d.puuu = d.puuv = d.puvv = d.pvvv = glm::dvec3(0.0);
+  }
+  return d;
+}
+
 }  // namespace tessera

@@ -167,22 +167,7 @@ SurfaceDerivatives projectedPartials(const RationalBezierPatch& patch, double u,
       s[a][b] = numerator / h[0][0].w;
     }
 
-  SurfaceDerivatives d;
-  d.p = s[0][0];
-  d.pu = s[1][0];
-  d.pv = s[0][1];
-  d.puu = s[2][0];
-  d.puv = s[1][1];
-  d.pvv = s[0][2];
-  if constexpr (Order >= 3) {
-    d.puuu = s[3][0];
-    d.puuv = s[2][1];
-    d.puvv = s[1][2];
-    d.pvvv = s[0][3];
-  } else {
-    d.puuu = d.puuv = d.puvv = d.pvvv = glm::dvec3(0.0);
-  }
-  return d;
+  return surfaceDerivativesFrom<Order>(s);
 }
 
 }  // namespace
