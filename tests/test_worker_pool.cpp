@@ -3,7 +3,9 @@
 // parts than threads all run, and a forked child computes and exits without the parent's.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <thread>
@@ -68,9 +70,30 @@ TEST_CASE("parallelFor from several threads at once covers each range once", "[c
     for (auto& count : v) REQUIRE(count == 20);
 }
 
+// Returns once every worker the pool keeps has run a part, so none is still starting. A fork
+// while a thread is inside the allocator leaves the child a lock no one will release: glibc's
+// malloc guards against that, but clang 14's AddressSanitizer allocator does not, and a worker
+// still in its thread start (which allocates) made the sanitizer run's child hang at exit.
+namespace {
+
+void settleWorkers() {
+  const unsigned parts = std::max(1u, std::thread::hardware_concurrency());
+  std::atomic<unsigned> started{0};
+  parallelParts(parts, [&](unsigned) {
+    ++started;
+    // Parts must not wait for each other without bound (the caller may run them in turn):
+    // wait at most 5 s for the others to be running at once.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    while (started < parts && std::chrono::steady_clock::now() < deadline)
+      std::this_thread::yield();
+  });
+}
+
+}  // namespace
+
 TEST_CASE("parallelFor in a forked child runs on the child and exits cleanly", "[common]") {
-  parallelFor(64, 0, [](size_t, size_t) {});  // the parent's workers exist
-  std::fflush(nullptr);                         // nothing buffered twice
+  settleWorkers();       // the parent's workers exist and wait for work
+  std::fflush(nullptr);  // nothing buffered twice
   const pid_t child = ::fork();
   REQUIRE(child >= 0);
   if (child == 0) {
