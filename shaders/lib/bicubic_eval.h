@@ -164,12 +164,23 @@ vec3 scaleToUnit(vec3 n, float len) {
   return r;
 }
 
+// The normal's first case, n = Pu × Pv / |Pu × Pv|, where |Pu × Pv| > tol: returns whether it
+// applies; where it does not (a degenerate point: the caller's rule), n = vec3(0). Forced inline:
+// GCC left it a call per vertex in general_mirror.cpp, where the code it replaced was inlined.
+SHARED_FORCE_INLINE bool unitNormalFromFirst(vec3 pu, vec3 pv, float tol, OUT(vec3) n) {
+  PRECISE vec3 n0 = cross(pu, pv);
+  PRECISE float len0 = sqrt(dot(n0, n0));
+  bool regular = len0 > tol;
+  n = vec3(0.0f);
+  if (regular) n = scaleToUnit(n0, len0);
+  return regular;  // one return: no early exit for spirv-opt's merge-return to wrap in a loop
+}
+
 // Unit normal; at degenerate points the limiting direction from inside the patch
 // (docs/conventions.md). `tol` is ε·L². Returns vec3(0) where no direction exists.
 vec3 bicubicNormal(IN(BicubicDerivs) d, float u, float v, float tol) {
-  PRECISE vec3 n0 = cross(d.pu, d.pv);
-  PRECISE float len0 = sqrt(dot(n0, n0));
-  if (len0 > tol) return scaleToUnit(n0, len0);
+  vec3 n;
+  if (unitNormalFromFirst(d.pu, d.pv, tol, n)) return n;
 
   PRECISE float du = 0.5f - u;
   PRECISE float dv = 0.5f - v;
@@ -234,18 +245,14 @@ EvalSample evalBicubicSample(IN(BicubicPatch) bp, float u, float v, float eps) {
 }
 
 // evalBicubicSample's position and normal, bit for bit, without κ and the partials a mesh does
-// not keep: the first partials give the normal where |Pu × Pv| > tol (bicubicNormal's first
-// case, the same operations); elsewhere the full derivatives are evaluated and bicubicNormal's
+// not keep: the first partials give the normal where |Pu × Pv| > tol (unitNormalFromFirst,
+// bicubicNormal's first case); elsewhere the full derivatives are evaluated and bicubicNormal's
 // degenerate rule runs as in evalBicubicSample.
 // `tol` is ε·L² (bicubicTolerance), sampleFromDerivs' tol.
 VertexSample bicubicVertex(IN(BicubicPatch) bp, float u, float v, float tol) {
   BicubicFirstDerivs d = evalBicubicFirst(bp, u, v);
-  PRECISE vec3 n0 = cross(d.pu, d.pv);
-  PRECISE float len0 = sqrt(dot(n0, n0));
   vec3 n;
-  if (len0 > tol) {
-    n = scaleToUnit(n0, len0);
-  } else {
+  if (!unitNormalFromFirst(d.pu, d.pv, tol, n)) {
     n = bicubicNormal(evalBicubic(bp, u, v), u, v, tol);
   }
   VertexSample s;

@@ -97,12 +97,8 @@ SHARED_FORCE_INLINE VertexSample generalVertexOfDegrees(IN(GeneralPatch) gp, int
     pv = qv;
   }
   PRECISE vec3 position = p + origin;
-  PRECISE vec3 n0 = cross(pu, pv);
-  PRECISE float len0 = sqrt(dot(n0, n0));
   vec3 normal;
-  if (len0 > tol) {
-    normal = scaleToUnit(n0, len0);
-  } else {
+  if (!unitNormalFromFirst(pu, pv, tol, normal)) {
     normal = bicubicNormal(evalGeneral(gp, u, v), u, v, tol);
   }
   VertexSample s;
