@@ -146,6 +146,22 @@ vec2 stencilOffset(int k) {
   return vec2(-1.0f, -1.0f);
 }
 
+// One step of rule D's trust-region searches from x (where κ = kx) to the trial point y: taken
+// if κ grows there, and the radius doubles (at most 0.25); else the radius shrinks to a quarter.
+void trustRegionStep(IN(CLASSIFY_PATCH) bp, vec4 rect, vec2 y, float scale, float eps,
+                     INOUT(vec2) x, INOUT(float) kx, INOUT(float) radius) {
+  float ky = kappaAtLocal(bp, rect, y.x, y.y, scale, eps);
+  if (ky > kx) {
+    x = y;
+    kx = ky;
+    PRECISE float grown = min(2.0f * radius, 0.25f);
+    radius = grown;
+  } else {
+    PRECISE float shrunk = 0.25f * radius;
+    radius = shrunk;
+  }
+}
+
 // Rule D's interior search: Newton on κu = κv = 0 in node-local coordinates from `seed`,
 // gradient by central differences (step 1e-3 of the node), Hessian by a coarser stencil
 // (step 2e-2: fp32 second differences at 1e-3 would be mostly rounding noise). Where the
@@ -182,14 +198,7 @@ vec3 newtonMaximum(IN(CLASSIFY_PATCH) bp, vec4 rect, vec3 seed, int samples, flo
     PRECISE float slen = sqrt(dot(step, step));
     if (slen > radius) step = step * (radius / slen);
     PRECISE vec2 y = clamp(x + step, vec2(0.0f), vec2(1.0f));
-    float ky = kappaAtLocal(bp, rect, y.x, y.y, scale, eps);
-    if (ky > kx) {
-      x = y;
-      kx = ky;
-      radius = min(2.0f * radius, 0.25f);
-    } else {
-      radius = 0.25f * radius;
-    }
+    trustRegionStep(bp, rect, y, scale, eps, x, kx, radius);
   }
   return vec3(x.x, x.y, kx);
 }
@@ -228,14 +237,7 @@ vec3 boundaryMaximum(IN(CLASSIFY_PATCH) bp, vec4 rect, int samples, float scale,
     PRECISE float step = h2 < 0.0f ? -g / h2 : g;
     step = clamp(step, -radius, radius);
     PRECISE vec2 y = clamp(x + step * dir, vec2(0.0f), vec2(1.0f));
-    float ky = kappaAtLocal(bp, rect, y.x, y.y, scale, eps);
-    if (ky > kx) {
-      x = y;
-      kx = ky;
-      radius = min(2.0f * radius, 0.25f);
-    } else {
-      radius = 0.25f * radius;
-    }
+    trustRegionStep(bp, rect, y, scale, eps, x, kx, radius);
   }
   return vec3(x.x, x.y, kx);
 }
