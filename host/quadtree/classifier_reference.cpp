@@ -131,6 +131,20 @@ void sampledMaxima(const PatchContext& p, const Rect& r, int samples, dvec3& bes
 
 constexpr double kGradientStep = 1e-3, kHessianStep = 2e-2;
 
+// One step of the trust-region searches from x (where κ = kx) to the trial point y: taken if κ
+// grows there, and the radius doubles (at most 0.25); else the radius shrinks to a quarter.
+void trustRegionStep(const PatchContext& p, const Rect& r, dvec2 y, dvec2& x, double& kx,
+                     double& radius) {
+  double ky = kappaLocal(p, r, y.x, y.y);
+  if (ky > kx) {
+    x = y;
+    kx = ky;
+    radius = std::min(2.0 * radius, 0.25);
+  } else {
+    radius *= 0.25;
+  }
+}
+
 dvec3 newtonMaximum(const PatchContext& p, const Rect& r, dvec3 seed, int samples) {
   const double hg = kGradientStep, hh = kHessianStep;
   dvec2 x(seed.x, seed.y);
@@ -153,14 +167,7 @@ dvec3 newtonMaximum(const PatchContext& p, const Rect& r, dvec3 seed, int sample
     double slen = glm::length(step);
     if (slen > radius) step *= radius / slen;
     dvec2 y = glm::clamp(x + step, dvec2(0.0), dvec2(1.0));
-    double ky = kappaLocal(p, r, y.x, y.y);
-    if (ky > kx) {
-      x = y;
-      kx = ky;
-      radius = std::min(2.0 * radius, 0.25);
-    } else {
-      radius *= 0.25;
-    }
+    trustRegionStep(p, r, y, x, kx, radius);
   }
   return dvec3(x.x, x.y, kx);
 }
@@ -193,14 +200,7 @@ dvec3 boundaryMaximum(const PatchContext& p, const Rect& r, int samples) {
                 (hh * hh);
     double step = std::clamp(h2 < 0.0 ? -g / h2 : g, -radius, radius);
     dvec2 y = glm::clamp(x + step * dir, dvec2(0.0), dvec2(1.0));
-    double ky = kappaLocal(p, r, y.x, y.y);
-    if (ky > kx) {
-      x = y;
-      kx = ky;
-      radius = std::min(2.0 * radius, 0.25);
-    } else {
-      radius *= 0.25;
-    }
+    trustRegionStep(p, r, y, x, kx, radius);
   }
   return dvec3(x.x, x.y, kx);
 }
