@@ -7,6 +7,7 @@
 namespace tessera::mirror {
 namespace glsl {
 namespace {  // each mirror translation unit gets its own copy of the shared functions
+// grid_mirror.cpp's shader headers and stitch_pattern.h: each mirror names the text it compiles.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"
 #include "shaders/lib/shared_glsl_cpp.h"

@@ -166,7 +166,7 @@ BicubicDerivs evalGeneral(IN(GeneralPatch) gp, float u, float v) {
     PRECISE vec3 puvv = (((((d.puvv - h10.w * pvv) - 2.0f * h01.w * puv) - 2.0f * h11.w * pv) -
                           h02.w * pu) - h12.w * p) * inv;
     PRECISE vec3 pvvv = (((d.pvvv - 3.0f * h01.w * pvv) - 3.0f * h02.w * pv) - h03.w * p) * inv;
-    d.p = p;
+    d.p = p;  // through PRECISE locals, as in evalBicubic
     d.pu = pu;
     d.pv = pv;
     d.puu = puu;
