@@ -169,8 +169,10 @@ TrimClass classifyTrimTriangle(const std::array<glm::dvec2, 3>& triangle,
   for (uint32_t s : nearby) {
     const TrimSegment& seg = index.segments()[s];
     if (insideTriangle(seg.a, triangle)) return TrimClass::Crossing;
+    // segmentDistance(…) ≤ margin, decided without its four point-segment distances when the
+    // boxes lie apart (most of the segments the grid's cells bring are not near this side).
     for (int k = 0; k < 3; ++k)
-      if (segmentDistance(seg.a, seg.b, triangle[k], triangle[(k + 1) % 3]) <= margin)
+      if (!segmentsFartherThan(seg.a, seg.b, triangle[k], triangle[(k + 1) % 3], margin))
         return TrimClass::Crossing;
   }
   const glm::dvec2 centroid = (triangle[0] + triangle[1] + triangle[2]) / 3.0;
