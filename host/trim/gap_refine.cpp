@@ -84,6 +84,11 @@ int sideOf(const std::array<uint32_t, 3>& v, uint32_t a, uint32_t b) {
 struct Measures {
   SampledDeviations sampled{-1.0, -1.0};  // interpolation and parametric (with the corners' offsets)
   double geometric = -1.0;  // 0 within δ (interpolationWithinFrom), +∞ over it
+  // The corners in the order of the first triangle that asked for `sampled`: an inner sample's
+  // uv sums the corners in this order (the last bit may differ in another), so `sampled` is
+  // always taken in it, when it is taken, as it was when it was taken at the first asking.
+  std::array<uint32_t, 3> order{};
+  bool ordered = false;
 };
 class MeasureCache {
  public:
@@ -346,6 +351,41 @@ double interpolationFromKnownSides(const std::vector<FaceVertex>& vs,
   return std::sqrt(worst2);
 }
 
+// Whether sampledDeviationsFrom(…).interpolation ≥ limit is certain from a few inner samples
+// near the triangle's centre (where a bent surface leaves its chords most): each one's term is
+// the one sampledDeviationsFrom takes there (the same uv, surface point and target, as doubles:
+// FaceSurface::points gives point()'s), and that measure is the square root of the largest
+// term, so one term at or over limit² decides. False says nothing.
+bool interpolationProbeReaches(const FaceSurface& surface, const std::vector<FaceVertex>& vs,
+                               const std::array<uint32_t, 3>& t,
+                               const std::array<glm::dvec3, 3>& s, int n, double limit) {
+  // The inner samples (i, j) nearest the centre, nearest first, for this n.
+  thread_local std::vector<std::pair<int, int>> probes;
+  thread_local int probesOf = -1;
+  constexpr size_t kProbes = 3;
+  if (probesOf != n) {
+    std::vector<std::pair<double, std::pair<int, int>>> inner;
+    for (int i = 1; i < n; ++i)
+      for (int j = 1; i + j < n; ++j) {
+        const double di = i - n / 3.0, dj = j - n / 3.0, dk = (n - i - j) - n / 3.0;
+        inner.push_back({di * di + dj * dj + dk * dk, {i, j}});
+      }
+    std::stable_sort(inner.begin(), inner.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    probes.clear();
+    for (size_t k = 0; k < inner.size() && k < kProbes; ++k) probes.push_back(inner[k].second);
+    probesOf = n;
+  }
+  const glm::dvec2 uv0 = vs[t[0]].uv, uv1 = vs[t[1]].uv, uv2 = vs[t[2]].uv;
+  for (const auto& [i, j] : probes) {
+    const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
+    const glm::dvec2 uv = a * uv0 + b * uv1 + c * uv2;
+    const glm::dvec3 d = a * s[0] + b * s[1] + c * s[2] - surface.point(uv);
+    if (std::sqrt(glm::dot(d, d)) >= limit) return true;
+  }
+  return false;
+}
+
 // interpolationDistance with the corners' surface points given, for the refinement, which asks
 // only whether the triangle is within `limit`: a sample's search ends once within `limit`
 // (FaceSurface::distance's `enough`), and the samples end at the first one over it (its
@@ -581,18 +621,28 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
   const bool geometric = options.measure == GapMeasure::Geometric;
   const auto deviation = [&](const std::array<uint32_t, 3>& v) {
     Measures& m = cache.of(v);
+    if (!m.ordered) m.order = v, m.ordered = true;
     if (m.sampled.interpolation < 0)
-      m.sampled =
-          sampledDeviationsFrom(surface, vs, v, onSurface.of(v), options.subdivisions, &sides);
+      m.sampled = sampledDeviationsFrom(surface, vs, m.order, onSurface.of(m.order),
+                                        options.subdivisions, &sides);
     return m.sampled.interpolation;
   };
   // Whether deviation(v) ≥ limit is certain from its cached measure or, not measured yet, from
-  // its sides' terms already sampled (interpolationFromKnownSides): false says nothing.
+  // its sides' terms already sampled (interpolationFromKnownSides) or a few inner samples
+  // (interpolationProbeReaches, in the order deviation(v) would take them; that order is then
+  // kept for it, since the measure skipped here would have been taken in it): false says nothing.
   const auto deviationAtLeast = [&](const std::array<uint32_t, 3>& v, double limit) {
-    if (const Measures* m = cache.find(v); m && m->sampled.interpolation >= 0)
-      return m->sampled.interpolation >= limit;
-    return interpolationFromKnownSides(vs, v, onSurface.of(v), options.subdivisions, sides) >=
-           limit;
+    const Measures* m = cache.find(v);
+    if (m && m->sampled.interpolation >= 0) return m->sampled.interpolation >= limit;
+    if (interpolationFromKnownSides(vs, v, onSurface.of(v), options.subdivisions, sides) >= limit)
+      return true;
+    const std::array<uint32_t, 3> order = m && m->ordered ? m->order : v;
+    if (!interpolationProbeReaches(surface, vs, order, onSurface.of(order), options.subdivisions,
+                                   limit))
+      return false;
+    Measures& kept = cache.of(v);
+    if (!kept.ordered) kept.order = order, kept.ordered = true;
+    return true;
   };
   const auto withinTolerance = [&](const std::array<uint32_t, 3>& v) {
     if (deviation(v) <= options.tolerance) return true;
@@ -648,7 +698,8 @@ GapRefineResult refineGap(const FaceSurface& surface, std::vector<FaceVertex>& v
     if (before <= options.tolerance) return false;  // nothing to gain for the refinement
     // Both new triangles must deviate less than 0.9 of the worse old one. Nearly every flip
     // fails on t2 alone (s2 is then not sampled), often already on the side terms t2 shares
-    // with t and s, sampled with them (t2 is then not sampled either). A triangle left
+    // with t and s, sampled with them (t2 is then not sampled either), or on a few of t2's
+    // inner samples near its centre (the rest of it is then not sampled). A triangle left
     // unsampled here is sampled, to the same doubles, if it is ever made.
     const double limit = 0.9 * before;
     if (deviationAtLeast(t2, limit)) return false;
