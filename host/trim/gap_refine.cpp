@@ -279,53 +279,64 @@ SampledDeviations sampledDeviationsFrom(const FaceSurface& surface,
     for (int k = 0; k < 3; ++k)
       if (const SideSampleMax* m = sides->find(t[k], t[(k + 1) % 3]))
         part[size_t(1 + k)] = *m, known[size_t(1 + k)] = true;
-  const auto partOf = [n](int i, int j) {
-    return size_t(i + j == n ? 1 : i == 0 ? 2 : j == 0 ? 3 : 0);
+  // The samples' weights by part, made once per thread for n (the (i, j) walk with its part
+  // tests was a third of this function's own time): each weight triple is the walk's doubles,
+  // a = i/n, b = j/n, c = 1 − a − b, and a part's samples keep the walk's order.
+  struct Weights {
+    double a, b, c;
   };
+  struct Plan {
+    int n = -1;
+    std::array<std::vector<Weights>, 4> parts;
+    std::array<Weights, 3> corners;  // i = n (t0), j = n (t1), i + j = 0 (t2)
+  };
+  thread_local Plan plan;
+  if (plan.n != n) {
+    for (std::vector<Weights>& weights : plan.parts) weights.clear();
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; i + j <= n; ++j) {
+        const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
+        if (i == n || j == n || i + j == 0)
+          plan.corners[size_t(i == n ? 0 : j == n ? 1 : 2)] = {a, b, c};
+        else
+          plan.parts[size_t(i + j == n ? 1 : i == 0 ? 2 : j == 0 ? 3 : 0)].push_back({a, b, c});
+      }
+    plan.n = n;
+  }
   // The buffers sized once per thread and written through plain pointers: a push_back stored
   // the thread-local vector's end after every sample (an eighth of this function's time).
   thread_local std::vector<glm::dvec2> uvBuffer;
   thread_local std::vector<glm::dvec3> onSurfaceBuffer;
-  thread_local std::vector<double> fraction;  // i / n, divided once for all the samples
-  thread_local int fractionOf = -1;
   const size_t interior = size_t(n + 1) * size_t(n + 2) / 2;  // ≥ the samples but the corners
   if (uvBuffer.size() < interior) uvBuffer.resize(interior), onSurfaceBuffer.resize(interior);
-  if (fractionOf != n) {
-    fraction.resize(size_t(n) + 1);
-    for (int i = 0; i <= n; ++i) fraction[size_t(i)] = double(i) / n;
-    fractionOf = n;
-  }
   glm::dvec2* const uvs = uvBuffer.data();
   const glm::dvec3* const onSurface = onSurfaceBuffer.data();
   const glm::dvec2 uv0 = vs[t[0]].uv, uv1 = vs[t[1]].uv, uv2 = vs[t[2]].uv;
   // The surface points of the samples still to take (not a corner, not on a known side) in one
   // call (FaceSurface::points), then the measures.
   size_t count = 0;
-  for (int i = 0; i <= n; ++i)
-    for (int j = 0; i + j <= n; ++j) {
-      if (i == n || j == n || i + j == 0 || known[partOf(i, j)]) continue;
-      const double a = fraction[size_t(i)], b = fraction[size_t(j)], c = 1 - a - b;
-      uvs[count++] = a * uv0 + b * uv1 + c * uv2;
-    }
+  for (size_t k = 0; k < 4; ++k)
+    if (!known[k])
+      for (const Weights& w : plan.parts[k]) uvs[count++] = w.a * uv0 + w.b * uv1 + w.c * uv2;
   surface.points(uvs, count, onSurfaceBuffer.data());
   SampledDeviations worst2;  // squared
+  for (size_t k = 0; k < 3; ++k) {  // a corner: its own offset, no interpolation error
+    const Weights& w = plan.corners[k];
+    const glm::dvec3 p = w.a * p0 + w.b * p1 + w.c * p2;
+    worst2.parametric = std::max(worst2.parametric, squared(p - s[k]));
+  }
   size_t next = 0;
-  for (int i = 0; i <= n; ++i)
-    for (int j = 0; i + j <= n; ++j) {
-      const double a = fraction[size_t(i)], b = fraction[size_t(j)], c = 1 - a - b;
-      if (i == n || j == n || i + j == 0) {  // a corner: its own offset, no interpolation error
-        const glm::dvec3 p = a * p0 + b * p1 + c * p2;
-        worst2.parametric = std::max(worst2.parametric, squared(p - (i == n ? s0 : j == n ? s1 : s2)));
-        continue;
-      }
-      const size_t into = partOf(i, j);
-      if (known[into]) continue;
-      const glm::dvec3 p = a * p0 + b * p1 + c * p2;
+  for (size_t k = 0; k < 4; ++k) {
+    if (known[k]) continue;
+    SideSampleMax& into = part[k];
+    for (const Weights& w : plan.parts[k]) {
+      const glm::dvec3 p = w.a * p0 + w.b * p1 + w.c * p2;
       const glm::dvec3& on = onSurface[next++];
-      part[into].parametric2 = std::max(part[into].parametric2, squared(p - on));
-      part[into].interpolation2 =
-          std::max(part[into].interpolation2, squared(a * s0 + b * s1 + c * s2 - on));
+      into.parametric2 = std::max(into.parametric2, squared(p - on));
+      into.interpolation2 =
+          std::max(into.interpolation2, squared(w.a * s0 + w.b * s1 + w.c * s2 - on));
     }
+  }
   for (size_t k = 0; k < part.size(); ++k) {
     worst2.parametric = std::max(worst2.parametric, part[k].parametric2);
     worst2.interpolation = std::max(worst2.interpolation, part[k].interpolation2);
