@@ -255,6 +255,29 @@ bool sidesShareable(const std::vector<FaceVertex>& vs, const std::array<uint32_t
   return true;
 }
 
+// A sample's barycentric weights as the (i, j) walks form them: a = i/n, b = j/n, c = 1 − a − b.
+struct Weights {
+  double a, b, c;
+};
+
+// The weights of the samples (i, j)/n but the corners, in the walk's order (i, then j), made
+// once per thread for n: interpolationWithinFrom divided twice a sample for them.
+const std::vector<Weights>& nonCornerWeights(int n) {
+  thread_local std::vector<Weights> weights;
+  thread_local int weightsOf = -1;
+  if (weightsOf != n) {
+    weights.clear();
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; i + j <= n; ++j) {
+        if (i == n || j == n || i + j == 0) continue;
+        const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
+        weights.push_back({a, b, c});
+      }
+    weightsOf = n;
+  }
+  return weights;
+}
+
 // sampledDeviations with the corners' surface points s = S(uvᵢ) given. `sides`, when given,
 // holds the side samples' largest terms of triangles measured before (SideSampleCache): a side
 // found there is not sampled again, one not found is stored.
@@ -282,9 +305,6 @@ SampledDeviations sampledDeviationsFrom(const FaceSurface& surface,
   // The samples' weights by part, made once per thread for n (the (i, j) walk with its part
   // tests was a third of this function's own time): each weight triple is the walk's doubles,
   // a = i/n, b = j/n, c = 1 − a − b, and a part's samples keep the walk's order.
-  struct Weights {
-    double a, b, c;
-  };
   struct Plan {
     int n = -1;
     std::array<std::vector<Weights>, 4> parts;
@@ -439,27 +459,19 @@ bool interpolationWithinFrom(const FaceSurface& surface, const std::vector<FaceV
   if (uvBuffer.size() < interior) uvBuffer.resize(interior), onSurfaceBuffer.resize(interior);
   glm::dvec2* const uvs = uvBuffer.data();
   const glm::dvec2 uv0 = vs[t[0]].uv, uv1 = vs[t[1]].uv, uv2 = vs[t[2]].uv;
+  const std::vector<Weights>& weights = nonCornerWeights(n);
   size_t count = 0;
-  for (int i = 0; i <= n; ++i)
-    for (int j = 0; i + j <= n; ++j) {
-      if (i == n || j == n || i + j == 0) continue;
-      const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
-      uvs[count++] = a * uv0 + b * uv1 + c * uv2;
-    }
+  for (const Weights& w : weights) uvs[count++] = w.a * uv0 + w.b * uv1 + w.c * uv2;
   surface.points(uvs, count, onSurfaceBuffer.data());
   const double skip = limit - slack;
   const double skip2 = skip > 0 ? skip * skip : -1.0;
-  size_t next = 0;
-  for (int i = 0; i <= n; ++i)
-    for (int j = 0; i + j <= n; ++j) {
-      if (i == n || j == n || i + j == 0) continue;
-      const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
-      const glm::dvec3 target = a * s0 + b * s1 + c * s2;
-      const glm::dvec3 d = target - onSurfaceBuffer[next];
-      const glm::dvec2 uv = uvs[next++];
-      if (glm::dot(d, d) <= skip2) continue;
-      if (surface.distance(target, uv, limit) > limit) return false;
-    }
+  for (size_t next = 0; next < count; ++next) {
+    const Weights& w = weights[next];
+    const glm::dvec3 target = w.a * s0 + w.b * s1 + w.c * s2;
+    const glm::dvec3 d = target - onSurfaceBuffer[next];
+    if (glm::dot(d, d) <= skip2) continue;
+    if (surface.distance(target, uvs[next], limit) > limit) return false;
+  }
   return true;
 }
 
