@@ -92,6 +92,55 @@ bool insideWedge(double wedge, glm::dvec2 at, glm::dvec2 next, glm::dvec2 d) {
   return angle > 0 && angle < (wedge == 0 ? 2 * kPi : wedge);
 }
 
+// A run of consecutive edges of bridgeHole's list, with the box and the largest |coordinate| of
+// their ends.
+struct EdgeRun {
+  glm::dvec2 lo, hi, reach;
+  uint32_t begin, end;
+  bool boxed = true;  // false: lo, hi and reach unknown (a point not finite)
+};
+
+// The edges in runs of 8 (consecutive edges of a loop lie near each other); none when a point
+// is not finite (then every edge is tested).
+std::vector<EdgeRun> edgeRuns(const std::vector<glm::dvec2>& points,
+                              const std::vector<std::pair<uint32_t, uint32_t>>& edges) {
+  constexpr uint32_t kRun = 8;
+  std::vector<EdgeRun> runs;
+  runs.reserve(edges.size() / kRun + 1);
+  for (uint32_t begin = 0; begin < edges.size(); begin += kRun) {
+    const uint32_t end = std::min(uint32_t(edges.size()), begin + kRun);
+    EdgeRun run{points[edges[begin].first], points[edges[begin].first], glm::dvec2(0.0), begin, end};
+    for (uint32_t e = begin; e < end; ++e)
+      for (const glm::dvec2 q : {points[edges[e].first], points[edges[e].second]}) {
+        if (!(std::isfinite(q.x) && std::isfinite(q.y)))
+          return {EdgeRun{{}, {}, {}, 0, uint32_t(edges.size()), false}};
+        run.lo = glm::min(run.lo, q), run.hi = glm::max(run.hi, q);
+        run.reach = glm::max(run.reach, glm::abs(q));
+      }
+    runs.push_back(run);
+  }
+  return runs;
+}
+
+// Whether segmentsFartherThan(a, b, q0, q1, touch) holds for every edge (q0, q1) of the run,
+// from its box alone. Its crossing test needs the two signs of cross(b − a, q − a) at q0 and q1
+// to differ; that rounded cross product is monotone in q.x and in q.y (as boxOutsideTriangle's),
+// so when it is > 0 at the box's corner where it is least (or < 0 where it is largest), no two
+// ends in the box differ. Its box test then passes for every edge: each edge's gap to a → b is
+// at least the run's, and its allowance for rounding at most the run's (rounding is monotone).
+// A run not a whole way off the line a → b, or too near, says false: its edges are tested.
+bool runClear(const EdgeRun& run, glm::dvec2 a, glm::dvec2 b, double touch) {
+  if (!run.boxed) return false;
+  const glm::dvec2 e = b - a;
+  const glm::dvec2 least(e.y >= 0 ? run.hi.x : run.lo.x, e.x >= 0 ? run.lo.y : run.hi.y);
+  const glm::dvec2 largest(e.y >= 0 ? run.lo.x : run.hi.x, e.x >= 0 ? run.hi.y : run.lo.y);
+  if (!(cross(e, least - a) > 0 || cross(e, largest - a) < 0)) return false;
+  const glm::dvec2 lo = glm::min(a, b), hi = glm::max(a, b);
+  const glm::dvec2 apart = glm::max(run.lo - hi, lo - run.hi);
+  const glm::dvec2 m = glm::max(glm::max(glm::abs(a), glm::abs(b)), run.reach);
+  return std::max(apart.x, apart.y) > touch + 1e-12 * std::max(m.x, m.y);
+}
+
 // Joins `hole` into `polygon` by a bridge from the nearest hole vertex visible from a polygon
 // vertex. `others` are the edges of holes still to join: the bridge must cross none of them.
 bool bridgeHole(const std::vector<glm::dvec2>& points, std::vector<uint32_t>& polygon,
@@ -124,6 +173,14 @@ bool bridgeHole(const std::vector<glm::dvec2>& points, std::vector<uint32_t>& po
                              points[ring[(i + 1) % size]]);
     return wedges[i];
   };
+  // The edges that may block a bridge (the polygon's, the hole's, the other holes'), in runs of
+  // a few with their box: a run that no edge of can block is passed at once (runClear).
+  std::vector<std::pair<uint32_t, uint32_t>> edges;
+  edges.reserve(n + k + others.size());
+  for (size_t e = 0; e < n; ++e) edges.push_back({polygon[e], polygon[(e + 1) % n]});
+  for (size_t e = 0; e < k; ++e) edges.push_back({hole[e], hole[(e + 1) % k]});
+  edges.insert(edges.end(), others.begin(), others.end());
+  const std::vector<EdgeRun> runs = edgeRuns(points, edges);
   const auto bridges = [&](const Candidate& c) {
     const uint32_t p = polygon[c.p], m = hole[c.h];
     if (p == m || points[p] == points[m]) return p == m;  // two ids at one place: no bridge
@@ -133,12 +190,12 @@ bool bridgeHole(const std::vector<glm::dvec2>& points, std::vector<uint32_t>& po
       return false;
     if (!insideWedge(wedgeOf(holeWedge, hole, c.h), points[m], points[hole[(c.h + 1) % k]], -d))
       return false;
-    for (size_t e = 0; e < n; ++e)
-      if (!clear(p, m, polygon[e], polygon[(e + 1) % n])) return false;
-    for (size_t e = 0; e < k; ++e)
-      if (!clear(p, m, hole[e], hole[(e + 1) % k])) return false;
-    for (const auto& [e0, e1] : others)
-      if (!clear(p, m, e0, e1)) return false;
+    // Every edge clear, in any order: clear() is a function of the points alone.
+    for (const EdgeRun& run : runs) {
+      if (runClear(run, points[p], points[m], touch)) continue;
+      for (uint32_t e = run.begin; e < run.end; ++e)
+        if (!clear(p, m, edges[e].first, edges[e].second)) return false;
+    }
     return true;
   };
   const auto join = [&](const Candidate& c) {
