@@ -15,6 +15,7 @@
 #include "mesh/tessellate.h"
 #include "mesh_checks.h"
 #include "trim/face_surface.h"
+#include "trim/gap_triangulate.h"
 #include "trim/mesher.h"
 #include "trimmed_models.h"
 
@@ -544,4 +545,57 @@ TEST_CASE("trimmed mesher: a finely trimmed bump down to δ = 1e-4, no flat sliv
         CHECK(s.maxParametricDeviation <= delta);
     }
   }
+}
+
+TEST_CASE("gap triangulation: a hole whose nearest bridges a wall of another hole blocks",
+          "[trim][gap]") {
+  // A square (64 points, counter-clockwise) with two holes (clockwise): a 16-gon near the left
+  // side and, between it and that side, a long thin wall. The bridges from the 16-gon to the
+  // side's nearest points cross the wall, so many candidates are tested (the edges in runs with
+  // their boxes, bridgeHole); a run passed wrongly lets a bridge cross the wall, and the
+  // triangles then overlap it (their areas add up to more) or the ear clipping fails.
+  std::vector<glm::dvec2> points;
+  std::vector<std::pair<uint32_t, uint32_t>> edges;
+  const auto loop = [&](const std::vector<glm::dvec2>& ring) {
+    const uint32_t first = uint32_t(points.size());
+    points.insert(points.end(), ring.begin(), ring.end());
+    for (uint32_t k = 0; k < ring.size(); ++k)
+      edges.push_back({first + k, first + (k + 1) % uint32_t(ring.size())});
+  };
+  std::vector<glm::dvec2> square;
+  const glm::dvec2 corners[4] = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  for (int side = 0; side < 4; ++side)
+    for (int k = 0; k < 16; ++k)
+      square.push_back(corners[side] + (corners[(side + 1) % 4] - corners[side]) * (k / 16.0));
+  loop(square);
+  std::vector<glm::dvec2> ring;
+  for (int k = 0; k < 16; ++k) {
+    const double angle = -2 * 3.14159265358979323846 * k / 16;  // clockwise
+    ring.push_back(glm::dvec2(3.0, 5.0) + 0.8 * glm::dvec2(std::cos(angle), std::sin(angle)));
+  }
+  loop(ring);
+  std::vector<glm::dvec2> wall;  // x in [1.5, 1.7], y in [1, 9], clockwise, 20 points a long side
+  for (int k = 0; k <= 20; ++k) wall.push_back({1.5, 1.0 + 8.0 * k / 20});
+  for (int k = 0; k <= 20; ++k) wall.push_back({1.7, 9.0 - 8.0 * k / 20});
+  loop(wall);
+  const GapTriangulation gap = triangulateGap(points, edges);
+  REQUIRE(gap.failures == 0);
+  double area = 0;
+  for (const auto& t : gap.triangles) {
+    const glm::dvec2 a = points[t[0]], b = points[t[1]], c = points[t[2]];
+    const double twice = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    REQUIRE(twice > 0);
+    area += 0.5 * twice;
+  }
+  double expected = 100.0 - 0.2 * 8.0;
+  for (int k = 0; k < 16; ++k) {  // the 16-gon's area
+    const glm::dvec2 a = ring[k] - glm::dvec2(3, 5), b = ring[(k + 1) % 16] - glm::dvec2(3, 5);
+    expected -= 0.5 * std::abs(a.x * b.y - a.y * b.x);
+  }
+  REQUIRE(area == Approx(expected).epsilon(1e-12));
+  // Every input edge is a side of a triangle, in its direction (the region on its left).
+  std::set<std::pair<uint32_t, uint32_t>> sides;
+  for (const auto& t : gap.triangles)
+    for (int k = 0; k < 3; ++k) sides.insert({t[k], t[(k + 1) % 3]});
+  for (const auto& e : edges) REQUIRE(sides.count(e) == 1);
 }
