@@ -260,22 +260,35 @@ struct Weights {
   double a, b, c;
 };
 
-// The weights of the samples (i, j)/n but the corners, in the walk's order (i, then j), made
-// once per thread for n: interpolationWithinFrom divided twice a sample for them.
-const std::vector<Weights>& nonCornerWeights(int n) {
-  thread_local std::vector<Weights> weights;
-  thread_local int weightsOf = -1;
-  if (weightsOf != n) {
-    weights.clear();
+// The samples (i, j)/n of a triangle's sampling as weights, made once per thread for n (each
+// walk divided twice a sample for them): `walk` holds all but the corners in the walk's order
+// (i, then j), for interpolationWithinFrom; `parts` the same by part (0 inside, 1-3 a side, each
+// in the walk's order), for sampledDeviationsFrom, which skips the sides it knows.
+struct SamplePlan {
+  int n = -1;
+  std::vector<Weights> walk;
+  std::array<std::vector<Weights>, 4> parts;
+  std::array<Weights, 3> corners;  // i = n (t0), j = n (t1), i + j = 0 (t2)
+};
+
+const SamplePlan& samplePlan(int n) {
+  thread_local SamplePlan plan;
+  if (plan.n != n) {
+    plan.walk.clear();
+    for (std::vector<Weights>& weights : plan.parts) weights.clear();
     for (int i = 0; i <= n; ++i)
       for (int j = 0; i + j <= n; ++j) {
-        if (i == n || j == n || i + j == 0) continue;
         const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
-        weights.push_back({a, b, c});
+        if (i == n || j == n || i + j == 0) {
+          plan.corners[size_t(i == n ? 0 : j == n ? 1 : 2)] = {a, b, c};
+          continue;
+        }
+        plan.walk.push_back({a, b, c});
+        plan.parts[size_t(i + j == n ? 1 : i == 0 ? 2 : j == 0 ? 3 : 0)].push_back({a, b, c});
       }
-    weightsOf = n;
+    plan.n = n;
   }
-  return weights;
+  return plan;
 }
 
 // sampledDeviations with the corners' surface points s = S(uvᵢ) given. `sides`, when given,
@@ -302,27 +315,9 @@ SampledDeviations sampledDeviationsFrom(const FaceSurface& surface,
     for (int k = 0; k < 3; ++k)
       if (const SideSampleMax* m = sides->find(t[k], t[(k + 1) % 3]))
         part[size_t(1 + k)] = *m, known[size_t(1 + k)] = true;
-  // The samples' weights by part, made once per thread for n (the (i, j) walk with its part
-  // tests was a third of this function's own time): each weight triple is the walk's doubles,
-  // a = i/n, b = j/n, c = 1 − a − b, and a part's samples keep the walk's order.
-  struct Plan {
-    int n = -1;
-    std::array<std::vector<Weights>, 4> parts;
-    std::array<Weights, 3> corners;  // i = n (t0), j = n (t1), i + j = 0 (t2)
-  };
-  thread_local Plan plan;
-  if (plan.n != n) {
-    for (std::vector<Weights>& weights : plan.parts) weights.clear();
-    for (int i = 0; i <= n; ++i)
-      for (int j = 0; i + j <= n; ++j) {
-        const double a = double(i) / n, b = double(j) / n, c = 1 - a - b;
-        if (i == n || j == n || i + j == 0)
-          plan.corners[size_t(i == n ? 0 : j == n ? 1 : 2)] = {a, b, c};
-        else
-          plan.parts[size_t(i + j == n ? 1 : i == 0 ? 2 : j == 0 ? 3 : 0)].push_back({a, b, c});
-      }
-    plan.n = n;
-  }
+  // The samples' weights by part (samplePlan: the (i, j) walk with its part tests was a third
+  // of this function's own time); a part's samples keep the walk's order.
+  const SamplePlan& plan = samplePlan(n);
   // The buffers sized once per thread and written through plain pointers: a push_back stored
   // the thread-local vector's end after every sample (an eighth of this function's time).
   thread_local std::vector<glm::dvec2> uvBuffer;
@@ -459,7 +454,7 @@ bool interpolationWithinFrom(const FaceSurface& surface, const std::vector<FaceV
   if (uvBuffer.size() < interior) uvBuffer.resize(interior), onSurfaceBuffer.resize(interior);
   glm::dvec2* const uvs = uvBuffer.data();
   const glm::dvec2 uv0 = vs[t[0]].uv, uv1 = vs[t[1]].uv, uv2 = vs[t[2]].uv;
-  const std::vector<Weights>& weights = nonCornerWeights(n);
+  const std::vector<Weights>& weights = samplePlan(n).walk;
   size_t count = 0;
   for (const Weights& w : weights) uvs[count++] = w.a * uv0 + w.b * uv1 + w.c * uv2;
   surface.points(uvs, count, onSurfaceBuffer.data());
