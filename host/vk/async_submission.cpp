@@ -30,7 +30,8 @@ AsyncSubmission::~AsyncSubmission() {
 
 void AsyncSubmission::submit(const std::function<void(VkCommandBuffer)>& record) {
   wait();
-  recordAndSubmit(context_.vk(), context_.device(), context_.queue(), pool_, fence_, record);
+  recordAndSubmit(context_.vk(), context_.device(), context_.queue(), pool_, buffer_, fence_,
+                  record);
   pending_ = true;
 }
 

@@ -28,6 +28,7 @@ class AsyncSubmission {
  private:
   Context& context_;
   VkCommandPool pool_ = VK_NULL_HANDLE;
+  VkCommandBuffer buffer_ = VK_NULL_HANDLE;  // pool_'s one (recordAndSubmit)
   VkFence fence_ = VK_NULL_HANDLE;
   bool pending_ = false;
 };

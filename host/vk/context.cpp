@@ -316,7 +316,7 @@ void Context::savePipelineCache() {
 
 void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {
   const Stopwatch stopwatch;
-  recordAndSubmit(*deviceTable_, device_, queue_, commandPool_, fence_, record);
+  recordAndSubmit(*deviceTable_, device_, queue_, commandPool_, commandBuffer_, fence_, record);
   VK_CHECK(deviceTable_->vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX));
   const double ms = stopwatch.elapsedMs();
   std::lock_guard<std::mutex> lock(timingsMutex_);

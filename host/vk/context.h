@@ -169,6 +169,7 @@ class Context {
   DeviceInfo info_;
   VkPhysicalDeviceMemoryProperties memory_{};
   VkCommandPool commandPool_ = VK_NULL_HANDLE;
+  VkCommandBuffer commandBuffer_ = VK_NULL_HANDLE;  // commandPool_'s one (recordAndSubmit)
   VkFence fence_ = VK_NULL_HANDLE;
   VkPipelineCache pipelineCache_ = VK_NULL_HANDLE;
   std::string pipelineCachePath_;
