@@ -24,6 +24,7 @@ void benchRule(bench::Report& report, SplitRule rule, int instances, float thres
   QuadtreeOptions o;
   o.rule = rule;
   o.linearity = o.flatness = threshold;
+  o.timeGpu = true;  // the levels' GPU ms are reported
   auto scalar = makeMirrorClassifier();
   auto parallel = makeParallelMirrorClassifier();
   auto vulkan = makeVulkanClassifier(context);

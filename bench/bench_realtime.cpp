@@ -347,7 +347,8 @@ int main(int argc, char** argv) {
   // host triangulation, vertices evaluated on Vulkan; a fresh tree every time. Its screen error
   // is measured on its first two frames, outside the timing.
   Backend treeBackend = makeVulkanBackend(context);
-  const QuadtreeOptions treeOptions = toleranceOptions(tolerance);
+  QuadtreeOptions treeOptions = toleranceOptions(tolerance);
+  treeOptions.timeGpu = true;  // the levels' GPU ms are reported
   ScreenView view;
   view.camera = path.camera(0);
   tessellateScreenTolerance(patches, treeOptions, view, treeBackend);  // warm-up

@@ -228,6 +228,7 @@ int run(const TessellateArgs& a) {
                                shortDecimal(a.flatness);
   Progress progress(!a.quiet, progressIntervalSeconds());
   options.onLevel = progress.treeCallback(patches.size());
+  options.timeGpu = !a.stats.empty() || a.json;  // the report lists the levels' GPU ms
 
   ChosenBackend chosen = chooseBackend(a.backend, a.device, std::move(pendingContext));
   const auto stream = [&] {

@@ -213,8 +213,10 @@ class VulkanClassifier final : public NodeClassifier {
                                     slotCount * sizeof(gpu::QuadNode)};
     };
     context_.submitAndWait([&](VkCommandBuffer cmd) {
-      timer_.reset(cmd);
-      timer_.mark(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+      if (options.timeGpu) {
+        timer_.reset(cmd);
+        timer_.mark(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+      }
       for (size_t k = 0; k < kShaders; ++k) {
         if (count[k] == 0) continue;
         const gpu::ClassifyPush push = classifyParams(options, uint32_t(count[k]));
@@ -223,7 +225,7 @@ class VulkanClassifier final : public NodeClassifier {
                                 range(decisions_, first[k], count[k]), whole(points_)},
                                &push, push.nodeCount);
       }
-      timer_.mark(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
+      if (options.timeGpu) timer_.mark(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
       vk::computeToHostBarrier(context_, cmd);
     });
     if (oneShader) {
@@ -233,8 +235,7 @@ class VulkanClassifier final : public NodeClassifier {
       decisions_.download(sortedDecisions_.data(), slots * sizeof(gpu::NodeDecision));
       for (size_t i = 0; i < nodes.size(); ++i) decisions[i] = sortedDecisions_[slotOf[i]];
     }
-    auto intervals = timer_.intervalsNs();
-    if (!intervals.empty()) stats.gpuMs += intervals[0] * 1e-6;
+    if (options.timeGpu) addGpuMs(stats);
     stats.classifyMs += stopwatch.elapsedMs();
   }
 
@@ -281,8 +282,10 @@ class VulkanClassifier final : public NodeClassifier {
     nodes_.upload(nodes);
     gpu::ClassifyPush push = classifyParams(options, uint32_t(nodes.size()));
     context_.submitAndWait([&](VkCommandBuffer cmd) {
-      timer_.reset(cmd);
-      timer_.mark(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+      if (options.timeGpu) {
+        timer_.reset(cmd);
+        timer_.mark(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+      }
       if (nets) {
         const VkBufferView points = patchTexels_.viewOf(patches_);
         const VkBufferView nodeTexels = nodeTexels_.viewOf(nodes_);
@@ -294,13 +297,18 @@ class VulkanClassifier final : public NodeClassifier {
       } else {
         pipeline.dispatch(cmd, {&patches_, &nodes_, &decisions_}, &push, push.nodeCount);
       }
-      timer_.mark(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
+      if (options.timeGpu) timer_.mark(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
       vk::computeToHostBarrier(context_, cmd);
     });
     decisions_.download(decisions.data(), nodes.size() * sizeof(gpu::NodeDecision));
-    auto intervals = timer_.intervalsNs();
-    if (!intervals.empty()) stats.gpuMs += intervals[0] * 1e-6;
+    if (options.timeGpu) addGpuMs(stats);
     stats.classifyMs += stopwatch.elapsedMs();
+  }
+
+  // The GPU time between the submission's two timestamps (QuadtreeOptions::timeGpu).
+  void addGpuMs(LevelStats& stats) const {
+    const std::vector<double> intervals = timer_.intervalsNs();
+    if (!intervals.empty()) stats.gpuMs += intervals[0] * 1e-6;
   }
 
   vk::ComputePipeline& pipelineFor(bool general, uint32_t rule, int samples) {

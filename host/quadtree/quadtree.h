@@ -34,7 +34,8 @@ struct LevelStats {
   uint32_t level = 0;
   size_t nodes = 0, splits = 0, leaves = 0;
   double classifyMs = 0;  // the classifier: GPU dispatch + transfers, or CPU work
-  double gpuMs = 0;       // GPU time of the dispatch by timestamps (0 on CPU backends)
+  double gpuMs = 0;       // GPU time of the dispatch by timestamps (0 on CPU backends and
+                          // without QuadtreeOptions::timeGpu)
   double frontierMs = 0;  // host: emitting leaves and building the next level
 };
 
@@ -63,6 +64,11 @@ struct QuadtreeOptions {
   // flight with its decisions, and that batch's children. A level larger than that is
   // classified in batches, depth first (docs/quadtree.md, "Bounded frontier").
   size_t frontierBudgetBytes = size_t(256) << 20;
+  // Time each level's dispatches by GPU timestamps (LevelStats::gpuMs, else 0): for reports
+  // and level profiles. Off by default: on lavapipe a timestamp is a scene for its rasterizer
+  // threads, ~0.4 ms and ~145 thread switches of the tea set's 6 levels at δ 0.01
+  // (bench/HISTORY.md, "Timestamps and the command pool on lavapipe").
+  bool timeGpu = false;
   // Called after each level (for progress display); may be empty.
   std::function<void(const LevelStats&)> onLevel;
 };
