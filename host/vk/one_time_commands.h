@@ -4,7 +4,7 @@
 // `buffer` is the pool's one command buffer, allocated at the first call and recorded again at
 // every later one: a pool reset keeps its buffers, so one allocated per call would pile up and
 // every reset would walk them all (on lavapipe each reset cleared ~1.2 KB per buffer ever
-// allocated: bench/HISTORY.md, "The command pool's pile of buffers").
+// allocated: bench/HISTORY.md, "Timestamps and the command pool on lavapipe").
 #pragma once
 #include "vk/backend_only.h"
 
