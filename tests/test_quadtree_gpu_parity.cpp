@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "eval/evaluator.h"
+#include "eval/patch_set.h"
 #include "gpu_test_context.h"
 #include "patch_samples.h"
 #include "quadtree/quadtree.h"
@@ -62,4 +63,22 @@ TEST_CASE("GPU quad-trees equal the fp32 mirror's on random patches", "[gpu][qua
 TEST_CASE("GPU quad-trees equal the fp32 mirror's on collapsed-edge patches",
           "[gpu][quadtree][parity]") {
   checkTrees(test::collapsedEdgePatches(), "collapsed-edge patches");
+}
+
+TEST_CASE("GPU timestamps only when asked: the same tree, gpuMs 0 without timeGpu",
+          "[gpu][quadtree]") {
+  vk::Context& context = test::gpuContext();
+  const PatchSet patches = toPatchSet(test::randomBicubicPatches(8, 7));
+  auto gpu = makeVulkanClassifier(context);
+  QuadtreeOptions options = toleranceOptions(0.01);
+  const QuadtreeResult untimed = buildQuadtree(patches, options, *gpu);
+  options.timeGpu = true;
+  const QuadtreeResult timed = buildQuadtree(patches, options, *gpu);
+  REQUIRE(test::identicalTrees(untimed, timed));
+  REQUIRE(untimed.levels.size() > 1);
+  double gpuMs = 0;
+  for (const LevelStats& level : untimed.levels) CHECK(level.gpuMs == 0);
+  for (const LevelStats& level : timed.levels) gpuMs += level.gpuMs;
+  if (context.timestampsSupported()) CHECK(gpuMs > 0);
+  test::requireValidationClean();
 }
