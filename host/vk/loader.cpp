@@ -7,6 +7,7 @@
 
 #include "vk/errors.h"
 #include "vk/fault_injection.h"
+#include "vk/object_census.h"
 
 namespace tessera::vk {
 
@@ -71,6 +72,7 @@ DeviceTable loadDeviceTable(VkInstance instance, VkDevice device) {
   if (!table.vkDestroyDevice || !table.vkQueueSubmit)
     throw VulkanUnavailable("could not load the Vulkan device functions (vkGetDeviceProcAddr)");
   injectDeviceFaults(table);
+  countObjectsWhileCensusOpen(table);
   return table;
 }
 
