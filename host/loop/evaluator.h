@@ -21,7 +21,8 @@ class StencilEvaluator {
   // rows holds rowCount × width floats: the first sourceRows × width are read, the rest are
   // written (levels, limit, tangents: see LoopStencils for where each starts).
   virtual void apply(std::vector<float>& rows) = 0;
-  // Device time of the last apply in seconds where measured (Vulkan timestamps), else 0.
+  // Device time of the last apply in seconds where measured (Vulkan timestamps, when
+  // VulkanStencilOptions::timeGpu asks), else 0.
   virtual double lastDeviceSeconds() const { return 0.0; }
 };
 
@@ -38,6 +39,9 @@ struct VulkanStencilOptions {
   // submission per slice, with the same result bit for bit. Smaller values force slicing (the
   // CLI's --batch-bytes; tests).
   uint64_t maxArrayBytes = 0;
+  // GPU timestamps around each submission, for lastDeviceSeconds() (bench_loop): only when
+  // asked, as on lavapipe each timestamp costs the rasterizer threads a hand-off.
+  bool timeGpu = false;
 };
 
 // Builds on `context`'s device; the context must outlive the evaluator. The table is taken by
