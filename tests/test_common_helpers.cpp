@@ -53,6 +53,21 @@ TEST_CASE("parallelForChunks covers every index exactly once, in chunks", "[comm
   }
 }
 
+TEST_CASE("parallelForLargestFirst covers every index once, largest estimate first", "[common]") {
+  const std::vector<double> estimates = {3, 9, 1, 9, 0, 5, 3};
+  for (unsigned threads : {1u, 2u, 5u}) {
+    std::vector<std::atomic<int>> visits(estimates.size());
+    parallelForLargestFirst(estimates, threads, [&](size_t i) { ++visits[i]; });
+    INFO("threads " << threads);
+    for (size_t i = 0; i < estimates.size(); ++i) REQUIRE(visits[i] == 1);
+  }
+  // On one thread the calls come in the hand-out order: decreasing estimate, ties by index.
+  std::vector<size_t> order;
+  parallelForLargestFirst(estimates, 1, [&](size_t i) { order.push_back(i); });
+  CHECK(order == std::vector<size_t>{1, 3, 5, 0, 6, 2, 4});
+  parallelForLargestFirst({}, 2, [&](size_t) { FAIL("no items, no calls"); });
+}
+
 TEST_CASE("parallelFor with 0 threads uses every hardware thread", "[common]") {
   CHECK(resolveThreadCount(0) == std::max(1u, std::thread::hardware_concurrency()));
   CHECK(resolveThreadCount(3) == 3u);

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
+#include <numeric>
 #include <thread>
 
 #include "common/worker_pool.h"
@@ -46,6 +47,17 @@ void parallelForChunks(size_t count, size_t chunk, unsigned threads,
   parallelParts(unsigned(std::min<size_t>(resolveThreadCount(threads), count)), [&](unsigned) {
     for (size_t begin = next.fetch_add(chunk); begin < count; begin = next.fetch_add(chunk))
       body(begin, std::min(count, begin + chunk));
+  });
+}
+
+void parallelForLargestFirst(const std::vector<double>& estimates, unsigned threads,
+                             const std::function<void(size_t index)>& body) {
+  std::vector<size_t> order(estimates.size());
+  std::iota(order.begin(), order.end(), size_t(0));
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return estimates[a] > estimates[b]; });
+  parallelForChunks(order.size(), 1, threads, [&](size_t begin, size_t end) {
+    for (size_t k = begin; k < end; ++k) body(order[k]);
   });
 }
 

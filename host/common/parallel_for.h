@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <vector>
 
 namespace tessera {
 
@@ -28,5 +29,12 @@ void parallelFor(size_t count, unsigned threads,
 // long for the slowest share. Every index is in exactly one chunk.
 void parallelForChunks(size_t count, size_t chunk, unsigned threads,
                        const std::function<void(size_t begin, size_t end)>& body);
+
+// The same, one item at a time, for items whose costs can be estimated before the work: handed
+// out largest estimate first (ties in index order), so that no large item starts last while the
+// other threads have nothing left (the longest-processing-time-first rule). Runs body(i) for
+// every i in [0, estimates.size()); the order of the calls is not the order of the indices.
+void parallelForLargestFirst(const std::vector<double>& estimates, unsigned threads,
+                             const std::function<void(size_t index)>& body);
 
 }  // namespace tessera

@@ -93,12 +93,13 @@ void tessellateGroup(const TrimmedModel& model, const FaceGroup& group, const Mo
   out.treeMs += step.elapsedMs();
 
   step.restart();
-  // Faces of very different sizes: taken a face at a time from a shared counter.
+  // Faces of very different sizes: a face at a time, the most leaves first (parallel_for.h).
+  std::vector<double> leafCounts(faceCount);
+  for (size_t k = 0; k < faceCount; ++k) leafCounts[k] = double(faceTrees[k].leaves.size());
   std::vector<ParamMesh> params(faceCount);
-  parallelForChunks(faceCount, 1, threads, [&](size_t begin, size_t end) {
-    for (size_t k = begin; k < end; ++k)
-      if (!faceTrees[k].leaves.empty())
-        params[k] = triangulateLeaves(faceTrees[k].leaves, group.facePatches[k]);
+  parallelForLargestFirst(leafCounts, threads, [&](size_t k) {
+    if (!faceTrees[k].leaves.empty())
+      params[k] = triangulateLeaves(faceTrees[k].leaves, group.facePatches[k]);
   });
   out.triangulateMs += step.elapsedMs();
 
@@ -117,14 +118,12 @@ void tessellateGroup(const TrimmedModel& model, const FaceGroup& group, const Mo
   out.evaluateMs += step.elapsedMs();
 
   step.restart();
-  parallelForChunks(faceCount, 1, threads, [&](size_t begin, size_t end) {
-    for (size_t k = begin; k < end; ++k) {
-      // The face's samples read in place, not copied out per face.
-      Tessellation& face = out.faces[group.faces[k]];
-      face = assembleTessellation(group.facePatches[k].size(), std::move(faceTrees[k]),
-                                  std::move(params[k]), samples.data() + firstQuery[k]);
-      toModelCoordinates(face, frame);
-    }
+  parallelForLargestFirst(leafCounts, threads, [&](size_t k) {
+    // The face's samples read in place, not copied out per face.
+    Tessellation& face = out.faces[group.faces[k]];
+    face = assembleTessellation(group.facePatches[k].size(), std::move(faceTrees[k]),
+                                std::move(params[k]), samples.data() + firstQuery[k]);
+    toModelCoordinates(face, frame);
   });
   out.assembleMs += step.elapsedMs();
 }
