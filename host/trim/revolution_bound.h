@@ -47,7 +47,9 @@ class RevolutionBoundClassifier final : public RevisingClassifier {
   };
   // The tree works in a local frame (geometry/model_frame.h): model = local·scale + centre, so
   // its tolerance is δ/scale and the bound, found in model units, is divided by `scale` too.
-  RevolutionBoundClassifier(NodeClassifier& inner, std::vector<Patch> patches, double scale);
+  // A batch's bounds are found on `threads` threads (0: all cores).
+  RevolutionBoundClassifier(NodeClassifier& inner, std::vector<Patch> patches, double scale,
+                            unsigned threads = 0);
 
   std::string name() const override;
   size_t decided() const { return decided_; }  // nodes decided by the distance bound
@@ -61,7 +63,9 @@ class RevolutionBoundClassifier final : public RevisingClassifier {
 
   std::vector<Patch> patches_;
   double scale_;
+  unsigned threads_;
   size_t decided_ = 0;
+  std::vector<size_t> revised_;  // the batch's nodes revise() decides
 };
 
 }  // namespace tessera
