@@ -141,8 +141,8 @@ void RevolutionBoundClassifier::revise(const std::vector<gpu::QuadNode>& nodes,
   revised_.clear();
   for (size_t i = 0; i < nodes.size(); ++i)
     if (rewritesWhole(groupFirst() + nodes[i].patchIndex, options)) revised_.push_back(i);
-  // Each node's decision is its own: on all threads where there are enough of them (the
-  // IDF library's cylinders and fillets were a third of the CPU tree's time, on one core).
+  // Each node's decision is its own: on all threads where there are enough of them (on one,
+  // the IDF library's cylinders, cones and spheres were a quarter to 40% of the CPU tree's time).
   const auto decide = [&](size_t i) {
     const Patch& patch = patches_[groupFirst() + nodes[i].patchIndex];
     const gpu::vec4& r = nodes[i].rect;
