@@ -28,6 +28,8 @@
 // --no-match leaves out the rows at OCCT's measured distance.
 // --threads n gives Tessera's import and per-face stages n threads (TrimmedMeshOptions::threads,
 // default 0: all cores; 1: serial); the CPU backend's tree keeps all cores.
+// Each tolerance's load average at its start and end is printed and noted in the JSON
+// (loadAverage IDF <δ>): the Vulkan tree and trim times grow several-fold under load.
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
@@ -303,6 +305,22 @@ double processCpuMs() {
   return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
 }
 
+// The machine's load average (1, 5 and 15 minutes), as /proc/loadavg gives it; "" elsewhere.
+// Printed at each tolerance's start and end: on the shared 2-core VM the Vulkan tree and its
+// trim classification, a few hundred small dispatches each waited for, take several times
+// longer while another process competes for the cores (bench/HISTORY.md, session 40).
+std::string loadAverage() {
+  std::FILE* file = std::fopen("/proc/loadavg", "r");
+  if (!file) return "";
+  double one = 0, five = 0, fifteen = 0;
+  const int read = std::fscanf(file, "%lf %lf %lf", &one, &five, &fifteen);
+  std::fclose(file);
+  if (read != 3) return "";
+  char text[64];
+  std::snprintf(text, sizeof text, "%.2f %.2f %.2f", one, five, fifteen);
+  return text;
+}
+
 // Tessera's time split by stage, summed over the corpus (each model's fastest run).
 struct Stages {
   double convertMs = 0;     // toTrimmedModel: faces to Bézier pieces, edges discretised
@@ -425,6 +443,7 @@ MatchedScale matchOcctDistance(const CadFile& file, double delta, double occtDis
 
 void runTolerance(bench::Report& report, const Models& models, double relative,
                   std::vector<TesseraBackend>& backends) {
+  const std::string loadAtStart = loadAverage();
   Totals occt[2];
   std::vector<Totals> tessera(backends.size());
   std::vector<Stages> stages(backends.size());
@@ -563,6 +582,10 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
                  t.gapCpuMs, t.refineCpuMs, t.measureCpuMs, t.emitMs, t.totalMs,
                  t.trees, t.leaves, t.trimmedAwayLeaves);
   }
+  const std::string loadAtEnd = loadAverage();
+  std::fprintf(stderr, "  load average (1, 5, 15 min): %s at this tolerance's start, %s at its end\n",
+               loadAtStart.c_str(), loadAtEnd.c_str());
+  report.note("loadAverage " + std::string(tableName), {{"start", loadAtStart}, {"end", loadAtEnd}});
   if (matching) {
     for (size_t b = 0; b < backends.size(); ++b) {
       addCase("Tessera trimmed faces, " + backends[b].name + ", at OCCT's measured distance",
