@@ -29,7 +29,7 @@
 // --threads n gives Tessera's import and per-face stages n threads (TrimmedMeshOptions::threads,
 // default 0: all cores; 1: serial); the CPU backend's tree keeps all cores.
 // Each tolerance's load average at its start and end is printed and noted in the JSON
-// (loadAverage IDF <δ>): the Vulkan tree and trim times grow several-fold under load.
+// (loadAverage IDF <δ>): the Vulkan tree and trim times are the most sensitive to load.
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
