@@ -104,7 +104,12 @@ TEST_CASE("parallelFor in a forked child runs on the child and exits cleanly", "
     });
     bool once = true;
     for (auto& v : visits) once = once && v == 1;
-    std::exit(once ? 0 : 1);  // runs the pool's destructor, which must not join the parent's threads
+    // _exit, not exit: the parent's exit handlers are not the child's to run. A Vulkan
+    // context left by an earlier test in this process (the GPU tests' shared one) would be
+    // destroyed there and wait for lavapipe's threads, which are not in the child: it hung
+    // the child whenever a Vulkan test ran first in the same process.
+    std::fflush(nullptr);
+    ::_exit(once ? 0 : 1);
   }
   int status = 0;
   REQUIRE(::waitpid(child, &status, 0) == child);
