@@ -15,21 +15,28 @@ struct Timing {
   double minSeconds = 0;
   double medianSeconds = 0;
   int runs = 0;
+  double firstSeconds = 0;  // the warm-up run, where a case times one (not in min or median)
 };
 
 // Runs `work` once to warm up (pipeline JIT, page faults), then `repeats` (at least
-// kMinRuns) times.
-inline Timing timeRepeated(int repeats, const std::function<void()>& work) {
+// kMinRuns) times. `beforeEach`, if given, runs before every run outside the timer (e.g. to
+// release the previous run's result, as OCCT's cases clean the shape before meshing).
+inline Timing timeRepeated(int repeats, const std::function<void()>& work,
+                           const std::function<void()>& beforeEach = {}) {
   repeats = std::max(repeats, kMinRuns);
+  if (beforeEach) beforeEach();
+  const Stopwatch first;
   work();
+  const double firstSeconds = first.elapsedSeconds();
   std::vector<double> seconds;
   for (int r = 0; r < repeats; ++r) {
+    if (beforeEach) beforeEach();
     const Stopwatch stopwatch;
     work();
     seconds.push_back(stopwatch.elapsedSeconds());
   }
   std::sort(seconds.begin(), seconds.end());
-  return {seconds.front(), seconds[seconds.size() / 2], repeats};
+  return {seconds.front(), seconds[seconds.size() / 2], repeats, firstSeconds};
 }
 
 }  // namespace tessera::bench
