@@ -68,6 +68,14 @@ TEST_CASE("parallelForLargestFirst covers every index once, largest estimate fir
   parallelForLargestFirst({}, 2, [&](size_t) { FAIL("no items, no calls"); });
 }
 
+TEST_CASE("threadsForChunks gives a second thread only from kTurnsForSecondThread chunks on",
+          "[common]") {
+  CHECK(threadsForChunks(8 * 64 - 1, 64, 4) == 1u);
+  CHECK(threadsForChunks(8 * 64, 64, 4) == 4u);
+  CHECK(threadsForChunks(7, 0, 0) == 1u);  // a chunk of 0 is taken as 1, as parallelForChunks does
+  CHECK(threadsForChunks(8, 0, 0) == 0u);  // 0: every hardware thread
+}
+
 TEST_CASE("parallelFor with 0 threads uses every hardware thread", "[common]") {
   CHECK(resolveThreadCount(0) == std::max(1u, std::thread::hardware_concurrency()));
   CHECK(resolveThreadCount(3) == 3u);

@@ -50,6 +50,10 @@ void parallelForChunks(size_t count, size_t chunk, unsigned threads,
   });
 }
 
+unsigned threadsForChunks(size_t count, size_t chunk, unsigned threads) {
+  return count >= kTurnsForSecondThread * std::max<size_t>(chunk, 1) ? threads : 1u;
+}
+
 void parallelForLargestFirst(const std::vector<double>& estimates, unsigned threads,
                              const std::function<void(size_t index)>& body) {
   std::vector<size_t> order(estimates.size());

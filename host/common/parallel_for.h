@@ -30,6 +30,14 @@ void parallelFor(size_t count, unsigned threads,
 void parallelForChunks(size_t count, size_t chunk, unsigned threads,
                        const std::function<void(size_t begin, size_t end)>& body);
 
+// The threads for parallelForChunks over `count` items taken `chunk` at a time when each item
+// is cheap: `threads` from kTurnsForSecondThread chunks on, else 1. A shorter loop's hand-out
+// and join cost about what a second thread saves on 2 cores, and more on a loaded machine,
+// where the join waits for a worker preempted in its part (bench/HISTORY.md, "CAD path: where
+// the two cores idle").
+constexpr size_t kTurnsForSecondThread = 8;
+unsigned threadsForChunks(size_t count, size_t chunk, unsigned threads);
+
 // The same, one item at a time, for items whose costs can be estimated before the work: handed
 // out largest estimate first (ties in index order), so that no large item starts last while the
 // other threads have nothing left (the longest-processing-time-first rule). Runs body(i) for

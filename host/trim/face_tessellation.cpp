@@ -44,10 +44,6 @@ TrimSet groupTrimSet(const TrimmedModel& model, const FaceGroup& group) {
 
 // Faces a thread takes at a time in tessellateFaces' checks: a face is a few pieces.
 constexpr size_t kFacesPerTurn = 16;
-// A second thread only for batches of 8 turns or more: a shorter region's hand-out and join
-// cost about what they save on 2 cores, and more on a loaded machine, where the join waits
-// for a worker preempted in its part (bench/HISTORY.md, session 40).
-constexpr size_t kParallelFaces = 8 * kFacesPerTurn;
 
 // Face f's pieces, each checked by validateTessellationPatch, in the tree's local frame.
 std::vector<BezierPatch> localFacePatches(const TrimmedFace& face, size_t f,
@@ -169,7 +165,7 @@ FaceTessellations tessellateFaces(const TrimmedModel& model, double tolerance,
   const size_t faceCount = model.faces.size();
   std::vector<std::vector<BezierPatch>> localPatches(faceCount);
   std::vector<std::exception_ptr> errors(faceCount);
-  parallelForChunks(faceCount, kFacesPerTurn, faceCount >= kParallelFaces ? threads : 1,
+  parallelForChunks(faceCount, kFacesPerTurn, threadsForChunks(faceCount, kFacesPerTurn, threads),
                     [&](size_t begin, size_t end) {
                       for (size_t f = begin; f < end; ++f) {
                         try {

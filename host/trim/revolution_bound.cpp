@@ -24,10 +24,6 @@ constexpr float kUnbounded = 1.0e30f;
 // Nodes a thread takes at a time: a node's bound is a few surface points and arc tangents
 // (about a microsecond), so fewer would be all hand-out.
 constexpr size_t kNodesPerTurn = 64;
-// A second thread only for batches of 8 turns or more: a shorter region's hand-out and join
-// cost about what they save on 2 cores, and more on a loaded machine, where the join waits
-// for a worker preempted in its part (bench/HISTORY.md, session 40).
-constexpr size_t kParallelNodes = 8 * kNodesPerTurn;
 
 double angleBetween(glm::dvec2 a, glm::dvec2 b) {
   return std::atan2(std::abs(a.x * b.y - a.y * b.x), glm::dot(a, b));
@@ -158,7 +154,7 @@ void RevolutionBoundClassifier::revise(const std::vector<gpu::QuadNode>& nodes,
     decisions[i] = mirror::toleranceDecisionOf(terms, nodes[i], params);
   };
   parallelForChunks(revised_.size(), kNodesPerTurn,
-                    revised_.size() >= kParallelNodes ? threads_ : 1,
+                    threadsForChunks(revised_.size(), kNodesPerTurn, threads_),
                     [&](size_t begin, size_t end) {
                       for (size_t k = begin; k < end; ++k) decide(revised_[k]);
                     });

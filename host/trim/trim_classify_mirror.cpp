@@ -36,10 +36,6 @@ namespace {
 // Queries a thread takes at a time: a node against a few binned segments is well under a
 // microsecond, so fewer would be all hand-out.
 constexpr size_t kQueriesPerTurn = 256;
-// A second thread only for batches of 8 turns or more: a shorter region's hand-out and join
-// cost about what they save on 2 cores, and more on a loaded machine, where the join waits
-// for a worker preempted in its part (bench/HISTORY.md, session 40).
-constexpr size_t kParallelQueries = 8 * kQueriesPerTurn;
 
 class MirrorTrimClassifier final : public TrimClassifier {
  public:
@@ -53,7 +49,7 @@ class MirrorTrimClassifier final : public TrimClassifier {
     // Each query's class is its own: on all cores where a level has enough nodes (on one, the
     // trim pass was 6% of the CPU tree's time on the IDF library).
     parallelForChunks(queries.size(), kQueriesPerTurn,
-                      queries.size() >= kParallelQueries ? 0u : 1u,
+                      threadsForChunks(queries.size(), kQueriesPerTurn, 0u),
                       [&](size_t begin, size_t end) {
                         for (size_t i = begin; i < end; ++i)
                           out[i] = kernel.classifyTrimNode(queries[i]);
