@@ -5,6 +5,7 @@
 #include <string>
 
 #include <type_traits>
+#include <vector>
 
 #include "gpu_test_context.h"
 #include "vk/buffer.h"
@@ -30,6 +31,26 @@ TEST_CASE("a Vulkan context comes up with validation layers on", "[gpu][vk]") {
   // Loop stencil evaluator splits its arrays by it (host/loop/evaluator.h).
   REQUIRE(context.info().maxMemoryAllocationSize >= (1u << 27));
   test::requireValidationClean();
+}
+
+TEST_CASE("a context keeps a bounded log of validation messages and counts them all", "[gpu][vk]") {
+  // An engine's debug build runs one context for hours with validation on: a repeated message
+  // must not grow the log without end. Messages here are injected through the messenger's
+  // own entry point, so no real validation error is needed.
+  size_t delivered = 0;
+  vk::ContextOptions options;
+  options.onValidationMessage = [&](const std::string&) { ++delivered; };
+  vk::Context context(options);
+  const size_t sent = vk::Context::kKeptValidationMessages + 1000;
+  for (size_t i = 0; i < sent; ++i) context.reportValidationMessage("message " + std::to_string(i));
+  REQUIRE(delivered == sent);  // the callback still sees every one
+  REQUIRE(context.validationMessageCount() == sent);
+  const std::vector<std::string> log = context.validationMessages();
+  REQUIRE(log.size() == vk::Context::kKeptValidationMessages + 1);
+  REQUIRE(log.front() == "message 0");
+  REQUIRE(log[vk::Context::kKeptValidationMessages - 1] ==
+          "message " + std::to_string(vk::Context::kKeptValidationMessages - 1));
+  REQUIRE(log.back() == "(1000 more validation messages, not kept)");
 }
 
 TEST_CASE("buffers round-trip data and grow on demand", "[gpu][vk]") {

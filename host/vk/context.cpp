@@ -338,7 +338,7 @@ void Context::notePipelineCreated(double ms) {
 void Context::reportValidationMessage(const std::string& message) {
   {
     std::lock_guard<std::mutex> lock(messagesMutex_);
-    messages_.push_back(message);
+    if (messageCount_++ < kKeptValidationMessages) messages_.push_back(message);
   }
   if (onValidationMessage_)
     onValidationMessage_(message);
@@ -348,12 +348,16 @@ void Context::reportValidationMessage(const std::string& message) {
 
 std::vector<std::string> Context::validationMessages() const {
   std::lock_guard<std::mutex> lock(messagesMutex_);
-  return messages_;
+  std::vector<std::string> messages = messages_;
+  if (messageCount_ > messages_.size())
+    messages.push_back("(" + std::to_string(messageCount_ - messages_.size()) +
+                       " more validation messages, not kept)");
+  return messages;
 }
 
 size_t Context::validationMessageCount() const {
   std::lock_guard<std::mutex> lock(messagesMutex_);
-  return messages_.size();
+  return messageCount_;
 }
 
 }  // namespace tessera::vk

@@ -138,7 +138,11 @@ class Context {
   // Called by ComputePipeline's constructor with the time it took.
   void notePipelineCreated(double ms);
 
-  // Validation messages (warning or error severity) seen so far.
+  // Validation messages (warning or error severity) seen so far: the first
+  // kKeptValidationMessages in full, then one line saying how many more came. The count is
+  // of every message. Bounded because a long-lived context with validation on (an engine's
+  // debug build) would otherwise keep every repeat of one message for hours.
+  static constexpr size_t kKeptValidationMessages = 256;
   std::vector<std::string> validationMessages() const;
   size_t validationMessageCount() const;
 
@@ -182,7 +186,8 @@ class Context {
   mutable std::mutex timingsMutex_;
   ContextTimings timings_;
   mutable std::mutex messagesMutex_;
-  std::vector<std::string> messages_;
+  std::vector<std::string> messages_;  // the first kKeptValidationMessages
+  size_t messageCount_ = 0;            // all of them
 };
 
 }  // namespace tessera::vk
