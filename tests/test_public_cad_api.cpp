@@ -10,11 +10,13 @@
 #include <cmath>
 #include <set>
 
+#include "api/tessellator_access.h"
 #include "cad/mesh_cad_file.h"
 #include "gpu_test_context.h"
 #include "mesh/tessellate.h"
 #include "mesh_checks.h"
 #include "trim/trim_classifier.h"
+#include "vk/context.h"
 
 namespace {
 const std::string kSot23 = "/usr/share/freecad/Mod/Idf/Idflibs/SOT23.stp";
@@ -124,6 +126,28 @@ TEST_CASE("public CAD API: Vulkan gives the CPU's mesh", "[cad][api][gpu]") {
     REQUIRE(std::abs(double(a.mesh.triangleCount()) - double(b.mesh.triangleCount())) <=
             0.01 * double(b.mesh.triangleCount()));
   }
+}
+
+TEST_CASE("public CAD API: a Tessellator builds its trim pipeline once, not per call",
+          "[cad][api][gpu]") {
+  // An engine or a batch job calls tessellateCadFile again and again on one Tessellator: the
+  // trim classifier's pipeline (milliseconds to build on lavapipe) is kept like the backend's.
+  tessera::Tessellator gpu({tessera::Device::Vulkan});
+  const auto pipelinesBuilt = [&] {
+    size_t built = 0;
+    tessera::TessellatorAccess::run(gpu, [&](tessera::Backend&, tessera::vk::Context* context) {
+      REQUIRE(context != nullptr);
+      built = context->timings().pipelines;
+    });
+    return built;
+  };
+  const tessera::CadMesh first = tessera::tessellateCadFile(gpu, kSot23);
+  const size_t builtByFirst = pipelinesBuilt();
+  REQUIRE(builtByFirst > 0);
+  const tessera::CadMesh second = tessera::tessellateCadFile(gpu, kSot23);
+  REQUIRE(pipelinesBuilt() == builtByFirst);
+  REQUIRE(second.mesh.indices == first.mesh.indices);  // the kept classifier, the same mesh
+  REQUIRE(second.mesh.positions == first.mesh.positions);
 }
 
 #endif

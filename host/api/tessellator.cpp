@@ -12,6 +12,7 @@
 #include "mesh/screen_tolerance.h"
 #include "mesh/tessellate.h"
 #include "quadtree/tolerance.h"
+#include "trim/trim_classifier.h"
 #include "vk/context.h"
 #include "vk/errors.h"
 
@@ -107,6 +108,7 @@ struct Tessellator::Impl {
   TessellatorOptions options;
   std::unique_ptr<vk::Context> context;  // null on the CPU
   Backend backend;
+  std::unique_ptr<TrimClassifier> trim;  // on Vulkan, made at the first CAD call
 
   explicit Impl(const TessellatorOptions& o) : options(o) {
     if (options.device == Device::Cpu) {
@@ -129,6 +131,7 @@ struct Tessellator::Impl {
 
   void useCpu() {
     backend = makeMirrorBackend();  // drops the Vulkan classifier and evaluator first
+    trim.reset();
     context.reset();
   }
 
@@ -164,6 +167,13 @@ void TessellatorAccess::run(Tessellator& tessellator,
   translatingErrors([&] {
     impl.withFallback([&](Backend& backend) { work(backend, impl.context.get()); });
   });
+}
+
+TrimClassifier* TessellatorAccess::trimClassifier(Tessellator& tessellator) {
+  Tessellator::Impl& impl = *tessellator.impl_;
+  if (!impl.context) return nullptr;
+  if (!impl.trim) impl.trim = makeVulkanTrimClassifier(*impl.context);
+  return impl.trim.get();
 }
 
 Mesh Tessellator::tessellate(const std::vector<Patch>& patches, const RuleOptions& options) {

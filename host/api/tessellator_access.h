@@ -11,6 +11,7 @@ namespace tessera {
 namespace vk {
 class Context;
 }
+class TrimClassifier;
 
 struct TessellatorAccess {
   // Runs work(backend, context) (context null on the CPU). Under Device::Auto a Vulkan failure
@@ -18,6 +19,10 @@ struct TessellatorAccess {
   // ArgumentError and Vulkan failures DeviceError, as in Tessellator::tessellate.
   static void run(Tessellator& tessellator,
                   const std::function<void(Backend& backend, vk::Context* context)>& work);
+  // The tessellator's Vulkan trim classifier (trimmed faces, tessera/cad.h), made at the first
+  // call and kept with its pipeline and buffers for the next ones, as the backend keeps its
+  // own; null on the CPU (also after a fallback).
+  static TrimClassifier* trimClassifier(Tessellator& tessellator);
 };
 
 }  // namespace tessera

@@ -5,12 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 
 #include "api/convert.h"
 #include "api/tessellator_access.h"
 #include "cad/mesh_cad_file.h"
-#include "trim/trim_classifier.h"
 
 namespace tessera {
 
@@ -32,10 +30,9 @@ CadMesh tessellateCadFile(Tessellator& tessellator, const std::string& path,
   }
   CadMeshRun run;
   TessellatorAccess::run(tessellator, [&](Backend& backend, vk::Context* context) {
-    const std::unique_ptr<TrimClassifier> trim =
-        context ? makeVulkanTrimClassifier(*context) : nullptr;
+    TrimClassifier* trim = context ? TessellatorAccess::trimClassifier(tessellator) : nullptr;
     run = meshCadFile(path, tolerance, options.skipBadFaces, "CadOptions::skipBadFaces", backend,
-                      trim.get(), options.threads);
+                      trim, options.threads);
   });
   CadMesh out;
   out.mesh = api::toMesh(run.mesh.mesh);
