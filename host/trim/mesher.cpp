@@ -15,6 +15,7 @@
 #include "quadtree/quadtree.h"
 #include "trim/detail/affine_face.h"
 #include "trim/detail/gap_refine.h"
+#include "trim/detail/open_edges.h"
 #include "trim/face_surface.h"
 #include "trim/face_tessellation.h"
 #include "trim/gap_triangulate.h"
@@ -205,17 +206,7 @@ FaceMesh meshFace(const TrimmedModel& model, size_t f, const Tessellation& tess,
   std::sort(trimEdges.begin(), trimEdges.end());
   trimEdges.erase(std::unique(trimEdges.begin(), trimEdges.end()), trimEdges.end());
   if (!face.loops.empty()) {
-    // The kept triangles' directed edges, sorted and distinct (a std::set's order, without a
-    // node per edge): an edge whose reverse is absent is open.
-    std::vector<EdgeKey> directed;
-    directed.reserve(3 * triangles.size());
-    for (const FaceTriangle& t : triangles)
-      for (int k = 0; k < 3; ++k) directed.push_back({t.v[k], t.v[(k + 1) % 3]});
-    std::sort(directed.begin(), directed.end());
-    directed.erase(std::unique(directed.begin(), directed.end()), directed.end());
-    for (const auto& [a, b] : directed)
-      if (!std::binary_search(directed.begin(), directed.end(), EdgeKey(b, a)))
-        gapEdges.push_back({b, a});
+    trim_detail::appendReversedOpenEdges(triangles, builder.vertices.size(), gapEdges);
     const std::optional<glm::dvec2> affineMetric =
         options.affineShortcut ? trim_detail::affineGapMetric(face, lo, hi, options.tolerance)
                                : std::nullopt;
