@@ -25,7 +25,7 @@
 
 #include "cad/face_surface.h"
 #include "cad/detail/number_text.h"
-#include "common/parallel_for.h"
+#include "common/phased_parallel.h"
 #include "tessera/errors.h"
 
 namespace tessera {
@@ -432,33 +432,42 @@ bool mapWalkedFaces(const std::vector<FaceWalk>& walks, CadImport& in) {
   return true;
 }
 
-// Runs item(i) for i in [0, count) on `threads` threads, a few items per turn (their costs
-// differ). Throws what the lowest item that threw threw, as a loop in order would have.
-void forEachItem(size_t count, unsigned threads, const std::function<void(size_t)>& item) {
-  std::vector<std::exception_ptr> errors(count);
-  parallelForChunks(count, 4, threads, [&](size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i) {
-      try {
-        item(i);
-      } catch (...) {
-        errors[i] = std::current_exception();
-      }
-    }
-  });
-  for (const std::exception_ptr& error : errors)
-    if (error) std::rethrow_exception(error);
-}
-
-// Maps the shape's faces, edges and vertices as mapSubShapes does, the faces' part of the walk
-// on `threads` threads where the shape is faces under compounds, solids and shells.
-void mapShape(const TopoDS_Shape& shape, unsigned threads, CadImport& in) {
-  if (mapFaces(shape, in)) {
-    std::vector<FaceWalk> walks(size_t(in.faces.Extent()));
-    forEachItem(walks.size(), threads, [&](size_t f) { walks[f] = walkFace(in.faces(int(f) + 1)); });
-    if (mapWalkedFaces(walks, in)) return;
-  }
+// Maps the shape's faces, edges and vertices as mapSubShapes does, from the faces' walks where
+// the shape is faces under compounds, solids and shells (`walked`: mapFaces said so, and the
+// faces were walked).
+void mapShape(const TopoDS_Shape& shape, bool walked, const std::vector<FaceWalk>& walks,
+              CadImport& in) {
+  if (walked && mapWalkedFaces(walks, in)) return;
   for (TopTools_IndexedMapOfShape* map : {&in.faces, &in.edges, &in.vertices}) map->Clear(Standard_False);
   mapSubShapes(shape, in);
+}
+
+// The vertices' points, the shared points' first ones (vertex k of the map is point k − 1).
+SharedPoints vertexPoints(const CadImport& in) {
+  SharedPoints points;
+  for (int k = 1; k <= in.vertices.Extent(); ++k) {
+    const TopoDS_Vertex& v = TopoDS::Vertex(in.vertices(k));
+    const gp_Pnt p = BRep_Tool::Pnt(v);
+    points.positions.push_back({p.X(), p.Y(), p.Z()});
+    points.tolerances.push_back(BRep_Tool::Tolerance(v));
+  }
+  return points;
+}
+
+// The faces' outcomes into the import, in face order.
+void addOutcomes(std::vector<FaceOutcome>& outcomes, CadImport& in) {
+  in.model.faces.reserve(outcomes.size());
+  in.uvBounds.reserve(outcomes.size());
+  for (FaceOutcome& outcome : outcomes) {
+    if (!outcome.converted) {
+      in.failures.push_back(std::move(outcome.failure));
+      continue;
+    }
+    in.model.faces.push_back(std::move(outcome.face));
+    in.uvBounds.push_back(outcome.bounds);
+    in.warnings.insert(in.warnings.end(), outcome.warnings.begin(), outcome.warnings.end());
+    in.loopsReversed += outcome.loopsReversed;
+  }
 }
 
 }  // namespace
@@ -480,44 +489,46 @@ CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads) {
   // (malloc was a fifth of the walk; the maps take their shapes on one thread, mapShape).
   const Handle(NCollection_BaseAllocator) nodes = new NCollection_IncAllocator;
   for (TopTools_IndexedMapOfShape* map : {&in.faces, &in.edges, &in.vertices}) map->Clear(nodes);
-  mapShape(file.shape, threads, in);
+  const bool walkable = mapFaces(file.shape, in);
 
+  // Three loops on all threads, each followed by a step in order on one thread, in one fan-out
+  // (runPhases: the worker is woken once a model, not three times; a phase's item throwing
+  // ends the import as a loop in order would). Each item reads the shape and what the steps
+  // before wrote, and writes its own slot: the import is the same whatever the threads.
+  std::vector<FaceWalk> walks;
   SharedPoints points;
-  for (int k = 1; k <= in.vertices.Extent(); ++k) {
-    const TopoDS_Vertex& v = TopoDS::Vertex(in.vertices(k));
-    const gp_Pnt p = BRep_Tool::Pnt(v);
-    points.positions.push_back({p.X(), p.Y(), p.Z()});
-    points.tolerances.push_back(BRep_Tool::Tolerance(v));
-  }
-  // Edges on all threads (each reads its own edge), their interior points numbered in edge order.
-  in.edgeSamples.resize(size_t(in.edges.Extent()));
-  forEachItem(in.edgeSamples.size(), threads, [&](size_t e) {
-    in.edgeSamples[e] = discretiseEdge(in.edges(int(e) + 1), delta, in.vertices);
-  });
-  for (EdgeSamples& samples : in.edgeSamples) {
-    shareInteriorSamples(samples, points);
-    in.maxChordDeviation = std::max(in.maxChordDeviation, samples.maxChordDeviation);
-  }
-  in.model.sharedPoints = std::move(points.positions);
-  in.pointTolerances = std::move(points.tolerances);
-
-  // Faces on all threads: each reads the shape and the edges' samples, writes its own outcome
-  // (OCCT's calls here only read: docs/cad.md, "Threads"); then added in face order.
-  std::vector<FaceOutcome> outcomes(size_t(in.faces.Extent()));
-  forEachItem(outcomes.size(), threads,
-              [&](size_t f) { outcomes[f] = faceOutcome(file, in, int(f) + 1); });
-  in.model.faces.reserve(outcomes.size());
-  in.uvBounds.reserve(outcomes.size());
-  for (FaceOutcome& outcome : outcomes) {
-    if (!outcome.converted) {
-      in.failures.push_back(std::move(outcome.failure));
-      continue;
-    }
-    in.model.faces.push_back(std::move(outcome.face));
-    in.uvBounds.push_back(outcome.bounds);
-    in.warnings.insert(in.warnings.end(), outcome.warnings.begin(), outcome.warnings.end());
-    in.loopsReversed += outcome.loopsReversed;
-  }
+  std::vector<FaceOutcome> outcomes;
+  const std::vector<ParallelPhase> phases = {
+      // The faces' part of the shape's walk; then the maps, in the walk's order.
+      {[&] {
+         walks.resize(walkable ? size_t(in.faces.Extent()) : 0);
+         return walks.size();
+       },
+       4, [&](size_t f) { walks[f] = walkFace(in.faces(int(f) + 1)); },
+       [&] {
+         mapShape(file.shape, walkable, walks, in);
+         points = vertexPoints(in);
+         in.edgeSamples.resize(size_t(in.edges.Extent()));
+       }},
+      // Each edge reads its own edge; then their interior points numbered in edge order.
+      {[&] { return in.edgeSamples.size(); }, 4,
+       [&](size_t e) { in.edgeSamples[e] = discretiseEdge(in.edges(int(e) + 1), delta, in.vertices); },
+       [&] {
+         for (EdgeSamples& samples : in.edgeSamples) {
+           shareInteriorSamples(samples, points);
+           in.maxChordDeviation = std::max(in.maxChordDeviation, samples.maxChordDeviation);
+         }
+         in.model.sharedPoints = std::move(points.positions);
+         in.pointTolerances = std::move(points.tolerances);
+         outcomes.resize(size_t(in.faces.Extent()));
+       }},
+      // Each face reads the shape and the edges' samples, writes its own outcome (OCCT's calls
+      // here only read: docs/cad.md, "Threads"); then added in face order.
+      {[&] { return outcomes.size(); }, 4,
+       [&](size_t f) { outcomes[f] = faceOutcome(file, in, int(f) + 1); },
+       [&] { addOutcomes(outcomes, in); }},
+  };
+  runPhases(phases, threads);
   return in;
 }
 
