@@ -1,6 +1,7 @@
 // IsoLineD1 (host/cad/): OCCT's own evaluation with the knot span kept between calls must give
 // OCCT's bits, at knots, between them, a hair off them and outside the domain; and Bohm's two
-// steps (cad/detail/bohm_steps.h) BSplCLib::Bohm's.
+// steps (cad/detail/bohm_steps.h) BSplCLib::Bohm's; a plane's kept transform
+// (cad/detail/plane_parameters.h) ElSLib::Parameters'.
 #ifdef TESSERA_HAVE_CAD
 #include <catch2/catch.hpp>
 #include <Geom_BSplineSurface.hxx>
@@ -15,8 +16,12 @@
 #include <vector>
 
 #include <BSplCLib.hxx>
+#include <ElSLib.hxx>
+#include <gp_Ax3.hxx>
+#include <random>
 
 #include "cad/detail/bohm_steps.h"
+#include "cad/detail/plane_parameters.h"
 #include "cad/iso_line_d1.h"
 
 namespace {
@@ -110,6 +115,34 @@ TEST_CASE("cad: Bohm's two steps give BSplCLib::Bohm's bits", "[cad]") {
         }
   CHECK(compared > 20000);
   CHECK(differing == 0);
+}
+
+TEST_CASE("cad: a plane's kept transform gives ElSLib::Parameters' bits", "[cad]") {
+  std::mt19937 random(41);
+  std::uniform_real_distribution<double> coordinate(-50.0, 50.0), unit(-1.0, 1.0);
+  size_t compared = 0;
+  for (int planeIndex = 0; planeIndex < 40; ++planeIndex) {
+    // Axis-aligned planes (most of a file's), then tilted ones, each with its own origin.
+    const gp_Pnt origin(coordinate(random), coordinate(random), coordinate(random));
+    gp_Dir normal(0, 0, 1), xDirection(1, 0, 0);
+    if (planeIndex % 4 == 1) normal = gp_Dir(0, -1, 0), xDirection = gp_Dir(0, 0, 1);
+    if (planeIndex >= 8) {
+      normal = gp_Dir(unit(random), unit(random), 1.0 + unit(random));
+      xDirection = gp_Dir(gp_Vec(normal) ^ gp_Vec(unit(random), 1.0, unit(random)));
+    }
+    const gp_Pln plane(gp_Ax3(origin, normal, xDirection));
+    const tessera::cad_detail::PlaneParameters kept(plane);
+    for (int k = 0; k < 50; ++k) {
+      const gp_Pnt point(coordinate(random), coordinate(random), coordinate(random));
+      double u = 0, v = 0;
+      ElSLib::Parameters(plane, point, u, v);
+      const gp_Pnt2d uv = kept(point);
+      REQUIRE(sameBits(uv.X(), u));
+      REQUIRE(sameBits(uv.Y(), v));
+      ++compared;
+    }
+  }
+  CHECK(compared == 2000);
 }
 
 #endif  // TESSERA_HAVE_CAD

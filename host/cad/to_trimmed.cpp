@@ -8,7 +8,6 @@
 #include <BRep_TEdge.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
-#include <ElSLib.hxx>
 #include <Geom2d_Curve.hxx>
 #include <Geom_Plane.hxx>
 #include <NCollection_IncAllocator.hxx>
@@ -25,6 +24,7 @@
 
 #include "cad/face_surface.h"
 #include "cad/detail/number_text.h"
+#include "cad/detail/plane_parameters.h"
 #include "common/phased_parallel.h"
 #include "tessera/errors.h"
 
@@ -176,7 +176,7 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
                  const std::string& path, const CadImport& in, FaceOutcome& outcome) {
   RawLoop loop;
   const Geom_Plane* plane = dynamic_cast<const Geom_Plane*>(basis.get());
-  const gp_Pln pln = plane ? plane->Pln() : gp_Pln();
+  const cad_detail::PlaneParameters planeParameters(plane ? plane->Pln() : gp_Pln());
   TopLoc_Location faceLocation;  // the face's surface as stored, for storedPcurve
   const Handle(Geom_Surface)& faceSurface = BRep_Tool::Surface(face, faceLocation);
   SurfaceLocation surfaceLocation(faceLocation);
@@ -212,9 +212,7 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
       gp_Pnt2d uv;
       if (projected) {
         const glm::dvec3& c = samples.curvePoints[s];
-        double u, v;
-        ElSLib::Parameters(pln, gp_Pnt(c.x, c.y, c.z), u, v);
-        uv.SetCoord(u, v);
+        uv = planeParameters(gp_Pnt(c.x, c.y, c.z));  // ElSLib::Parameters(plane, point)
       } else {
         // Same range is the rule for pcurves (BRep_Tool::SameRange); map linearly if not.
         const double t = l > f ? pf + (samples.params[s] - f) * (pl - pf) / (l - f) : pf;
