@@ -443,6 +443,8 @@ void mapShape(const TopoDS_Shape& shape, bool walked, const std::vector<FaceWalk
 // The vertices' points, the shared points' first ones (vertex k of the map is point k − 1).
 SharedPoints vertexPoints(const CadImport& in) {
   SharedPoints points;
+  points.positions.reserve(size_t(in.vertices.Extent()));
+  points.tolerances.reserve(size_t(in.vertices.Extent()));
   for (int k = 1; k <= in.vertices.Extent(); ++k) {
     const TopoDS_Vertex& v = TopoDS::Vertex(in.vertices(k));
     const gp_Pnt p = BRep_Tool::Pnt(v);
