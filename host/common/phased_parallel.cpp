@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -10,6 +12,11 @@
 
 namespace tessera {
 namespace {
+
+// How long a thread with nothing to take yields before it sleeps: about a sleeper's wake-up
+// under load (120-370 µs), so the serial steps and short tails cost no wake-up, while a long
+// last item (a big face) does not hold yielding cores from the caller's other threads.
+constexpr std::chrono::microseconds kYieldBeforeSleeping{250};
 
 // The shared hand-out of one runPhases call. The state is under `mutex_`; `epoch_` changes
 // (under it) whenever a phase opens or the run ends, so a waiting thread can watch it unlocked.
@@ -40,8 +47,12 @@ class PhaseRunner {
       // Every item is taken and another thread is finishing one or running the `then`.
       const size_t seen = epoch_.load(std::memory_order_relaxed);
       lock.unlock();
-      while (epoch_.load(std::memory_order_acquire) == seen) std::this_thread::yield();
+      const auto sleepAt = std::chrono::steady_clock::now() + kYieldBeforeSleeping;
+      while (epoch_.load(std::memory_order_acquire) == seen &&
+             std::chrono::steady_clock::now() < sleepAt)
+        std::this_thread::yield();
       lock.lock();
+      epochChanged_.wait(lock, [&] { return epoch_.load(std::memory_order_relaxed) != seen; });
     }
   }
 
@@ -61,7 +72,10 @@ class PhaseRunner {
         phase.item(i);
       } catch (...) {
         const std::lock_guard<std::mutex> lock(mutex_);
-        if (!phaseError_ || i < phaseErrorItem_) phaseError_ = std::current_exception(), phaseErrorItem_ = i;
+        if (!phaseError_ || i < phaseErrorItem_) {
+          phaseError_ = std::current_exception();
+          phaseErrorItem_ = i;
+        }
       }
     }
   }
@@ -104,6 +118,7 @@ class PhaseRunner {
         next_ = finished_ = 0;
         phaseError_ = nullptr;
         epoch_.fetch_add(1, std::memory_order_release);
+        epochChanged_.notify_all();
         return;
       }
     }
@@ -114,11 +129,13 @@ class PhaseRunner {
     error_ = failure;
     phase_ = phases_.size();
     epoch_.fetch_add(1, std::memory_order_release);
+    epochChanged_.notify_all();
   }
 
   const std::vector<ParallelPhase>& phases_;
   std::mutex mutex_;
   std::atomic<size_t> epoch_{0};
+  std::condition_variable epochChanged_;  // for threads that yielded kYieldBeforeSleeping
   size_t phase_ = 0, count_ = 0, chunk_ = 1, next_ = 0, finished_ = 0;
   std::exception_ptr phaseError_, error_;
   size_t phaseErrorItem_ = 0;

@@ -25,8 +25,8 @@ struct ParallelPhase {
 // thread, in chunks taken in turn; no item of a phase starts before the phase before has ended
 // (every item finished, its `then` returned). Where items threw, the lowest item's exception is
 // rethrown and no later step runs, as in a loop in order; so is an exception of a `then`.
-// A thread with nothing to take waits for a phase to end by yielding, not by sleeping (a
-// sleeper's wake-up is what this saves); it only ever waits for work another thread is doing,
+// A thread with nothing to take waits for a phase to end by yielding for ~250 µs (a sleeper's
+// wake-up is what this saves), then sleeping; it only ever waits for work another thread is doing,
 // so the phases also run to the end on the calling thread alone when no worker is free.
 void runPhases(const std::vector<ParallelPhase>& phases, unsigned threads);
 
