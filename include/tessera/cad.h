@@ -47,7 +47,8 @@ struct CadMesh {
 // cuts along the trim curves run on the CPU's cores). Throws InputError naming the file (and
 // the faces) for an unreadable file, an unknown extension or faces that fail to convert
 // (unless skipBadFaces), ArgumentError for a bad tolerance, DeviceError as
-// Tessellator::tessellate.
+// Tessellator::tessellate. On Vulkan the tessellator keeps the trim pass's pipeline and buffers
+// from its first call for the next ones (the buffers at the largest model's size).
 CadMesh tessellateCadFile(Tessellator& tessellator, const std::string& path,
                           const CadOptions& options = {});
 
