@@ -165,15 +165,17 @@ class LeafWalker {
 
   // The vertex at (u, v) of `patch`, welded with every other patch's vertex at that point and
   // with the near points merged into it. `inner`: (u, v) is strictly inside the patch.
+  // `mayMerge`: it may have been merged into a near point (false for a leaf corner on a line
+  // none of whose points was: NearPointMerges::movedOn).
   // vertexAt and edgeInterior are inlined into triangulateLeaf (four calls each a leaf): their
   // calls' entries and exits were ~12% of the walk's instructions.
   [[gnu::always_inline]] RingVertex vertexAt(LeafWork& work, uint32_t patch, float u, float v,
-                                             uint32_t cover, bool inner) {
+                                             uint32_t cover, bool inner, bool mayMerge) {
     int side;
     float t;
     if (!inner && onSide(u, v, side, t) && seams_.foldOf(patch, side) >= 0) work.touchesFold = true;
     const VertexKey base = inner ? innerKey(patch, u, v) : seams_.baseKey(patch, u, v);
-    const VertexKey key = merges_.resolve(base, work.touchesMerge);
+    const VertexKey key = mayMerge ? merges_.resolve(base, work.touchesMerge) : base;
     return query(work, key, patch, glm::vec2(u, v), key == base ? cover : kElsewhere);
   }
 
@@ -224,11 +226,9 @@ class LeafWalker {
     }
     const LineIndex& lines = alongU ? lines_.alongU : lines_.alongV;
     const PointRange<const LinePoint> points = lines.points(line);
-    const auto& movedOn = alongU ? merges_.movedAlongU : merges_.movedAlongV;
     const float lo = std::min(t0, t1), hi = std::max(t0, t1);  // the edge, before moving
-    if (!movedOn.empty())
-      if (auto moved = movedOn.find(lineKey(patch, fixed)); moved != movedOn.end())
-        t0 = movedTo(moved->second, t0), t1 = movedTo(moved->second, t1);
+    if (const MovedCorners* moved = merges_.movedOn(alongU, line))
+      t0 = movedTo(*moved, t0), t1 = movedTo(*moved, t1);
     // The points strictly between the (moved) ends, in ring order. A listed point is a vertex
     // of its own: no merge to look up.
     const LinePoint* first = work.lineHints.upperBound(edge, points, std::min(t0, t1));
@@ -357,13 +357,16 @@ class LeafWalker {
     // left (u0, v falling); each edge contributes its start corner and interior vertices.
     // Most leaves touch no side of their patch: no side, fold or patch corner to look for.
     const bool inner = r.x > 0.0f && r.z < 1.0f && r.y > 0.0f && r.w < 1.0f;
-    ring.push_back(vertexAt(work, p, r.x, r.y, kCorner, inner));
+    // A corner is a point of its line along u: merged only if a point of that line was.
+    const bool bottomMerged = merges_.movedOn(true, linesU[0]) != nullptr;
+    const bool topMerged = merges_.movedOn(true, linesU[1]) != nullptr;
+    ring.push_back(vertexAt(work, p, r.x, r.y, kCorner, inner, bottomMerged));
     edgeInterior(work, p, kBottom, r.y, linesU[0], r.x, r.z, inner);
-    ring.push_back(vertexAt(work, p, r.z, r.y, kCorner, inner));
+    ring.push_back(vertexAt(work, p, r.z, r.y, kCorner, inner, bottomMerged));
     edgeInterior(work, p, kRight, r.z, linesV[1], r.y, r.w, inner);
-    ring.push_back(vertexAt(work, p, r.z, r.w, kCorner, inner));
+    ring.push_back(vertexAt(work, p, r.z, r.w, kCorner, inner, topMerged));
     edgeInterior(work, p, kTop, r.w, linesU[1], r.z, r.x, inner);
-    ring.push_back(vertexAt(work, p, r.x, r.w, kCorner, inner));
+    ring.push_back(vertexAt(work, p, r.x, r.w, kCorner, inner, topMerged));
     edgeInterior(work, p, kLeft, r.x, linesV[0], r.w, r.y, inner);
 
     const bool folded = work.touchesFold && dropFoldedBack(ring);
@@ -388,7 +391,7 @@ class LeafWalker {
       us = 0.5f * (r.x + r.z);
       vs = 0.5f * (r.y + r.w);
     }
-    const RingVertex center = vertexAt(work, p, us, vs, kInside, false);
+    const RingVertex center = vertexAt(work, p, us, vs, kInside, false, true);
     for (size_t k = 0; k < ring.size(); ++k)
       emit(work, p, center, ring[k], ring[(k + 1) % ring.size()]);
   }

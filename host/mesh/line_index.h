@@ -47,6 +47,12 @@ class LineIndex {
     return number->second;
   }
 
+  // The line's number, or UINT32_MAX when it has none.
+  uint32_t find(uint64_t key) const {
+    const auto it = numbers_.find(key);
+    return it != numbers_.end() ? it->second : UINT32_MAX;
+  }
+
   // Room for pointCounts[line] points on each line, all empty; lines numbered later have none.
   void allocatePoints(const std::vector<uint32_t>& pointCounts) {
     offsets_.assign(keys_.size() + 1, 0);

@@ -86,7 +86,8 @@ void collectSidePoints(const std::vector<QuadLeaf>& leaves, SeamVertices& seams,
 }  // namespace
 
 LinePoints collectLinePoints(const std::vector<QuadLeaf>& leaves, SeamVertices& seams,
-                             unsigned threads) {
+                             unsigned threads,
+                             const std::function<void(LinePoints&, bool alongU)>& filled) {
   const PatchTopology& topology = seams.topology();
   // A line has ~5 (coarse trees) to ~18 (fine ones) leaves along it: a table sized by the
   // leaves would be mostly empty, megabytes faulted in at every call; it grows when needed.
@@ -104,6 +105,7 @@ LinePoints collectLinePoints(const std::vector<QuadLeaf>& leaves, SeamVertices& 
       leafLines = numberLeafLines(leaves, alongU, index);
       fillLines(leaves, alongU, leafLines, index);
       if (alongU) collectSidePoints(leaves, seams, lines);
+      if (filled) filled(lines, alongU);
     }
   });
   return lines;

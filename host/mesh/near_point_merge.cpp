@@ -1,25 +1,67 @@
-// mergeNearPoints (detail/near_point_merge.h): finds the near pairs of every line, merges
-// them in an order that keeps meshes' bytes (LineIndex::unorderedMapOrder), and prunes the
-// lines to the points that stay, noting where merged corners went.
+// findLinePairs and mergeNearPoints (detail/near_point_merge.h): finds the near pairs of every
+// line, merges them in an order that keeps meshes' bytes (LineIndex::unorderedMapOrder), and
+// prunes the lines to the points that stay, noting where merged corners went.
 #include "mesh/detail/near_point_merge.h"
 
 #include <algorithm>
 
-#include "common/parallel_for.h"
 #include "geometry/bezier.h"
 #include "mesh/near_points.h"
 
 namespace tessera::triangulate_detail {
 namespace {
 
+// Whether the line v = fixed (alongU) or u = fixed of `patch` is one of its sides that is
+// shared, collapsed or folded: their points are merged (or placed) by the side's own rules.
+bool lineIsSide(const SeamVertices& seams, uint32_t patch, bool alongU, float fixed) {
+  if (fixed != 0.0f && fixed != 1.0f) return false;
+  const int side = alongU ? (fixed == 0.0f ? kSideV0 : kSideV1) : (fixed == 0.0f ? kSideU0 : kSideU1);
+  const SideInfo& s = seams.topology().sides[patch][side];
+  return s.group >= 0 || s.collapsed || seams.foldOf(patch, side) >= 0;
+}
+
+glm::dvec3 pointOf(const SeamVertices& seams, uint32_t patch, glm::vec2 uv) {
+  return patchPoint(seams.patches()[patch], uv.x, uv.y);
+}
+
+// Whether fp32 positions tell two points of a patch apart (near_points.h): farther apart
+// on the model, in double, than kDistinctUlps units in the last place of their coordinates.
+bool distinctOnModel(const glm::dvec3& pa, const glm::dvec3& pb) {
+  const glm::dvec3 m = glm::max(glm::abs(pa), glm::abs(pb));
+  return glm::length(pa - pb) > kDistinctUlps * 0x1p-23 * std::max({m.x, m.y, m.z});
+}
+
+// nearPairs asks about adjacent pairs in turn, so a pair's first point is mostly the last
+// pair's second: kept, each point is evaluated once, not twice (the same t bits, the same
+// point).
+class LastPoint {
+ public:
+  template <class Evaluate>
+  glm::dvec3 at(float t, const Evaluate& evaluate) {
+    if (!held_ || bits(t) != tBits_) {
+      point_ = evaluate();
+      tBits_ = bits(t);
+      held_ = true;
+    }
+    return point_;
+  }
+
+ private:
+  bool held_ = false;
+  uint32_t tBits_ = 0;
+  glm::dvec3 point_{0.0};
+};
+
 class NearPointMerger {
  public:
-  NearPointMerger(LinePoints& lines, SeamVertices& seams, size_t leafCount, unsigned threads)
+  NearPointMerger(LinePoints& lines, SeamVertices& seams, const LinePairs& pairsU,
+                  const LinePairs& pairsV, size_t leafCount)
       : lines_(lines),
         seams_(seams),
         topology_(seams.topology()),
-        leafCount_(leafCount),
-        threads_(threads) {}
+        pairsU_(pairsU),
+        pairsV_(pairsV),
+        leafCount_(leafCount) {}
 
   NearPointMerges run() {
     mergeNearPoints();
@@ -28,35 +70,13 @@ class NearPointMerger {
   }
 
  private:
-  // Near-coincident points from the two sides of each line become one vertex (out_.merged).
-  // Sorts every line's points.
+  // Near-coincident points from the two sides of each line become one vertex (out_.merged):
+  // the lines' pairs (findLinePairs) merged in the walk order (LineIndex), then the shared
+  // sides'.
   void mergeNearPoints() {
     for (LineIndex* line : {&lines_.alongU, &lines_.alongV}) {
       const bool alongU = line == &lines_.alongU;
-      // The pairs of every line first, then their merges in the walk order (LineIndex).
-      // Lines apart are independent: found on all the scope's threads.
-      std::vector<std::vector<std::pair<float, float>>> pairs(line->size());
-      parallelForChunks(line->size(), 256, threads_, [&](size_t begin, size_t end) {
-        for (size_t l = begin; l < end; ++l) {
-          const uint32_t patch = uint32_t(line->key(l) >> 32);
-          const float fixed = fromBits(uint32_t(line->key(l)));
-          const auto uvOf = [&](float t) { return alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t); };
-          // A side's points are merged by the side's own rules: its pairs are dropped, so
-          // nothing on it needs evaluating (its points are still sorted and folded).
-          const bool side = lineIsSide(patch, alongU, fixed);
-          LastPoint last;
-          const auto distinct = [&](float a, float b) {
-            if (side) return true;
-            const auto at = [&](float t) { return last.at(t, [&] { return pointOf(patch, uvOf(t)); }); };
-            const glm::dvec3 pa = at(a);
-            return distinctOnModel(pa, at(b));
-          };
-          size_t count = line->points(l).size();
-          pairs[l] = nearPairs(line->points(l).begin(), count, distinct);
-          line->shrink(l, count);
-          if (side) pairs[l].clear();
-        }
-      });
+      const LinePairs& pairs = alongU ? pairsU_ : pairsV_;
       const bool any = std::any_of(pairs.begin(), pairs.end(), [](const auto& p) { return !p.empty(); });
       if (!any) continue;
       for (uint32_t l : line->unorderedMapOrder(kLineIndexReserve * leafCount_)) {
@@ -79,7 +99,7 @@ class NearPointMerger {
       };
       LastPoint last;
       const auto distinct = [&, patch = patch](float a, float b) {
-        const auto at = [&](float c) { return last.at(c, [&] { return pointOf(patch, uvOf(c)); }); };
+        const auto at = [&](float c) { return last.at(c, [&] { return pointOf(seams_, patch, uvOf(c)); }); };
         const glm::dvec3 pa = at(a);
         return distinctOnModel(pa, at(b));
       };
@@ -97,19 +117,42 @@ class NearPointMerger {
   // ends at a merged point ends where that point's vertex is on the line (MovedCorners).
   void listRepresentatives() {
     if (out_.merged.empty()) return;
+    // Which points can be merged ones, so that only they are looked up: a point (u, v) of a
+    // patch is keyed by (patch, u, v) unless u or v is 0 or 1 (seam_vertices.h), so a merged
+    // (patch, u, v) key is on the lines v and u of its patch alone, and any other merged key
+    // is on a side's line or at a line's end. A point that is no merged key stays.
+    std::vector<uint8_t> listsMergedU(lines_.alongU.size()), listsMergedV(lines_.alongV.size());
+    bool boundaryMerged = false;
+    for (const auto& [key, target] : out_.merged) {
+      if (key.kind != kPatchParam) {
+        boundaryMerged = true;
+        continue;
+      }
+      const float u = fromBits(uint32_t(key.b >> 32)), v = fromBits(uint32_t(key.b));
+      if (const uint32_t l = lines_.alongU.find(lineKey(key.a, v)); l != UINT32_MAX) listsMergedU[l] = 1;
+      if (const uint32_t l = lines_.alongV.find(lineKey(key.a, u)); l != UINT32_MAX) listsMergedV[l] = 1;
+    }
     for (LineIndex* line : {&lines_.alongU, &lines_.alongV}) {
       const bool alongU = line == &lines_.alongU;
-      auto& movedOn = alongU ? out_.movedAlongU : out_.movedAlongV;
+      const std::vector<uint8_t>& listsMerged = alongU ? listsMergedU : listsMergedV;
+      std::vector<uint32_t>& movedOf = alongU ? out_.movedOfU : out_.movedOfV;
+      movedOf.assign(line->size(), 0);
       // In the lines' own order: merging is done, so the position ids handed out here
       // (patch corners no merge met) only tell positions apart, and each line's moved
       // corners are its own.
       for (uint32_t l = 0; l < line->size(); ++l) {
+        if (!listsMerged[l] && !boundaryMerged) continue;
         const uint64_t key = line->key(l);
         const LinePointRange points = line->points(l);
         const uint32_t patch = uint32_t(key >> 32);
         const float fixed = fromBits(uint32_t(key));
+        const bool sideLine = fixed == 0.0f || fixed == 1.0f;
         size_t kept = 0;
         for (const LinePoint& point : points) {
+          if (!listsMerged[l] && !sideLine && point.t != 0.0f && point.t != 1.0f) {
+            points[kept++] = point;
+            continue;
+          }
           const VertexKey own = lineKeyOf(patch, alongU, fixed, point.t);
           const VertexKey r = out_.find(own);
           if (r == own) {
@@ -123,7 +166,11 @@ class NearPointMerger {
             if (alongU && v == fixed) t = u;
             if (!alongU && u == fixed) t = v;
           }
-          movedOn[key].emplace_back(point.t, t);
+          if (movedOf[l] == 0) {
+            out_.moved.emplace_back();
+            movedOf[l] = uint32_t(out_.moved.size());
+          }
+          out_.moved[movedOf[l] - 1].emplace_back(point.t, t);
         }
         line->shrink(l, kept);
       }
@@ -149,15 +196,6 @@ class NearPointMerger {
     }
   }
 
-  // Whether the line v = fixed (alongU) or u = fixed of `patch` is one of its sides that is
-  // shared, collapsed or folded: their points are merged (or placed) by the side's own rules.
-  bool lineIsSide(uint32_t patch, bool alongU, float fixed) const {
-    if (fixed != 0.0f && fixed != 1.0f) return false;
-    const int side = alongU ? (fixed == 0.0f ? kSideV0 : kSideV1) : (fixed == 0.0f ? kSideU0 : kSideU1);
-    const SideInfo& s = topology_.sides[patch][side];
-    return s.group >= 0 || s.collapsed || seams_.foldOf(patch, side) >= 0;
-  }
-
   // The vertex key of canonical parameter c on shared group g: its ends are patch corners.
   // (Only there is c turned back into a patch parameter: 1 − c is exact at 0 and 1 alone.)
   VertexKey groupKey(uint32_t g, float c) {
@@ -169,38 +207,6 @@ class NearPointMerger {
     const float fixed = side == kSideV0 || side == kSideU0 ? 0.0f : 1.0f;
     return alongU ? seams_.baseKey(patch, t, fixed) : seams_.baseKey(patch, fixed, t);
   }
-
-  // Whether fp32 positions tell two points of a patch apart (near_points.h): farther apart
-  // on the model, in double, than kDistinctUlps units in the last place of their coordinates.
-  static bool distinctOnModel(const glm::dvec3& pa, const glm::dvec3& pb) {
-    const glm::dvec3 m = glm::max(glm::abs(pa), glm::abs(pb));
-    return glm::length(pa - pb) > kDistinctUlps * 0x1p-23 * std::max({m.x, m.y, m.z});
-  }
-
-  glm::dvec3 pointOf(uint32_t patch, glm::vec2 uv) const {
-    return patchPoint(seams_.patches()[patch], uv.x, uv.y);
-  }
-
-  // nearPairs asks about adjacent pairs in turn, so a pair's first point is mostly the last
-  // pair's second: kept, each point is evaluated once, not twice (the same t bits, the same
-  // point).
-  class LastPoint {
-   public:
-    template <class Evaluate>
-    glm::dvec3 at(float t, const Evaluate& evaluate) {
-      if (!held_ || bits(t) != tBits_) {
-        point_ = evaluate();
-        tBits_ = bits(t);
-        held_ = true;
-      }
-      return point_;
-    }
-
-   private:
-    bool held_ = false;
-    uint32_t tBits_ = 0;
-    glm::dvec3 point_{0.0};
-  };
 
   VertexKey lineKeyOf(uint32_t patch, bool alongU, float fixed, float t) {
     return alongU ? seams_.baseKey(patch, t, fixed) : seams_.baseKey(patch, fixed, t);
@@ -226,16 +232,41 @@ class NearPointMerger {
   LinePoints& lines_;
   SeamVertices& seams_;
   const PatchTopology& topology_;
+  const LinePairs& pairsU_;
+  const LinePairs& pairsV_;
   const size_t leafCount_;
-  const unsigned threads_;
   NearPointMerges out_;
 };
 
 }  // namespace
 
-NearPointMerges mergeNearPoints(LinePoints& lines, SeamVertices& seams, size_t leafCount,
-                                unsigned threads) {
-  return NearPointMerger(lines, seams, leafCount, threads).run();
+LinePairs findLinePairs(LineIndex& lines, const SeamVertices& seams, bool alongU) {
+  LinePairs pairs(lines.size());
+  for (size_t l = 0; l < lines.size(); ++l) {
+    const uint32_t patch = uint32_t(lines.key(l) >> 32);
+    const float fixed = fromBits(uint32_t(lines.key(l)));
+    const auto uvOf = [&](float t) { return alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t); };
+    // A side's points are merged by the side's own rules: its pairs are dropped, so nothing
+    // on it needs evaluating (its points are still sorted and folded).
+    const bool side = lineIsSide(seams, patch, alongU, fixed);
+    LastPoint last;
+    const auto distinct = [&](float a, float b) {
+      if (side) return true;
+      const auto at = [&](float t) { return last.at(t, [&] { return pointOf(seams, patch, uvOf(t)); }); };
+      const glm::dvec3 pa = at(a);
+      return distinctOnModel(pa, at(b));
+    };
+    size_t count = lines.points(l).size();
+    pairs[l] = nearPairs(lines.points(l).begin(), count, distinct);
+    lines.shrink(l, count);
+    if (side) pairs[l].clear();
+  }
+  return pairs;
+}
+
+NearPointMerges mergeNearPoints(LinePoints& lines, SeamVertices& seams, const LinePairs& pairsU,
+                                const LinePairs& pairsV, size_t leafCount) {
+  return NearPointMerger(lines, seams, pairsU, pairsV, leafCount).run();
 }
 
 }  // namespace tessera::triangulate_detail

@@ -19,6 +19,7 @@ using namespace triangulate_detail;
 
 namespace {
 constexpr size_t kKeptBorderKeys = size_t(1) << 15;  // 2¹⁷ slots at most: 3 MiB
+constexpr size_t kRunsForSecondThread = 24;  // the numbering's (below)
 }  // namespace
 
 ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
@@ -36,9 +37,17 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
 
   // The order counts: position ids are handed out as the folds and then the merges meet them.
   SeamVertices seams(leaves, patches, topology, scope.seamKeys);
-  LinePoints lines = collectLinePoints(leaves, seams, scope.threads);
+  // Each direction's near pairs are found on the thread that filled its lines: a worker's
+  // wake-up (~40 µs) costs about what a small tree's search takes.
+  LinePairs pairsU, pairsV;
+  LinePoints lines = collectLinePoints(leaves, seams, scope.threads, [&](LinePoints& filled, bool alongU) {
+    if (alongU)
+      pairsU = findLinePairs(filled.alongU, seams, true);
+    else
+      pairsV = findLinePairs(filled.alongV, seams, false);
+  });
   for (uint32_t f = 0; f < seams.foldCount(); ++f) seams.placeFoldPoints(f);
-  const NearPointMerges merges = mergeNearPoints(lines, seams, leaves.size(), scope.threads);
+  const NearPointMerges merges = mergeNearPoints(lines, seams, pairsU, pairsV, leaves.size());
   seams.registerPositions();
 
   // Leaves outside the scope are walked too, without triangles: their vertices are met in
@@ -103,7 +112,10 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
   mesh.cornerUv.resize(3 * triangles);
   mesh.trianglePatch.resize(triangles);
   std::vector<uint32_t> ids(runStart.back());  // per run vertex, its index
-  parallelForChunks(runs.size(), 1, scope.threads, [&](size_t begin, size_t end) {
+  // A run is numbered and written in ~5 µs, a worker woken in ~40: a second thread pays for
+  // itself only from a few dozen runs on (a small tree's 9 are done here at once).
+  const unsigned numberingThreads = runs.size() >= kRunsForSecondThread ? scope.threads : 1;
+  parallelForChunks(runs.size(), 1, numberingThreads, [&](size_t begin, size_t end) {
     for (size_t r = begin; r < end; ++r) {
       const LeafRun& run = runs[r];
       uint32_t id = uint32_t(vertexStart[r]);

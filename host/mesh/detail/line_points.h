@@ -5,6 +5,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -30,8 +31,11 @@ struct LinePoints {
 
 // Every leaf corner with the leaf edges that end there, on each line it is on; the corners on
 // a folded side go to its FoldedSide::corners. The two directions on up to 2 of `threads`
-// (0: all); the same lines whatever the count.
+// (0: all); the same lines whatever the count. `filled(lines, alongU)`, if given, runs on a
+// direction's thread once that direction's lines are filled (it may read and change those
+// lines only): work of one direction rides along without another hand-off to the threads.
 LinePoints collectLinePoints(const std::vector<QuadLeaf>& leaves, SeamVertices& seams,
-                             unsigned threads);
+                             unsigned threads,
+                             const std::function<void(LinePoints&, bool alongU)>& filled = {});
 
 }  // namespace tessera::triangulate_detail

@@ -17,11 +17,23 @@ namespace tessera::triangulate_detail {
 using MovedCorners = std::vector<std::pair<float, float>>;
 
 struct NearPointMerges {
-  // Key → the key of the vertex it is merged into. Flat tables (hash_map.h): the walk looks
-  // up every leaf corner here and every leaf edge in moved*; nothing depends on their order.
+  // Key → the key of the vertex it is merged into (a flat table, hash_map.h; nothing depends
+  // on its order).
   HashMap<VertexKey, VertexKey, VertexKeyHash> merged;
-  HashMap<uint64_t, MovedCorners> movedAlongU, movedAlongV;  // lines with merges
+  // Per line of LinePoints::alongU and alongV, by its number there: 1 + its place in `moved`
+  // when a point of it was merged into another, else 0; both empty when nothing merged. The
+  // walk finds a leaf edge's moved corners by its line's number, and knows that a leaf corner
+  // on a line without any needs no look-up in `merged`: every leaf corner is a point of its
+  // lines, and each line's merged points are listed (listRepresentatives).
+  std::vector<uint32_t> movedOfU, movedOfV;
+  std::vector<MovedCorners> moved;
   std::vector<MovedCorners> sharedMoved;  // per group (empty when nothing merged)
+
+  // The corners merged away on line `line` of alongU (or alongV), or null.
+  const MovedCorners* movedOn(bool alongU, uint32_t line) const {
+    const std::vector<uint32_t>& of = alongU ? movedOfU : movedOfV;
+    return line < of.size() && of[line] != 0 ? &moved[of[line] - 1] : nullptr;
+  }
 
   VertexKey find(VertexKey key) const {
     for (auto it = merged.find(key); it != merged.end() && !(it->second == key);
@@ -39,10 +51,19 @@ struct NearPointMerges {
   }
 };
 
-// Merges the near points of every line (on `threads` threads where lines are independent),
-// then keeps in `lines` only the points that stay vertices of their own. Hands out position
-// ids (seams.baseKey) in the order merging meets them.
-NearPointMerges mergeNearPoints(LinePoints& lines, SeamVertices& seams, size_t leafCount,
-                                unsigned threads);
+// Per line of one direction (by its number in LinePoints::alongU or alongV), its near pairs.
+using LinePairs = std::vector<std::vector<std::pair<float, float>>>;
+
+// Sorts and folds the points of every line of `lines` (LinePoints::alongU when alongU, else
+// alongV) and finds each line's near pairs (nearPairs); a shared, collapsed or folded side's
+// line gets none (merged by the side's own rules). Reads only these lines and the patches, so
+// the two directions may be searched at once (collectLinePoints' hook).
+LinePairs findLinePairs(LineIndex& lines, const SeamVertices& seams, bool alongU);
+
+// Merges the lines' near pairs (findLinePairs) and the shared sides' near points, then keeps
+// in `lines` only the points that stay vertices of their own. Hands out position ids
+// (seams.baseKey) in the order merging meets them.
+NearPointMerges mergeNearPoints(LinePoints& lines, SeamVertices& seams, const LinePairs& pairsU,
+                                const LinePairs& pairsV, size_t leafCount);
 
 }  // namespace tessera::triangulate_detail
