@@ -306,6 +306,27 @@ class LeafWalker {
            distinct(0, 3) && distinct(1, 2) && distinct(1, 3) && distinct(2, 3);
   }
 
+  // How many distinct vertices the ring holds. A ring has a handful: compared pairwise, where
+  // sorting a copy cost more than the comparisons.
+  static size_t distinctVertices(LeafWork& work) {
+    const std::vector<RingVertex>& ring = work.ring;
+    const size_t n = ring.size();
+    if (n > 16) {
+      std::vector<uint32_t>& sorted = work.ringVertices;
+      sorted.resize(n);
+      for (size_t k = 0; k < n; ++k) sorted[k] = ring[k].vertex;
+      std::sort(sorted.begin(), sorted.end());
+      return size_t(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
+    }
+    size_t distinct = 0;
+    for (size_t k = 0; k < n; ++k) {
+      size_t j = 0;
+      while (j < k && !(ring[j] == ring[k])) ++j;
+      distinct += j == k;
+    }
+    return distinct;
+  }
+
   // The ring as n − 2 triangles without a new vertex (ring_triangulation.h). Only where every
   // vertex is met once, or twice in a row (a collapsed side's two corners, whose triangle
   // collapses and is dropped as in the fan): otherwise the fan, whose triangles each hold one
@@ -328,17 +349,10 @@ class LeafWalker {
       }
     }
     work.ringUv.resize(n);
-    work.ringVertices.resize(n);
-    for (size_t k = 0; k < n; ++k) {
-      work.ringUv[k] = ring[k].uv;
-      work.ringVertices[k] = ring[k].vertex;
-    }
-    std::sort(work.ringVertices.begin(), work.ringVertices.end());
-    std::vector<uint32_t>& sorted = work.ringVertices;
-    const size_t distinct = size_t(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
+    for (size_t k = 0; k < n; ++k) work.ringUv[k] = ring[k].uv;
     size_t repeats = ring[n - 1] == ring[0];
     for (size_t k = 0; k + 1 < n; ++k) repeats += ring[k] == ring[k + 1];
-    if (distinct + repeats != n) return false;
+    if (distinctVertices(work) + repeats != n) return false;
     if (!triangulateRectangleRingAlong(work.ringUv, {r.x, r.y}, {r.z, r.w}, diagonal,
                                        work.ringTriangles))
       return false;

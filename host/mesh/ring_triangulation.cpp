@@ -26,7 +26,9 @@ double boundaryPosition(glm::dvec2 s, uint32_t sides) {
 }
 
 // The working arrays of one thread's calls, kept from call to call: the triangulator asks once
-// per leaf, and allocating them each time was most of the cost.
+// per leaf, and allocating them each time was most of the cost. They only grow (reserve), and
+// are used through pointers: a ring's few points paid more for resize and push_back's checks
+// than for the clipping itself.
 struct RingWork {
   std::vector<uint32_t> sides, prev, next;
   std::vector<glm::dvec2> local;
@@ -35,6 +37,16 @@ struct RingWork {
   std::vector<glm::vec2> half;  // triangulateRectangleRingAlong's halves
   std::vector<uint32_t> original;
   std::vector<std::array<uint32_t, 3>> halfTriangles;
+
+  // Room for rings of n points.
+  void reserve(size_t n) {
+    if (sides.size() >= n) return;
+    for (auto* v : {&sides, &prev, &next, &original}) v->resize(n);
+    local.resize(n);
+    position.resize(n);
+    alive.resize(n);
+    half.resize(n);
+  }
 };
 
 RingWork& ringWork() {
@@ -42,18 +54,16 @@ RingWork& ringWork() {
   return work;
 }
 
-bool triangulateRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, glm::vec2 hi,
+// `ring`: n points (work.half may be it: only work's other arrays are written).
+bool triangulateRing(const glm::vec2* ring, size_t n, glm::vec2 lo, glm::vec2 hi,
                      std::vector<std::array<uint32_t, 3>>& triangles, RingWork& work) {
   triangles.clear();
-  const size_t n = ring.size();
   if (n < 3 || !(lo.x < hi.x && lo.y < hi.y)) return false;
   const glm::dvec2 origin(lo), size = glm::dvec2(hi) - glm::dvec2(lo);
-  std::vector<uint32_t>& sides = work.sides;
-  std::vector<glm::dvec2>& local = work.local;
-  std::vector<double>& position = work.position;
-  sides.resize(n);
-  local.resize(n);
-  position.resize(n);
+  work.reserve(n);
+  uint32_t* const sides = work.sides.data();
+  glm::dvec2* const local = work.local.data();
+  double* const position = work.position.data();
   for (size_t i = 0; i < n; ++i) {
     sides[i] = sidesOf(ring[i], lo, hi);
     if (sides[i] == 0) return false;
@@ -69,14 +79,12 @@ bool triangulateRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, glm::vec2
     return true;
   }
 
-  std::vector<uint32_t>& prev = work.prev;
-  std::vector<uint32_t>& next = work.next;
-  std::vector<uint8_t>& alive = work.alive;
-  prev.resize(n);
-  next.resize(n);
-  alive.assign(n, 1);
+  uint32_t* const prev = work.prev.data();
+  uint32_t* const next = work.next.data();
+  uint8_t* const alive = work.alive.data();
   uint32_t onSide[4] = {0, 0, 0, 0};  // points left on each side
   for (size_t i = 0; i < n; ++i) {
+    alive[i] = 1;
     prev[i] = uint32_t(i == 0 ? n - 1 : i - 1);
     next[i] = uint32_t(i + 1 == n ? 0 : i + 1);
     for (int s = 0; s < 4; ++s) onSide[s] += (sides[i] >> s) & 1u;
@@ -125,14 +133,15 @@ bool triangulateRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, glm::vec2
 
 bool triangulateRectangleRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, glm::vec2 hi,
                               std::vector<std::array<uint32_t, 3>>& triangles) {
-  return triangulateRing(ring, lo, hi, triangles, ringWork());
+  return triangulateRing(ring.data(), ring.size(), lo, hi, triangles, ringWork());
 }
 
 bool triangulateRectangleRingAlong(const std::vector<glm::vec2>& ring, glm::vec2 lo,
                                    glm::vec2 hi, uint32_t diagonal,
                                    std::vector<std::array<uint32_t, 3>>& triangles) {
   RingWork& work = ringWork();
-  if (diagonal == gpu::kToleranceAnyDiagonal) return triangulateRing(ring, lo, hi, triangles, work);
+  if (diagonal == gpu::kToleranceAnyDiagonal)
+    return triangulateRing(ring.data(), ring.size(), lo, hi, triangles, work);
   triangles.clear();
   const bool mainDiagonal = diagonal == gpu::kToleranceMainDiagonal;
   if (!mainDiagonal && diagonal != gpu::kToleranceAntiDiagonal) return false;
@@ -146,18 +155,18 @@ bool triangulateRectangleRingAlong(const std::vector<glm::vec2>& ring, glm::vec2
   }
   if (a == n || b == n || a == b) return false;
   // Each half: the ring from one diagonal corner to the other, counter-clockwise.
-  std::vector<glm::vec2>& half = work.half;
-  std::vector<uint32_t>& original = work.original;
+  work.reserve(n);
+  glm::vec2* const half = work.half.data();
+  uint32_t* const original = work.original.data();
   std::vector<std::array<uint32_t, 3>>& halfTriangles = work.halfTriangles;
   for (const auto& [start, end] : {std::pair{a, b}, std::pair{b, a}}) {
-    half.clear();
-    original.clear();
-    for (size_t i = start;; i = (i + 1) % n) {
-      half.push_back(ring[i]);
-      original.push_back(uint32_t(i));
+    size_t count = 0;
+    for (size_t i = start;; i = i + 1 == n ? 0 : i + 1) {
+      half[count] = ring[i];
+      original[count++] = uint32_t(i);
       if (i == end) break;
     }
-    if (!triangulateRing(half, lo, hi, halfTriangles, work)) return triangles.clear(), false;
+    if (!triangulateRing(half, count, lo, hi, halfTriangles, work)) return triangles.clear(), false;
     for (const auto& t : halfTriangles)
       triangles.push_back({original[t[0]], original[t[1]], original[t[2]]});
   }
