@@ -146,11 +146,18 @@ class NearPointMerger {
         const LinePointRange points = line->points(l);
         const uint32_t patch = uint32_t(key >> 32);
         const float fixed = fromBits(uint32_t(key));
-        const bool sideLine = fixed == 0.0f || fixed == 1.0f;
+        // Else only its ends at t = 0 and 1 (sorted by findLinePairs: the first and last).
+        const bool everyPoint = listsMerged[l] || fixed == 0.0f || fixed == 1.0f;
         size_t kept = 0;
-        for (const LinePoint& point : points) {
-          if (!listsMerged[l] && !sideLine && point.t != 0.0f && point.t != 1.0f) {
-            points[kept++] = point;
+        for (size_t k = 0; k < points.size(); ++k) {
+          const LinePoint point = points[k];
+          if (!everyPoint && point.t != 0.0f && point.t != 1.0f) {
+            // Up to the points at t = 1, all stay.
+            size_t until = points.size();
+            while (until > k + 1 && points[until - 1].t == 1.0f) --until;
+            if (kept != k) std::copy(&points[k], &points[0] + until, &points[kept]);
+            kept += until - k;
+            k = until - 1;
             continue;
           }
           const VertexKey own = lineKeyOf(patch, alongU, fixed, point.t);
