@@ -129,7 +129,14 @@ glm::dvec3 patchPoint(const BezierPatch& patch, double u, double v) {
   checkPatch(patch, "patchPoint");
   const BernsteinTriangle bu = bernsteinTriangle(patch.degreeU, u);
   const BernsteinTriangle bv = bernsteinTriangle(patch.degreeV, v);
-  return tensorPartial(patch.cp.data(), patch.degreeU, patch.degreeV, 0, 0, bu, bv);
+  // Loops compiled for the usual degrees (fixed_degrees.h), the same doubles as tensorPartial:
+  // the triangulator's near-point tests evaluate a few hundred points a mesh.
+  glm::dvec3 point[1][1];
+  withFixedDegrees(patch.degreeU, patch.degreeV, [&](auto N, auto M) {
+    tensorPartials<glm::dvec3, 0, decltype(N)::value, decltype(M)::value>(
+        patch.cp.data(), patch.degreeU, patch.degreeV, bu, bv, point);
+  });
+  return point[0][0];
 }
 
 SurfaceDerivatives patchDerivatives(const BezierPatch& patch, double u, double v) {
