@@ -145,6 +145,12 @@ class LeafWalker {
     std::vector<float> scratch;
   };
 
+  // ring.push_back by const reference: its small body is inlined, where the rvalue overload
+  // (emplace_back) stayed an out-of-line call, ~5% of the walk's instructions.
+  static void append(std::vector<RingVertex>& ring, const RingVertex& vertex) {
+    ring.push_back(vertex);
+  }
+
   // `cover`: the quarters around the vertex's point that the leaf covers (kCorner …).
   static RingVertex query(LeafWork& work, const VertexKey& key, uint32_t patch, glm::vec2 uv,
                           uint32_t cover) {
@@ -206,7 +212,7 @@ class LeafWalker {
           float t = s.reversed ? 1.0f - c : c;
           glm::vec2 uv = alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
           // A listed point is a vertex of its own: no merge to look up.
-          ring.push_back(query(work, {kEdgeParam, uint32_t(s.group), bits(c)}, patch, uv, kElsewhere));
+          append(ring, query(work, {kEdgeParam, uint32_t(s.group), bits(c)}, patch, uv, kElsewhere));
         }
         return;
       }
@@ -219,7 +225,7 @@ class LeafWalker {
         if (t0 > t1) std::reverse(inside.begin(), inside.end());
         for (const auto& [t, key] : inside) {
           glm::vec2 uv = alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
-          ring.push_back(query(work, key, patch, uv, kElsewhere));
+          append(ring, query(work, key, patch, uv, kElsewhere));
         }
         return;
       }
@@ -238,7 +244,7 @@ class LeafWalker {
     const auto place = [&](float t) {
       const glm::vec2 uv = alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
       const VertexKey key = inner ? innerKey(patch, uv.x, uv.y) : seams_.baseKey(patch, uv.x, uv.y);
-      ring.push_back(query(work, key, patch, uv, t > lo && t < hi ? kEdge : kElsewhere));
+      append(ring, query(work, key, patch, uv, t > lo && t < hi ? kEdge : kElsewhere));
     };
     if (t0 <= t1)
       for (const LinePoint* p = first; p != last; ++p) place(p->t);
@@ -374,13 +380,13 @@ class LeafWalker {
     // A corner is a point of its line along u: merged only if a point of that line was.
     const bool bottomMerged = merges_.movedOn(true, linesU[0]) != nullptr;
     const bool topMerged = merges_.movedOn(true, linesU[1]) != nullptr;
-    ring.push_back(vertexAt(work, p, r.x, r.y, kCorner, inner, bottomMerged));
+    append(ring, vertexAt(work, p, r.x, r.y, kCorner, inner, bottomMerged));
     edgeInterior(work, p, kBottom, r.y, linesU[0], r.x, r.z, inner);
-    ring.push_back(vertexAt(work, p, r.z, r.y, kCorner, inner, bottomMerged));
+    append(ring, vertexAt(work, p, r.z, r.y, kCorner, inner, bottomMerged));
     edgeInterior(work, p, kRight, r.z, linesV[1], r.y, r.w, inner);
-    ring.push_back(vertexAt(work, p, r.z, r.w, kCorner, inner, topMerged));
+    append(ring, vertexAt(work, p, r.z, r.w, kCorner, inner, topMerged));
     edgeInterior(work, p, kTop, r.w, linesU[1], r.z, r.x, inner);
-    ring.push_back(vertexAt(work, p, r.x, r.w, kCorner, inner, topMerged));
+    append(ring, vertexAt(work, p, r.x, r.w, kCorner, inner, topMerged));
     edgeInterior(work, p, kLeft, r.x, linesV[0], r.w, r.y, inner);
 
     const bool folded = work.touchesFold && dropFoldedBack(ring);
