@@ -108,9 +108,13 @@ TEST_CASE("mesh cleanup: back-to-back pairs are the same on any thread count",
   const std::vector<uint32_t> indices = drawnFrom(base, 30000, random);
   const std::vector<bool> rule = backToBackByRule(indices);
   REQUIRE(std::count(rule.begin(), rule.end(), true) > 10000);
+  std::vector<uint32_t> ruleList;  // the same triangles as indices (backToBackTriangles)
+  for (size_t t = 0; t < rule.size(); ++t)
+    if (rule[t]) ruleList.push_back(uint32_t(t));
   for (unsigned threads : {1u, 2u, 3u, 0u}) {
     INFO(threads << " threads");
     REQUIRE(backToBackPairs(indices, threads) == rule);
+    REQUIRE(backToBackTriangles(indices, threads) == ruleList);
   }
 }
 

@@ -43,7 +43,10 @@ std::vector<uint32_t> weldIdenticalPositions(const std::vector<glm::vec3>& posit
                                                     forEachKey, threads);
 }
 
-std::vector<bool> backToBackPairs(const std::vector<uint32_t>& indices, unsigned threads) {
+namespace {
+
+// Per triangle, 1 when it cancels with its reverse (backToBackPairs).
+std::vector<uint8_t> cancelledFlags(const std::vector<uint32_t>& indices, unsigned threads) {
   const size_t count = indices.size() / 3;
   if (count == 0) return {};
   // Key: the corners rotated to start at the smallest; its reverse has the other two swapped.
@@ -126,7 +129,22 @@ std::vector<bool> backToBackPairs(const std::vector<uint32_t>& indices, unsigned
       }
     }
   });
+  return cancelled;
+}
+
+}  // namespace
+
+std::vector<bool> backToBackPairs(const std::vector<uint32_t>& indices, unsigned threads) {
+  const std::vector<uint8_t> cancelled = cancelledFlags(indices, threads);
   return std::vector<bool>(cancelled.begin(), cancelled.end());
+}
+
+std::vector<uint32_t> backToBackTriangles(const std::vector<uint32_t>& indices, unsigned threads) {
+  const std::vector<uint8_t> cancelled = cancelledFlags(indices, threads);
+  std::vector<uint32_t> triangles;
+  for (size_t t = 0; t < cancelled.size(); ++t)
+    if (cancelled[t]) triangles.push_back(uint32_t(t));
+  return triangles;
 }
 
 void requireFiniteSamples(const ParamMesh& param, const std::vector<gpu::VertexSample>& samples) {

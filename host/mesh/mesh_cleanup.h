@@ -22,6 +22,10 @@ std::vector<uint32_t> weldIdenticalPositions(const std::vector<glm::vec3>& posit
 // The two cancel (they bound nothing), and their edges keep the neighbours they had. Settled
 // on `threads` threads (0: all); the answer is the same.
 std::vector<bool> backToBackPairs(const std::vector<uint32_t>& indices, unsigned threads = 1);
+// The same triangles as their indices, ascending: a mesh without any (the usual case) is
+// settled without a flag per triangle to scan bit by bit.
+std::vector<uint32_t> backToBackTriangles(const std::vector<uint32_t>& indices,
+                                          unsigned threads = 1);
 
 // A sample that is not a number or infinite would poison the welding and the writers; fp32
 // overflows where a rational patch's weights differ by more than its range can take (a corner

@@ -18,16 +18,17 @@
 namespace tessera {
 namespace {
 
-// Removes the triangles marked in `drop` from the mesh and its per-triangle records, counting
-// them as degenerate.
-void dropTriangles(const std::vector<bool>& drop, Tessellation& result) {
+// Removes the triangles `dropped` (ascending) from the mesh and its per-triangle records,
+// counting them as degenerate.
+void dropTriangles(const std::vector<uint32_t>& dropped, Tessellation& result) {
+  if (dropped.empty()) return;
   // The triangles before the first dropped one stay where they are.
-  const size_t firstDropped = size_t(std::find(drop.begin(), drop.end(), true) - drop.begin());
-  if (firstDropped == drop.size()) return;
   std::vector<uint32_t>& indices = result.mesh.indices;
-  size_t kept = firstDropped;
-  for (size_t t = firstDropped; t < drop.size(); ++t) {
-    if (drop[t]) {
+  const size_t count = result.trianglePatch.size();
+  size_t kept = dropped[0], next = 0;
+  for (size_t t = dropped[0]; t < count; ++t) {
+    if (next < dropped.size() && dropped[next] == t) {
+      ++next;
       ++result.stats.degenerateTrianglesDropped;
       continue;
     }
@@ -119,16 +120,16 @@ Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, ParamM
   mesh.indices = std::move(param.indices);
   result.trianglePatch = std::move(param.trianglePatch);
   result.cornerUv = std::move(param.cornerUv);
-  std::vector<bool> collapsed(result.trianglePatch.size());
-  for (size_t t = 0; t < collapsed.size(); ++t) {
+  std::vector<uint32_t> collapsed;
+  for (size_t t = 0; t < result.trianglePatch.size(); ++t) {
     uint32_t* c = &mesh.indices[3 * t];
     c[0] = remap[c[0]], c[1] = remap[c[1]], c[2] = remap[c[2]];
-    collapsed[t] = c[0] == c[1] || c[1] == c[2] || c[2] == c[0];
+    if (c[0] == c[1] || c[1] == c[2] || c[2] == c[0]) collapsed.push_back(uint32_t(t));
   }
   dropTriangles(collapsed, result);
-  dropTriangles(backToBackPairs(mesh.indices, threads), result);
-  dropTriangles(removeCaps(mesh.positions, mesh.indices, result.trianglePatch, result.cornerUv,
-                           threads),
+  dropTriangles(backToBackTriangles(mesh.indices, threads), result);
+  dropTriangles(removeCapTriangles(mesh.positions, mesh.indices, result.trianglePatch,
+                                   result.cornerUv, threads),
                 result);
 
   TessellationStats& s = result.stats;

@@ -28,12 +28,21 @@ bool zeroArea(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
 std::vector<bool> removeCaps(const std::vector<glm::vec3>& positions,
                              std::vector<uint32_t>& indices, std::vector<uint32_t>& trianglePatch,
                              std::vector<glm::vec2>& cornerUv, unsigned threads) {
+  std::vector<bool> removed(indices.size() / 3, false);
+  for (uint32_t t : removeCapTriangles(positions, indices, trianglePatch, cornerUv, threads))
+    removed[t] = true;
+  return removed;
+}
+
+std::vector<uint32_t> removeCapTriangles(const std::vector<glm::vec3>& positions,
+                                         std::vector<uint32_t>& indices,
+                                         std::vector<uint32_t>& trianglePatch,
+                                         std::vector<glm::vec2>& cornerUv, unsigned threads) {
   const size_t count = indices.size() / 3;
   const auto corner = [&](size_t t, int k) { return indices[3 * t + size_t(k)]; };
   const auto isCap = [&](size_t t) {
     return zeroArea(positions[corner(t, 0)], positions[corner(t, 1)], positions[corner(t, 2)]);
   };
-  std::vector<bool> removed(count, false);
   // The caps in triangle order, found on `threads` threads: each share's own list, in turn.
   constexpr size_t kShare = 8192;
   std::vector<std::vector<size_t>> found((count + kShare - 1) / kShare);
@@ -45,7 +54,8 @@ std::vector<bool> removeCaps(const std::vector<glm::vec3>& positions,
                     });
   std::vector<size_t> caps;
   for (const std::vector<size_t>& share : found) caps.insert(caps.end(), share.begin(), share.end());
-  if (caps.empty()) return removed;
+  if (caps.empty()) return {};
+  std::vector<bool> removed(count, false);
 
   std::unordered_map<uint64_t, uint32_t> owner;  // directed edge → its triangle
   owner.reserve(indices.size());
@@ -112,7 +122,10 @@ std::vector<bool> removeCaps(const std::vector<glm::vec3>& positions,
       changed = true;
     }
   }
-  return removed;
+  std::vector<uint32_t> gone;  // ascending: `caps` is
+  for (size_t t : caps)
+    if (removed[t]) gone.push_back(uint32_t(t));
+  return gone;
 }
 
 }  // namespace tessera

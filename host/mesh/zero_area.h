@@ -31,5 +31,11 @@ bool zeroArea(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
 std::vector<bool> removeCaps(const std::vector<glm::vec3>& positions,
                              std::vector<uint32_t>& indices, std::vector<uint32_t>& trianglePatch,
                              std::vector<glm::vec2>& cornerUv, unsigned threads = 1);
+// The same, the triangles that go as their indices, ascending (none, in the usual case,
+// without a flag per triangle to scan).
+std::vector<uint32_t> removeCapTriangles(const std::vector<glm::vec3>& positions,
+                                         std::vector<uint32_t>& indices,
+                                         std::vector<uint32_t>& trianglePatch,
+                                         std::vector<glm::vec2>& cornerUv, unsigned threads = 1);
 
 }  // namespace tessera
