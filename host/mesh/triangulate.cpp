@@ -9,6 +9,7 @@
 
 #include "common/hash_map.h"
 #include "common/parallel_for.h"
+#include "mesh/detail/kept_runs.h"
 #include "mesh/detail/leaf_walk.h"
 #include "mesh/detail/one_leaf.h"
 #include "mesh/detail/run_places.h"
@@ -58,7 +59,8 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
   for (const auto& [key, target] : merges.merged) mergeTargets.insert(target);
   const LeafWalkTables tables{seams, lines, merges, mergeTargets};
   const size_t runLength = 512;
-  std::vector<LeafRun> runs((leaves.size() + runLength - 1) / runLength);
+  thread_local KeptRuns keptRuns;
+  std::vector<LeafRun>& runs = keptRuns.take((leaves.size() + runLength - 1) / runLength);
   parallelForChunks(leaves.size(), runLength, scope.threads, [&](size_t begin, size_t end) {
     LeafRun& run = runs[begin / runLength];
     // About a vertex and two triangles per leaf.
@@ -143,6 +145,7 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
       }
     }
   });
+  keptRuns.release();
   return mesh;
 }
 

@@ -43,6 +43,18 @@ struct LeafRun {
   std::vector<uint32_t> border;
   std::vector<RunTriangle> triangles;
   size_t droppedTriangles = 0, diagonalFans = 0;
+
+  // Empty, as a new run, keeping its arrays' room (kept_runs.h).
+  void clear() {
+    vertices.clear();
+    border.clear();
+    triangles.clear();
+    droppedTriangles = diagonalFans = 0;
+  }
+  size_t capacityBytes() const {
+    return vertices.capacity() * sizeof(VertexQuery) + border.capacity() * sizeof(uint32_t) +
+           triangles.capacity() * sizeof(RunTriangle);
+  }
 };
 
 // What the walk reads: set up once, then only looked up (positions included:
