@@ -9,7 +9,10 @@ namespace {  // each mirror translation unit gets its own copy of the shared fun
 #pragma GCC diagnostic ignored "-Wunused-function"  // the point-evaluation entry is unused here
 #include "shaders/lib/shared_glsl_cpp.h"
 #include "shaders/lib/bicubic_eval.h"
+// toleranceDecisionOf's terms have C = 0 (the revolution bound): skip their zero norms.
+#define TOLERANCE_DECISION_CENTRELESS_SHORTCUT
 #include "shaders/lib/tolerance_bound.h"
+#undef TOLERANCE_DECISION_CENTRELESS_SHORTCUT
 #include "shaders/lib/quadtree_classify.h"
 #pragma GCC diagnostic pop
 }  // namespace

@@ -514,9 +514,26 @@ NodeDecision toleranceDecision(IN(ToleranceTerms) t, IN(QuadNode) node, IN(Class
   PRECISE float a = t.bounds.x + t.bounds.y;
   PRECISE float b = t.bounds.z + t.bounds.y;
   PRECISE float sum = a + b;
+#ifdef TOLERANCE_DECISION_CENTRELESS_SHORTCUT
+  // A C++ includer's shortcut, the same bits: where C = 0 (the revolution bound's terms) every
+  // norm W takes is of a ±0 vector, +0, so W = W₁ = W₂ = +0 and the main diagonal wins the
+  // tie; the twenty norms were most of the revolution bound's decision. (Only where asked: in
+  // the rule T variants' units the branch changed the compiler's inlining, and cost more.)
+  bool centreless = t.ss.x == 0.0f && t.ss.y == 0.0f && t.ss.z == 0.0f && t.st.x == 0.0f &&
+                    t.st.y == 0.0f && t.st.z == 0.0f && t.tt.x == 0.0f && t.tt.y == 0.0f &&
+                    t.tt.z == 0.0f;
+  PRECISE float w = 0.0f;
+  uint diagonal = kToleranceMainDiagonal;
+  PRECISE float wDiagonal = 0.0f;
+  if (!centreless) {
+    w = quadraticPartBound(vec3(t.ss), vec3(t.st), vec3(t.tt));
+    wDiagonal = betterDiagonalBound(vec3(t.ss), vec3(t.st), vec3(t.tt), diagonal);
+  }
+#else
   PRECISE float w = quadraticPartBound(vec3(t.ss), vec3(t.st), vec3(t.tt));
   uint diagonal;
   PRECISE float wDiagonal = betterDiagonalBound(vec3(t.ss), vec3(t.st), vec3(t.tt), diagonal);
+#endif
   PRECISE float twoSpreadSt = 2.0f * t.spread.y;
   PRECISE float rest = (t.spread.x + twoSpreadSt) + t.spread.z;
   PRECISE float guard = sum * kToleranceCentredGuard;
