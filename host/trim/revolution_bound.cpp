@@ -99,9 +99,11 @@ RevolutionBound revolutionNodeBound(const RevolutionForm& form, const FaceSurfac
   // Around the axis: the half span α of the azimuth, on the row farther from it (a cone's apex
   // or a sphere's pole has none; ρ is the same along a row).
   if (rhoMax > 0.0) {
-    const double t = low.rho >= high.rho ? rect.y : rect.w;
-    const double alpha =
-        halfSpan(at(rect.x, t).radial, at(rect.z, t).radial, at(um, t).radial);
+    // The row's first point is low or high itself: evaluated once (the same doubles).
+    const bool lowRow = low.rho >= high.rho;
+    const double t = lowRow ? rect.y : rect.w;
+    const glm::dvec3& first = lowRow ? low.radial : high.radial;
+    const double alpha = halfSpan(first, at(rect.z, t).radial, at(um, t).radial);
     if (alpha < 0.0) return out;
     out.azimuth = rhoMax * oneMinusCos(alpha);
   }
