@@ -335,8 +335,12 @@ QuadtreeResult buildTree(const PatchSet& patches, const QuadtreeOptions& options
   const size_t bufferBytes = classifier.maxPatchBufferBytes();
   QuadtreeResult result;
   size_t total = 0;
+  // One group when the whole set fits: the walk below would reach its end anyway (a group's
+  // bytes only grow with it), but re-summing the group at every step is quadratic in patches.
+  const bool oneGroup =
+      patches.size() <= batchNodes && patches.bufferBytes(0, patches.size()) <= bufferBytes;
   for (size_t first = 0; first < patches.size();) {
-    size_t last = first + 1;
+    size_t last = oneGroup ? patches.size() : first + 1;
     while (last < patches.size() && last - first < batchNodes &&
            patches.bufferBytes(first, last + 1) <= bufferBytes)
       ++last;
