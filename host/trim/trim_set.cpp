@@ -91,6 +91,14 @@ float trimMargin(double scale) {
 TrimSet packTrimSet(const std::vector<std::vector<std::vector<glm::dvec2>>>& faceLoops,
                     const std::vector<TrimPieceRect>& pieces) {
   TrimSet set;
+  // Room for every piece, face and segment up front: grown by doubling, the segment arrays
+  // were copied a few times per tree.
+  size_t segmentCount = 0;
+  for (const auto& loops : faceLoops)
+    for (const std::vector<glm::dvec2>& loop : loops) segmentCount += loop.size();
+  set.pieces.reserve(pieces.size()), set.pieceRectsDouble.reserve(pieces.size());
+  set.faces.reserve(faceLoops.size());
+  set.segments.reserve(segmentCount), set.segmentsDouble.reserve(segmentCount);
   std::vector<double> scale(faceLoops.size(), 0.0);
   for (size_t k = 0; k < pieces.size(); ++k) {
     const TrimPieceRect& p = pieces[k];
