@@ -2,6 +2,8 @@
 // next give empty runs that keep their room, and a huge mesh's are not kept.
 #include <catch2/catch.hpp>
 
+#include <stdexcept>
+
 #include "mesh/detail/kept_runs.h"
 
 using namespace tessera::triangulate_detail;
@@ -33,4 +35,16 @@ TEST_CASE("kept runs come back empty, with their room", "[triangulate][kept_runs
   again[0].triangles.reserve(KeptRuns::kKeptBytes / sizeof(RunTriangle) + 1);
   kept.release();
   CHECK(kept.take(2)[0].triangles.capacity() == 0);
+}
+
+TEST_CASE("kept runs past their room are freed when a call ends by an exception",
+          "[triangulate][kept_runs]") {
+  KeptRuns kept;
+  try {
+    const KeptRuns::ReleaseAtEnd releaseRuns{kept};
+    kept.take(1)[0].triangles.reserve(KeptRuns::kKeptBytes / sizeof(RunTriangle) + 1);
+    throw std::runtime_error("the walk failed");
+  } catch (const std::runtime_error&) {
+  }
+  CHECK(kept.take(1)[0].triangles.capacity() == 0);
 }

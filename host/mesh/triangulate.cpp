@@ -60,6 +60,7 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
   const LeafWalkTables tables{seams, lines, merges, mergeTargets};
   const size_t runLength = 512;
   thread_local KeptRuns keptRuns;
+  const KeptRuns::ReleaseAtEnd releaseRuns{keptRuns};
   std::vector<LeafRun>& runs = keptRuns.take((leaves.size() + runLength - 1) / runLength);
   parallelForChunks(leaves.size(), runLength, scope.threads, [&](size_t begin, size_t end) {
     LeafRun& run = runs[begin / runLength];
@@ -145,7 +146,6 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
       }
     }
   });
-  keptRuns.release();
   return mesh;
 }
 

@@ -23,6 +23,13 @@ class KeptRuns {
     return runs_;
   }
 
+  // Calls release() when the call ends, by its return or by an exception (a memory limit, a
+  // bad patch): a huge mesh's runs are not kept whichever way its call ended.
+  struct ReleaseAtEnd {
+    KeptRuns& kept;
+    ~ReleaseAtEnd() { kept.release(); }
+  };
+
   // After the call: the runs freed if they hold more than kKeptBytes.
   void release() {
     size_t bytes = 0;
