@@ -7,27 +7,46 @@
 #include <numeric>
 #include <thread>
 
+#include "common/thread_cap.h"
 #include "common/worker_pool.h"
 
 namespace tessera {
 
 unsigned resolveThreadCount(unsigned requested) {
-  return requested ? requested : std::max(1u, std::thread::hardware_concurrency());
+  const unsigned threads = requested ? requested : std::max(1u, std::thread::hardware_concurrency());
+  const unsigned cap = threadCap();
+  return cap != 0 && cap < threads ? cap : threads;
 }
 
 void parallelParts(unsigned parts, const std::function<void(unsigned part)>& body) {
+  const unsigned cap = threadCap();
   std::mutex firstErrorMutex;
   std::exception_ptr firstError;
   // A thrown exception must not leave a thread (std::terminate) or cut the others short.
   auto guarded = [&](unsigned part) {
     try {
-      body(part);
+      if (cap == 0) {
+        body(part);
+      } else {
+        // The caller's cap goes with the part to the worker that runs it (thread_cap.h).
+        ScopedThreadCap callersCap(cap);
+        body(part);
+      }
     } catch (...) {
       std::lock_guard<std::mutex> lock(firstErrorMutex);
       if (!firstError) firstError = std::current_exception();
     }
   };
-  worker_pool::runParts(parts, guarded);
+  if (cap != 0 && parts > cap) {
+    // More parts than the cap allows threads (a caller that counted its parts itself): `cap`
+    // lanes, lane k running parts k, k + cap, … in turn. Parts never wait for each other, so
+    // running some one after another is allowed; with cap 1 every part stays on this thread.
+    worker_pool::runParts(cap, [&](unsigned lane) {
+      for (unsigned part = lane; part < parts; part += cap) guarded(part);
+    });
+  } else {
+    worker_pool::runParts(parts, guarded);
+  }
   if (firstError) std::rethrow_exception(firstError);
 }
 

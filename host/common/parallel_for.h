@@ -8,13 +8,15 @@
 
 namespace tessera {
 
-// Threads to use for `requested`: requested itself, or all hardware threads (at least 1) when 0.
+// Threads to use for `requested`: requested itself, or all hardware threads (at least 1) when 0;
+// at most the thread cap in force (thread_cap.h).
 unsigned resolveThreadCount(unsigned requested);
 
 // Runs body(part) for part 0 … parts − 1, part 0 on the calling thread, the others on the
 // process's kept worker threads (worker_pool.h) or, when none is free, on the calling thread
 // after its own: parts must not wait for each other. Returns after every part has finished;
-// the first exception any part threw is then rethrown here.
+// the first exception any part threw is then rethrown here. Under a thread cap (thread_cap.h)
+// each part runs under it wherever it runs, and at most `cap` threads share the parts.
 void parallelParts(unsigned parts, const std::function<void(unsigned part)>& body);
 
 // Splits [0, count) into min(threads, count) shares [count·k/n, count·(k+1)/n) and runs

@@ -1,6 +1,7 @@
 #include "common/worker_pool.h"
 
 #include <algorithm>
+#include <atomic>
 #include <condition_variable>
 #include <deque>
 #include <mutex>
@@ -11,6 +12,8 @@
 
 namespace tessera::worker_pool {
 namespace {
+
+std::atomic<size_t> workerParts{0};  // partsRunByWorkers()
 
 // One runParts call: its parts are handed out one at a time under the pool's lock.
 struct Job {
@@ -90,6 +93,7 @@ class Pool {
       const unsigned part = take(job);
       lock.unlock();
       (*job.body)(part);
+      workerParts.fetch_add(1, std::memory_order_relaxed);
       lock.lock();
       if (++job.finished + 1 == job.parts) job.allFinished.notify_one();
     }
@@ -109,5 +113,7 @@ void runParts(unsigned parts, const std::function<void(unsigned part)>& body) {
   if (parts == 1) return body(0);
   Pool::instance().run(parts, body);
 }
+
+size_t partsRunByWorkers() { return workerParts.load(std::memory_order_relaxed); }
 
 }  // namespace tessera::worker_pool

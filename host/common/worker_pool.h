@@ -3,6 +3,7 @@
 // for a thread the scheduler had not yet run. parallel_for.h is the interface.
 #pragma once
 
+#include <cstddef>
 #include <functional>
 
 namespace tessera::worker_pool {
@@ -12,5 +13,9 @@ namespace tessera::worker_pool {
 // parts may run one after another: they must not wait for each other. Returns when all have
 // finished. body must not throw (parallelParts catches for it).
 void runParts(unsigned parts, const std::function<void(unsigned part)>& body);
+
+// Parts run by the workers (not by the callers) since the process started, for the tests that
+// check a call under a thread cap of 1 (thread_cap.h) never left its thread.
+size_t partsRunByWorkers();
 
 }  // namespace tessera::worker_pool
