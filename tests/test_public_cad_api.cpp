@@ -12,6 +12,7 @@
 
 #include "api/tessellator_access.h"
 #include "cad/mesh_cad_file.h"
+#include "common/worker_pool.h"
 #include "gpu_test_context.h"
 #include "mesh/tessellate.h"
 #include "mesh_checks.h"
@@ -78,6 +79,24 @@ TEST_CASE("public CAD API: a STEP model is the CLI's mesh, faces named, closed",
   REQUIRE(one.mesh.indices == cad.mesh.indices);
   REQUIRE(one.mesh.positions == cad.mesh.positions);
   REQUIRE(one.triangleFaces == cad.triangleFaces);
+}
+
+// TessellatorOptions::threads caps CadOptions::threads (the smaller non-zero holds): the import
+// and the cuts of a tessellator with threads = 1 stay on the calling thread, same mesh.
+TEST_CASE("public CAD API: a tessellator's threads = 1 keeps the CAD run on its thread",
+          "[cad][api][threads]") {
+  tessera::TessellatorOptions oneThread;
+  oneThread.device = tessera::Device::Cpu;
+  oneThread.threads = 1;
+  tessera::Tessellator wide({tessera::Device::Cpu}), narrow(oneThread);
+  tessera::CadOptions manyThreads;
+  manyThreads.threads = 8;
+  const tessera::CadMesh expected = tessera::tessellateCadFile(wide, kSot23, manyThreads);
+  const size_t workerPartsBefore = tessera::worker_pool::partsRunByWorkers();
+  const tessera::CadMesh capped = tessera::tessellateCadFile(narrow, kSot23, manyThreads);
+  REQUIRE(tessera::worker_pool::partsRunByWorkers() == workerPartsBefore);
+  REQUIRE(capped.mesh.indices == expected.mesh.indices);
+  REQUIRE(capped.mesh.positions == expected.mesh.positions);
 }
 
 TEST_CASE("public CAD API: errors are typed and name the file", "[cad][api]") {

@@ -6,6 +6,7 @@
 
 #include "api/convert.h"
 #include "api/tessellator_access.h"
+#include "common/thread_cap.h"
 #include "division/count.h"
 #include "eval/patch_set.h"
 #include "geometry/rational.h"
@@ -111,6 +112,7 @@ struct Tessellator::Impl {
   std::unique_ptr<TrimClassifier> trim;  // on Vulkan, made at the first CAD call
 
   explicit Impl(const TessellatorOptions& o) : options(o) {
+    const ScopedThreadCap cap(options.threads);  // the device's setup too
     if (options.device == Device::Cpu) {
       backend = makeMirrorBackend();
       return;
@@ -163,6 +165,7 @@ std::string Tessellator::deviceName() const {
 void TessellatorAccess::run(Tessellator& tessellator,
                             const std::function<void(Backend&, vk::Context*)>& work) {
   Tessellator::Impl& impl = *tessellator.impl_;
+  const ScopedThreadCap cap(impl.options.threads);
   // The context is read at each try: after a fallback it is null (the CPU).
   translatingErrors([&] {
     impl.withFallback([&](Backend& backend) { work(backend, impl.context.get()); });
@@ -177,6 +180,7 @@ TrimClassifier* TessellatorAccess::trimClassifier(Tessellator& tessellator) {
 }
 
 Mesh Tessellator::tessellate(const std::vector<Patch>& patches, const RuleOptions& options) {
+  const ScopedThreadCap cap(impl_->options.threads);
   const std::vector<BezierPatch> internal = api::toBezierPatches(patches);
   const QuadtreeOptions quadtree = api::toQuadtreeOptions(options);
   return translatingErrors([&] {
@@ -190,6 +194,7 @@ Mesh Tessellator::tessellate(const std::vector<Patch>& patches, const RuleOption
 
 Mesh Tessellator::tessellateToTolerance(const std::vector<Patch>& patches, double tolerance,
                                         const ToleranceOptions& options) {
+  const ScopedThreadCap cap(impl_->options.threads);
   if (!std::isfinite(tolerance) || !(tolerance > 0))
     throw ArgumentError("the tolerance must be finite and > 0, got " + std::to_string(tolerance));
   static_assert(ToleranceOptions{}.maxDepth == kToleranceMaxDepth,
@@ -246,6 +251,7 @@ View lookAtView(const std::array<double, 3>& eye, const std::array<double, 3>& t
 
 Mesh Tessellator::tessellateToPixelTolerance(const std::vector<Patch>& patches, double pixels,
                                              const View& view, const ToleranceOptions& options) {
+  const ScopedThreadCap cap(impl_->options.threads);
   if (!std::isfinite(pixels) || !(pixels > 0))
     throw ArgumentError("the pixel tolerance must be finite and > 0, got " +
                         std::to_string(pixels));

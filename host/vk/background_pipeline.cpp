@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "common/thread_cap.h"
+
 namespace tessera::vk {
 
 BackgroundPipeline::BackgroundPipeline(Context& context, ComputePipelineDesc desc)
@@ -13,6 +15,8 @@ BackgroundPipeline::~BackgroundPipeline() {
 
 void BackgroundPipeline::start() {
   if (pipeline_ || pending_.valid()) return;
+  // A caller capped to its own thread (thread_cap.h) gets no thread from us: get() builds it.
+  if (threadCap() == 1) return;
   pending_ = std::async(std::launch::async, [this] {
     return std::make_unique<ComputePipeline>(context_, desc_);
   });

@@ -20,7 +20,8 @@ class BackgroundPipeline {
   BackgroundPipeline(const BackgroundPipeline&) = delete;
   BackgroundPipeline& operator=(const BackgroundPipeline&) = delete;
 
-  // Starts building on a worker thread; no effect once started or built.
+  // Starts building on a worker thread; no effect once started or built, or under a thread
+  // cap of 1 (common/thread_cap.h: get() then builds it on the caller's thread).
   void start();
   // The pipeline: waits for the build started by start(), or builds it now. Rethrows the
   // build's error (VulkanError) and builds again on the next call.

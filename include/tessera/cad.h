@@ -21,6 +21,7 @@ struct CadOptions {
   // such a model is an InputError naming the file and every failed face.
   bool skipBadFaces = false;
   // CPU threads for converting the faces and cutting them along their trims; 0: all cores.
+  // The tessellator's TessellatorOptions::threads caps it too (the smaller non-zero holds).
   // The mesh is the same, bit for bit, whatever the count.
   unsigned threads = 0;
 };

@@ -144,6 +144,12 @@ struct TessellatorOptions {
   // Vulkan only: "" picks the best device (discrete > integrated > CPU; the environment
   // variable TESSERA_DEVICE overrides), else an index from `tessera devices` or part of a name.
   std::string deviceName;
+  // The most CPU threads each parallel step of a call uses, the calling thread included (the
+  // Tessellator's calls and tessellateCadFile's, which takes the smaller non-zero of this and
+  // CadOptions::threads); 0: all cores. 1 runs everything on the calling thread and starts no
+  // thread, for a program that schedules its own. The mesh is the same, bit for bit, whatever
+  // the count. A Vulkan driver's own threads are the driver's (lavapipe: LP_NUM_THREADS).
+  unsigned threads = 0;
 };
 
 // Owns the device (the Vulkan instance, queues, pipelines), so repeated calls are cheap: make
