@@ -14,6 +14,7 @@
 #include "cli/commands.h"
 #include "cli/stdio.h"
 #include "common/memory_budget.h"
+#include "common/thread_cap.h"
 #include "io/errors.h"
 #include "io/gltf_writer.h"
 #include "io/input_limit.h"
@@ -144,7 +145,8 @@ std::unique_ptr<vk::Context> makeContext(const std::string& device) {
 }  // namespace
 
 PendingContext startMakingContext(const std::string& name, const std::string& device) {
-  if (name != "vulkan" && name != "auto") return {};
+  // Under --threads 1 (common/thread_cap.h) chooseBackend makes it on this thread.
+  if ((name != "vulkan" && name != "auto") || threadCap() == 1) return {};
   return std::async(std::launch::async, makeContext, device);
 }
 
@@ -170,7 +172,8 @@ ChosenBackend chooseBackend(const std::string& name, const std::string& device,
 }
 
 std::future<void> releaseInBackground(ChosenBackend&& chosen) {
-  if (!chosen.context) {  // the CPU backend: nothing slow to destroy, no thread
+  // The CPU backend (nothing slow to destroy), or --threads 1: released here, no thread.
+  if (!chosen.context || threadCap() == 1) {
     ChosenBackend released = std::move(chosen);
     return {};
   }

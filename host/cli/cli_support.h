@@ -67,9 +67,10 @@ using PendingContext = std::future<std::unique_ptr<vk::Context>>;
 
 // Starts making the Vulkan context for chooseBackend(name, device) on a worker thread, so that
 // the caller reads its input meanwhile: on lavapipe the context is the largest fixed cost of a
-// run (the loader opens every installed driver). None (an invalid future) for "cpu" or a name
-// chooseBackend refuses. Its errors reach the caller through chooseBackend, in the same order as
-// without it; a pending context that is never taken is waited for and destroyed.
+// run (the loader opens every installed driver). None (an invalid future) for "cpu", a name
+// chooseBackend refuses, or under a thread cap of 1 (--threads 1, common/thread_cap.h). Its
+// errors reach the caller through chooseBackend, in the same order as without it; a pending
+// context that is never taken is waited for and destroyed.
 PendingContext startMakingContext(const std::string& name, const std::string& device);
 
 // "vulkan": Vulkan or VulkanUnavailable; "cpu": the CPU; "auto": Vulkan if a usable device
@@ -81,8 +82,8 @@ ChosenBackend chooseBackend(const std::string& name, const std::string& device,
 // Destroys `chosen` (its backend, then its context) on a worker thread, so that lavapipe's
 // teardown (joining its threads, unloading the drivers: several ms at the end of a run) goes on
 // while the caller writes the mesh; the future's destructor waits for it (without a context it
-// is destroyed at once, and the future is empty). Take from the context what the report needs
-// first.
+// is destroyed at once, and the future is empty; so too under --threads 1). Take from the
+// context what the report needs first.
 std::future<void> releaseInBackground(ChosenBackend&& chosen);
 
 // Runs `work` (a tessellation); a patch it cannot take (std::invalid_argument naming the patch:

@@ -23,6 +23,7 @@
 #include "cli/streamed_tessellate.h"
 #include "cli/tessellate_summary.h"
 #include "common/memory_budget.h"
+#include "common/thread_cap.h"
 #include "io/surface_reader.h"
 #include "io/errors.h"
 #include "io/gltf_writer.h"
@@ -63,6 +64,7 @@ struct TessellateArgs {
   bool skipBadFaces = false;  // CAD models: mesh the faces that converted (cad_job.h)
   MeshOutputArgs mesh;  // --precision
   size_t streamPatches = 0;  // --stream-patches N: write the mesh in groups of N patches
+  unsigned threads = 0;      // --threads N: the most CPU threads per parallel step; 0: all
 };
 
 // A CAD model (.step, .iges, .brep) goes through host/cad/ and host/trim/ (cad_job.h).
@@ -139,6 +141,7 @@ SplitRule chooseRule(const TessellateArgs& a) {
 }
 
 int run(const TessellateArgs& a) {
+  const ScopedThreadCap cap(a.threads);  // the whole run, a CAD model's included
   if (isCadInput(a.input)) return runCad(a);
   QuadtreeOptions options;
   ToleranceSpec toleranceSpec;
@@ -395,6 +398,11 @@ void addTessellateOptions(CLI::App* cmd, TessellateArgs& args) {
   cmd->add_option("--backend", args.backend, "vulkan, cpu, or auto (Vulkan if a device exists)")
       ->capture_default_str();
   cmd->add_option("--device", args.device, "Vulkan device index or part of its name");
+  cmd->add_option("--threads", args.threads,
+                  "the most CPU threads each parallel step uses (0: all cores); 1 runs "
+                  "everything on the main thread. The mesh is the same whatever N. The Vulkan "
+                  "driver's own threads are its own (lavapipe: LP_NUM_THREADS)")
+      ->capture_default_str();
   cmd->add_flag("-q,--quiet", args.quiet, "print nothing on success (no progress either)");
   cmd->add_flag("--deviation,!--no-deviation", args.deviation,
                 "measure the mesh's deviation from the true surface, geometric and parametric. "
