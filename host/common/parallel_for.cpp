@@ -13,8 +13,9 @@
 namespace tessera {
 
 unsigned resolveThreadCount(unsigned requested) {
-  const unsigned threads = requested ? requested : std::max(1u, std::thread::hardware_concurrency());
   const unsigned cap = threadCap();
+  const unsigned threads =
+      requested ? requested : std::max(1u, std::thread::hardware_concurrency());
   return cap != 0 && cap < threads ? cap : threads;
 }
 
