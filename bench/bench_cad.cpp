@@ -51,10 +51,10 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "bench_args.h"
 #include "bench_report.h"
 #include "cad/cad_file.h"
 #include "cad/to_trimmed.h"
@@ -605,18 +605,14 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
   report.print(table);
 }
 
-std::vector<double> parseList(const std::string& text) {
-  std::vector<double> values;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) values.push_back(std::stod(item));
-  return values;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-  bench::Report report("cad", argc, argv);
+  bench::Report report("cad",
+                       "[relative tolerances=0.001,0.0001] [--dir folder] [--cpu] [--model text] "
+                       "[--detail] [--tessera-only] [--tessera-scale s] [--threads n] "
+                       "[--no-match] [--json file]",
+                       argc, argv);
   std::vector<double> relatives = {1e-3, 1e-4};
   std::string folder = kIdfLibrary, filter;
   bool cpuOnly = false;
@@ -630,18 +626,18 @@ int main(int argc, char** argv) {
       cpuOnly = true;
     else if (arg == "--detail")
       gDetail = true;
-    else if (arg == "--json" && i + 1 < argc)
-      ++i;  // bench::Report's
     else if (arg == "--tessera-only")
       tesseraOnly = true;
     else if (arg == "--tessera-scale" && i + 1 < argc)
-      tesseraScale = std::stod(argv[++i]);
+      tesseraScale = bench::numberArg(report, argv[++i], "--tessera-scale", 1e-6);
     else if (arg == "--no-match")
       matchOcct = false;
     else if (arg == "--threads" && i + 1 < argc)
-      tesseraThreads = unsigned(std::stoul(argv[++i]));
+      tesseraThreads = unsigned(bench::integerArg(report, argv[++i], "--threads", 0, 1024));
+    else if (arg.rfind("--", 0) == 0)
+      report.usageError("unknown option or missing value: '" + arg + "'");
     else
-      relatives = parseList(arg);
+      relatives = bench::numberListArg(report, arg, "relative tolerances", 1e-9);
   }
   if (!fs::is_directory(folder)) {
     std::fprintf(stderr, "bench_cad: %s is not a folder (install freecad-common: scripts/deps.sh)\n",

@@ -10,6 +10,7 @@
 #include <random>
 
 #include "bench_common.h"
+#include "bench_args.h"
 #include "bench_report.h"
 #include "division/count.h"
 #include "division/counter.h"
@@ -39,8 +40,10 @@ RationalBezierPatch randomPatch(int kind, std::mt19937& rng) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bench::Report report("bench_divisions", argc, argv);
-  const size_t count = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : size_t(1) << 20;
+  bench::Report report("bench_divisions", "[patches=1048576] [--json file]", argc, argv);
+  bench::atMostArguments(report, argc, argv, 1);
+  const size_t count = argc > 1 ? size_t(bench::integerArg(report, argv[1], "patches", 1, 1L << 26))
+                                : size_t(1) << 20;
   std::mt19937 rng(11);
   std::vector<RationalBezierPatch> patches;
   patches.reserve(count);

@@ -14,6 +14,7 @@
 #include <random>
 #include <thread>
 
+#include "bench_args.h"
 #include "bench_report.h"
 #include "bench_scenes.h"
 #include "geometry/bicubic.h"
@@ -106,10 +107,15 @@ void pointCases(bench::Report& report, vk::Context& context,
 }  // namespace
 
 int main(int argc, char** argv) {
-  bench::Report report("bench_eval", argc, argv);
-  size_t patchCount = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : 1024;
-  uint32_t n = argc > 2 ? uint32_t(std::strtoul(argv[2], nullptr, 10)) : 32;
-  size_t queryCount = argc > 3 ? std::strtoull(argv[3], nullptr, 10) : size_t(1) << 18;
+  bench::Report report(
+      "bench_eval", "[patches=1024] [pointsPerSide=32] [queries=262144] [--json file]", argc, argv);
+  bench::atMostArguments(report, argc, argv, 3);
+  size_t patchCount =
+      argc > 1 ? size_t(bench::integerArg(report, argv[1], "patches", 1, 1L << 20)) : 1024;
+  uint32_t n =
+      argc > 2 ? uint32_t(bench::integerArg(report, argv[2], "pointsPerSide", 2, 1024)) : 32;
+  size_t queryCount = argc > 3 ? size_t(bench::integerArg(report, argv[3], "queries", 1, 1L << 26))
+                               : size_t(1) << 18;
   auto patches = bench::randomPatches(patchCount);
 
   vk::ContextOptions options;

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "bench_args.h"
 #include "bench_report.h"
 #include "common/stopwatch.h"
 #include "loop/bvh.h"
@@ -156,8 +157,11 @@ void joinTable(bench::Report& report, int frequency) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bench::Report report("bench_loop", argc, argv);
-  const int frequency = argc > 1 ? std::atoi(argv[1]) : 22;  // 20·f² triangles: 9680
+  bench::Report report("bench_loop", "[frequency=22] [--json file]", argc, argv);
+  bench::atMostArguments(report, argc, argv, 1);
+  // 20·f² triangles: 9680
+  const int frequency =
+      argc > 1 ? int(bench::integerArg(report, argv[1], "frequency", 1, 200)) : 22;
   vk::ContextOptions options;
   vk::Context context(options);
   report.setDevice(context);

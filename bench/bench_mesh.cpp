@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "bench_args.h"
 #include "bench_report.h"
 #include "bench_scenes.h"
 #include "io/bpt_reader.h"
@@ -15,8 +16,9 @@
 using namespace tessera;
 
 int main(int argc, char** argv) {
-  bench::Report report("bench_mesh", argc, argv);
-  int instances = argc > 1 ? std::atoi(argv[1]) : 1000;
+  bench::Report report("bench_mesh", "[instances=1000] [--json file]", argc, argv);
+  bench::atMostArguments(report, argc, argv, 1);
+  int instances = argc > 1 ? int(bench::integerArg(report, argv[1], "instances", 1, 100000)) : 1000;
   auto patches = bench::perturbedCopies(readBpt(TESSERA_BENCH_DATA "/teapot.bpt"), instances);
   const PatchSet gpuPatches(toGpuPatches(patches));
   vk::ContextOptions options;

@@ -37,10 +37,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 
+#include "bench_args.h"
 #include "bench_report.h"
 #include "common/stopwatch.h"
 #include "mesh/deviation.h"
@@ -480,19 +482,20 @@ void runDeflection(bench::Report& report, const BenchSet& set, double deflection
 }  // namespace
 
 int main(int argc, char** argv) {
-  bench::Report report("bench_occt", argc, argv);
+  bench::Report report("bench_occt", "[deflections=0.01,0.001] [rules=B] [ratios=1] [--json file]",
+                       argc, argv);
+  bench::atMostArguments(report, argc, argv, 3);
   std::vector<double> deflections = {0.01, 0.001};
-  if (argc > 1) {
-    deflections.clear();
-    std::stringstream list(argv[1]);
-    for (std::string item; std::getline(list, item, ',');) deflections.push_back(std::stod(item));
-  }
+  if (argc > 1) deflections = bench::numberListArg(report, argv[1], "deflections", 1e-9);
   std::vector<SplitRule> rules = {SplitRule::Midpoint};
   bool countedGridsAsked = false;  // "A": rule A with per-patch Filip counts
   if (argc > 2) {
     rules.clear();
     for (const char* r = argv[2]; *r; ++r) {
       if (*r == ',') continue;
+      if (!std::strchr("ABCDT", *r))
+        report.usageError(std::string("rules '") + argv[2] +
+                          "': expected letters of A, B, C, D, T");
       SplitRule rule = parseSplitRule(std::string(1, *r));
       if (rule == SplitRule::UniformGrid)
         countedGridsAsked = true;
@@ -505,7 +508,8 @@ int main(int argc, char** argv) {
     ratios.clear();
     std::stringstream list(argv[3]);
     for (std::string item; std::getline(list, item, ',');)
-      ratios.push_back(item == "inf" ? 1e30 : std::stod(item));
+      ratios.push_back(item == "inf" ? 1e30 : bench::numberArg(report, item, "ratios", 1e-9));
+    if (ratios.empty()) report.usageError("ratios: expected at least one number");
   }
   BenchSet teaSet;
   teaSet.label = "tea set";

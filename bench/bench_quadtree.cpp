@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <thread>
 
+#include "bench_args.h"
 #include "bench_report.h"
 #include "bench_scenes.h"
 #include "eval/evaluator.h"
@@ -74,10 +75,15 @@ void benchRule(bench::Report& report, SplitRule rule, int instances, float thres
 }  // namespace
 
 int main(int argc, char** argv) {
-  bench::Report report("bench_quadtree", argc, argv);
-  int instancesB = argc > 1 ? std::atoi(argv[1]) : 1000;
-  int instancesD = argc > 2 ? std::atoi(argv[2]) : 100;
-  float threshold = argc > 3 ? float(std::atof(argv[3])) : 0.05f;
+  bench::Report report("bench_quadtree",
+                       "[instancesB=1000] [instancesD=100] [threshold=0.05] [--json file]", argc,
+                       argv);
+  bench::atMostArguments(report, argc, argv, 3);
+  int instancesB =
+      argc > 1 ? int(bench::integerArg(report, argv[1], "instancesB", 0, 100000)) : 1000;
+  int instancesD =
+      argc > 2 ? int(bench::integerArg(report, argv[2], "instancesD", 0, 100000)) : 100;
+  float threshold = argc > 3 ? float(bench::numberArg(report, argv[3], "threshold", 0)) : 0.05f;
   auto teapot = readBpt(TESSERA_BENCH_DATA "/teapot.bpt");
   vk::ContextOptions options;
   vk::Context context(options);

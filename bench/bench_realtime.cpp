@@ -25,6 +25,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "bench_args.h"
 #include "bench_report.h"
 #include "bench_scenes.h"
 #include "common/stopwatch.h"
@@ -261,12 +262,18 @@ void printPeer(const char* name, const PeerRun& run, int frames, const TesseraRu
 }  // namespace
 
 int main(int argc, char** argv) {
-  bench::Report report("bench_realtime", argc, argv);
-  const int frames = argc > 1 ? std::atoi(argv[1]) : 300;
-  const int teapots = argc > 2 ? std::atoi(argv[2]) : 100;
-  const double tolerance = argc > 3 ? std::atof(argv[3]) : 1.0;
-  const int ratioPieces = argc > 4 ? std::atoi(argv[4]) : 4;
-  const int treeStride = argc > 5 && argv[5][0] != '-' ? std::max(1, std::atoi(argv[5])) : 10;
+  bench::Report report("bench_realtime",
+                       "[frames=300] [teapots=100] [tolerancePx=1] [q=4] [treeStride=10] "
+                       "[--json file]",
+                       argc, argv);
+  bench::atMostArguments(report, argc, argv, 5);
+  const int frames = argc > 1 ? int(bench::integerArg(report, argv[1], "frames", 1, 1000000)) : 300;
+  const int teapots =
+      argc > 2 ? int(bench::integerArg(report, argv[2], "teapots", 1, 100000)) : 100;
+  const double tolerance = argc > 3 ? bench::numberArg(report, argv[3], "tolerancePx", 1e-3) : 1.0;
+  const int ratioPieces = argc > 4 ? int(bench::integerArg(report, argv[4], "q", 1, 64)) : 4;
+  const int treeStride =
+      argc > 5 ? int(bench::integerArg(report, argv[5], "treeStride", 1, 1000000)) : 10;
   const int perRow = std::max(1, int(std::lround(std::sqrt(double(teapots)))));
   const auto patches =
       bench::perturbedCopies(readBpt(TESSERA_BENCH_DATA "/teapot.bpt"), teapots, perRow);

@@ -15,6 +15,7 @@
 #include <memory>
 #include <string>
 
+#include "bench_args.h"
 #include "bench_report.h"
 #include "common/stopwatch.h"
 #include "reduction/curve_product.h"
@@ -86,10 +87,13 @@ BSplineCurve reduceCurveSisl(const BSplineCurve& c, double tolerance) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bench::Report report("bench_reduction", argc, argv);
+  bench::Report report("bench_reduction", "[--count N] [--json file]", argc, argv);
   int count = kLargeSurfaceCount;
-  for (int a = 1; a + 1 < argc; ++a) {
-    if (std::strcmp(argv[a], "--count") == 0) count = std::atoi(argv[a + 1]);
+  for (int a = 1; a < argc; ++a) {
+    if (std::strcmp(argv[a], "--count") == 0 && a + 1 < argc)
+      count = int(bench::integerArg(report, argv[++a], "--count", 4, 100000));
+    else
+      report.usageError(std::string("unexpected argument '") + argv[a] + "'");
   }
   const BSplineSurface surface = syntheticLast(count, count);
   ReductionOptions options;

@@ -1,6 +1,7 @@
 #include "bench_report.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 #include <vector>
@@ -21,18 +22,31 @@ double measureHostCopyBandwidth() {
   return double(bytes) / t.minSeconds;
 }
 
-Report::Report(std::string benchName, int& argc, char** argv) : name_(std::move(benchName)) {
+Report::Report(std::string benchName, const char* usage, int& argc, char** argv)
+    : name_(std::move(benchName)), usage_(usage) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // tables appear as they finish, also in a pipe
+  const char* slash = argc > 0 ? std::strrchr(argv[0], '/') : nullptr;
+  program_ = argc > 0 ? (slash ? slash + 1 : argv[0]) : name_;
   int out = 1;
   for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "-h") == 0 || std::strcmp(argv[i], "--help") == 0) {
+      std::printf("usage: %s %s\n", program_.c_str(), usage_.c_str());
+      std::exit(0);
+    }
     if (std::strcmp(argv[i], "--json") == 0) {
-      if (i + 1 >= argc) throw std::invalid_argument(name_ + ": --json needs a file name");
+      if (i + 1 >= argc) usageError("--json needs a file name");
       jsonPath_ = argv[++i];
     } else {
       argv[out++] = argv[i];
     }
   }
   argc = out;
+}
+
+void Report::usageError(const std::string& why) const {
+  std::fprintf(stderr, "%s: %s\nusage: %s %s\n", program_.c_str(), why.c_str(), program_.c_str(),
+               usage_.c_str());
+  std::exit(2);
 }
 
 void Report::setDevice(const vk::Context& context) {

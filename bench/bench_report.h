@@ -48,8 +48,12 @@ constexpr double kVertexBytes = 32;
 class Report {
  public:
   // Takes `--json <file>` out of argv (argc adjusted); the remaining arguments are the
-  // benchmark's own. Throws std::invalid_argument for `--json` without a file.
-  Report(std::string benchName, int& argc, char** argv);
+  // benchmark's own. `usage` is its arguments' synopsis ("[patches=1024] [--json file]"):
+  // -h or --help prints it and exits 0; `--json` without a file is a usage error.
+  Report(std::string benchName, const char* usage, int& argc, char** argv);
+
+  // Prints "<program>: <why>" and the usage to stderr and exits 2: a bad argument.
+  [[noreturn]] void usageError(const std::string& why) const;
 
   void setDevice(const vk::Context& context);
   void note(const std::string& key, const nlohmann::json& value) { notes_[key] = value; }
@@ -64,6 +68,8 @@ class Report {
   double capVerticesPerSecond() const;
 
   std::string name_;
+  std::string program_;  // argv[0]'s file name, for messages
+  std::string usage_;
   std::string jsonPath_;
   nlohmann::json notes_ = nlohmann::json::object();
   std::deque<Table> tables_;  // deque: table() hands out references

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "bench_args.h"
 #include "bench_report.h"
 #include "common/stopwatch.h"
 #include "mesh/tessellate.h"
@@ -48,13 +49,13 @@ double peakResidentMiB() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bench::Report report("bench_scale", argc, argv);
-  const long requested = argc > 1 ? std::atol(argv[1]) : 1000000;
-  const double budgetMiB = argc > 2 ? std::atof(argv[2]) : 64.0;
-  if (requested < 1 || !(budgetMiB > 0)) {
-    std::fprintf(stderr, "usage: bench_scale [patches ≥ 1] [frontier budget MiB > 0] [--json file]\n");
-    return 2;
-  }
+  bench::Report report("bench_scale", "[patches=1000000] [frontier budget MiB=64] [--json file]",
+                       argc, argv);
+  bench::atMostArguments(report, argc, argv, 2);
+  const long requested =
+      argc > 1 ? bench::integerArg(report, argv[1], "patches", 1, 100000000) : 1000000;
+  const double budgetMiB =
+      argc > 2 ? bench::numberArg(report, argv[2], "frontier budget MiB", 1.0 / 1024) : 64.0;
   const int n = std::max(1, int(std::lround(std::sqrt(double(requested)))));
   auto patches = wavySheet(n);
   const double sceneMiB = peakResidentMiB();

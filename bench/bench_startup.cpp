@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_args.h"
 #include "bench_report.h"
 #include "io/bpt_reader.h"
 #include "mesh/tessellate.h"
@@ -226,8 +227,10 @@ void wholeProcess(bench::Report& report, const Job& job, int runs) {
 
 int main(int argc, char** argv) {
   using namespace tessera;
-  bench::Report report("bench_startup", argc, argv);
-  const int runs = std::max(bench::kMinRuns, argc > 1 ? std::atoi(argv[1]) : 9);
+  bench::Report report("bench_startup", "[runs=9, at least 5] [--json file]", argc, argv);
+  bench::atMostArguments(report, argc, argv, 1);
+  const int runs = std::max(
+      bench::kMinRuns, argc > 1 ? int(bench::integerArg(report, argv[1], "runs", 1, 1000)) : 9);
   const auto teapot = readBpt(TESSERA_BENCH_DATA "/teapot.bpt");
   // README's command 1 gives no -m: rule T at the default tolerance, as the CLI resolves it.
   const std::vector<Job> jobs = {

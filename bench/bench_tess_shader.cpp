@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "bench_args.h"
 #include "bench_report.h"
 #include "bench_scenes.h"
 #include "common/stopwatch.h"
@@ -20,10 +21,12 @@
 using namespace tessera;
 
 int main(int argc, char** argv) {
-  bench::Report report("bench_tess_shader", argc, argv);
-  int frames = argc > 1 ? std::atoi(argv[1]) : 300;
-  int teapots = argc > 2 ? std::atoi(argv[2]) : 100;
-  float tolerance = argc > 3 ? float(std::atof(argv[3])) : 1.0f;
+  bench::Report report("bench_tess_shader",
+                       "[frames=300] [teapots=100] [tolerancePx=1] [--json file]", argc, argv);
+  bench::atMostArguments(report, argc, argv, 3);
+  int frames = argc > 1 ? int(bench::integerArg(report, argv[1], "frames", 1, 1000000)) : 300;
+  int teapots = argc > 2 ? int(bench::integerArg(report, argv[2], "teapots", 1, 100000)) : 100;
+  float tolerance = argc > 3 ? float(bench::numberArg(report, argv[3], "tolerancePx", 1e-3)) : 1.0f;
   // 100 teapots as a 10 × 10 block.
   int perRow = std::max(1, int(std::lround(std::sqrt(double(teapots)))));
   auto patches = bench::perturbedCopies(readBpt(TESSERA_BENCH_DATA "/teapot.bpt"), teapots, perRow);

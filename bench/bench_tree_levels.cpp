@@ -6,10 +6,11 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstdio>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "bench_args.h"
+#include "bench_report.h"
 #include "common/stopwatch.h"
 #include "eval/patch_set.h"
 #include "geometry/model_frame.h"
@@ -20,22 +21,16 @@
 using namespace tessera;
 
 int main(int argc, char** argv) {
-  std::vector<std::string> args;
-  for (int i = 1; i < argc; ++i) {
-    if (std::string(argv[i]) == "--json") {
-      ++i;
-      continue;
-    }
-    args.push_back(argv[i]);
-  }
+  // Its report is never written (text only): Report checks the arguments and takes --json.
+  bench::Report report("bench_tree_levels", "[tolerances=0.01,0.001] [runs=20] [vulkan|mirror]",
+                       argc, argv);
+  bench::atMostArguments(report, argc, argv, 3);
   std::vector<double> tolerances = {0.01, 0.001};
-  if (args.size() > 0) {
-    tolerances.clear();
-    std::stringstream list(args[0]);
-    for (std::string item; std::getline(list, item, ',');) tolerances.push_back(std::stod(item));
-  }
-  const int runs = args.size() > 1 ? std::max(1, std::atoi(args[1].c_str())) : 20;
-  const std::string which = args.size() > 2 ? args[2] : "vulkan";
+  if (argc > 1) tolerances = bench::numberListArg(report, argv[1], "tolerances", 1e-9);
+  const int runs = argc > 2 ? int(bench::integerArg(report, argv[2], "runs", 1, 100000)) : 20;
+  const std::string which = argc > 3 ? argv[3] : "vulkan";
+  if (which != "vulkan" && which != "mirror")
+    report.usageError("classifier '" + which + "': expected vulkan or mirror");
 
   std::vector<BezierPatch> patches;
   const char* names[] = {"teapot", "teacup", "teaspoon"};
