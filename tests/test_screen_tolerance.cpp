@@ -284,7 +284,7 @@ TEST_CASE("rule T in pixels: bad cameras and tolerances are refused", "[toleranc
 TEST_CASE("rule T in pixels: GPU trees equal the fp32 mirror's",
           "[gpu][tolerance][screen][parity]") {
   vk::Context& context = test::gpuContext();
-  Backend gpu = makeVulkanBackend(context);
+  Backend gpu = makeVulkanBackend(context, 0);  // every level on the device
   Backend cpu = makeMirrorBackend();
   const std::vector<BezierPatch> pot = teapot();
   const Camera camera = cameraAt(boxOf(pot), {0.2, -3.0, 0.15}, 0.45);

@@ -100,6 +100,7 @@ TEST_CASE("stats: the teapot report adds up", "[stats]") {
     CHECK(l.at("level") == t.stats.levels[level].level);
     CHECK(l.at("nodes") == t.stats.levels[level].nodes);
     CHECK(l.at("splits") == t.stats.levels[level].splits);
+    CHECK(l.at("hostNodes") == t.stats.levels[level].hostNodes);
     for (const char* timing : {"classifyMs", "gpuMs", "frontierMs"})
       CHECK(l.at(timing).get<double>() >= 0);
     const size_t fromPatches =

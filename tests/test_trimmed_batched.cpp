@@ -204,7 +204,7 @@ TEST_CASE("trimmed batch: Vulkan gives the mirror's mesh bit for bit", "[trim][t
   const double delta = 2e-3;
   const TrimmedModel model = bumpyCubeAndDisc(true);
   Backend cpu = makeMirrorBackend();
-  Backend vulkan = makeVulkanBackend(gpuContext());
+  Backend vulkan = makeVulkanBackend(gpuContext(), 0);  // every level on the device
   const auto vulkanTrim = makeVulkanTrimClassifier(gpuContext());
   const TrimmedMesh a = meshWith(model, delta, true, 0, cpu);
   const TrimmedMesh b = meshWith(model, delta, true, 0, vulkan, vulkanTrim.get());

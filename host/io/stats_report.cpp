@@ -129,7 +129,8 @@ nlohmann::json statsToJson(const TessellationStats& s) {
                       {"leaves", l.leaves},
                       {"classifyMs", l.classifyMs},
                       {"gpuMs", l.gpuMs},
-                      {"frontierMs", l.frontierMs}});
+                      {"frontierMs", l.frontierMs},
+                      {"hostNodes", l.hostNodes}});
   return {{"schema", "tessera-stats"},
           {"schemaVersion", kStatsSchemaVersion},
           {"totals",

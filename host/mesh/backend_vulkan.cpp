@@ -4,8 +4,9 @@
 
 namespace tessera {
 
-Backend makeVulkanBackend(vk::Context& context) {
-  auto classifier = makeVulkanClassifier(context);
+Backend makeVulkanBackend(vk::Context& context, size_t hostLevelNodes) {
+  // Small levels on the host: a submission costs the device more than the mirror takes for them.
+  auto classifier = withSmallLevelsOnHost(makeVulkanClassifier(context), hostLevelNodes);
   auto evaluator = makeVulkanEvaluator(context);
   return {"vulkan", std::move(classifier), std::move(evaluator)};
 }

@@ -24,7 +24,9 @@ struct Backend {
 };
 
 Backend makeMirrorBackend();  // fp32 mirror, all cores for the tree and large evaluations
-Backend makeVulkanBackend(vk::Context& context);
+// The tree's rule T batches of fewer than `hostLevelNodes` nodes are decided on the host by
+// the fp32 mirror (withSmallLevelsOnHost; 0: every batch on the device, for parity tests).
+Backend makeVulkanBackend(vk::Context& context, size_t hostLevelNodes = kHostLevelNodes);
 
 struct TessellationStats {
   size_t patches = 0, leaves = 0, triangles = 0, vertices = 0;

@@ -228,6 +228,7 @@ void addLevelStats(LevelStats& total, const LevelStats& batch) {
   total.classifyMs += batch.classifyMs;
   total.gpuMs += batch.gpuMs;
   total.frontierMs += batch.frontierMs;
+  total.hostNodes += batch.hostNodes;
 }
 
 // One tree over `patches` (a group; leaves name patch firstPatch + local index). Levels are

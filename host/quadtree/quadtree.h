@@ -37,6 +37,8 @@ struct LevelStats {
   double gpuMs = 0;       // GPU time of the dispatch by timestamps (0 on CPU backends and
                           // without QuadtreeOptions::timeGpu)
   double frontierMs = 0;  // host: emitting leaves and building the next level
+  size_t hostNodes = 0;   // of `nodes`, those a device backend left to the host's fp32 mirror
+                          // (withSmallLevelsOnHost; 0 on CPU backends)
 };
 
 // Rule T's maximum depth: a level may split one direction only, so a patch needs up to about
@@ -45,6 +47,14 @@ constexpr uint32_t kToleranceMaxDepth = 30;
 // Rule T's default cap on equal children per direction (QuadtreeOptions::toleranceSplitCap),
 // the cap with the fewest tea-set triangles (docs/quadtree.md, "Rule T: tolerance").
 constexpr uint32_t kToleranceSplitCap = 4;
+// makeVulkanBackend's classifier decides a batch of fewer nodes than this on the host with the
+// fp32 mirror under rule T (withSmallLevelsOnHost). Rule T on the tea set, warm, without
+// timestamps (which add ~0.05 ms a level): a level costs lavapipe 0.03-0.09 ms whatever its
+// size (a submission, its fence, two dispatches), the mirror ~1 µs a node (74 nodes: 0.050 ms
+// on the device, 0.085 on the host; 16 nodes: 0.032 and 0.013; 8: 0.032 and 0.007), so they
+// break even at 30-90 nodes (bench/HISTORY.md, "Small levels on the host"). A real GPU's
+// submission costs no less, and the mirror's time does not depend on the device.
+constexpr size_t kHostLevelNodes = 64;
 
 struct QuadtreeOptions {
   SplitRule rule = SplitRule::Midpoint;
@@ -166,7 +176,11 @@ class NodeClassifier {
 std::unique_ptr<NodeClassifier> makeMirrorClassifier();            // fp32, shader's twin
 std::unique_ptr<NodeClassifier> makeParallelMirrorClassifier();    // the same on all cores
 std::unique_ptr<NodeClassifier> makeReferenceClassifier();         // double precision
-std::unique_ptr<NodeClassifier> makeVulkanClassifier(vk::Context& context);
+std::unique_ptr<NodeClassifier> makeVulkanClassifier(vk::Context& context);  // device alone
+// `device`, with rule T batches of fewer than `hostLevelNodes` nodes decided by the fp32 mirror
+// on the host (LevelStats::hostNodes counts them; 0: every batch on the device).
+std::unique_ptr<NodeClassifier> withSmallLevelsOnHost(std::unique_ptr<NodeClassifier> device,
+                                                      size_t hostLevelNodes = kHostLevelNodes);
 
 QuadtreeResult buildQuadtree(const PatchSet& patches, const QuadtreeOptions& options,
                              NodeClassifier& classifier);
