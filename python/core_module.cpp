@@ -120,10 +120,12 @@ PYBIND11_MODULE(_core, m) {
   py::class_<tessera::Tessellator> tessellator(
       m, "Tessellator", "Keeps the device open: make one, tessellate many times");
   tessellator
-      .def(py::init([](const std::string& device, const std::string& deviceName) {
-             return tessera::Tessellator({parseDevice(device), deviceName});
+      .def(py::init([](const std::string& device, const std::string& deviceName, unsigned threads) {
+             return tessera::Tessellator({parseDevice(device), deviceName, threads});
            }),
-           py::arg("device") = "auto", py::arg("device_name") = "")
+           py::arg("device") = "auto", py::arg("device_name") = "", py::arg("threads") = 0u,
+           "threads: the most CPU threads each parallel step of a call uses (0: all cores; 1: "
+           "the calling thread only), as TessellatorOptions::threads")
       .def_property_readonly("device_name", &tessera::Tessellator::deviceName)
       .def_property_readonly("uses_vulkan", &tessera::Tessellator::usesVulkan)
       .def(
@@ -143,8 +145,8 @@ PYBIND11_MODULE(_core, m) {
           },
           py::arg("surface"), py::arg("weights") = py::none(), py::arg("rule") = "B",
           py::arg("linearity") = 0.1f, py::arg("flatness") = 0.1f,
-          py::arg("grid") = std::make_pair(8, 8), py::arg("samples") = 5,
-          py::arg("max_depth") = 0u, py::arg("tolerance") = 0.0,
+          py::arg("grid") = std::make_pair(8, 8), py::arg("samples") = 5, py::arg("max_depth") = 0u,
+          py::arg("tolerance") = 0.0,
           "Adaptive tessellation of a file path or control points by split rule A-D, or T "
           "with `tolerance` (model units)")
       .def(

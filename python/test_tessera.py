@@ -57,6 +57,12 @@ again = t.tessellate(points, rule="D", flatness=0.05, linearity=0.05)
 assert np.array_equal(again.indices, mesh.indices)
 assert np.array_equal(again.positions, mesh.positions)
 
+# threads=1 (TessellatorOptions::threads): everything on the calling thread, the same mesh.
+one = tessera.Tessellator(device="cpu", threads=1).tessellate(points, rule="D", flatness=0.05,
+                                                               linearity=0.05)
+assert np.array_equal(one.indices, mesh.indices)
+assert np.array_equal(one.positions, mesh.positions)
+
 # Rational control points and a tolerance: more triangles for a tighter one.
 weights = np.ones((32, 4, 4))
 weights[:, 1, 1] = 2.0
