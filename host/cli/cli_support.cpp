@@ -145,8 +145,8 @@ std::unique_ptr<vk::Context> makeContext(const std::string& device) {
 }  // namespace
 
 PendingContext startMakingContext(const std::string& name, const std::string& device) {
-  // Under --threads 1 (common/thread_cap.h) chooseBackend makes it on this thread.
-  if ((name != "vulkan" && name != "auto") || threadCap() == 1) return {};
+  // Under --threads 1 chooseBackend makes it on this thread.
+  if ((name != "vulkan" && name != "auto") || !helperThreadsAllowed()) return {};
   return std::async(std::launch::async, makeContext, device);
 }
 
@@ -173,7 +173,7 @@ ChosenBackend chooseBackend(const std::string& name, const std::string& device,
 
 std::future<void> releaseInBackground(ChosenBackend&& chosen) {
   // The CPU backend (nothing slow to destroy), or --threads 1: released here, no thread.
-  if (!chosen.context || threadCap() == 1) {
+  if (!chosen.context || !helperThreadsAllowed()) {
     ChosenBackend released = std::move(chosen);
     return {};
   }

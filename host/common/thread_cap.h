@@ -9,6 +9,11 @@ namespace tessera {
 // The cap in force on this thread; 0: none.
 unsigned threadCap();
 
+// Whether this call may hand work to a helper thread of its own (a pipeline built in the
+// background, the CLI's context made or released aside): not under a cap of 1, whose promise
+// is that nothing runs off the calling thread.
+inline bool helperThreadsAllowed() { return threadCap() != 1; }
+
 // Caps the threads of every parallel loop run in its scope on this thread at `cap` (each loop
 // uses at most `cap` threads, the calling one included): cap 1 runs every part on the calling
 // thread and starts no worker. cap 0 adds no cap, and a scope never lifts an enclosing one: the

@@ -31,7 +31,10 @@ class SmallLevelsOnHost final : public NodeClassifier {
 
   // The device gets the patches only when a batch first needs it: a tree whose every level is
   // small uploads nothing and builds no pipeline.
-  void beginTree(const PatchSet& /*patches*/) override { deviceHasTree_ = false; }
+  void beginTree(const PatchSet& patches) override {
+    host_->beginTree(patches);
+    deviceHasTree_ = false;
+  }
 
   void classify(const PatchSet& patches, const std::vector<gpu::QuadNode>& nodes,
                 const QuadtreeOptions& options, std::vector<gpu::NodeDecision>& decisions,

@@ -15,8 +15,7 @@ BackgroundPipeline::~BackgroundPipeline() {
 
 void BackgroundPipeline::start() {
   if (pipeline_ || pending_.valid()) return;
-  // A caller capped to its own thread (thread_cap.h) gets no thread from us: get() builds it.
-  if (threadCap() == 1) return;
+  if (!helperThreadsAllowed()) return;  // get() builds it on the caller's thread
   pending_ = std::async(std::launch::async, [this] {
     return std::make_unique<ComputePipeline>(context_, desc_);
   });
