@@ -45,9 +45,12 @@ void bernsteinDerivative(int degree, int order, double t, double* out);
 // Every row of the de Casteljau triangle: b[d][i] = B_i,d(t) for d = 0..degree.
 // Derivatives are taken in difference form, d^k/dt^k Σ B_i,n b_i = n!/(n−k)! Σ B_i,n−k Δ^k b_i
 // (Farin, Curves and Surfaces for CAGD, §5.3), which needs the lower rows.
+// Only b[d][0..d] for d ≤ degree are written and read: the rest is left unset (zeroing all
+// 64 doubles was most of a bicubic point's Bernstein values, which the triangulator's
+// near-point tests evaluate a few hundred of a mesh).
 struct BernsteinTriangle {
   int degree = 0;
-  std::array<std::array<double, kMaxDegree + 1>, kMaxDegree + 1> b{};
+  std::array<std::array<double, kMaxDegree + 1>, kMaxDegree + 1> b;
 };
 BernsteinTriangle bernsteinTriangle(int degree, double t);
 
