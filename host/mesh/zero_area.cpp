@@ -18,11 +18,17 @@ bool strictlyBetween(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b)
   return t > 0.0 && t < glm::dot(ab, ab) && p != a && p != b;
 }
 
+// zeroArea's test, inlined into the scan of every triangle (a call each was ~40% of the scan).
+[[gnu::always_inline]] inline bool crossIsZero(const glm::vec3& a, const glm::vec3& b,
+                                               const glm::vec3& c) {
+  const glm::dvec3 n = glm::cross(glm::dvec3(b) - glm::dvec3(a), glm::dvec3(c) - glm::dvec3(a));
+  return n.x == 0.0 && n.y == 0.0 && n.z == 0.0;
+}
+
 }  // namespace
 
 bool zeroArea(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
-  const glm::dvec3 n = glm::cross(glm::dvec3(b) - glm::dvec3(a), glm::dvec3(c) - glm::dvec3(a));
-  return n.x == 0.0 && n.y == 0.0 && n.z == 0.0;
+  return crossIsZero(a, b, c);
 }
 
 std::vector<bool> removeCaps(const std::vector<glm::vec3>& positions,
@@ -41,7 +47,7 @@ std::vector<uint32_t> removeCapTriangles(const std::vector<glm::vec3>& positions
   const size_t count = indices.size() / 3;
   const auto corner = [&](size_t t, int k) { return indices[3 * t + size_t(k)]; };
   const auto isCap = [&](size_t t) {
-    return zeroArea(positions[corner(t, 0)], positions[corner(t, 1)], positions[corner(t, 2)]);
+    return crossIsZero(positions[corner(t, 0)], positions[corner(t, 1)], positions[corner(t, 2)]);
   };
   // The caps in triangle order, found on `threads` threads: each share's own list, in turn.
   constexpr size_t kShare = 8192;
