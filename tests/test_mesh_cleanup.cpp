@@ -124,7 +124,9 @@ TEST_CASE("mesh cleanup: welding keeps each position's first vertex, on any thre
   // a position to the first vertex there.
   std::mt19937 random(20261129);
   std::uniform_int_distribution<int> pick(0, 299), sign(0, 1);
-  std::vector<glm::vec3> positions(20000);
+  // 20,000 take the flat table; 300,000 (past 2¹⁸) the sharded map (position_weld.cpp).
+  const size_t count = GENERATE(size_t(20000), size_t(300000));
+  std::vector<glm::vec3> positions(count);
   for (glm::vec3& p : positions) {
     const int k = pick(random);
     p = glm::vec3(float(k % 7) * 0.25f, float(k / 7 % 5), float(k / 35));
@@ -138,7 +140,7 @@ TEST_CASE("mesh cleanup: welding keeps each position's first vertex, on any thre
   }
   REQUIRE(first.size() == 300);
   for (unsigned threads : {1u, 2u, 3u, 0u}) {
-    INFO(threads << " threads");
+    INFO(count << " positions, " << threads << " threads");
     REQUIRE(weldIdenticalPositions(positions, threads) == expected);
   }
 }

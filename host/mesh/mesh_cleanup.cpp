@@ -1,45 +1,11 @@
 #include "mesh/mesh_cleanup.h"
 
-#include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <stdexcept>
 #include <string>
 
-#include "common/first_occurrence.h"
-
 namespace tessera {
-
-namespace {
-
-using CornerKey = std::array<uint32_t, 3>;  // three vertex indices, or a position's bits
-
-struct CornerKeyHash {
-  size_t operator()(const CornerKey& k) const {
-    return size_t(k[0] * 0x9E3779B97F4A7C15ull ^ k[1] * 0xC2B2AE3D27D4EB4Full ^
-                  k[2] * 0x165667B19E3779F9ull);
-  }
-};
-
-}  // namespace
-
-std::vector<uint32_t> weldIdenticalPositions(const std::vector<glm::vec3>& positions,
-                                             unsigned threads) {
-  const auto forEachKey = [&](auto&& visit) {
-    for (size_t i = 0; i < positions.size(); ++i) {
-      CornerKey key;
-      for (int c = 0; c < 3; ++c) {
-        float x = positions[i][c] == 0.0f ? 0.0f : positions[i][c];
-        std::memcpy(&key[c], &x, sizeof x);
-      }
-      visit(i, key);
-    }
-  };
-  return firstOccurrences<CornerKey, CornerKeyHash>(positions.size(), positions.size(),
-                                                    forEachKey, threads);
-}
 
 void requireFiniteSamples(const ParamMesh& param, const std::vector<gpu::VertexSample>& samples) {
   requireFiniteSamples(param, samples.data(), samples.size());

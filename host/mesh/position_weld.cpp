@@ -1,0 +1,79 @@
+// weldIdenticalPositions (mesh_cleanup.h): per vertex, the first vertex with its position bit
+// for bit (−0 and +0 one). Up to a few hundred thousand vertices one open-addressed table of
+// vertex indices does it on the calling thread: a probe compares the position in place, ~30
+// instructions a vertex where the sharded hash map of firstOccurrences took ~150 (its table's
+// clearing, 12-byte keys and per-entry bookkeeping), and a worker's wake-up would cost more
+// than the whole pass. Larger meshes keep the sharded map, on all the threads asked for.
+#include <algorithm>
+#include <array>
+#include <cstring>
+
+#include "common/first_occurrence.h"
+#include "mesh/mesh_cleanup.h"
+
+namespace tessera {
+namespace {
+
+using PositionBits = std::array<uint32_t, 3>;
+
+struct PositionBitsHash {
+  size_t operator()(const PositionBits& k) const {
+    return size_t(k[0] * 0x9E3779B97F4A7C15ull ^ k[1] * 0xC2B2AE3D27D4EB4Full ^
+                  k[2] * 0x165667B19E3779F9ull);
+  }
+};
+
+PositionBits bitsOf(const glm::vec3& p) {
+  PositionBits key;
+  for (int c = 0; c < 3; ++c) {
+    const float x = p[c] == 0.0f ? 0.0f : p[c];  // −0 welds with +0
+    std::memcpy(&key[size_t(c)], &x, sizeof x);
+  }
+  return key;
+}
+
+constexpr size_t kFlatTableVertices = size_t(1) << 18;
+
+std::vector<uint32_t> firstEqualInFlatTable(const std::vector<glm::vec3>& positions) {
+  const size_t count = positions.size();
+  std::vector<uint32_t> first(count);
+  // At most half full: short probes.
+  int bits = 4;
+  while ((size_t(1) << bits) < 2 * count) ++bits;
+  const size_t mask = (size_t(1) << bits) - 1;
+  constexpr uint32_t kEmpty = UINT32_MAX;
+  std::vector<uint32_t> table(mask + 1, kEmpty);
+  std::vector<PositionBits> keys(count);
+  for (size_t i = 0; i < count; ++i) {
+    const PositionBits key = bitsOf(positions[i]);
+    keys[i] = key;
+    const uint64_t h = uint64_t(PositionBitsHash{}(key)) * 0x9E3779B97F4A7C15ull;
+    for (size_t slot = size_t(h >> (64 - bits));; slot = (slot + 1) & mask) {
+      const uint32_t j = table[slot];
+      if (j == kEmpty) {
+        table[slot] = uint32_t(i);
+        first[i] = uint32_t(i);
+        break;
+      }
+      if (keys[j] == key) {
+        first[i] = j;
+        break;
+      }
+    }
+  }
+  return first;
+}
+
+}  // namespace
+
+std::vector<uint32_t> weldIdenticalPositions(const std::vector<glm::vec3>& positions,
+                                             unsigned threads) {
+  if (positions.size() <= kFlatTableVertices) return firstEqualInFlatTable(positions);
+  const auto forEachKey = [&](auto&& visit) {
+    for (size_t i = 0; i < positions.size(); ++i) visit(i, bitsOf(positions[i]));
+  };
+  return firstOccurrences<PositionBits, PositionBitsHash>(positions.size(), positions.size(),
+                                                          forEachKey, threads);
+}
+
+}  // namespace tessera
