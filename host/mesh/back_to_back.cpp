@@ -1,10 +1,10 @@
 // backToBackPairs and backToBackTriangles (mesh_cleanup.h). A triangle and its reverse have
 // one set of corners, so only triangles whose corner set another triangle may share can
-// cancel: a bit table of the sets' hashes finds those candidates in one pass (most meshes have
-// none that cancel, and ~30 instructions a triangle replace a bucketing of every triangle by
-// its smallest corner, ~140). The candidates are then grouped by corner set and each group is
-// settled in triangle order, which is the rule's order: a match only ever joins two triangles
-// of one set.
+// cancel: a bit table of the sets' hashes finds those candidates in two passes. The candidates
+// (on the tea set at δ 0.01 ~700 of 9,583 triangles, hash collisions all) are then grouped by
+// corner set and each group is settled in triangle order, which is the rule's order: a match
+// only ever joins two triangles of one set. This replaced a bucketing of every triangle by its
+// smallest corner: ~80 instructions a triangle instead of ~145, half the time (bench/HISTORY.md).
 #include <algorithm>
 #include <array>
 #include <map>
@@ -85,8 +85,8 @@ void settle(const std::vector<uint32_t>& indices, const uint32_t* first, const u
     open.clear();
     for (const uint32_t* i = first; i != last; ++i) {
       const Corners reverse = reverseKeyOf(*i);
-      const auto match = std::find_if(open.rbegin(), open.rend(),
-                                      [&](uint32_t o) { return keyOf(o) == reverse; });
+      const auto match =
+          std::find_if(open.rbegin(), open.rend(), [&](uint32_t o) { return keyOf(o) == reverse; });
       if (match != open.rend()) {
         cancelled[*match] = cancelled[*i] = 1;
         open.erase(std::next(match).base());
