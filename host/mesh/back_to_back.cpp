@@ -43,19 +43,22 @@ std::vector<uint32_t> sharedCornerSets(const std::vector<uint32_t>& indices) {
   std::vector<uint64_t> seen(2 * words, 0);  // [0, words): once; [words, 2 words): again
   uint64_t* const once = seen.data();
   uint64_t* const again = seen.data() + words;
-  std::vector<uint32_t> slots(count);
+  const auto slotOf = [&](size_t t) {
+    return size_t(cornerSetHash(&indices[3 * t]) >> (64 - bits));
+  };
   bool anyAgain = false;
   for (size_t t = 0; t < count; ++t) {
-    const uint32_t slot = uint32_t(cornerSetHash(&indices[3 * t]) >> (64 - bits));
-    slots[t] = slot;
+    const size_t slot = slotOf(t);
     const uint64_t bit = uint64_t(1) << (slot % 64);
     if (once[slot / 64] & bit) again[slot / 64] |= bit, anyAgain = true;
     once[slot / 64] |= bit;
   }
   std::vector<uint32_t> candidates;
   if (!anyAgain) return candidates;
-  for (size_t t = 0; t < count; ++t)
-    if (again[slots[t] / 64] & (uint64_t(1) << (slots[t] % 64))) candidates.push_back(uint32_t(t));
+  for (size_t t = 0; t < count; ++t) {
+    const size_t slot = slotOf(t);
+    if (again[slot / 64] & (uint64_t(1) << (slot % 64))) candidates.push_back(uint32_t(t));
+  }
   return candidates;
 }
 

@@ -12,7 +12,7 @@
 
 namespace tessera {
 
-// For each vertex, the first vertex with bit-identical position (a large mesh's lookups on
+// For each vertex, the first vertex with bit-identical position (a larger mesh's lookups on
 // `threads` threads, 0: all; the answer is the same; position_weld.cpp).
 std::vector<uint32_t> weldIdenticalPositions(const std::vector<glm::vec3>& positions,
                                              unsigned threads = 1);

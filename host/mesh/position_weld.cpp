@@ -1,10 +1,11 @@
 // weldIdenticalPositions (mesh_cleanup.h): per vertex, the first vertex with its position bit
-// for bit (−0 and +0 one). Up to 2¹⁸ vertices one open-addressed table of vertex indices does
-// it on the calling thread: a probe compares the position in place, ~75 instructions a vertex
-// where the sharded hash map of firstOccurrences took ~135 (its table's clearing, 12-byte keys,
-// robin-hood bookkeeping); at the tea set's 10⁻³ (~37,000 vertices) one thread does with ~60%
-// of the instructions what the map did on two. Larger meshes keep the sharded map, on all the
-// threads asked for.
+// for bit (−0 and +0 one). A small mesh (the tea set at δ 0.01: ~5,200 vertices) takes one
+// open-addressed table of vertex indices on the calling thread: a probe compares the position
+// in place, ~75 instructions a vertex where the sharded hash map of firstOccurrences took ~135
+// (its table's clearing, 12-byte keys, robin-hood bookkeeping). Larger meshes keep that map:
+// its tables are kept from call to call, where a flat table of their size freed every call
+// (~256 KiB at 10⁻³) made malloc trim the heap, and the next call fault ~1,000 pages back in
+// (`perf stat`, bench/HISTORY.md); they are sharded on all the threads asked for.
 #include <algorithm>
 #include <array>
 #include <cstring>
@@ -33,21 +34,20 @@ PositionBits bitsOf(const glm::vec3& p) {
   return key;
 }
 
-constexpr size_t kFlatTableVertices = size_t(1) << 18;
+// Up to this many vertices the flat table, at most 64 KiB, is used.
+constexpr size_t kFlatTableVertices = size_t(1) << 13;
 
 std::vector<uint32_t> firstEqualInFlatTable(const std::vector<glm::vec3>& positions) {
   const size_t count = positions.size();
   std::vector<uint32_t> first(count);
-  // At most half full: short probes.
+  // At most two thirds full: short probes.
   int bits = 4;
-  while ((size_t(1) << bits) < 2 * count) ++bits;
+  while ((size_t(1) << bits) < count + count / 2) ++bits;
   const size_t mask = (size_t(1) << bits) - 1;
   constexpr uint32_t kEmpty = UINT32_MAX;
   std::vector<uint32_t> table(mask + 1, kEmpty);
-  std::vector<PositionBits> keys(count);
   for (size_t i = 0; i < count; ++i) {
     const PositionBits key = bitsOf(positions[i]);
-    keys[i] = key;
     const uint64_t h = uint64_t(PositionBitsHash{}(key)) * 0x9E3779B97F4A7C15ull;
     for (size_t slot = size_t(h >> (64 - bits));; slot = (slot + 1) & mask) {
       const uint32_t j = table[slot];
@@ -56,7 +56,7 @@ std::vector<uint32_t> firstEqualInFlatTable(const std::vector<glm::vec3>& positi
         first[i] = uint32_t(i);
         break;
       }
-      if (keys[j] == key) {
+      if (bitsOf(positions[j]) == key) {
         first[i] = j;
         break;
       }
