@@ -44,11 +44,15 @@ std::vector<uint32_t> sharedCornerSets(const std::vector<uint32_t>& indices) {
   uint64_t* const once = seen.data();
   uint64_t* const again = seen.data() + words;
   const auto slotOf = [&](size_t t) {
-    return size_t(cornerSetHash(&indices[3 * t]) >> (64 - bits));
+    return uint32_t(cornerSetHash(&indices[3 * t]) >> (64 - bits));
   };
+  // The first pass's slots, held for the second up to 2¹⁵ triangles (128 KiB); a larger mesh's
+  // are hashed again rather than held in an array freed every call (malloc's trimming).
+  std::vector<uint32_t> slots(count <= (size_t(1) << 15) ? count : 0);
   bool anyAgain = false;
   for (size_t t = 0; t < count; ++t) {
-    const size_t slot = slotOf(t);
+    const uint32_t slot = slotOf(t);
+    if (!slots.empty()) slots[t] = slot;
     const uint64_t bit = uint64_t(1) << (slot % 64);
     if (once[slot / 64] & bit) again[slot / 64] |= bit, anyAgain = true;
     once[slot / 64] |= bit;
@@ -56,7 +60,7 @@ std::vector<uint32_t> sharedCornerSets(const std::vector<uint32_t>& indices) {
   std::vector<uint32_t> candidates;
   if (!anyAgain) return candidates;
   for (size_t t = 0; t < count; ++t) {
-    const size_t slot = slotOf(t);
+    const uint32_t slot = slots.empty() ? slotOf(t) : slots[t];
     if (again[slot / 64] & (uint64_t(1) << (slot % 64))) candidates.push_back(uint32_t(t));
   }
   return candidates;
