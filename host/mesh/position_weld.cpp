@@ -6,7 +6,6 @@
 // its tables are kept from call to call, where a flat table of their size freed every call
 // (~256 KiB at 10⁻³) made malloc trim the heap, and the next call fault ~1,000 pages back in
 // (`perf stat`, bench/HISTORY.md); they are sharded on all the threads asked for.
-#include <algorithm>
 #include <array>
 #include <cstring>
 
