@@ -22,10 +22,12 @@
 
 using namespace tessera;
 
-// Where a level was decided: "host" (the mirror, all of it), "device", or "both" (batches).
+// Where a level was decided: "host" (the mirror, all of it), "device", "fused" (the device,
+// all of it by rule T's fused dispatch), or "both" (batches).
 const char* placeOf(const LevelStats& level, const std::string& which) {
   if (which == "mirror" || level.hostNodes == level.nodes) return "host";
-  return level.hostNodes == 0 ? "device" : "both";
+  if (level.hostNodes != 0) return "both";
+  return level.fusedNodes == level.nodes ? "fused" : "device";
 }
 
 int main(int argc, char** argv) {
@@ -80,6 +82,7 @@ int main(int argc, char** argv) {
         best[l].gpuMs = std::min(best[l].gpuMs, tree.levels[l].gpuMs);
         best[l].classifyMs = std::min(best[l].classifyMs, tree.levels[l].classifyMs);
         best[l].frontierMs = std::min(best[l].frontierMs, tree.levels[l].frontierMs);
+        best[l].fusedNodes = tree.levels[l].fusedNodes;  // "on": the last run's dispatches
       }
     }
     std::printf("δ %g: %zu leaves, tree min %.3f ms over %d runs\n", tolerance, leaves, bestTotal,

@@ -4,7 +4,9 @@
 // quadtree_general_tolerance.comp.glsl, and for bicubic patches two dispatches a level,
 // quadtree_tolerance_nets.comp.glsl then quadtree_tolerance.comp.glsl, whose pipelines are built
 // on two threads and which read the patches, the nodes and the nets as uniform texel buffers
-// (shaders/lib/tolerance_texels.glsl). Rule T on general patches sends the nodes of polynomial
+// (shaders/lib/tolerance_texels.glsl); from a second rule T tree on, once its pipeline has built
+// in the background, one dispatch a level of quadtree_tolerance_fused.comp.glsl, the same
+// decisions (runBicubic). Rule T on general patches sends the nodes of polynomial
 // patches of degree ≤ 3 × 3 and of rational ones of degree 2 × 1, 1 × 2 and 2 × 2 to the
 // variant built for their degree pair (quadtree_general_tolerance_{p,r}<n>x<m>.comp,
 // shaders/CMakeLists.txt), each shader's nodes one range of the node buffer, all dispatched in
@@ -38,6 +40,7 @@
 #include "quadtree_general_tolerance_r2x2_comp.h"
 #include "quadtree_midpoint_comp.h"
 #include "quadtree_tolerance_comp.h"
+#include "quadtree_tolerance_fused_comp.h"
 #include "quadtree_tolerance_nets_comp.h"
 #include "vk/background_pipeline.h"
 #include "vk/buffer.h"
@@ -56,6 +59,8 @@ constexpr VkBufferUsageFlags kTexelUsage =
 // shader reads patches, nodes and nets (0-2) and writes the decisions (3).
 constexpr uint32_t kNetsTexelBindings = 0b011u;
 constexpr uint32_t kDecidingTexelBindings = 0b0111u;
+// The fused shader reads patches and nodes (0, 1) and writes the decisions (2).
+constexpr uint32_t kFusedTexelBindings = 0b011u;
 
 struct ShaderCode {
   const char* name;
@@ -119,6 +124,7 @@ class VulkanClassifier final : public NodeClassifier {
   }
 
   void beginTree(const PatchSet& patches) override {
+    ++treesBegun_;
     uploadedCount_ = patches.size();
     uploadedGeneral_ = !patches.isBicubic();
     if (patches.size() == 0) return;
@@ -260,17 +266,21 @@ class VulkanClassifier final : public NodeClassifier {
     return *pipeline;
   }
 
-  // Bicubic patches: one dispatch, or rule T's two (the nets, then the decisions).
+  // Bicubic patches: one dispatch, or rule T's two (the nets, then the decisions), or its fused
+  // one once that pipeline is ready.
   void runBicubic(const std::vector<gpu::QuadNode>& nodes, const QuadtreeOptions& options,
                   std::vector<gpu::NodeDecision>& decisions, LevelStats& stats) {
     const Stopwatch stopwatch;
     decisions.resize(nodes.size());
     if (nodes.empty()) return;
+    const bool tolerance = options.rule == SplitRule::Tolerance;
+    vk::ComputePipeline* fused = tolerance ? readyFusedPipeline() : nullptr;
     // Rule T on bicubic patches: the nets' pipeline builds on a worker thread while this one
     // builds the deciding pipeline.
-    const bool twoDispatches = options.rule == SplitRule::Tolerance;
+    const bool twoDispatches = tolerance && !fused;
     if (twoDispatches) toleranceNets_.start();
-    vk::ComputePipeline& pipeline = pipelineFor(false, ruleConstant(options.rule), options.samples);
+    vk::ComputePipeline* pipeline =
+        fused ? nullptr : &pipelineFor(false, ruleConstant(options.rule), options.samples);
     vk::ComputePipeline* nets = twoDispatches ? &toleranceNets_.get() : nullptr;
     if (nets)
       vk::ensureCapacity(context_, netBounds_, nodes.size() * sizeof(gpu::ToleranceNetBounds),
@@ -286,23 +296,40 @@ class VulkanClassifier final : public NodeClassifier {
         timer_.reset(cmd);
         timer_.mark(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
       }
-      if (nets) {
+      if (fused) {
+        fused->dispatchBindings(
+            cmd, {patchTexels_.viewOf(patches_), nodeTexels_.viewOf(nodes_), &decisions_}, &push,
+            push.nodeCount);
+      } else if (nets) {
         const VkBufferView points = patchTexels_.viewOf(patches_);
         const VkBufferView nodeTexels = nodeTexels_.viewOf(nodes_);
         const VkBufferView netTexels = netTexels_.viewOf(netBounds_);
         nets->dispatchBindings(cmd, {points, nodeTexels, &netBounds_}, &push, push.nodeCount);
         vk::computeToComputeBarrier(context_, cmd);
-        pipeline.dispatchBindings(cmd, {points, nodeTexels, netTexels, &decisions_}, &push,
-                                  push.nodeCount);
+        pipeline->dispatchBindings(cmd, {points, nodeTexels, netTexels, &decisions_}, &push,
+                                   push.nodeCount);
       } else {
-        pipeline.dispatch(cmd, {&patches_, &nodes_, &decisions_}, &push, push.nodeCount);
+        pipeline->dispatch(cmd, {&patches_, &nodes_, &decisions_}, &push, push.nodeCount);
       }
       if (options.timeGpu) timer_.mark(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
       vk::computeToHostBarrier(context_, cmd);
     });
     decisions_.download(decisions.data(), nodes.size() * sizeof(gpu::NodeDecision));
+    if (fused) stats.fusedNodes += nodes.size();
     if (options.timeGpu) addGpuMs(stats);
     stats.classifyMs += stopwatch.elapsedMs();
+  }
+
+  // Rule T's fused pipeline where its background build has finished, else nullptr (the level
+  // takes the two dispatches; nothing waits). The build starts in the second tree that runs
+  // rule T on bicubic patches, so a process that tessellates once (README's command 1) neither
+  // pays for it nor shares the CPU with it while its own two pipelines build. Under a thread cap
+  // of 1 it never starts (BackgroundPipeline::start): on the caller's thread the one pipeline
+  // would cost a tree about what the two it replaces cost the first.
+  vk::ComputePipeline* readyFusedPipeline() {
+    if (firstToleranceTree_ == 0) firstToleranceTree_ = treesBegun_;
+    if (firstToleranceTree_ < treesBegun_) toleranceFused_.start();
+    return toleranceFused_.ifReady();
   }
 
   // The GPU time between the submission's two timestamps (QuadtreeOptions::timeGpu).
@@ -358,6 +385,14 @@ class VulkanClassifier final : public NodeClassifier {
       {"quadtree_tolerance_nets.comp", kSpirv_quadtree_tolerance_nets_comp,
        sizeof(kSpirv_quadtree_tolerance_nets_comp), 3, sizeof(gpu::ClassifyPush), {},
        kNetsTexelBindings}};
+  vk::BackgroundPipeline toleranceFused_{context_,
+                                         {"quadtree_tolerance_fused.comp",
+                                          kSpirv_quadtree_tolerance_fused_comp,
+                                          sizeof(kSpirv_quadtree_tolerance_fused_comp),
+                                          3,
+                                          sizeof(gpu::ClassifyPush),
+                                          {},
+                                          kFusedTexelBindings}};
   std::map<std::tuple<bool, uint32_t, int>, std::unique_ptr<vk::ComputePipeline>> pipelines_;
   // Rule T's general variants (kGeneralToleranceVariants), built when a level first needs one.
   std::array<std::unique_ptr<vk::ComputePipeline>, kGeneralVariants> variantPipelines_;
@@ -371,6 +406,8 @@ class VulkanClassifier final : public NodeClassifier {
   vk::TexelView netTexels_{context_, VK_FORMAT_R32G32B32A32_UINT};
   size_t uploadedCount_ = 0;
   bool uploadedGeneral_ = false;
+  size_t treesBegun_ = 0;          // beginTree calls
+  size_t firstToleranceTree_ = 0;  // treesBegun_ at the first rule T bicubic level (0: none yet)
 };
 
 }  // namespace

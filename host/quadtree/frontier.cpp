@@ -229,6 +229,7 @@ void addLevelStats(LevelStats& total, const LevelStats& batch) {
   total.gpuMs += batch.gpuMs;
   total.frontierMs += batch.frontierMs;
   total.hostNodes += batch.hostNodes;
+  total.fusedNodes += batch.fusedNodes;
 }
 
 // One tree over `patches` (a group; leaves name patch firstPatch + local index). Levels are

@@ -39,6 +39,8 @@ struct LevelStats {
   double frontierMs = 0;  // host: emitting leaves and building the next level
   size_t hostNodes = 0;   // of `nodes`, those a device backend left to the host's fp32 mirror
                           // (withSmallLevelsOnHost; 0 on CPU backends)
+  size_t fusedNodes = 0;  // of `nodes`, those the Vulkan classifier decided by rule T's fused
+                          // dispatch, the same decisions as its two (classifier_vulkan.cpp)
 };
 
 // Rule T's maximum depth: a level may split one direction only, so a patch needs up to about

@@ -1,5 +1,6 @@
 #include "vk/background_pipeline.h"
 
+#include <chrono>
 #include <utility>
 
 #include "common/thread_cap.h"
@@ -27,6 +28,13 @@ ComputePipeline& BackgroundPipeline::get() {
     pipeline_ = pending_.valid() ? pending_.get() : std::make_unique<ComputePipeline>(context_, desc_);
   }
   return *pipeline_;
+}
+
+ComputePipeline* BackgroundPipeline::ifReady() {
+  const bool finished =
+      pending_.valid() && pending_.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+  if (!pipeline_ && finished) pipeline_ = pending_.get();
+  return pipeline_.get();
 }
 
 }  // namespace tessera::vk

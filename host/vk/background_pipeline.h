@@ -26,6 +26,10 @@ class BackgroundPipeline {
   // The pipeline: waits for the build started by start(), or builds it now. Rethrows the
   // build's error (VulkanError) and builds again on the next call.
   ComputePipeline& get();
+  // The pipeline if its build has finished, else nullptr: never waits and never builds (so
+  // nullptr until a build start() began ends; always, where it began none under a cap of 1).
+  // Rethrows a failed build's error as get() does.
+  ComputePipeline* ifReady();
 
  private:
   Context& context_;

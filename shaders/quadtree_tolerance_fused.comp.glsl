@@ -1,0 +1,29 @@
+#version 450
+// Rule T on bicubic patches in one dispatch a level: quadtree_tolerance_nets.comp.glsl's and
+// quadtree_tolerance.comp.glsl's work in one invocation, the mirror's bicubicSecondBounds
+// itself, so the decisions are bit-identical to the two dispatches'. Saves a dispatch and a
+// barrier a level (lavapipe: a fixed cost each), but its one pipeline compiles on one thread
+// where the two compile side by side: the classifier builds it in the background once a second
+// tree asks for rule T, and uses it when ready (host/quadtree/classifier_vulkan.cpp).
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
+#include "layout.h"
+#include "lib/shared_glsl_cpp.h"
+#define TOLERANCE_ROW_ORDER 4  // bicubic rows: lib/tolerance_bound.h
+#define TOLERANCE_UNROLL [[unroll]]  // constant trip counts: lib/tolerance_bound.h
+#include "lib/tolerance_bound.h"
+#include "lib/dispatch.glsl"
+
+#include "lib/tolerance_texels.glsl"  // bindings 0-1: patches and nodes
+
+layout(std430, binding = 2) writeonly buffer Decisions { NodeDecision decisions[]; };
+
+layout(push_constant) uniform Push { ClassifyPush pc; };
+
+void main() {
+  uint index = linearInvocationIndex();
+  if (index >= pc.nodeCount) return;
+  QuadNode node = fetchNode(index);
+  ToleranceTerms terms = bicubicSecondBounds(fetchPatch(node.patchIndex), node.rect);
+  decisions[index] = toleranceDecision(terms, node, pc);
+}
