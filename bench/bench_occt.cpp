@@ -242,14 +242,14 @@ void addToleranceCases(bench::Table& table, const std::vector<BezierPatch>& patc
       t = tessellate(patches, timed, *backend);
       std::printf(
           "\nrule T δ %g on Vulkan, per level (one more run, with GPU timestamps):\n\n"
-          "| level | nodes | splits | host nodes | GPU ms | transfers + submission ms "
-          "(or the host mirror's) | frontier ms |\n"
-          "|---|---|---|---|---|---|---|\n",
+          "| level | nodes | splits | host nodes | fused nodes | GPU ms | transfers + submission "
+          "ms (or the host mirror's) | frontier ms |\n"
+          "|---|---|---|---|---|---|---|---|\n",
           tolerance);
       for (const LevelStats& level : t.stats.levels)
-        std::printf("| %u | %zu | %zu | %zu | %.3f | %.3f | %.3f |\n", level.level, level.nodes,
-                    level.splits, level.hostNodes, level.gpuMs, level.classifyMs - level.gpuMs,
-                    level.frontierMs);
+        std::printf("| %u | %zu | %zu | %zu | %zu | %.3f | %.3f | %.3f |\n", level.level,
+                    level.nodes, level.splits, level.hostNodes, level.fusedNodes, level.gpuMs,
+                    level.classifyMs - level.gpuMs, level.frontierMs);
     }
     table.cases.push_back(c);
   }
