@@ -4,10 +4,9 @@
 // itself, so the decisions are bit-identical to the two dispatches'. Saves a dispatch and a
 // barrier a level (lavapipe: a fixed cost each), but its one pipeline compiles on one thread
 // where the two compile side by side: the classifier builds it in the background once a second
-// tree asks for rule T, and uses it when ready (host/quadtree/classifier_vulkan.cpp). Not yet
-// in shaders/CMakeLists.txt's spirv-opt lists (TESSERA_THRICE_OPTIMIZED_SHADERS would suit it
-// as it does the two): unoptimized, lavapipe unrolls the loops itself and the build takes
-// ~210-250 ms of a worker's CPU instead of ~22-32 ms (bench/HISTORY.md, session 43 `fused43`).
+// tree asks for rule T, and uses it when ready (host/quadtree/classifier_vulkan.cpp). Unrolled
+// at build time like the two (TESSERA_THRICE_OPTIMIZED_SHADERS): unoptimized, lavapipe unrolls
+// the loops itself and the build took ~210-250 ms of a worker's CPU (bench/HISTORY.md).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #include "layout.h"

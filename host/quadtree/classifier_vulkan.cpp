@@ -325,7 +325,7 @@ class VulkanClassifier final : public NodeClassifier {
   // rule T on bicubic patches, so a process that tessellates once (README's command 1) neither
   // pays for it nor shares the CPU with it while its own two pipelines build. Under a thread cap
   // of 1 it never starts (BackgroundPipeline::start): on the caller's thread its compile (~20-30
-  // ms optimized as the two are, ~250 ms as built today: bench/HISTORY.md, session 43) would
+  // ms of CPU, optimized as the two are: bench/HISTORY.md, session 43) would
   // cost one tree more than the fused dispatch saves many (~0.2-0.5 ms each).
   vk::ComputePipeline* readyFusedPipeline() {
     if (firstToleranceTree_ == 0) firstToleranceTree_ = treesBegun_;
