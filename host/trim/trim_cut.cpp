@@ -160,15 +160,43 @@ bool segmentsFartherThan(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 q0, glm::dvec2
   return endDistance(p0, p1, q0, q1) > distance;
 }
 
+namespace {
+
+// Whether segmentsFartherThan(s.a, s.b, q0, q1, margin) holds for every side (q0, q1) of a
+// triangle whose corners lie in the box [lo, hi], their largest |coordinate| `reach`, from the
+// box alone (one test where the three sides took three). Its crossing test needs the signs of
+// cross(s.b − s.a, q − s.a) at q0 and q1 to differ; that rounded product is monotone in q.x and
+// in q.y, so where it is > 0 at the box's corner where it is least (or < 0 where it is largest)
+// no two corners differ. Its box test passes for each side when it passes for the whole box:
+// a side's gap to the segment is at least the box's, its allowance for rounding at most the
+// box's (rounding is monotone). False says nothing: the sides are then tested one by one.
+bool farFromBox(const TrimSegment& s, glm::dvec2 lo, glm::dvec2 hi, glm::dvec2 reach,
+                double margin) {
+  const glm::dvec2 e = s.b - s.a;
+  const glm::dvec2 least(e.y >= 0 ? hi.x : lo.x, e.x >= 0 ? lo.y : hi.y);
+  const glm::dvec2 largest(e.y >= 0 ? lo.x : hi.x, e.x >= 0 ? hi.y : lo.y);
+  if (!(cross(e, least - s.a) > 0 || cross(e, largest - s.a) < 0)) return false;
+  const glm::dvec2 sLo = glm::min(s.a, s.b), sHi = glm::max(s.a, s.b);
+  const glm::dvec2 apart = glm::max(lo - sHi, sLo - hi);
+  const glm::dvec2 m = glm::max(glm::max(glm::abs(s.a), glm::abs(s.b)), reach);
+  return std::max(apart.x, apart.y) > margin + 1e-12 * std::max(m.x, m.y);
+}
+
+}  // namespace
+
 TrimClass classifyTrimTriangle(const std::array<glm::dvec2, 3>& triangle,
                                const TrimSegmentIndex& index, double margin) {
-  const glm::dvec2 lo = glm::min(triangle[0], glm::min(triangle[1], triangle[2])) - margin;
-  const glm::dvec2 hi = glm::max(triangle[0], glm::max(triangle[1], triangle[2])) + margin;
+  const glm::dvec2 boxLo = glm::min(triangle[0], glm::min(triangle[1], triangle[2]));
+  const glm::dvec2 boxHi = glm::max(triangle[0], glm::max(triangle[1], triangle[2]));
+  const glm::dvec2 reach =
+      glm::max(glm::abs(triangle[0]), glm::max(glm::abs(triangle[1]), glm::abs(triangle[2])));
+  const glm::dvec2 lo = boxLo - margin, hi = boxHi + margin;
   thread_local std::vector<uint32_t> nearby;
   index.near(lo, hi, nearby);
   for (uint32_t s : nearby) {
     const TrimSegment& seg = index.segments()[s];
     if (insideTriangle(seg.a, triangle)) return TrimClass::Crossing;
+    if (farFromBox(seg, boxLo, boxHi, reach, margin)) continue;
     // segmentDistance(…) ≤ margin, decided without its four point-segment distances when the
     // boxes lie apart (most of the segments the grid's cells bring are not near this side).
     for (int k = 0; k < 3; ++k)
