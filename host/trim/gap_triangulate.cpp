@@ -33,11 +33,15 @@ double signedArea(const std::vector<glm::dvec2>& points, const std::vector<uint3
 std::vector<std::vector<uint32_t>> closedLoops(
     const std::vector<glm::dvec2>& points,
     const std::vector<std::pair<uint32_t, uint32_t>>& edges, size_t& failures) {
-  // (vertex, edge index) sorted: a vertex's outgoing edges in their given order, as a
-  // std::multimap gave them, without a node per edge.
-  std::vector<std::pair<uint32_t, uint32_t>> outgoing(edges.size());
-  for (uint32_t e = 0; e < edges.size(); ++e) outgoing[e] = {edges[e].first, e};
-  std::sort(outgoing.begin(), outgoing.end());
+  // Each vertex's outgoing edges in their given order, as a std::multimap gave them: grouped
+  // by a counting sort (edge ids < points.size()), looked up by the vertex without a search.
+  std::vector<uint32_t> outFrom(points.size() + 1, 0), outgoing(edges.size());
+  for (const auto& e : edges) ++outFrom[e.first + 1];
+  for (size_t v = 0; v < points.size(); ++v) outFrom[v + 1] += outFrom[v];
+  {
+    std::vector<uint32_t> fill(outFrom.begin(), outFrom.end() - 1);
+    for (uint32_t e = 0; e < edges.size(); ++e) outgoing[fill[edges[e].first]++] = e;
+  }
   std::vector<bool> used(edges.size(), false);
   std::vector<std::vector<uint32_t>> loops;
   // The loop walked in a buffer kept for the thread and copied out at its size once closed (a
@@ -51,13 +55,18 @@ std::vector<std::vector<uint32_t>> closedLoops(
     bool closed = false;
     for (size_t steps = 0; steps <= edges.size(); ++steps) {
       // The way on that turns first clockwise from the way back keeps the region on the left.
-      const glm::dvec2 back = points[from] - points[at];
+      const uint32_t* const first = outgoing.data() + outFrom[at];
+      const uint32_t* const last = outgoing.data() + outFrom[at + 1];
+      const auto open = [&](uint32_t e) { return !used[e] || e == start; };
       int64_t best = -1;
+      // One way on (nearly every vertex) is the way, whatever its angle: no angles measured.
+      const bool only = std::count_if(first, last, open) == 1;
+      if (only) best = *std::find_if(first, last, open);
+      const glm::dvec2 back = points[from] - points[at];
       double bestAngle = 0;
-      auto it = std::lower_bound(outgoing.begin(), outgoing.end(), std::make_pair(at, 0u));
-      for (; it != outgoing.end() && it->first == at; ++it) {
-        const uint32_t e = it->second;
-        if (used[e] && e != start) continue;
+      for (const uint32_t* it = first; it != last && !only; ++it) {
+        const uint32_t e = *it;
+        if (!open(e)) continue;
         const glm::dvec2 way = points[edges[e].second] - points[at];
         double clockwise = 2 * kPi - ccwAngle(back, way);  // in (0, 2π]
         if (best < 0 || clockwise < bestAngle) best = e, bestAngle = clockwise;
