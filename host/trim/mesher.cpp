@@ -45,8 +45,11 @@ class FaceBuilder {
   // The vertex among `candidates` (those of one key) within `weld` of uv, or a new one.
   uint32_t vertex(SmallIdList& candidates, glm::dvec2 uv, const glm::dvec3& position,
                   int64_t sharedId, double weld) {
+    // The same uv (a quad-tree vertex seen again from the same piece, nearly always) is at
+    // distance 0, within any weld: no square root.
     for (size_t k = 0; k < candidates.size(); ++k)
-      if (glm::length(vertices[candidates[k]].uv - uv) <= weld) return candidates[k];
+      if (vertices[candidates[k]].uv == uv || glm::length(vertices[candidates[k]].uv - uv) <= weld)
+        return candidates[k];
     vertices.push_back({uv, position, sharedId});
     candidates.push_back(uint32_t(vertices.size() - 1));
     return uint32_t(vertices.size() - 1);
