@@ -3,6 +3,9 @@
 // line's room in LineIndex's one array is known before it is filled.
 #include "mesh/detail/line_points.h"
 
+#include <algorithm>
+#include <cstring>
+
 #include "common/parallel_for.h"
 
 namespace tessera::triangulate_detail {
@@ -53,6 +56,16 @@ void fillLines(const std::vector<QuadLeaf>& leaves, bool alongU,
   }
 }
 
+// Appends a point to a shared side's points, folded into the last one when that has the same
+// t (bit for bit), as LineIndex::addOrFold: the next leaf along the side most often repeats
+// the corner it shares with the last, and nearPairs sorts every point.
+void addOrFold(std::vector<LinePoint>& points, const LinePoint& point) {
+  if (!points.empty() && std::memcmp(&points.back().t, &point.t, sizeof point.t) == 0)
+    points.back().spacing = std::min(points.back().spacing, point.spacing);
+  else
+    points.push_back(point);
+}
+
 // The leaf corners on the patches' sides: shared sides' points in canonical parameters, folded
 // sides' corners (in the order of the corners, as the walk over all lines met them).
 void collectSidePoints(const std::vector<QuadLeaf>& leaves, SeamVertices& seams,
@@ -63,22 +76,25 @@ void collectSidePoints(const std::vector<QuadLeaf>& leaves, SeamVertices& seams,
     const uint32_t p = leaves[l].patchIndex;
     // Most leaves touch no side of their patch.
     if (r.x != 0.0f && r.y != 0.0f && r.z != 1.0f && r.w != 1.0f) continue;
+    // The corner at t on `side` (the leaf edge along it `spacing` long).
+    const auto onSide = [&](int side, float t, float spacing) {
+      const SideInfo& s = topology.sides[p][side];
+      if (s.group >= 0) {
+        addOrFold(lines.shared[s.group], {canonical(s, t), spacing});
+        lines.groupSide[s.group] = {p, side};
+      }
+      const int32_t f = seams.foldOf(p, side);
+      if (f >= 0) seams.fold(uint32_t(f)).corners.push_back(t);
+    };
     for (int j = 0; j < 2; ++j)
       for (int i = 0; i < 2; ++i) {
         const float u = i ? r.z : r.x, v = j ? r.w : r.y;
-        // The sides (u, v) is on: none, one, or two at a corner of the parameter square.
-        for (int side : {kSideV0, kSideV1, kSideU0, kSideU1}) {
-          const bool alongU = side == kSideV0 || side == kSideV1;
-          const float t = alongU ? u : v, fixed = alongU ? v : u;
-          if (fixed != (side == kSideV0 || side == kSideU0 ? 0.0f : 1.0f)) continue;
-          const SideInfo& s = topology.sides[p][side];
-          if (s.group >= 0) {
-            lines.shared[s.group].push_back({canonical(s, t), alongU ? r.z - r.x : r.w - r.y});
-            lines.groupSide[s.group] = {p, side};
-          }
-          const int32_t f = seams.foldOf(p, side);
-          if (f >= 0) seams.fold(uint32_t(f)).corners.push_back(t);
-        }
+        // The sides (u, v) is on, in this order (a group's side is the last one met): none,
+        // one, or two at a corner of the parameter square.
+        if (v == 0.0f) onSide(kSideV0, u, r.z - r.x);
+        if (v == 1.0f) onSide(kSideV1, u, r.z - r.x);
+        if (u == 0.0f) onSide(kSideU0, v, r.w - r.y);
+        if (u == 1.0f) onSide(kSideU1, v, r.w - r.y);
       }
   }
 }

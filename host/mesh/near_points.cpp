@@ -12,18 +12,51 @@ std::vector<std::pair<float, float>> nearPairs(std::vector<LinePoint>& points,
   return pairs;
 }
 
+namespace {
+
+// A line's points arrive as a few ascending runs (the leaves along it, each side's in turn),
+// and most t twice (the leaves on either side): an insertion sort into the sorted, folded
+// points so far moves each point past the few it is out of order with and folds a repeated t
+// where it meets it, where std::sort partitions any line over 16 points and every point is
+// folded after. The same points either way: equal t become one, whichever came first. Long
+// lines keep std::sort's bound.
+constexpr size_t kInsertionSortUpTo = 64;
+
+// Sorts points[0, count) by t, folds equal t into one (the shortest spacing) and returns how
+// many points are left.
+size_t sortAndFold(LinePoint* points, size_t count) {
+  size_t kept = 0;
+  if (count > kInsertionSortUpTo) {
+    std::sort(points, points + count,
+              [](const LinePoint& a, const LinePoint& b) { return a.t < b.t; });
+    for (size_t k = 0; k < count; ++k) {
+      if (kept > 0 && points[kept - 1].t == points[k].t)
+        points[kept - 1].spacing = std::min(points[kept - 1].spacing, points[k].spacing);
+      else
+        points[kept++] = points[k];
+    }
+    return kept;
+  }
+  for (size_t k = 0; k < count; ++k) {
+    const LinePoint point = points[k];
+    size_t j = kept;
+    while (j > 0 && point.t < points[j - 1].t) --j;
+    if (j > 0 && points[j - 1].t == point.t) {
+      points[j - 1].spacing = std::min(points[j - 1].spacing, point.spacing);
+      continue;
+    }
+    for (size_t m = kept; m > j; --m) points[m] = points[m - 1];
+    points[j] = point;
+    ++kept;
+  }
+  return kept;
+}
+
+}  // namespace
+
 std::vector<std::pair<float, float>> nearPairs(LinePoint* points, size_t& count,
                                                const std::function<bool(float, float)>& distinct) {
-  std::sort(points, points + count,
-            [](const LinePoint& a, const LinePoint& b) { return a.t < b.t; });
-  size_t kept = 0;
-  for (size_t k = 0; k < count; ++k) {
-    if (kept > 0 && points[kept - 1].t == points[k].t)
-      points[kept - 1].spacing = std::min(points[kept - 1].spacing, points[k].spacing);
-    else
-      points[kept++] = points[k];
-  }
-  count = kept;
+  count = sortAndFold(points, count);
   std::vector<std::pair<float, float>> pairs;
   for (size_t k = 0; k + 1 < count; ++k) {
     const LinePoint& a = points[k];
