@@ -172,3 +172,47 @@ TEST_CASE("rings the triangulator cannot take are refused, not triangulated", "[
   REQUIRE(triangulateRectangleRing({{0.5f, 0}, {1, 1}, {0, 0.5f}}, lo, hi, triangles));
   CHECK(triangles.size() == 1);
 }
+
+TEST_CASE("a diagonal's halves give what the ring triangulation gives each alone", "[ring]") {
+  // triangulateRectangleRingAlong writes the common halves (three corners, or one point more)
+  // directly: the same triangles in the same order as triangulateRectangleRing on the half.
+  const std::pair<glm::vec2, glm::vec2> rectangles[] = {
+      {{0, 0}, {1, 1}}, {{0.25f, 0.5f}, {0.3125f, 0.5078125f}}, {{0.6f, 0.1f}, {0.7f, 0.9f}}};
+  const float fractions[] = {1.0f / 64, 0.25f, 0.5f, 0.7f, 63.0f / 64};
+  size_t rings = 0;
+  for (const auto& [lo, hi] : rectangles)
+    for (int counts = 0; counts < 3 * 3 * 3 * 3; ++counts)
+      for (float f : fractions) {
+        std::array<std::vector<float>, 4> inner;
+        for (int side = 0, c = counts; side < 4; ++side, c /= 3)
+          for (int i = 0; i < c % 3; ++i) inner[side].push_back(i == 0 ? f : 0.5f * (f + 1));
+        const std::vector<glm::vec2> ring = ringOf(lo, hi, inner);
+        const size_t n = ring.size();
+        for (uint32_t diagonal = 1; diagonal <= 2; ++diagonal) {
+          std::vector<std::array<uint32_t, 3>> along;
+          REQUIRE(triangulateRectangleRingAlong(ring, lo, hi, diagonal, along));
+          // The halves cut at the diagonal's corners, as the function does.
+          const glm::vec2 from = diagonal == 1 ? lo : glm::vec2(hi.x, lo.y);
+          const glm::vec2 to = diagonal == 1 ? hi : glm::vec2(lo.x, hi.y);
+          const size_t a = size_t(std::find(ring.begin(), ring.end(), from) - ring.begin());
+          const size_t b = size_t(std::find(ring.begin(), ring.end(), to) - ring.begin());
+          std::vector<std::array<uint32_t, 3>> expected;
+          for (const auto& [start, end] : {std::pair{a, b}, std::pair{b, a}}) {
+            std::vector<glm::vec2> half;
+            std::vector<uint32_t> original;
+            for (size_t i = start;; i = (i + 1) % n) {
+              half.push_back(ring[i]);
+              original.push_back(uint32_t(i));
+              if (i == end) break;
+            }
+            std::vector<std::array<uint32_t, 3>> triangles;
+            REQUIRE(triangulateRectangleRing(half, lo, hi, triangles));
+            for (const auto& t : triangles)
+              expected.push_back({original[t[0]], original[t[1]], original[t[2]]});
+          }
+          CHECK(along == expected);
+          ++rings;
+        }
+      }
+  CHECK(rings == 3 * 81 * 5 * 2);
+}

@@ -354,12 +354,14 @@ class LeafWalker {
         return true;
       }
     }
-    work.ringUv.resize(n);
+    // Only grown: resize's zero-fill of the new entries, out of line, cost ~120 instructions a
+    // ring, rings' sizes going up and down.
+    if (work.ringUv.size() < n) work.ringUv.resize(n);
     for (size_t k = 0; k < n; ++k) work.ringUv[k] = ring[k].uv;
     size_t repeats = ring[n - 1] == ring[0];
     for (size_t k = 0; k + 1 < n; ++k) repeats += ring[k] == ring[k + 1];
     if (distinctVertices(work) + repeats != n) return false;
-    if (!triangulateRectangleRingAlong(work.ringUv, {r.x, r.y}, {r.z, r.w}, diagonal,
+    if (!triangulateRectangleRingAlong(work.ringUv.data(), n, {r.x, r.y}, {r.z, r.w}, diagonal,
                                        work.ringTriangles))
       return false;
     for (const auto& t : work.ringTriangles) emit(work, patch, ring[t[0]], ring[t[1]], ring[t[2]]);

@@ -25,6 +25,15 @@ double boundaryPosition(glm::dvec2 s, uint32_t sides) {
   return s.y > 0.0 ? 4.0 - s.y : 0.0;
 }
 
+// Whether p lies strictly inside side `side` (sidesOf's bit number) as triangulateRing sees it:
+// on that side alone, its boundary position between the side's two corners'.
+bool strictlyInsideSide(glm::vec2 p, uint32_t side, glm::vec2 lo, glm::vec2 hi) {
+  if (sidesOf(p, lo, hi) != 1u << side) return false;
+  const glm::dvec2 local = (glm::dvec2(p) - glm::dvec2(lo)) / (glm::dvec2(hi) - glm::dvec2(lo));
+  const double position = boundaryPosition(local, 1u << side);
+  return position > double(side) && position < double(side + 1);
+}
+
 // The working arrays of one thread's calls, kept from call to call: the triangulator asks once
 // per leaf, and allocating them each time was most of the cost. They only grow (reserve), and
 // are used through pointers: a ring's few points paid more for resize and push_back's checks
@@ -136,18 +145,17 @@ bool triangulateRectangleRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, 
   return triangulateRing(ring.data(), ring.size(), lo, hi, triangles, ringWork());
 }
 
-bool triangulateRectangleRingAlong(const std::vector<glm::vec2>& ring, glm::vec2 lo,
-                                   glm::vec2 hi, uint32_t diagonal,
+bool triangulateRectangleRingAlong(const glm::vec2* ring, size_t n, glm::vec2 lo, glm::vec2 hi,
+                                   uint32_t diagonal,
                                    std::vector<std::array<uint32_t, 3>>& triangles) {
   RingWork& work = ringWork();
   if (diagonal == gpu::kToleranceAnyDiagonal)
-    return triangulateRing(ring.data(), ring.size(), lo, hi, triangles, work);
+    return triangulateRing(ring, n, lo, hi, triangles, work);
   triangles.clear();
   const bool mainDiagonal = diagonal == gpu::kToleranceMainDiagonal;
   if (!mainDiagonal && diagonal != gpu::kToleranceAntiDiagonal) return false;
   const glm::vec2 from = mainDiagonal ? lo : glm::vec2(hi.x, lo.y);
   const glm::vec2 to = mainDiagonal ? hi : glm::vec2(lo.x, hi.y);
-  const size_t n = ring.size();
   size_t a = n, b = n;
   for (size_t i = 0; i < n; ++i) {
     if (ring[i] == from) a = i;
@@ -159,12 +167,41 @@ bool triangulateRectangleRingAlong(const std::vector<glm::vec2>& ring, glm::vec2
   glm::vec2* const half = work.half.data();
   uint32_t* const original = work.original.data();
   std::vector<std::array<uint32_t, 3>>& halfTriangles = work.halfTriangles;
+  // Per half: the corner between the diagonal's two, and the first of its two sides (sidesOf's
+  // bit numbers), counter-clockwise.
+  const glm::vec2 corners[2] = {mainDiagonal ? glm::vec2(hi.x, lo.y) : hi,
+                                mainDiagonal ? glm::vec2(lo.x, hi.y) : lo};
+  const uint32_t firstSides[2] = {mainDiagonal ? 0u : 1u, mainDiagonal ? 2u : 3u};
+  const bool positive = lo.x < hi.x && lo.y < hi.y;
   for (const auto& [start, end] : {std::pair{a, b}, std::pair{b, a}}) {
     size_t count = 0;
     for (size_t i = start;; i = i + 1 == n ? 0 : i + 1) {
       half[count] = ring[i];
       original[count++] = uint32_t(i);
       if (i == end) break;
+    }
+    // Most halves are three corners, or those and one point inside a side: what
+    // triangulateRing gives them, without its setup (~150 and ~550 instructions a half). With
+    // one point, one ear only keeps off a side, from both its ends alike: the first in ring
+    // order goes first (test_ring_triangulation.cpp checks these against triangulateRing).
+    const uint32_t* o = original;
+    const glm::vec2 corner = corners[start != a];
+    const uint32_t firstSide = firstSides[start != a];
+    if (positive && count == 3 && half[1] == corner) {
+      triangles.push_back({o[2], o[0], o[1]});
+      continue;
+    }
+    if (positive && count == 4 && half[2] == corner &&
+        strictlyInsideSide(half[1], firstSide, lo, hi)) {
+      triangles.push_back({o[3], o[0], o[1]});
+      triangles.push_back({o[3], o[1], o[2]});
+      continue;
+    }
+    if (positive && count == 4 && half[1] == corner &&
+        strictlyInsideSide(half[2], (firstSide + 1) % 4, lo, hi)) {
+      triangles.push_back({o[0], o[1], o[2]});
+      triangles.push_back({o[3], o[0], o[2]});
+      continue;
     }
     if (!triangulateRing(half, count, lo, hi, halfTriangles, work)) return triangles.clear(), false;
     for (const auto& t : halfTriangles)

@@ -36,8 +36,13 @@ bool triangulateRectangleRing(const std::vector<glm::vec2>& ring, glm::vec2 lo, 
 // ordered the same way in u and in v (opposite ways for the anti-diagonal). Still n − 2
 // triangles. Returns false, `triangles` empty, where triangulateRectangleRing would or a
 // corner of the diagonal is missing.
-bool triangulateRectangleRingAlong(const std::vector<glm::vec2>& ring, glm::vec2 lo,
-                                   glm::vec2 hi, uint32_t diagonal,
+bool triangulateRectangleRingAlong(const glm::vec2* ring, size_t n, glm::vec2 lo, glm::vec2 hi,
+                                   uint32_t diagonal,
                                    std::vector<std::array<uint32_t, 3>>& triangles);
+inline bool triangulateRectangleRingAlong(const std::vector<glm::vec2>& ring, glm::vec2 lo,
+                                          glm::vec2 hi, uint32_t diagonal,
+                                          std::vector<std::array<uint32_t, 3>>& triangles) {
+  return triangulateRectangleRingAlong(ring.data(), ring.size(), lo, hi, diagonal, triangles);
+}
 
 }  // namespace tessera
