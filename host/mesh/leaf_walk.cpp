@@ -95,7 +95,7 @@ class LeafWalker {
     const LinePoint* lastRightFirst = nullptr;  // the last leaf's
     // Of the last kBelow leaves: the top edges' starts, the right and left edges' ends + 1.
     const LinePoint* below[3][kBelow] = {};
-    int slot[3] = {};
+    unsigned slot[3] = {};  // kBelow a power of two: the wrap is a mask
 
     static bool fits(const PointRange<const LinePoint>& points, const LinePoint* h, float t) {
       return h && std::less_equal<>()(points.begin(), h) && std::less_equal<>()(h, points.end()) &&
@@ -189,8 +189,10 @@ class LeafWalker {
   // line `fixed` (v = fixed when alongU, else u = fixed), number `line` in its LineIndex.
   // `inner`: the leaf is strictly inside its patch (so is every point of its edges' lines
   // between its corners).
+  // `moved`: the line's corners merged away (NearPointMerges::movedOn), looked up once a leaf.
   [[gnu::always_inline]] void edgeInterior(LeafWork& work, uint32_t patch, int edge, float fixed,
-                                           uint32_t line, float t0, float t1, bool inner) {
+                                           uint32_t line, const MovedCorners* moved, float t0,
+                                           float t1, bool inner) {
     const bool alongU = edge == kBottom || edge == kTop;
     std::vector<RingVertex>& ring = work.ring;
     std::vector<float>& scratch = work.scratch;
@@ -233,8 +235,7 @@ class LeafWalker {
     const LineIndex& lines = alongU ? lines_.alongU : lines_.alongV;
     const PointRange<const LinePoint> points = lines.points(line);
     const float lo = std::min(t0, t1), hi = std::max(t0, t1);  // the edge, before moving
-    if (const MovedCorners* moved = merges_.movedOn(alongU, line))
-      t0 = movedTo(*moved, t0), t1 = movedTo(*moved, t1);
+    if (moved) t0 = movedTo(*moved, t0), t1 = movedTo(*moved, t1);
     // The points strictly between the (moved) ends, in ring order. A listed point is a vertex
     // of its own: no merge to look up.
     const LinePoint* first = work.lineHints.upperBound(edge, points, std::min(t0, t1));
@@ -380,16 +381,19 @@ class LeafWalker {
     // Most leaves touch no side of their patch: no side, fold or patch corner to look for.
     const bool inner = r.x > 0.0f && r.z < 1.0f && r.y > 0.0f && r.w < 1.0f;
     // A corner is a point of its line along u: merged only if a point of that line was.
-    const bool bottomMerged = merges_.movedOn(true, linesU[0]) != nullptr;
-    const bool topMerged = merges_.movedOn(true, linesU[1]) != nullptr;
+    const MovedCorners* const bottomMoved = merges_.movedOn(true, linesU[0]);
+    const MovedCorners* const topMoved = merges_.movedOn(true, linesU[1]);
+    const bool bottomMerged = bottomMoved != nullptr, topMerged = topMoved != nullptr;
     append(ring, vertexAt(work, p, r.x, r.y, kCorner, inner, bottomMerged));
-    edgeInterior(work, p, kBottom, r.y, linesU[0], r.x, r.z, inner);
+    edgeInterior(work, p, kBottom, r.y, linesU[0], bottomMoved, r.x, r.z, inner);
     append(ring, vertexAt(work, p, r.z, r.y, kCorner, inner, bottomMerged));
-    edgeInterior(work, p, kRight, r.z, linesV[1], r.y, r.w, inner);
+    edgeInterior(work, p, kRight, r.z, linesV[1], merges_.movedOn(false, linesV[1]), r.y, r.w,
+                 inner);
     append(ring, vertexAt(work, p, r.z, r.w, kCorner, inner, topMerged));
-    edgeInterior(work, p, kTop, r.w, linesU[1], r.z, r.x, inner);
+    edgeInterior(work, p, kTop, r.w, linesU[1], topMoved, r.z, r.x, inner);
     append(ring, vertexAt(work, p, r.x, r.w, kCorner, inner, topMerged));
-    edgeInterior(work, p, kLeft, r.x, linesV[0], r.w, r.y, inner);
+    edgeInterior(work, p, kLeft, r.x, linesV[0], merges_.movedOn(false, linesV[0]), r.w, r.y,
+                 inner);
 
     const bool folded = work.touchesFold && dropFoldedBack(ring);
     if (work.touchesMerge) dropRepeats(ring);
