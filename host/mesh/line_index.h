@@ -19,6 +19,18 @@ struct LineKeyHash {
   size_t operator()(uint64_t key) const { return size_t(key); }
 };
 
+// Folds `point` into `last` when both have the same t bit for bit, keeping the shorter spacing
+// (as nearPairs folds equal t after sorting); false: they differ, nothing changed. A leaf's
+// corner is on its line once more for the next leaf along it, most often right after.
+inline bool foldedInto(LinePoint& last, const LinePoint& point) {
+  uint32_t a, b;
+  std::memcpy(&a, &last.t, sizeof a);
+  std::memcpy(&b, &point.t, sizeof b);
+  if (a != b) return false;
+  last.spacing = std::min(last.spacing, point.spacing);
+  return true;
+}
+
 // A line's points: a range of LineIndex's one array (Point: LinePoint or const LinePoint).
 template <typename Point>
 struct PointRange {
@@ -67,17 +79,9 @@ class LineIndex {
   }
   // Appends a point to the line, within the room allocatePoints gave it.
   void add(size_t line, const LinePoint& point) { points_[ends_[line]++] = point; }
-  // The same, folded into the line's last point when that has the same t (bit for bit): the
-  // shortest spacing kept, as nearPairs folds equal t after sorting. A leaf's corner is on its
-  // line once more for the next leaf along it, most often right after: half the points to sort.
+  // The same, folded into the line's last point (foldedInto): half the points to sort.
   void addOrFold(size_t line, const LinePoint& point) {
-    if (ends_[line] > offsets_[line]) {
-      LinePoint& last = points_[ends_[line] - 1];
-      if (sameBits(last.t, point.t)) {
-        last.spacing = std::min(last.spacing, point.spacing);
-        return;
-      }
-    }
+    if (ends_[line] > offsets_[line] && foldedInto(points_[ends_[line] - 1], point)) return;
     add(line, point);
   }
   // Keeps the line's first `count` points.
@@ -111,13 +115,6 @@ class LineIndex {
   }
 
  private:
-  static bool sameBits(float a, float b) {
-    uint32_t x, y;
-    std::memcpy(&x, &a, sizeof x);
-    std::memcpy(&y, &b, sizeof y);
-    return x == y;
-  }
-
   HashMap<uint64_t, uint32_t, LineKeyHash> numbers_;
   std::vector<uint64_t> keys_;
   std::unique_ptr<LinePoint[]> points_;       // every line's points, line after line

@@ -3,9 +3,6 @@
 // line's room in LineIndex's one array is known before it is filled.
 #include "mesh/detail/line_points.h"
 
-#include <algorithm>
-#include <cstring>
-
 #include "common/parallel_for.h"
 
 namespace tessera::triangulate_detail {
@@ -56,14 +53,10 @@ void fillLines(const std::vector<QuadLeaf>& leaves, bool alongU,
   }
 }
 
-// Appends a point to a shared side's points, folded into the last one when that has the same
-// t (bit for bit), as LineIndex::addOrFold: the next leaf along the side most often repeats
-// the corner it shares with the last, and nearPairs sorts every point.
+// Appends a point to a shared side's points, folded into the last one as LineIndex::addOrFold
+// does: the next leaf along the side most often repeats the corner it shares with the last.
 void addOrFold(std::vector<LinePoint>& points, const LinePoint& point) {
-  if (!points.empty() && std::memcmp(&points.back().t, &point.t, sizeof point.t) == 0)
-    points.back().spacing = std::min(points.back().spacing, point.spacing);
-  else
-    points.push_back(point);
+  if (points.empty() || !foldedInto(points.back(), point)) points.push_back(point);
 }
 
 // The leaf corners on the patches' sides: shared sides' points in canonical parameters, folded

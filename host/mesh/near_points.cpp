@@ -26,18 +26,11 @@ constexpr size_t kInsertionSortUpTo = 256;
 // Sorts points[0, count) by t, folds equal t into one (the shortest spacing) and returns how
 // many points are left.
 size_t sortAndFold(LinePoint* points, size_t count) {
-  size_t kept = 0;
-  if (count > kInsertionSortUpTo) {
+  // A long line is sorted first; the pass below then only folds (no point moves back).
+  if (count > kInsertionSortUpTo)
     std::sort(points, points + count,
               [](const LinePoint& a, const LinePoint& b) { return a.t < b.t; });
-    for (size_t k = 0; k < count; ++k) {
-      if (kept > 0 && points[kept - 1].t == points[k].t)
-        points[kept - 1].spacing = std::min(points[kept - 1].spacing, points[k].spacing);
-      else
-        points[kept++] = points[k];
-    }
-    return kept;
-  }
+  size_t kept = 0;
   for (size_t k = 0; k < count; ++k) {
     const LinePoint point = points[k];
     size_t j = kept;
