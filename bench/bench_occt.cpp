@@ -163,6 +163,12 @@ void printLowerBounds(bench::Table& table, const std::vector<const char*>& names
   }
 }
 
+// The rows issue 15's time goal compares (OCCT serial and parallel, rule T) run this many
+// timed runs each, the same count on both sides: on this 2-core VM a minimum of 5 runs moved by
+// ±15% from one bench run to the next (bench/HISTORY.md, session 44), more than the margin the
+// goal is decided on. Rules A–D keep bench::kMinRuns.
+constexpr int kGoalRuns = 15;
+
 // Rule A's triangles, for rule T's goals (0: rule A not asked for).
 struct RuleATriangles {
   size_t atTolerance = 0;  // Filip counts at TOL = δ: proven, the issue's peer
@@ -179,7 +185,7 @@ const char* verdict(bool met) { return met ? "met" : "missed"; }
 void addToleranceCases(bench::Table& table, const std::vector<BezierPatch>& patches,
                        const std::vector<size_t>& parts,
                        const std::vector<CurvatureRootIntegral>& integrals, double tolerance,
-                       const Measured& occt, double occtParallelSeconds, RuleATriangles ruleA,
+                       const Measured& occt, const bench::Timing& occtParallel, RuleATriangles ruleA,
                        const std::vector<Backend*>& backends) {
   const QuadtreeOptions o = toleranceOptions(tolerance);
   for (Backend* backend : backends) {
@@ -196,7 +202,7 @@ void addToleranceCases(bench::Table& table, const std::vector<BezierPatch>& patc
     // (docs/quadtree.md; the level table below counts its nodes).
     constexpr double kSteadyAfterSeconds = 0.25;
     c.timing = bench::timeRepeated(
-        bench::kMinRuns, [&] { t = tessellate(patches, o, *backend); }, [&] { t = {}; },
+        kGoalRuns, [&] { t = tessellate(patches, o, *backend); }, [&] { t = {}; },
         kSteadyAfterSeconds);
     Measured m = measure(t, patches, parts);
     c.workSize = double(m.triangles);
@@ -206,10 +212,12 @@ void addToleranceCases(bench::Table& table, const std::vector<BezierPatch>& patc
     c.extra["tolerance"] = tolerance;
     const bool within = m.surfaceMax <= tolerance && m.parametricMax <= tolerance;
     const double overOcct = double(m.triangles) / double(occt.triangles);
-    const double speedup = occtParallelSeconds / c.timing.minSeconds;
+    const double speedup = occtParallel.minSeconds / c.timing.minSeconds;
+    const double speedupOfMedians = occtParallel.medianSeconds / c.timing.medianSeconds;
     c.extra["withinToleranceBothMetrics"] = within;
     c.extra["trianglesOverOcct"] = overOcct;
     c.extra["speedupVsOcctParallel"] = speedup;
+    c.extra["speedupVsOcctParallelOfMedians"] = speedupOfMedians;
     std::fprintf(stderr,
                  "  rule T δ %g (%s): %zu triangles; distance %.3g, parametric %.3g (goal <= δ: "
                  "%s)\n    %.3gx OCCT (goal <= 0.5: %s)\n",
@@ -234,9 +242,10 @@ void addToleranceCases(bench::Table& table, const std::vector<BezierPatch>& patc
       std::fprintf(stderr, " %.3g", ratio);
     }
     std::fprintf(stderr,
-                 " (goal <= 4: %s)\n    %.1fx faster than OCCT parallel (goal >= 20: %s): warm min "
-                 "%.3f ms, median %.3f ms of %d runs; first call on this backend %.3f ms\n",
-                 verdict(worstOverBound <= 4), speedup, verdict(speedup >= 20),
+                 " (goal <= 4: %s)\n    %.1fx faster than OCCT parallel (goal >= 20: %s; by "
+                 "medians %.1fx): warm min %.3f ms, median %.3f ms of %d runs; first call on this "
+                 "backend %.3f ms\n",
+                 verdict(worstOverBound <= 4), speedup, verdict(speedup >= 20), speedupOfMedians,
                  c.timing.minSeconds * 1e3, c.timing.medianSeconds * 1e3, c.timing.runs,
                  c.timing.firstSeconds * 1e3);
     if (onVulkan) {
@@ -371,7 +380,7 @@ void runDeflection(bench::Report& report, const BenchSet& set, double deflection
   for (int parallel = 0; parallel < 2; ++parallel) {
     std::vector<double> seconds;
     double first = 0;
-    for (int run = 0; run <= bench::kMinRuns; ++run) {  // run 0 warms up
+    for (int run = 0; run <= kGoalRuns; ++run) {  // run 0 warms up
       BRepTools::Clean(model.shape);
       const Stopwatch stopwatch;
       BRepMesh_IncrementalMesh mesher(model.shape, deflection, Standard_False, 0.5,
@@ -449,7 +458,7 @@ void runDeflection(bench::Report& report, const BenchSet& set, double deflection
   for (SplitRule rule : rules) {
     if (rule == SplitRule::Tolerance) {
       addToleranceCases(table, patches, parts, set.integrals, deflection, occt,
-                        occtTime[1].minSeconds, ruleA, {&vulkan, &cpu});
+                        occtTime[1], ruleA, {&vulkan, &cpu});
       continue;
     }
     for (double ratio : ratios) {
