@@ -5,28 +5,10 @@
 
 namespace tessera {
 
-SplitCounts splitCounts(const gpu::NodeDecision& d) {
-  switch (d.cause) {
-    case gpu::kCauseSplit: return {2, 2};
-    case gpu::kCauseSplitU: return {2, 1};
-    case gpu::kCauseSplitV: return {1, 2};
-    case gpu::kCauseSplitGrid: {
-      const uint32_t u = d.pad & 0xFFu, v = d.pad >> 8;
-      if (u < 1 || v < 1 || u > gpu::kToleranceSplitCapMax || v > gpu::kToleranceSplitCapMax ||
-          u * v < 2)
-        throw std::logic_error("classifier returned a split into " + std::to_string(u) + " x " +
-                               std::to_string(v) + " children (pad " + std::to_string(d.pad) +
-                               ")");
-      return {u, v};
-    }
-    default: return {};
-  }
-}
-
-uint32_t pathCodeBits(uint32_t count) {
-  uint32_t bits = 0;
-  while ((uint32_t(1) << bits) < count) ++bits;
-  return bits;
+void throwBadGridCounts(uint32_t pad) {
+  const uint32_t u = pad & 0xFFu, v = pad >> 8;
+  throw std::logic_error("classifier returned a split into " + std::to_string(u) + " x " +
+                         std::to_string(v) + " children (pad " + std::to_string(pad) + ")");
 }
 
 float equalSplitLine(float lo, float hi, uint32_t i, uint32_t count) {

@@ -16,10 +16,32 @@ struct SplitCounts {
   uint32_t u = 0, v = 0;
   bool splits() const { return u > 0; }
 };
-SplitCounts splitCounts(const gpu::NodeDecision& decision);
+// Throws the std::logic_error of splitCounts for a grid split's counts `pad`.
+[[noreturn]] void throwBadGridCounts(uint32_t pad);
+// Inline, its error path out of line: the frontier asks twice per node of every level, and a
+// call that saves registers for the message's strings took ~26 instructions for a switch.
+inline SplitCounts splitCounts(const gpu::NodeDecision& d) {
+  switch (d.cause) {
+    case gpu::kCauseSplit: return {2, 2};
+    case gpu::kCauseSplitU: return {2, 1};
+    case gpu::kCauseSplitV: return {1, 2};
+    case gpu::kCauseSplitGrid: {
+      const uint32_t u = d.pad & 0xFFu, v = d.pad >> 8;
+      if (u < 1 || v < 1 || u > gpu::kToleranceSplitCapMax || v > gpu::kToleranceSplitCapMax ||
+          u * v < 2)
+        throwBadGridCounts(d.pad);
+      return {u, v};
+    }
+    default: return {};
+  }
+}
 
 // Bits of a child's code along a direction split into `count` parts: ⌈log₂ count⌉.
-uint32_t pathCodeBits(uint32_t count);
+inline uint32_t pathCodeBits(uint32_t count) {
+  uint32_t bits = 0;
+  while ((uint32_t(1) << bits) < count) ++bits;
+  return bits;
+}
 
 // Line i of `count` equal parts of [lo, hi]: lo + (hi − lo)·(i/count), exactly hi at i = count.
 // A fixed function of the parent's interval and i, so every child computes the same bits for a
