@@ -80,7 +80,7 @@ void SeamVertices::registerPositions() {
     for (int j : {0, bp.degreeV})
       for (int i : {0, bp.degreeU}) positionId(bp.at(i, j));
     for (int side = 0; side < 4; ++side)
-      if (topology_.sides[p][side].collapsed) positionId(sideControlPoints(bp, side)[0]);
+      if (topology_.sides[p][side].collapsed) positionId(sideStartPoint(bp, side));
   }
   walking_ = true;
 }

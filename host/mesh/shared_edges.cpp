@@ -55,6 +55,14 @@ std::vector<glm::dvec3> sideControlPoints(const BezierPatch& patch, int side) {
   return points;
 }
 
+const glm::dvec3& sideStartPoint(const BezierPatch& patch, int side) {
+  const glm::dvec3* first = nullptr;
+  forEachSideIndex(patch, side, [&](size_t k) {
+    if (!first) first = &patch.cp[k];
+  });
+  return *first;
+}
+
 PatchTopology findSharedEdges(const std::vector<BezierPatch>& patches) {
   PatchTopology topology;
   topology.sides.resize(patches.size());

@@ -30,6 +30,9 @@ struct PatchTopology {
 
 // Control points of side `side` of `patch` in increasing t.
 std::vector<glm::dvec3> sideControlPoints(const BezierPatch& patch, int side);
+// The first of them (the side's point at t = 0), without building the list: a collapsed
+// side's one position, asked for at each leaf corner on it.
+const glm::dvec3& sideStartPoint(const BezierPatch& patch, int side);
 
 PatchTopology findSharedEdges(const std::vector<BezierPatch>& patches);
 

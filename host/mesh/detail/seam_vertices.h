@@ -87,7 +87,7 @@ class SeamVertices {
     float t;
     if (onSide(u, v, side, t)) {
       const SideInfo& s = topology_.sides[patch][side];
-      if (s.collapsed) return {kPosition, positionId(sideControlPoints(bp, side)[0]), 0};
+      if (s.collapsed) return {kPosition, positionId(sideStartPoint(bp, side)), 0};
       if (s.group >= 0) return {kEdgeParam, uint32_t(s.group), bits(canonical(s, t))};
       if (const int32_t f = foldOf_[patch][side]; f >= 0) {
         auto it = folds_[f].points.find(t);
