@@ -3,6 +3,8 @@
 // line's room in LineIndex's one array is known before it is filled.
 #include "mesh/detail/line_points.h"
 
+#include <atomic>
+
 #include "common/parallel_for.h"
 
 namespace tessera::triangulate_detail {
@@ -59,44 +61,55 @@ void addOrFold(std::vector<LinePoint>& points, const LinePoint& point) {
   if (points.empty() || !foldedInto(points.back(), point)) points.push_back(point);
 }
 
+// The leaf edges on a side of their patch, in leaf order, as visit(patch, side, t0, t1): the
+// edge's ends at t0 < t1 along the side. A leaf's sides come in the order in which the
+// corner-by-corner walk this replaced met their last corners (v = 0, u = 0, v = 1, u = 1), so
+// that a group's side (LinePoints::groupSide, the last one met) stays that walk's.
+template <typename Visit>
+void forEachSideEdge(const std::vector<QuadLeaf>& leaves, Visit&& visit) {
+  for (const QuadLeaf& leaf : leaves) {
+    const gpu::vec4& r = leaf.rect;
+    const uint32_t p = leaf.patchIndex;
+    if (r.y == 0.0f) visit(p, kSideV0, r.x, r.z);
+    if (r.x == 0.0f) visit(p, kSideU0, r.y, r.w);
+    if (r.w == 1.0f) visit(p, kSideV1, r.x, r.z);
+    if (r.z == 1.0f) visit(p, kSideU1, r.y, r.w);
+  }
+}
+
 // The leaf corners on the patches' sides: shared sides' points in canonical parameters, folded
-// sides' corners (in the order of the corners, as the walk over all lines met them).
+// sides' corners (their order free: FoldedSide::corners is sorted before use).
 void collectSidePoints(const std::vector<QuadLeaf>& leaves, SeamVertices& seams,
                        LinePoints& lines) {
   const PatchTopology& topology = seams.topology();
-  for (size_t l = 0; l < leaves.size(); ++l) {
-    const gpu::vec4& r = leaves[l].rect;
-    const uint32_t p = leaves[l].patchIndex;
-    // Most leaves touch no side of their patch.
-    if (r.x != 0.0f && r.y != 0.0f && r.z != 1.0f && r.w != 1.0f) continue;
-    // The corner at t on `side` (the leaf edge along it `spacing` long).
-    const auto onSide = [&](int side, float t, float spacing) {
-      const SideInfo& s = topology.sides[p][side];
-      if (s.group >= 0) {
-        addOrFold(lines.shared[s.group], {canonical(s, t), spacing});
-        lines.groupSide[s.group] = {p, side};
-      }
-      const int32_t f = seams.foldOf(p, side);
-      if (f >= 0) seams.fold(uint32_t(f)).corners.push_back(t);
-    };
-    for (int j = 0; j < 2; ++j)
-      for (int i = 0; i < 2; ++i) {
-        const float u = i ? r.z : r.x, v = j ? r.w : r.y;
-        // The sides (u, v) is on, in this order (a group's side is the last one met): none,
-        // one, or two at a corner of the parameter square.
-        if (v == 0.0f) onSide(kSideV0, u, r.z - r.x);
-        if (v == 1.0f) onSide(kSideV1, u, r.z - r.x);
-        if (u == 0.0f) onSide(kSideU0, v, r.w - r.y);
-        if (u == 1.0f) onSide(kSideU1, v, r.w - r.y);
-      }
-  }
+  // Each group's room first (two points an edge, before folding): grown point by point, the
+  // groups' arrays took ~5 reallocations each.
+  std::vector<uint32_t> room(lines.shared.size(), 0);
+  forEachSideEdge(leaves, [&](uint32_t p, int side, float, float) {
+    if (const int32_t g = topology.sides[p][side].group; g >= 0) room[size_t(g)] += 2;
+  });
+  for (size_t g = 0; g < room.size(); ++g) lines.shared[g].reserve(room[g]);
+  forEachSideEdge(leaves, [&](uint32_t p, int side, float t0, float t1) {
+    const SideInfo& s = topology.sides[p][side];
+    if (s.group >= 0) {
+      std::vector<LinePoint>& points = lines.shared[size_t(s.group)];
+      addOrFold(points, {canonical(s, t0), t1 - t0});
+      addOrFold(points, {canonical(s, t1), t1 - t0});
+      lines.groupSide[size_t(s.group)] = {p, side};
+    }
+    if (const int32_t f = seams.foldOf(p, side); f >= 0) {
+      std::vector<float>& corners = seams.fold(uint32_t(f)).corners;
+      corners.push_back(t0);
+      corners.push_back(t1);
+    }
+  });
 }
 
 }  // namespace
 
 LinePoints collectLinePoints(const std::vector<QuadLeaf>& leaves, SeamVertices& seams,
                              unsigned threads,
-                             const std::function<void(LinePoints&, bool alongU)>& filled) {
+                             const std::function<void(LinePoints&, LineSet)>& filled) {
   const PatchTopology& topology = seams.topology();
   // A line has ~5 (coarse trees) to ~18 (fine ones) leaves along it: a table sized by the
   // leaves would be mostly empty, megabytes faulted in at every call; it grows when needed.
@@ -104,17 +117,26 @@ LinePoints collectLinePoints(const std::vector<QuadLeaf>& leaves, SeamVertices& 
   LinePoints lines{LineIndex(expectedLines), LineIndex(expectedLines), {}, {}, {}, {}};
   lines.shared.resize(topology.groupCount);
   lines.groupSide.assign(topology.groupCount, {0, -1});
+  // The shared sides' hook follows each direction's once the sides' points are in (collected
+  // first, on the u thread): both threads share that work as they come free, and end about
+  // together on 2 cores. Nobody waits for the sides: a thread that would have to skips.
+  std::atomic<bool> sidesCollected{false};
   // The two directions' lines are independent: each numbered and filled on a thread of its
   // own (the sides' points with the lines along u).
   parallelFor(2, threads, [&](size_t begin, size_t end) {
     for (size_t part = begin; part < end; ++part) {
       const bool alongU = part == 0;
+      if (alongU) {
+        collectSidePoints(leaves, seams, lines);
+        sidesCollected.store(true, std::memory_order_release);
+      }
       LineIndex& index = alongU ? lines.alongU : lines.alongV;
       std::vector<LeafLines>& leafLines = alongU ? lines.leafLinesU : lines.leafLinesV;
       leafLines = numberLeafLines(leaves, alongU, index);
       fillLines(leaves, alongU, leafLines, index);
-      if (alongU) collectSidePoints(leaves, seams, lines);
-      if (filled) filled(lines, alongU);
+      if (!filled) continue;
+      filled(lines, alongU ? LineSet::kAlongU : LineSet::kAlongV);
+      if (sidesCollected.load(std::memory_order_acquire)) filled(lines, LineSet::kSharedSides);
     }
   });
   return lines;

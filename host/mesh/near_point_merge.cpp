@@ -55,12 +55,13 @@ class LastPoint {
 class NearPointMerger {
  public:
   NearPointMerger(LinePoints& lines, SeamVertices& seams, const LinePairs& pairsU,
-                  const LinePairs& pairsV, size_t leafCount)
+                  const LinePairs& pairsV, const LinePairs& pairsShared, size_t leafCount)
       : lines_(lines),
         seams_(seams),
         topology_(seams.topology()),
         pairsU_(pairsU),
         pairsV_(pairsV),
+        pairsShared_(pairsShared),
         leafCount_(leafCount) {}
 
   NearPointMerges run() {
@@ -72,7 +73,7 @@ class NearPointMerger {
  private:
   // Near-coincident points from the two sides of each line become one vertex (out_.merged):
   // the lines' pairs (findLinePairs) merged in the walk order (LineIndex), then the shared
-  // sides'.
+  // sides' (SharedSidePairs) in group order.
   void mergeNearPoints() {
     for (LineIndex* line : {&lines_.alongU, &lines_.alongV}) {
       const bool alongU = line == &lines_.alongU;
@@ -86,26 +87,8 @@ class NearPointMerger {
           merge(lineKeyOf(patch, alongU, fixed, a), lineKeyOf(patch, alongU, fixed, b));
       }
     }
-    for (uint32_t g = 0; g < lines_.shared.size(); ++g) {
-      const auto [patch, side] = lines_.groupSide[g];
-      if (side < 0) continue;  // no leaf of this triangulation is on it (a streamed group's scope)
-      const SideInfo& s = topology_.sides[patch][side];
-      const bool alongU = side == kSideV0 || side == kSideV1;
-      const float fixed = side == kSideV0 || side == kSideU0 ? 0.0f : 1.0f;
-      // (1 − c need not give back the leaf's own t bit for bit; a distance does not mind.)
-      const auto uvOf = [&](float c) {
-        const float t = canonical(s, c);
-        return alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
-      };
-      LastPoint last;
-      const auto distinct = [&, patch = patch](float a, float b) {
-        const auto at = [&](float c) { return last.at(c, [&] { return pointOf(seams_, patch, uvOf(c)); }); };
-        const glm::dvec3 pa = at(a);
-        return distinctOnModel(pa, at(b));
-      };
-      for (const auto& [a, b] : nearPairs(lines_.shared[g], distinct))
-        merge(groupKey(g, a), groupKey(g, b));
-    }
+    for (uint32_t g = 0; g < pairsShared_.size(); ++g)
+      for (const auto& [a, b] : pairsShared_[g]) merge(groupKey(g, a), groupKey(g, b));
     // Every key straight to its representative: a key set before another is met through it
     // gives the same end, so the table's order does not matter.
     for (auto it = out_.merged.begin(); it != out_.merged.end(); ++it)
@@ -241,6 +224,7 @@ class NearPointMerger {
   const PatchTopology& topology_;
   const LinePairs& pairsU_;
   const LinePairs& pairsV_;
+  const LinePairs& pairsShared_;
   const size_t leafCount_;
   NearPointMerges out_;
 };
@@ -271,9 +255,33 @@ LinePairs findLinePairs(LineIndex& lines, const SeamVertices& seams, bool alongU
   return pairs;
 }
 
+void SharedSidePairs::findUntaken(LinePoints& lines, const SeamVertices& seams) {
+  const PatchTopology& topology = seams.topology();
+  for (size_t g; (g = next_.fetch_add(1, std::memory_order_relaxed)) < pairs_.size();) {
+    const auto [patch, side] = lines.groupSide[g];
+    if (side < 0) continue;  // no leaf of this triangulation is on it (a streamed group's scope)
+    const SideInfo& s = topology.sides[patch][side];
+    const bool alongU = side == kSideV0 || side == kSideV1;
+    const float fixed = side == kSideV0 || side == kSideU0 ? 0.0f : 1.0f;
+    // (1 − c need not give back the leaf's own t bit for bit; a distance does not mind.)
+    const auto uvOf = [&](float c) {
+      const float t = canonical(s, c);
+      return alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
+    };
+    LastPoint last;
+    const auto distinct = [&, patch = patch](float a, float b) {
+      const auto at = [&](float c) { return last.at(c, [&] { return pointOf(seams, patch, uvOf(c)); }); };
+      const glm::dvec3 pa = at(a);
+      return distinctOnModel(pa, at(b));
+    };
+    pairs_[g] = nearPairs(lines.shared[g], distinct);
+  }
+}
+
 NearPointMerges mergeNearPoints(LinePoints& lines, SeamVertices& seams, const LinePairs& pairsU,
-                                const LinePairs& pairsV, size_t leafCount) {
-  return NearPointMerger(lines, seams, pairsU, pairsV, leafCount).run();
+                                const LinePairs& pairsV, const LinePairs& pairsShared,
+                                size_t leafCount) {
+  return NearPointMerger(lines, seams, pairsU, pairsV, pairsShared, leafCount).run();
 }
 
 }  // namespace tessera::triangulate_detail

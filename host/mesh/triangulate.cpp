@@ -38,17 +38,21 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
 
   // The order counts: position ids are handed out as the folds and then the merges meet them.
   SeamVertices seams(leaves, patches, topology, scope.seamKeys);
-  // Each direction's near pairs are found on the thread that filled its lines: a worker's
-  // wake-up (~40 µs) costs about what a small tree's search takes.
+  // Each set's near pairs are found on a thread that filled it: a worker's wake-up (~40 µs)
+  // costs about what a small tree's search takes.
   LinePairs pairsU, pairsV;
-  LinePoints lines = collectLinePoints(leaves, seams, scope.threads, [&](LinePoints& filled, bool alongU) {
-    if (alongU)
+  SharedSidePairs pairsShared(topology.groupCount);
+  LinePoints lines = collectLinePoints(leaves, seams, scope.threads, [&](LinePoints& filled, LineSet set) {
+    if (set == LineSet::kAlongU)
       pairsU = findLinePairs(filled.alongU, seams, true);
-    else
+    else if (set == LineSet::kAlongV)
       pairsV = findLinePairs(filled.alongV, seams, false);
+    else
+      pairsShared.findUntaken(filled, seams);
   });
   for (uint32_t f = 0; f < seams.foldCount(); ++f) seams.placeFoldPoints(f);
-  const NearPointMerges merges = mergeNearPoints(lines, seams, pairsU, pairsV, leaves.size());
+  const NearPointMerges merges =
+      mergeNearPoints(lines, seams, pairsU, pairsV, pairsShared.pairs(), leaves.size());
   seams.registerPositions();
 
   // Leaves outside the scope are walked too, without triangles: their vertices are met in

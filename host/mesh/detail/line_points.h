@@ -29,13 +29,19 @@ struct LinePoints {
   std::vector<std::pair<uint32_t, int>> groupSide;  // per group, one (patch, side) on it
 };
 
+// What collectLinePoints has filled when it calls its hook: the lines of one direction, or
+// the shared sides' points (LinePoints::shared and groupSide).
+enum class LineSet { kAlongU, kAlongV, kSharedSides };
+
 // Every leaf corner with the leaf edges that end there, on each line it is on; the corners on
 // a folded side go to its FoldedSide::corners. The two directions on up to 2 of `threads`
-// (0: all); the same lines whatever the count. `filled(lines, alongU)`, if given, runs on a
-// direction's thread once that direction's lines are filled (it may read and change those
-// lines only): work of one direction rides along without another hand-off to the threads.
+// (0: all); the same lines whatever the count. `filled(lines, set)`, if given, runs once per
+// direction, on the thread that filled it, once it is filled (it may read and change those
+// lines only): work of one set rides along without another hand-off to the threads. The
+// shared sides' call follows a direction's on each thread that finds the sides' points in:
+// calls may overlap and repeat, the callee shares the work out.
 LinePoints collectLinePoints(const std::vector<QuadLeaf>& leaves, SeamVertices& seams,
                              unsigned threads,
-                             const std::function<void(LinePoints&, bool alongU)>& filled = {});
+                             const std::function<void(LinePoints&, LineSet)>& filled = {});
 
 }  // namespace tessera::triangulate_detail

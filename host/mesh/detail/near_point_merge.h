@@ -3,6 +3,7 @@
 // point now lies. Built once before the leaf walk; the walk looks keys up (find, resolve), so
 // these stay inline.
 #pragma once
+#include <atomic>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -51,7 +52,8 @@ struct NearPointMerges {
   }
 };
 
-// Per line of one direction (by its number in LinePoints::alongU or alongV), its near pairs.
+// Per line of one direction (by its number in LinePoints::alongU or alongV), or per shared-side
+// group, its near pairs.
 using LinePairs = std::vector<std::vector<std::pair<float, float>>>;
 
 // Sorts and folds the points of every line of `lines` (LinePoints::alongU when alongU, else
@@ -60,10 +62,28 @@ using LinePairs = std::vector<std::vector<std::pair<float, float>>>;
 // the two directions may be searched at once (collectLinePoints' hook).
 LinePairs findLinePairs(LineIndex& lines, const SeamVertices& seams, bool alongU);
 
-// Merges the lines' near pairs (findLinePairs) and the shared sides' near points, then keeps
-// in `lines` only the points that stay vertices of their own. Hands out position ids
-// (seams.baseKey) in the order merging meets them.
+// Per shared-side group (LinePoints::shared), its points sorted and folded and their near
+// pairs, the surface evaluated on the group's side in LinePoints::groupSide. Reads only the
+// shared sides and the patches, so it may run beside findLinePairs (collectLinePoints' hook),
+// and on several threads at once: each takes the groups no other has taken, one at a time,
+// so the thread done first with its direction takes most of them.
+class SharedSidePairs {
+ public:
+  explicit SharedSidePairs(size_t groups) : pairs_(groups) {}
+  // Finds the pairs of every group not yet taken; returns when none is left.
+  void findUntaken(LinePoints& lines, const SeamVertices& seams);
+  const LinePairs& pairs() const { return pairs_; }
+
+ private:
+  std::atomic<size_t> next_{0};
+  LinePairs pairs_;
+};
+
+// Merges the lines' near pairs (findLinePairs) and the shared sides' (SharedSidePairs),
+// then keeps in `lines` only the points that stay vertices of their own. Hands out position
+// ids (seams.baseKey) in the order merging meets them.
 NearPointMerges mergeNearPoints(LinePoints& lines, SeamVertices& seams, const LinePairs& pairsU,
-                                const LinePairs& pairsV, size_t leafCount);
+                                const LinePairs& pairsV, const LinePairs& pairsShared,
+                                size_t leafCount);
 
 }  // namespace tessera::triangulate_detail
