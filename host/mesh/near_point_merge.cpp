@@ -105,30 +105,50 @@ class NearPointMerger {
     // (patch, u, v) key is on the lines v and u of its patch alone, and any other merged key
     // is on a side's line or at a line's end. A point that is no merged key stays.
     std::vector<uint8_t> listsMergedU(lines_.alongU.size()), listsMergedV(lines_.alongV.size());
-    bool boundaryMerged = false;
+    // Any other merged key is a shared side's point (by its group) or a position (a patch
+    // corner, or a collapsed or folded side's point); a fold's own points are never merged.
+    std::vector<uint8_t> groupMerged(lines_.shared.size());
+    bool positionMerged = false;
     for (const auto& [key, target] : out_.merged) {
-      if (key.kind != kPatchParam) {
-        boundaryMerged = true;
-        continue;
-      }
+      if (key.kind == kEdgeParam) groupMerged[key.a] = 1;
+      if (key.kind == kPosition) positionMerged = true;
+      if (key.kind != kPatchParam) continue;
       const float u = fromBits(uint32_t(key.b >> 32)), v = fromBits(uint32_t(key.b));
       if (const uint32_t l = lines_.alongU.find(lineKey(key.a, v)); l != UINT32_MAX) listsMergedU[l] = 1;
       if (const uint32_t l = lines_.alongV.find(lineKey(key.a, u)); l != UINT32_MAX) listsMergedV[l] = 1;
     }
+    // Whether a point inside a side can be a merged key that is no (patch, u, v) one (those
+    // are listed above): only on a side whose group has a merged point, or on a collapsed or
+    // folded side once a position is merged. A line's ends are on sides: most lines need no
+    // look-up at all (a few merges on the shared sides had every line's ends looked up).
+    const auto sideMayHoldMerged = [&](uint32_t patch, int side) {
+      const SideInfo& s = topology_.sides[patch][side];
+      if (s.group >= 0) return groupMerged[size_t(s.group)] != 0;
+      return positionMerged && (s.collapsed || seams_.foldOf(patch, side) >= 0);
+    };
     for (LineIndex* line : {&lines_.alongU, &lines_.alongV}) {
       const bool alongU = line == &lines_.alongU;
       const std::vector<uint8_t>& listsMerged = alongU ? listsMergedU : listsMergedV;
+      // The sides a line's ends are on (t = 0, t = 1), and the side a line at 0 or 1 is.
+      const int startSide = alongU ? kSideU0 : kSideV0, endSide = alongU ? kSideU1 : kSideV1;
+      const int sideAt0 = alongU ? kSideV0 : kSideU0, sideAt1 = alongU ? kSideV1 : kSideU1;
       std::vector<uint32_t>& movedOf = alongU ? out_.movedOfU : out_.movedOfV;
       movedOf.assign(line->size(), 0);
       // In the lines' own order: merging is done, so the position ids handed out here
       // (patch corners no merge met) only tell positions apart, and each line's moved
       // corners are its own.
       for (uint32_t l = 0; l < line->size(); ++l) {
-        if (!listsMerged[l] && !boundaryMerged) continue;
         const uint64_t key = line->key(l);
-        const LinePointRange points = line->points(l);
         const uint32_t patch = uint32_t(key >> 32);
         const float fixed = fromBits(uint32_t(key));
+        // A side's own line ends at patch corners.
+        const bool mayHoldMerged =
+            listsMerged[l] ||
+            (fixed == 0.0f || fixed == 1.0f
+                 ? positionMerged || sideMayHoldMerged(patch, fixed == 0.0f ? sideAt0 : sideAt1)
+                 : sideMayHoldMerged(patch, startSide) || sideMayHoldMerged(patch, endSide));
+        if (!mayHoldMerged) continue;
+        const LinePointRange points = line->points(l);
         // Else only its ends at t = 0 and 1 (sorted by findLinePairs: the first and last).
         const bool everyPoint = listsMerged[l] || fixed == 0.0f || fixed == 1.0f;
         size_t kept = 0;
