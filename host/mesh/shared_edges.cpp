@@ -37,13 +37,26 @@ uint64_t bitsOf(double x) {
 // (so a polynomial side and a rational side with unit weights there are the same curve),
 // points in the order of `indices`. Equal points with other weights are a different curve
 // (the same curve reparametrised, or another one): never shared.
+constexpr size_t kWordsPerPoint = 4;
+
 template <typename Indices>
 void appendKey(const BezierPatch& patch, const Indices& indices, std::vector<uint64_t>& out) {
+  size_t at = out.size();
+  out.resize(at + kWordsPerPoint * indices.size());
   for (size_t k : indices) {
     const glm::dvec3& p = patch.cp[k];
-    out.insert(out.end(), {bitsOf(p.x), bitsOf(p.y), bitsOf(p.z),
-                           bitsOf(patch.weights.empty() ? 1.0 : patch.weights[k])});
+    out[at++] = bitsOf(p.x);
+    out[at++] = bitsOf(p.y);
+    out[at++] = bitsOf(p.z);
+    out[at++] = bitsOf(patch.weights.empty() ? 1.0 : patch.weights[k]);
   }
+}
+
+// The key of the same points in reverse order: `key`'s points (four words each) back to front.
+void reverseKey(const std::vector<uint64_t>& key, std::vector<uint64_t>& out) {
+  out.resize(key.size());
+  for (size_t b = 0, n = key.size(); b < n; b += kWordsPerPoint)
+    std::copy_n(&key[b], kWordsPerPoint, &out[n - kWordsPerPoint - b]);
 }
 
 }  // namespace
@@ -71,6 +84,7 @@ PatchTopology findSharedEdges(const std::vector<BezierPatch>& patches) {
   // when they were seen, gives the map's groups in the map's order, members in its order.
   struct Member {
     size_t begin, end;  // its key in `keys`
+    uint64_t head;      // the key's first word, compared first without going to `keys`
     uint32_t patch;
     int side;
     bool reversed;
@@ -93,16 +107,16 @@ PatchTopology findSharedEdges(const std::vector<BezierPatch>& patches) {
         ++topology.collapsedSides;
         continue;
       }
-      forward.clear(), backward.clear();
+      forward.clear();
       appendKey(patch, indices, forward);
-      std::reverse(indices.begin(), indices.end());
-      appendKey(patch, indices, backward);
+      reverseKey(forward, backward);
       const bool reversed = backward < forward;  // canonical direction: the smaller key
       const std::vector<uint64_t>& key = reversed ? backward : forward;
-      members.push_back({keys.size(), keys.size() + key.size(), p, side, reversed});
+      members.push_back({keys.size(), keys.size() + key.size(), key[0], p, side, reversed});
       keys.insert(keys.end(), key.begin(), key.end());
     }
   const auto keyLess = [&](const Member& a, const Member& b) {
+    if (a.head != b.head) return a.head < b.head;
     return std::lexicographical_compare(keys.begin() + a.begin, keys.begin() + a.end,
                                         keys.begin() + b.begin, keys.begin() + b.end);
   };
