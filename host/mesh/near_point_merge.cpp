@@ -187,9 +187,15 @@ class NearPointMerger {
     }
     out_.sharedMoved.resize(lines_.shared.size());
     for (uint32_t g = 0; g < lines_.shared.size(); ++g) {
+      // A point inside the side is keyed by its group, one at an end by a patch corner.
+      if (!groupMerged[g] && !positionMerged) continue;
       std::vector<LinePoint>& points = lines_.shared[g];
       size_t kept = 0;
       for (const LinePoint& point : points) {
+        if (!groupMerged[g] && point.t != 0.0f && point.t != 1.0f) {
+          points[kept++] = point;
+          continue;
+        }
         const VertexKey own = groupKey(g, point.t);
         const VertexKey r = out_.find(own);
         if (r == own) {
