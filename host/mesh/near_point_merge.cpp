@@ -296,7 +296,9 @@ void SharedSidePairs::findUntaken(LinePoints& lines, const SeamVertices& seams) 
     };
     LastPoint last;
     const auto distinct = [&, patch = patch](float a, float b) {
-      const auto at = [&](float c) { return last.at(c, [&] { return pointOf(seams, patch, uvOf(c)); }); };
+      const auto at = [&](float c) {
+        return last.at(c, [&] { return pointOf(seams, patch, uvOf(c)); });
+      };
       const glm::dvec3 pa = at(a);
       return distinctOnModel(pa, at(b));
     };

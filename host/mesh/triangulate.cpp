@@ -42,14 +42,15 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
   // costs about what a small tree's search takes.
   LinePairs pairsU, pairsV;
   SharedSidePairs pairsShared(topology.groupCount);
-  LinePoints lines = collectLinePoints(leaves, seams, scope.threads, [&](LinePoints& filled, LineSet set) {
-    if (set == LineSet::kAlongU)
-      pairsU = findLinePairs(filled.alongU, seams, true);
-    else if (set == LineSet::kAlongV)
-      pairsV = findLinePairs(filled.alongV, seams, false);
-    else
-      pairsShared.findUntaken(filled, seams);
-  });
+  LinePoints lines =
+      collectLinePoints(leaves, seams, scope.threads, [&](LinePoints& filled, LineSet set) {
+        if (set == LineSet::kAlongU)
+          pairsU = findLinePairs(filled.alongU, seams, true);
+        else if (set == LineSet::kAlongV)
+          pairsV = findLinePairs(filled.alongV, seams, false);
+        else
+          pairsShared.findUntaken(filled, seams);
+      });
   for (uint32_t f = 0; f < seams.foldCount(); ++f) seams.placeFoldPoints(f);
   const NearPointMerges merges =
       mergeNearPoints(lines, seams, pairsU, pairsV, pairsShared.pairs(), leaves.size());
