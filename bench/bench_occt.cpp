@@ -185,8 +185,8 @@ const char* verdict(bool met) { return met ? "met" : "missed"; }
 void addToleranceCases(bench::Table& table, const std::vector<BezierPatch>& patches,
                        const std::vector<size_t>& parts,
                        const std::vector<CurvatureRootIntegral>& integrals, double tolerance,
-                       const Measured& occt, const bench::Timing& occtParallel, RuleATriangles ruleA,
-                       const std::vector<Backend*>& backends) {
+                       const Measured& occt, const bench::Timing& occtParallel,
+                       RuleATriangles ruleA, const std::vector<Backend*>& backends) {
   const QuadtreeOptions o = toleranceOptions(tolerance);
   for (Backend* backend : backends) {
     const bool onVulkan = backend == backends.front();
@@ -457,8 +457,8 @@ void runDeflection(bench::Report& report, const BenchSet& set, double deflection
   }
   for (SplitRule rule : rules) {
     if (rule == SplitRule::Tolerance) {
-      addToleranceCases(table, patches, parts, set.integrals, deflection, occt,
-                        occtTime[1], ruleA, {&vulkan, &cpu});
+      addToleranceCases(table, patches, parts, set.integrals, deflection, occt, occtTime[1], ruleA,
+                        {&vulkan, &cpu});
       continue;
     }
     for (double ratio : ratios) {
