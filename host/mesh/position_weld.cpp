@@ -1,11 +1,13 @@
 // weldIdenticalPositions (mesh_cleanup.h): per vertex, the first vertex with its position bit
 // for bit (−0 and +0 one). A small mesh (the tea set at δ 0.01: ~5,200 vertices) takes one
 // open-addressed table of vertex indices on the calling thread: a probe compares the position
-// in place, ~75 instructions a vertex where the sharded hash map of firstOccurrences took ~135
-// (its table's clearing, 12-byte keys, robin-hood bookkeeping). Larger meshes keep that map:
-// its tables are kept from call to call, where a flat table of their size freed every call
-// (~256 KiB at 10⁻³) made malloc trim the heap, and the next call fault ~1,000 pages back in
-// (`perf stat`, bench/HISTORY.md); they are sharded on all the threads asked for.
+// in place, where the sharded hash map of firstOccurrences spent about twice the instructions
+// (its table's clearing, 12-byte keys, robin-hood bookkeeping). The table's room (at most
+// 128 KiB) is kept by the thread from call to call. Larger meshes keep that map: its tables
+// are kept from call to call too. A flat table for them (at 10⁻³ 0.14 ms on one thread
+// against the map's 0.74) left the warm loop in malloc's trimming mode, ~1,200–1,700 page
+// faults a call, freed every call or kept (bench/HISTORY.md); they are sharded on all the
+// threads asked for.
 #include <array>
 #include <cstring>
 
@@ -33,18 +35,22 @@ PositionBits bitsOf(const glm::vec3& p) {
   return key;
 }
 
-// Up to this many vertices the flat table, at most 64 KiB, is used.
+// Up to this many vertices the flat table, at most 2¹⁵ slots (128 KiB), is used.
 constexpr size_t kFlatTableVertices = size_t(1) << 13;
 
 std::vector<uint32_t> firstEqualInFlatTable(const std::vector<glm::vec3>& positions) {
   const size_t count = positions.size();
   std::vector<uint32_t> first(count);
-  // At most two thirds full: short probes.
+  // At most a quarter full: a new position mostly meets an empty slot first. Two thirds full
+  // took twice the time (δ 0.01: 0.027 against 0.013 ms), mostly mispredicted probe loops.
   int bits = 4;
-  while ((size_t(1) << bits) < count + count / 2) ++bits;
+  while ((size_t(1) << bits) < 4 * count) ++bits;
   const size_t mask = (size_t(1) << bits) - 1;
   constexpr uint32_t kEmpty = UINT32_MAX;
-  std::vector<uint32_t> table(mask + 1, kEmpty);
+  // Its room only, filled anew every call: a new 128 KiB block every call can be mapped afresh
+  // (malloc's mmap threshold) and fault its pages in.
+  thread_local std::vector<uint32_t> table;
+  table.assign(mask + 1, kEmpty);
   for (size_t i = 0; i < count; ++i) {
     const PositionBits key = bitsOf(positions[i]);
     const uint64_t h = uint64_t(PositionBitsHash{}(key)) * 0x9E3779B97F4A7C15ull;
