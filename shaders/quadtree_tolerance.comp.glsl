@@ -7,20 +7,11 @@
 // as little as they can. The mirror's text, so the decisions are bit-identical.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
-#include "layout.h"
-#include "lib/shared_glsl_cpp.h"
-#define TOLERANCE_ROW_ORDER 4  // bicubic rows: lib/tolerance_bound.h
-#define TOLERANCE_UNROLL [[unroll]]  // constant trip counts: lib/tolerance_bound.h
-#include "lib/tolerance_bound.h"
-#include "lib/dispatch.glsl"
-
-#include "lib/tolerance_texels.glsl"  // bindings 0-1: patches and nodes
+#include "lib/tolerance_bicubic_shader.glsl"  // bindings 0-1, push constants
 
 // The first dispatch's ToleranceNetBounds, 3 texels a node.
 layout(binding = 2) uniform usamplerBuffer netTexels;
 layout(std430, binding = 3) writeonly buffer Decisions { NodeDecision decisions[]; };
-
-layout(push_constant) uniform Push { ClassifyPush pc; };
 
 void main() {
   uint index = linearInvocationIndex();

@@ -9,18 +9,9 @@
 // the loops itself and the build took ~210-250 ms of a worker's CPU (bench/HISTORY.md).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
-#include "layout.h"
-#include "lib/shared_glsl_cpp.h"
-#define TOLERANCE_ROW_ORDER 4  // bicubic rows: lib/tolerance_bound.h
-#define TOLERANCE_UNROLL [[unroll]]  // constant trip counts: lib/tolerance_bound.h
-#include "lib/tolerance_bound.h"
-#include "lib/dispatch.glsl"
-
-#include "lib/tolerance_texels.glsl"  // bindings 0-1: patches and nodes
+#include "lib/tolerance_bicubic_shader.glsl"  // bindings 0-1, push constants
 
 layout(std430, binding = 2) writeonly buffer Decisions { NodeDecision decisions[]; };
-
-layout(push_constant) uniform Push { ClassifyPush pc; };
 
 void main() {
   uint index = linearInvocationIndex();

@@ -1,8 +1,7 @@
-// The body of quadtree.comp.glsl and its rule-B-only and rule-T-only variants
-// (quadtree_midpoint.comp.glsl, quadtree_tolerance.comp.glsl): one invocation per node of a
-// frontier level of bicubic patches finds the split point (rule: specialization constant 0) and
-// decides leaf or split, or by rule T its proven deviation bound (lib/tolerance_bound.h) against
-// δ. The arithmetic lives in lib/quadtree_classify.h, shared with the fp32 mirror.
+// The body of quadtree.comp.glsl and its rule-B-only variant (quadtree_midpoint.comp.glsl):
+// one invocation per node of a frontier level of bicubic patches finds the split point (rule:
+// specialization constant 0) and decides leaf or split, or by rule T its proven deviation bound
+// (lib/tolerance_bound.h) against δ. The arithmetic lives in lib/quadtree_classify.h, shared with the fp32 mirror.
 #include "layout.h"
 #include "lib/shared_glsl_cpp.h"
 #include "lib/bicubic_eval.h"

@@ -1,4 +1,4 @@
-// Rule T's bicubic shaders (quadtree_tolerance_nets.comp.glsl, quadtree_tolerance.comp.glsl)
+// Rule T's bicubic shaders (lib/tolerance_bicubic_shader.glsl includes this for the three)
 // read their inputs as uniform texel buffers, not storage buffers: lavapipe (Mesa 22.3) loads
 // a storage buffer at a per-invocation index one lane at a time, with a bounds test per
 // component (~70 instructions a lane for a vec4), which was about two thirds of these shaders'
