@@ -87,6 +87,11 @@ class LineIndex {
   // Keeps the line's first `count` points.
   void shrink(size_t line, size_t count) { ends_[line] = offsets_[line] + count; }
 
+  // Frees the key → number table once no line is looked up by key again (the leaf walk finds
+  // its lines by number): a huge mesh's tables are hundreds of MiB. find() then finds nothing,
+  // number() numbers afresh; the points, size() and key() stay.
+  void releaseLookup() { decltype(numbers_)().swap(numbers_); }
+
   size_t size() const { return keys_.size(); }
   uint64_t key(size_t line) const { return keys_[line]; }
   LinePointRange points(size_t line) {

@@ -21,6 +21,55 @@ using namespace triangulate_detail;
 namespace {
 constexpr size_t kKeptBorderKeys = size_t(1) << 15;  // 2¹⁷ slots at most: 3 MiB
 constexpr size_t kRunsForSecondThread = 24;  // the numbering's (below)
+
+// Sets up what a leaf's vertices are (seam_vertices.cpp, line_points.cpp,
+// near_point_merge.cpp) and walks the leaves into `runs`, `runLength` leaves a run. The lines,
+// their near pairs and the merges serve the walk only: they end with this call, before the
+// numbering allocates the mesh (~1 GiB at 10⁶ patches, as much as the runs and the mesh).
+void walkLeafRuns(const std::vector<QuadLeaf>& leaves, const PatchTopology& topology,
+                  SeamVertices& seams, const TriangulationScope& scope, size_t runLength,
+                  std::vector<LeafRun>& runs) {
+  // Each set's near pairs are found on a thread that filled it: a worker's wake-up (~40 µs)
+  // costs about what a small tree's search takes.
+  LinePairs pairsU, pairsV;
+  std::optional<SharedSidePairs> pairsShared(std::in_place, topology.groupCount);
+  LinePoints lines =
+      collectLinePoints(leaves, seams, scope.threads, [&](LinePoints& filled, LineSet set) {
+        if (set == LineSet::kAlongU)
+          pairsU = findLinePairs(filled.alongU, seams, true);
+        else if (set == LineSet::kAlongV)
+          pairsV = findLinePairs(filled.alongV, seams, false);
+        else
+          pairsShared->findUntaken(filled, seams);
+      });
+  for (uint32_t f = 0; f < seams.foldCount(); ++f) seams.placeFoldPoints(f);
+  const NearPointMerges merges =
+      mergeNearPoints(lines, seams, pairsU, pairsV, pairsShared->pairs(), leaves.size());
+  // Merged: the pairs and the lines' key tables are not read again (the walk finds a leaf's
+  // lines by number), so they go before the runs are filled.
+  LinePairs().swap(pairsU);
+  LinePairs().swap(pairsV);
+  pairsShared.reset();
+  lines.alongU.releaseLookup();
+  lines.alongV.releaseLookup();
+  seams.registerPositions();
+
+  // Leaves outside the scope are walked too, without triangles: their vertices are met in
+  // the same order as in the whole mesh, so a shared vertex takes the same patch's (u, v).
+  // The walk reads the line indices, merges and folds only, so runs of leaves are walked on
+  // several threads (LeafRun).
+  HashSet<VertexKey, VertexKeyHash> mergeTargets;
+  for (const auto& [key, target] : merges.merged) mergeTargets.insert(target);
+  const LeafWalkTables tables{seams, lines, merges, mergeTargets};
+  parallelForChunks(leaves.size(), runLength, scope.threads, [&](size_t begin, size_t end) {
+    LeafRun& run = runs[begin / runLength];
+    // About a vertex and two triangles per leaf.
+    run.vertices.reserve(2 * (end - begin));
+    run.triangles.reserve(3 * (end - begin));
+    walkLeaves(tables, leaves, begin, end, scope.firstPatch, scope.endPatch, run);
+  });
+}
+
 }  // namespace
 
 ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
@@ -31,49 +80,17 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
   const PatchTopology& topology = scope.topology ? *scope.topology : ownTopology;
   ParamMesh mesh;
   mesh.sharedEdgeGroups = topology.groupCount;
-  mesh.vertices.reserve(leaves.size() * 3 / 2);
-  mesh.indices.reserve(leaves.size() * 8);
-  mesh.trianglePatch.reserve(leaves.size() * 8 / 3);
-  mesh.cornerUv.reserve(leaves.size() * 8);
+  // The mesh's arrays are sized once their sizes are known, by the numbering below, not
+  // reserved by the leaves before the walk: reserved then, they sat beside the walk's tables
+  // (~0.5 GiB at 10⁶ patches; bench/HISTORY.md, "The largest scene's peak memory").
 
   // The order counts: position ids are handed out as the folds and then the merges meet them.
   SeamVertices seams(leaves, patches, topology, scope.seamKeys);
-  // Each set's near pairs are found on a thread that filled it: a worker's wake-up (~40 µs)
-  // costs about what a small tree's search takes.
-  LinePairs pairsU, pairsV;
-  SharedSidePairs pairsShared(topology.groupCount);
-  LinePoints lines =
-      collectLinePoints(leaves, seams, scope.threads, [&](LinePoints& filled, LineSet set) {
-        if (set == LineSet::kAlongU)
-          pairsU = findLinePairs(filled.alongU, seams, true);
-        else if (set == LineSet::kAlongV)
-          pairsV = findLinePairs(filled.alongV, seams, false);
-        else
-          pairsShared.findUntaken(filled, seams);
-      });
-  for (uint32_t f = 0; f < seams.foldCount(); ++f) seams.placeFoldPoints(f);
-  const NearPointMerges merges =
-      mergeNearPoints(lines, seams, pairsU, pairsV, pairsShared.pairs(), leaves.size());
-  seams.registerPositions();
-
-  // Leaves outside the scope are walked too, without triangles: their vertices are met in
-  // the same order as in the whole mesh, so a shared vertex takes the same patch's (u, v).
-  // The walk reads the line indices, merges and folds only, so runs of leaves are walked on
-  // several threads (LeafRun).
-  HashSet<VertexKey, VertexKeyHash> mergeTargets;
-  for (const auto& [key, target] : merges.merged) mergeTargets.insert(target);
-  const LeafWalkTables tables{seams, lines, merges, mergeTargets};
   const size_t runLength = 512;
   thread_local KeptRuns keptRuns;
   const KeptRuns::ReleaseAtEnd releaseRuns{keptRuns};
   std::vector<LeafRun>& runs = keptRuns.take((leaves.size() + runLength - 1) / runLength);
-  parallelForChunks(leaves.size(), runLength, scope.threads, [&](size_t begin, size_t end) {
-    LeafRun& run = runs[begin / runLength];
-    // About a vertex and two triangles per leaf.
-    run.vertices.reserve(2 * (end - begin));
-    run.triangles.reserve(3 * (end - begin));
-    walkLeaves(tables, leaves, begin, end, scope.firstPatch, scope.endPatch, run);
-  });
+  walkLeafRuns(leaves, topology, seams, scope, runLength, runs);
 
   // A key's first query in leaf order is its first query in the first run that has it: the
   // runs' vertices, run by run, meet the keys in the order one walk would. The vertices are
