@@ -122,7 +122,18 @@ class VulkanEvaluator final : public PatchEvaluator {
     });
     std::vector<Sample> out;
     samples_.download(out, queries.size());
+    releaseHugeBuffers();
     return out;
+  }
+
+  // The buffers are kept from call to call, so that repeated evaluations do not allocate, up
+  // to kKeptBufferBytes each. A larger one is freed after its call instead of sitting beside
+  // the mesh its results become: a 10⁶-patch sheet's patches, queries and samples are
+  // ~0.45 GiB, host memory on lavapipe (bench/HISTORY.md, "The largest scene's peak memory").
+  static constexpr VkDeviceSize kKeptBufferBytes = VkDeviceSize(64) << 20;
+  void releaseHugeBuffers() {
+    for (vk::Buffer* buffer : {&points_, &patches_, &queries_, &samples_, &runs_})
+      if (buffer->size() > kKeptBufferBytes) *buffer = vk::Buffer();
   }
 
   vk::Context& context_;

@@ -87,10 +87,13 @@ class LineIndex {
   // Keeps the line's first `count` points.
   void shrink(size_t line, size_t count) { ends_[line] = offsets_[line] + count; }
 
-  // Frees the key → number table once no line is looked up by key again (the leaf walk finds
-  // its lines by number): a huge mesh's tables are hundreds of MiB. find() then finds nothing,
-  // number() numbers afresh; the points, size() and key() stay.
-  void releaseLookup() { decltype(numbers_)().swap(numbers_); }
+  // Frees the keys and the key → number table once no line is looked up or named by its key
+  // again (the leaf walk finds its lines by number): a huge mesh's are hundreds of MiB. Only
+  // the points stay: find() finds nothing then, and size() and key() answer for no line.
+  void releaseLookup() {
+    decltype(numbers_)().swap(numbers_);
+    std::vector<uint64_t>().swap(keys_);
+  }
 
   size_t size() const { return keys_.size(); }
   uint64_t key(size_t line) const { return keys_[line]; }

@@ -55,29 +55,44 @@ namespace {
 using VertexEvaluation =
     std::function<std::vector<gpu::VertexSample>(const std::vector<gpu::EvalQuery>&)>;
 
-Tessellation meshFromQueries(const std::vector<BezierPatch>& patches, QuadtreeResult tree,
-                             const VertexEvaluation& evaluate, const ModelFrame& frame) {
-  const Stopwatch total;
-  Stopwatch step;
+ParamMesh triangulateOnAllCores(const std::vector<QuadLeaf>& leaves,
+                                const std::vector<BezierPatch>& patches) {
   TriangulationScope onAllCores;
   onAllCores.threads = 0;
-  ParamMesh param = triangulateLeaves(tree.leaves, patches, onAllCores);
-  const double triangulateMs = step.elapsedMs();
+  return triangulateLeaves(leaves, patches, onAllCores);
+}
 
-  step.restart();
-  std::vector<gpu::EvalQuery> queries(param.vertices.size());
-  for (size_t i = 0; i < queries.size(); ++i)
-    queries[i] = {param.vertices[i].patchIndex, param.vertices[i].u, param.vertices[i].v, 0};
-  const std::vector<gpu::VertexSample> samples = evaluate(queries);
+// The rest of meshFromTree once the leaves are triangulated (in `triangulateMs`; `total` runs
+// from the start). The queries go as soon as they are evaluated: a huge mesh's are ~64 MiB
+// (bench/HISTORY.md, "The largest scene's peak memory").
+Tessellation meshFromTriangulation(size_t patchCount, QuadtreeResult tree, ParamMesh param,
+                                   const VertexEvaluation& evaluate, const ModelFrame& frame,
+                                   double triangulateMs, const Stopwatch& total) {
+  const Stopwatch step;
+  std::vector<gpu::VertexSample> samples;
+  {
+    std::vector<gpu::EvalQuery> queries(param.vertices.size());
+    for (size_t i = 0; i < queries.size(); ++i)
+      queries[i] = {param.vertices[i].patchIndex, param.vertices[i].u, param.vertices[i].v, 0};
+    samples = evaluate(queries);
+  }
   const double evaluateMs = step.elapsedMs();
 
   Tessellation result =
-      assembleTessellation(patches.size(), std::move(tree), std::move(param), samples, 0);
+      assembleTessellation(patchCount, std::move(tree), std::move(param), samples, 0);
   toModelCoordinates(result, frame);
   result.stats.triangulateMs = triangulateMs;
   result.stats.evaluateMs = evaluateMs;
   result.stats.totalMs = total.elapsedMs();
   return result;
+}
+
+Tessellation meshFromQueries(const std::vector<BezierPatch>& patches, QuadtreeResult tree,
+                             const VertexEvaluation& evaluate, const ModelFrame& frame) {
+  const Stopwatch total;
+  ParamMesh param = triangulateOnAllCores(tree.leaves, patches);
+  return meshFromTriangulation(patches.size(), std::move(tree), std::move(param), evaluate, frame,
+                               total.elapsedMs(), total);
 }
 
 }  // namespace
@@ -149,7 +164,7 @@ Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeO
     validateTessellationPatch(patches[i], "patch " + std::to_string(i));
   // Everything below sees the model in its local frame: coordinates in [−1, 1], δ in its units.
   const ModelFrame frame = modelFrame(patches);
-  const std::vector<BezierPatch> local = toLocalFrame(patches, frame);
+  std::vector<BezierPatch> local = toLocalFrame(patches, frame);
   QuadtreeOptions localOptions = options;
   if (options.rule == SplitRule::Tolerance)
     localOptions.tolerance = options.tolerance / frame.scale;
@@ -170,7 +185,18 @@ Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeO
   QuadtreeResult tree = buildQuadtree(gpuPatches, localOptions, *backend.classifier);
   tree.boundScale = frame.scale;
   const double treeMs = treeStep.elapsedMs();
-  Tessellation result = meshFromTree(local, gpuPatches, std::move(tree), *backend.evaluator, frame);
+  // meshFromTree, with the local copy of the patches freed once triangulated: only the
+  // triangulation reads it, and at 10⁶ bicubic patches it is 0.44 GiB beside the evaluation's
+  // arrays (bench/HISTORY.md, "The largest scene's peak memory").
+  const Stopwatch meshStep;
+  ParamMesh param = triangulateOnAllCores(tree.leaves, local);
+  std::vector<BezierPatch>().swap(local);
+  Tessellation result = meshFromTriangulation(
+      patches.size(), std::move(tree), std::move(param),
+      [&](const std::vector<gpu::EvalQuery>& q) {
+        return backend.evaluator->evaluateVertices(gpuPatches, q);
+      },
+      frame, meshStep.elapsedMs(), meshStep);
   result.stats.treeMs = treeMs;
   result.stats.totalMs = total.elapsedMs();
   return result;
