@@ -51,6 +51,9 @@ Backend makeMirrorBackend() {
 
 namespace {
 
+// tessellate() frees a patch set larger than this during the triangulation (below).
+constexpr size_t kRemadePatchSetBytes = size_t(64) << 20;
+
 // meshFromTree with any evaluation of the vertices' (patch, u, v) queries.
 using VertexEvaluation =
     std::function<std::vector<gpu::VertexSample>(const std::vector<gpu::EvalQuery>&)>;
@@ -171,7 +174,7 @@ Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeO
   // Bicubic polynomial patches take the BicubicPatch shaders; anything else sends the whole
   // set through the general ones (a bicubic patch is a general patch too): toPatchSet.
   const Stopwatch treeStep;
-  const PatchSet gpuPatches = toPatchSet(local);
+  PatchSet gpuPatches = toPatchSet(local);
   // The evaluator's setup (a pipeline build) overlaps the quad-tree from its first level on:
   // started before it, it would take cores from the classifier's own pipeline builds, which
   // the first level waits for (lavapipe builds on the calling threads;
@@ -185,18 +188,25 @@ Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeO
   QuadtreeResult tree = buildQuadtree(gpuPatches, localOptions, *backend.classifier);
   tree.boundScale = frame.scale;
   const double treeMs = treeStep.elapsedMs();
-  // meshFromTree, with the local copy of the patches freed once triangulated: only the
-  // triangulation reads it, and at 10⁶ bicubic patches it is 0.44 GiB beside the evaluation's
-  // arrays (bench/HISTORY.md, "The largest scene's peak memory").
+  // meshFromTree, with each copy of the patches alive only while read (bench/HISTORY.md, "The
+  // largest scene's peak memory"): the triangulation reads `local` only, the evaluation
+  // `gpuPatches` only. A set over kRemadePatchSetBytes (0.25 GiB at 10⁶ bicubic patches) is
+  // freed for the triangulation, whose tables are the run's peak, and made again from `local`
+  // (the same bytes); a smaller one is kept, remaking it would only cost time. `local` goes
+  // once triangulated (0.44 GiB there).
   const Stopwatch meshStep;
+  const bool remade = gpuPatches.bufferBytes(0, gpuPatches.size()) > kRemadePatchSetBytes;
+  if (remade) gpuPatches = PatchSet();
   ParamMesh param = triangulateOnAllCores(tree.leaves, local);
+  const double triangulateMs = meshStep.elapsedMs();
+  if (remade) gpuPatches = toPatchSet(local);
   std::vector<BezierPatch>().swap(local);
   Tessellation result = meshFromTriangulation(
       patches.size(), std::move(tree), std::move(param),
       [&](const std::vector<gpu::EvalQuery>& q) {
         return backend.evaluator->evaluateVertices(gpuPatches, q);
       },
-      frame, meshStep.elapsedMs(), meshStep);
+      frame, triangulateMs, meshStep);
   result.stats.treeMs = treeMs;
   result.stats.totalMs = total.elapsedMs();
   return result;

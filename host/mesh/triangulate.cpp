@@ -131,6 +131,9 @@ ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
     mesh.droppedTriangles += run.droppedTriangles;
     mesh.diagonalFans += run.diagonalFans;
   }
+  // The border keys are not looked up again: a huge mesh's own table (~0.2 GiB at 10⁶
+  // patches) goes before the mesh's arrays are made.
+  if (&borderFirst == &ownBorderFirst) ownBorderFirst = RunPlaces(0);
   mesh.vertices.resize(vertexStart.back());
   if (scope.seamKeys) mesh.seamKeys.resize(vertexStart.back());
   mesh.indices.resize(3 * triangles);
