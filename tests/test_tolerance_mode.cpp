@@ -331,8 +331,8 @@ TEST_CASE("rule T: GPU trees equal the fp32 mirror's", "[gpu][tolerance][parity]
 
 TEST_CASE("rule T: each degree pair with a GPU shader of its own gives the mirror's decisions",
           "[gpu][tolerance][parity]") {
-  // Polynomial patches of degree ≤ 3 × 3 and rational ones of degree 2 × 1, 1 × 2 and 2 × 2
-  // go to the variant built for their degree pair, the others to the generic shader, each
+  // Polynomial patches of degree ≤ 3 × 3 and rational ones of degree 2 × 1, 1 × 2, 2 × 2 and
+  // 3 × 3 go to the variant built for their degree pair, the others to the generic shader, each
   // shader's nodes one range of the node buffer (classifier_vulkan.cpp): a set with every
   // variant, a rational 3 × 2 and a polynomial 5 × 3, and sets of fewer shaders (one alone:
   // the nodes as they are), each tree equal to the mirror's.
@@ -345,7 +345,8 @@ TEST_CASE("rule T: each degree pair with a GPU shader of its own gives the mirro
     for (int m = 1; m <= 3; ++m)
       for (BezierPatch& p : test::randomGeneralPatches(2, n, m, false, false, ++seed))
         mixed.push_back(normalised(p));
-  for (auto [n, m, innerZero] : {std::tuple{2, 1, false}, {1, 2, false}, {2, 2, true}, {3, 2, false}})
+  for (auto [n, m, innerZero] :
+       {std::tuple{2, 1, false}, {1, 2, false}, {2, 2, true}, {3, 3, true}, {3, 2, false}})
     for (BezierPatch& p : test::randomGeneralPatches(2, n, m, true, innerZero, ++seed))
       mixed.push_back(normalised(p));
   for (BezierPatch& p : test::randomGeneralPatches(2, 5, 3, false, false, ++seed))

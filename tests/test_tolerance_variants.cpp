@@ -52,7 +52,8 @@ TEST_CASE("rule T mirror: each degree pair's variant decides as the generic mirr
   };
   const Pair pairs[] = {{1, 1, false}, {1, 2, false}, {1, 3, false}, {2, 1, false},
                         {2, 2, false}, {2, 3, false}, {3, 1, false}, {3, 2, false},
-                        {3, 3, false}, {2, 1, true},  {1, 2, true},  {2, 2, true}};
+                        {3, 3, false}, {2, 1, true},  {1, 2, true},  {2, 2, true},
+                        {3, 3, true}};
   uint32_t seed = 1700;
   size_t compared = 0;
   for (const Pair& pair : pairs) {
@@ -63,15 +64,16 @@ TEST_CASE("rule T mirror: each degree pair's variant decides as the generic mirr
       for (BezierPatch& p : test::randomGeneralPatches(1, 2, 1, true, false, ++seed))
         patches.push_back(p);
     if (pair.rational) {
-      // The same surface with every weight negated, one weight of the other sign, and (2 × 2:
-      // an inner point) a vanishing weight, which leaves the SSE class maxima for the scalar.
+      // The same surface with every weight negated, one weight of the other sign, and (2 × 2,
+      // 3 × 3: an inner point) a vanishing weight, which leaves the SSE class maxima for the
+      // scalar.
       BezierPatch negated = patches[0], mixed = patches[1];
       for (double& w : negated.weights) w = -w;
       mixed.weights[1] = -mixed.weights[1];
       patches.push_back(negated);
       patches.push_back(mixed);
-      if (pair.n == 2 && pair.m == 2)
-        for (BezierPatch& p : test::randomGeneralPatches(2, 2, 2, true, true, ++seed))
+      if (pair.n == pair.m && pair.n >= 2)
+        for (BezierPatch& p : test::randomGeneralPatches(2, pair.n, pair.m, true, true, ++seed))
           patches.push_back(p);
     }
     const PatchSet set = toPatchSet(patches);
@@ -111,4 +113,6 @@ TEST_CASE("rule T mirror: only the variants' degree pairs have one", "[tolerance
   CHECK(mirror::generalToleranceVariant(patch) == &mirror::generalTolerance_p3x1);
   patch = {2, 2, 1, 0};
   CHECK(mirror::generalToleranceVariant(patch) == &mirror::generalTolerance_r2x2);
+  patch = {3, 3, 1, 0};  // rule T's screen-space patches (host/mesh/screen_tolerance.cpp)
+  CHECK(mirror::generalToleranceVariant(patch) == &mirror::generalTolerance_r3x3);
 }

@@ -7,8 +7,8 @@
 // (shaders/lib/tolerance_texels.glsl); from a second rule T tree on, once its pipeline has built
 // in the background, one dispatch a level of quadtree_tolerance_fused.comp.glsl, the same
 // decisions (runBicubic). Rule T on general patches sends the nodes of polynomial
-// patches of degree ≤ 3 × 3 and of rational ones of degree 2 × 1, 1 × 2 and 2 × 2 to the
-// variant built for their degree pair (quadtree_general_tolerance_{p,r}<n>x<m>.comp,
+// patches of degree ≤ 3 × 3 and of rational ones of degree 2 × 1, 1 × 2, 2 × 2 and 3 × 3 to
+// the variant built for their degree pair (quadtree_general_tolerance_{p,r}<n>x<m>.comp,
 // shaders/CMakeLists.txt), each shader's nodes one range of the node buffer, all dispatched in
 // one submission. Pipelines are made once per (shader, rule, S), when first needed, and
 // buffers grow and are kept between levels.
@@ -38,6 +38,7 @@
 #include "quadtree_general_tolerance_r1x2_comp.h"
 #include "quadtree_general_tolerance_r2x1_comp.h"
 #include "quadtree_general_tolerance_r2x2_comp.h"
+#include "quadtree_general_tolerance_r3x3_comp.h"
 #include "quadtree_midpoint_comp.h"
 #include "quadtree_tolerance_comp.h"
 #include "quadtree_tolerance_fused_comp.h"
@@ -75,16 +76,19 @@ struct ShaderCode {
         sizeof(kSpirv_quadtree_general_tolerance_##kind##n##x##m##_comp)      \
   }
 // Rule T's general shader for one degree pair (shaders/CMakeLists.txt): polynomial (n, m) up to
-// 3 × 3 at (n − 1)·3 + m − 1, then the rational pairs of conics and lines.
+// 3 × 3 at (n − 1)·3 + m − 1, then the rational pairs of conics and lines, then rational 3 × 3
+// (every patch of rule T's tree in pixels: bicubic patches under the perspective map,
+// host/mesh/screen_tolerance.cpp).
 constexpr uint32_t kVariantMaxDegree = 3;
 constexpr size_t kPolynomialVariants = kVariantMaxDegree * kVariantMaxDegree;
-const std::array<ShaderCode, kPolynomialVariants + 3> kGeneralToleranceVariants = {
+const std::array<ShaderCode, kPolynomialVariants + 4> kGeneralToleranceVariants = {
     TESSERA_GENERAL_VARIANT(p, 1, 1), TESSERA_GENERAL_VARIANT(p, 1, 2),
     TESSERA_GENERAL_VARIANT(p, 1, 3), TESSERA_GENERAL_VARIANT(p, 2, 1),
     TESSERA_GENERAL_VARIANT(p, 2, 2), TESSERA_GENERAL_VARIANT(p, 2, 3),
     TESSERA_GENERAL_VARIANT(p, 3, 1), TESSERA_GENERAL_VARIANT(p, 3, 2),
     TESSERA_GENERAL_VARIANT(p, 3, 3), TESSERA_GENERAL_VARIANT(r, 2, 1),
-    TESSERA_GENERAL_VARIANT(r, 1, 2), TESSERA_GENERAL_VARIANT(r, 2, 2)};
+    TESSERA_GENERAL_VARIANT(r, 1, 2), TESSERA_GENERAL_VARIANT(r, 2, 2),
+    TESSERA_GENERAL_VARIANT(r, 3, 3)};
 #undef TESSERA_GENERAL_VARIANT
 constexpr size_t kGeneralVariants = kGeneralToleranceVariants.size();
 // The generic shader's place after the variants (variantOf's answer for the other patches).
@@ -100,6 +104,7 @@ size_t variantOf(const gpu::GeneralPatch& patch) {
   if (n == 2 && m == 1) return kPolynomialVariants;
   if (n == 1 && m == 2) return kPolynomialVariants + 1;
   if (n == 2 && m == 2) return kPolynomialVariants + 2;
+  if (n == 3 && m == 3) return kPolynomialVariants + 3;
   return kGenericShader;
 }
 

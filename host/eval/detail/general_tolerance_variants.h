@@ -20,9 +20,10 @@ using GeneralToleranceClassify = gpu::NodeDecision (*)(const gpu::GeneralPatch& 
                                                        const gpu::ClassifyPush& params);
 
 // The Vulkan side's pairs (shaders/CMakeLists.txt, TESSERA_GENERAL_TOLERANCE_VARIANTS): polynomial
-// up to 3 × 3, rational conic × line and conic × conic. One list, X(kind, rational, n, m) a
-// pair, for the declarations below, generalToleranceVariant's dispatch and the mirror's
-// fixed-degree vertex path (general_mirror.cpp), so that they cannot drift apart.
+// up to 3 × 3, rational conic × line, conic × conic and 3 × 3 (rule T's patches in pixels). One
+// list, X(kind, rational, n, m) a pair, for the declarations below, generalToleranceVariant's
+// dispatch and the mirror's fixed-degree vertex path (general_mirror.cpp), so that they cannot
+// drift apart.
 #define TESSERA_GENERAL_DEGREE_PAIRS(X) \
   X(p, 0, 1, 1)                         \
   X(p, 0, 1, 2)                         \
@@ -35,7 +36,8 @@ using GeneralToleranceClassify = gpu::NodeDecision (*)(const gpu::GeneralPatch& 
   X(p, 0, 3, 3)                         \
   X(r, 1, 2, 1)                         \
   X(r, 1, 1, 2)                         \
-  X(r, 1, 2, 2)
+  X(r, 1, 2, 2)                         \
+  X(r, 1, 3, 3)
 
 // A degree pair and kind as one number, the dispatchers' switch key; degrees past 7 (no general
 // patch has them) take a key no pair has.
