@@ -675,6 +675,19 @@ TEST_CASE("cad: the direct conversions match GeomConvert on whole and partial co
   CHECK(blocks >= 8);
 }
 
+// Each edge's end points as discretiseEdge numbers them from TopExp::Vertices on the edge taken
+// FORWARD (the import reads them off its walk where it can).
+void checkEdgeEndsAsTopExp(const CadImport& in) {
+  for (int e = 1; e <= in.edges.Extent(); ++e) {
+    INFO("edge " << e);
+    TopoDS_Vertex first, last;
+    TopExp::Vertices(TopoDS::Edge(in.edges(e).Oriented(TopAbs_FORWARD)), first, last);
+    const EdgeSamples& samples = in.edgeSamples[size_t(e - 1)];
+    CHECK(samples.firstId == uint32_t(in.vertices.FindIndex(first) - 1));
+    if (!samples.degenerated) CHECK(samples.lastId == uint32_t(in.vertices.FindIndex(last) - 1));
+  }
+}
+
 // The maps are built two ways: the faces' part of the walk on all threads where the shape is
 // faces under compounds, solids and shells, the serial walk where anything else hangs there
 // (here a free edge and a free vertex between two boxes, one of them moved and reversed and
@@ -699,10 +712,21 @@ TEST_CASE("cad: the shape maps are TopExp's with and without free edges and vert
     for (const unsigned threads : {1u, 4u}) {
       const CadImport in = toTrimmedModel(CadFile{"boxes", all, {}}, 0.01, threads);
       checkMapsAsTopExp(in, all);
+      checkEdgeEndsAsTopExp(in);
       CHECK(in.faces.Extent() == 12);
       CHECK(in.edges.Extent() == 24 + (loose ? 1 : 0));
       CHECK(in.vertices.Extent() == 16 + (loose ? 3 : 0));
       CHECK(in.failures.empty());
     }
   }
+  // A cone's apex (a degenerated edge) and a cylinder's seams and closed circles, one reversed.
+  TopoDS_Compound round;
+  BRep_Builder builder;
+  builder.MakeCompound(round);
+  builder.Add(round, BRepPrimAPI_MakeCylinder(1.0, 2.0).Shape().Reversed());
+  builder.Add(round, BRepPrimAPI_MakeCone(1.0, 0.0, 2.0).Shape());
+  const CadImport in = toTrimmedModel(CadFile{"round", round, {}}, 0.01, 1);
+  checkMapsAsTopExp(in, round);
+  checkEdgeEndsAsTopExp(in);
+  CHECK(in.failures.empty());
 }

@@ -80,13 +80,16 @@ uint32_t vertexId(const TopoDS_Vertex& v, const TopTools_IndexedMapOfShape& vert
 
 EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta,
                            const TopTools_IndexedMapOfShape& vertices) {
+  TopoDS_Vertex v0, v1;
+  TopExp::Vertices(TopoDS::Edge(shape.Oriented(TopAbs_FORWARD)), v0, v1);  // v0 at `first`, v1 at `last`
+  return discretiseEdge(shape, delta, vertexId(v0, vertices), vertexId(v1, vertices));
+}
+
+EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta, uint32_t id0, uint32_t id1) {
   const TopoDS_Edge edge = TopoDS::Edge(shape.Oriented(TopAbs_FORWARD));
   EdgeSamples samples;
   double first, last;
   BRep_Tool::Range(edge, first, last);
-  TopoDS_Vertex v0, v1;
-  TopExp::Vertices(edge, v0, v1);  // FORWARD: v0 at `first`, v1 at `last`
-  const uint32_t id0 = vertexId(v0, vertices), id1 = vertexId(v1, vertices);
   samples.tolerance = BRep_Tool::Tolerance(edge);
 
   if (BRep_Tool::Degenerated(edge)) {

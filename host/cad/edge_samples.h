@@ -47,6 +47,10 @@ struct SharedPoints {
 // shareInteriorSamples: reading the shape only, discretiseEdge may run for several edges at once.
 EdgeSamples discretiseEdge(const TopoDS_Shape& edge, double delta,
                            const TopTools_IndexedMapOfShape& vertices);
+// The same with the vertices' shared points already known (`firstId` the FORWARD-taken edge's
+// first vertex's, `lastId` its last's), as the import's map of the shape finds them.
+EdgeSamples discretiseEdge(const TopoDS_Shape& edge, double delta, uint32_t firstId,
+                           uint32_t lastId);
 
 // Appends the edge's interior samples to `points` and gives them their ids: called edge by edge
 // in the edges' order, so the numbering is the same whatever the threads that discretised them.

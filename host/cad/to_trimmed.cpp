@@ -65,8 +65,9 @@ struct WireEdge {
   uint32_t firstId = 0, lastId = 0;
 };
 
-WireEdge wireEdge(const TopoDS_Edge& edge, const CadImport& in) {
-  const int index = in.edges.FindIndex(edge);
+// `index`: the edge's in CadImport::edges (1-based) where the map's walk gave it, else 0.
+WireEdge wireEdge(const TopoDS_Edge& edge, const CadImport& in, int index = 0) {
+  if (index == 0) index = in.edges.FindIndex(edge);
   if (index == 0) throw CadFaceError("a wire edge is not in the shape's edge map");
   WireEdge out{edge, size_t(index - 1), 0, 0};
   const EdgeSamples& samples = in.edgeSamples[out.index];
@@ -80,13 +81,16 @@ WireEdge wireEdge(const TopoDS_Edge& edge, const CadImport& in) {
 // order (or its reverse) when it is one, as exchange files store it, and no closed or seam edge
 // makes the vertices ambiguous; otherwise
 // BRepTools_WireExplorer's, which needs every edge's pcurve on the face (on a plane without
-// stored pcurves, a projection of each edge: most of the import's time once).
+// stored pcurves, a projection of each edge: most of the import's time once). `walked`: the
+// wire's children's edge indices as the map's walk found them (FaceWalk), or null.
 std::vector<WireEdge> orderedEdges(const TopoDS_Wire& wire, const TopoDS_Face& face,
-                                   const CadImport& in) {
+                                   const CadImport& in, const int* walked) {
   std::vector<WireEdge> edges;
   edges.reserve(size_t(wire.NbChildren()));
-  for (TopoDS_Iterator it(wire); it.More(); it.Next())
-    if (it.Value().ShapeType() == TopAbs_EDGE) edges.push_back(wireEdge(TopoDS::Edge(it.Value()), in));
+  size_t child = 0;
+  for (TopoDS_Iterator it(wire); it.More(); it.Next(), ++child)
+    if (it.Value().ShapeType() == TopAbs_EDGE)
+      edges.push_back(wireEdge(TopoDS::Edge(it.Value()), in, walked ? walked[child] : 0));
   // Chained by vertices is chained in uv, unless an edge has one vertex at both ends (a closed
   // edge: a torus's seams all meet at its one vertex) or is used twice (a seam, once per side):
   // then only the pcurves tell the order.
@@ -173,7 +177,8 @@ class SurfaceLocation {
 // share their vertex point once. `basis` is the face's surface (faceBasisSurface).
 RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
                  const Handle(Geom_Surface)& basis, uint32_t faceIndex, const std::string& label,
-                 const std::string& path, const CadImport& in, FaceOutcome& outcome) {
+                 const std::string& path, const CadImport& in, const int* walked,
+                 FaceOutcome& outcome) {
   RawLoop loop;
   const Geom_Plane* plane = dynamic_cast<const Geom_Plane*>(basis.get());
   const cad_detail::PlaneParameters planeParameters(plane ? plane->Pln() : gp_Pln());
@@ -181,7 +186,7 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
   const Handle(Geom_Surface)& faceSurface = BRep_Tool::Surface(face, faceLocation);
   SurfaceLocation surfaceLocation(faceLocation);
   uint32_t firstId = 0, lastId = 0;
-  const std::vector<WireEdge> edges = orderedEdges(wire, face, in);
+  const std::vector<WireEdge> edges = orderedEdges(wire, face, in, walked);
   size_t points = 0;
   for (const WireEdge& edge : edges) points += in.edgeSamples[edge.index].params.size() - 1;
   loop.uv.reserve(points);
@@ -240,8 +245,10 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
 
 // Reads the shape and `in` (its maps, edge samples and shared points) only: faces convert on
 // several threads at once.
+// `walked`: the face's wires' edge indices in their order (FaceWalk::edgeIndices), or null.
 TrimmedFace convertFace(const TopoDS_Face& sourceFace, uint32_t faceIndex, const std::string& label,
-                        const std::string& path, const CadImport& in, FaceOutcome& outcome) {
+                        const std::string& path, const CadImport& in, const int* walked,
+                        FaceOutcome& outcome) {
   // Loops in the surface's own orientation: outer counter-clockwise, holes clockwise; the
   // face's orientation goes to `reversed` (trimmed_face.h).
   const TopoDS_Face face = TopoDS::Face(sourceFace.Oriented(TopAbs_FORWARD));
@@ -253,10 +260,12 @@ TrimmedFace convertFace(const TopoDS_Face& sourceFace, uint32_t faceIndex, const
   std::vector<RawLoop> raw;
   // The face's wires are its children: the order TopExp_Explorer(face, TopAbs_WIRE) gives,
   // without the explorer's stack allocated per face.
-  for (TopoDS_Iterator w(face); w.More(); w.Next())
+  for (TopoDS_Iterator w(face); w.More(); w.Next()) {
     if (w.Value().ShapeType() == TopAbs_WIRE)
       raw.push_back(wireLoop(TopoDS::Wire(w.Value()), face, basis, faceIndex, label, path, in,
-                             outcome));
+                             walked, outcome));
+    if (walked) walked += w.Value().NbChildren();
+  }
   if (raw.empty()) throw CadFaceError("the face has no wire");
   double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300;
   for (const RawLoop& loop : raw)
@@ -294,7 +303,7 @@ TrimmedFace convertFace(const TopoDS_Face& sourceFace, uint32_t faceIndex, const
 }
 
 // One face, its failure caught: the message names the file, the face and its entity.
-FaceOutcome faceOutcome(const CadFile& file, const CadImport& in, int k) {
+FaceOutcome faceOutcome(const CadFile& file, const CadImport& in, int k, const int* walked) {
   const TopoDS_Face& face = TopoDS::Face(in.faces(k));
   const uint32_t index = static_cast<uint32_t>(k - 1);
   // Built in one string, which the face then takes (the concatenations and the copy were
@@ -308,7 +317,7 @@ FaceOutcome faceOutcome(const CadFile& file, const CadImport& in, int k) {
   FaceOutcome outcome;
   std::string reason;
   try {
-    outcome.face = convertFace(face, index, label, file.path, in, outcome);
+    outcome.face = convertFace(face, index, label, file.path, in, walked, outcome);
     outcome.face.faceIndex = index;
     outcome.face.label = std::move(label);
     outcome.converted = true;
@@ -378,7 +387,37 @@ struct FaceWalk {
   std::vector<TopoDS_Shape> shapes;  // edge, its vertices, next edge, ...
   std::vector<uint8_t> vertexCounts;  // per edge
   bool plain = true;
+  // Per edge, its index in CadImport::edges (mapWalkedFaces): the face's conversion then needs
+  // no look-up of its wires' edges.
+  std::vector<int> edgeIndices;
 };
+
+// An edge's first and last vertex's shared points as TopExp::Vertices finds them on the edge
+// taken FORWARD (discretiseEdge), read off the walk; `known` false where the walk cannot tell
+// (an edge neither FORWARD nor REVERSED in its wire, or without both vertices).
+struct EdgeEnds {
+  uint32_t firstId = 0, lastId = 0;
+  bool known = false;
+};
+
+// `shapes`: an edge as the walk met it (its orientation composed), then its `count` vertices,
+// whose indices in CadImport::vertices are `indices`. TopExp::Vertices reads the vertices' own
+// orientations (the last FORWARD one first, the last REVERSED one last); the walk's are
+// composed with the edge's.
+EdgeEnds edgeEnds(const TopoDS_Shape* shapes, const int* indices, size_t count) {
+  EdgeEnds ends;
+  const TopAbs_Orientation edge = shapes[0].Orientation();
+  if (edge != TopAbs_FORWARD && edge != TopAbs_REVERSED) return ends;
+  bool first = false, last = false;
+  for (size_t v = 0; v < count; ++v) {
+    TopAbs_Orientation own = shapes[1 + v].Orientation();
+    if (edge == TopAbs_REVERSED) own = TopAbs::Reverse(own);  // INTERNAL, EXTERNAL kept
+    if (own == TopAbs_FORWARD) ends.firstId = uint32_t(indices[v] - 1), first = true;
+    else if (own == TopAbs_REVERSED) ends.lastId = uint32_t(indices[v] - 1), last = true;
+  }
+  ends.known = first && last;
+  return ends;
+}
 
 FaceWalk walkFace(const TopoDS_Shape& face) {
   FaceWalk walk;
@@ -405,8 +444,9 @@ FaceWalk walkFace(const TopoDS_Shape& face) {
 }
 
 // The faces' edges and vertices into the maps, face by face in face order: as mapSubShapes adds
-// them (an edge's vertices only where the edge is met first). False where a face was not plain.
-bool mapWalkedFaces(const std::vector<FaceWalk>& walks, CadImport& in) {
+// them (an edge's vertices only where the edge is met first); each use's edge index into its
+// walk, each edge's ends into `ends` (edge order). False where a face was not plain.
+bool mapWalkedFaces(std::vector<FaceWalk>& walks, CadImport& in, std::vector<EdgeEnds>& ends) {
   size_t uses = 0;
   for (const FaceWalk& walk : walks) {
     if (!walk.plain) return false;
@@ -417,13 +457,19 @@ bool mapWalkedFaces(const std::vector<FaceWalk>& walks, CadImport& in) {
   // their indices', whatever the buckets.
   in.edges.ReSize(int(uses / 2));
   in.vertices.ReSize(int(uses / 2));
-  for (const FaceWalk& walk : walks) {
+  ends.reserve(uses / 2);
+  int vertexIndices[UINT8_MAX];
+  for (FaceWalk& walk : walks) {
     size_t next = 0;
+    walk.edgeIndices.reserve(walk.vertexCounts.size());
     for (const uint8_t count : walk.vertexCounts) {
       const int extent = in.edges.Extent();
-      const bool first = in.edges.Add(walk.shapes[next]) > extent;
-      if (first)
-        for (size_t v = next + 1; v <= next + count; ++v) in.vertices.Add(walk.shapes[v]);
+      const int index = in.edges.Add(walk.shapes[next]);
+      walk.edgeIndices.push_back(index);
+      if (index > extent) {  // met first: its vertices added, as mapSubShapes adds them
+        for (size_t v = 0; v < count; ++v) vertexIndices[v] = in.vertices.Add(walk.shapes[next + 1 + v]);
+        ends.push_back(edgeEnds(&walk.shapes[next], vertexIndices, count));
+      }
       next += 1 + size_t(count);
     }
   }
@@ -432,12 +478,16 @@ bool mapWalkedFaces(const std::vector<FaceWalk>& walks, CadImport& in) {
 
 // Maps the shape's faces, edges and vertices as mapSubShapes does, from the faces' walks where
 // the shape is faces under compounds, solids and shells (`walked`: mapFaces said so, and the
-// faces were walked).
-void mapShape(const TopoDS_Shape& shape, bool walked, const std::vector<FaceWalk>& walks,
-              CadImport& in) {
-  if (walked && mapWalkedFaces(walks, in)) return;
+// faces were walked). True where the walks gave the maps (then `ends` holds every edge's, and
+// each walk its edges' indices); false where mapSubShapes did.
+bool mapShape(const TopoDS_Shape& shape, bool walked, std::vector<FaceWalk>& walks, CadImport& in,
+              std::vector<EdgeEnds>& ends) {
+  if (walked && mapWalkedFaces(walks, in, ends)) return true;
+  for (FaceWalk& walk : walks) walk.edgeIndices.clear();
+  ends.clear();
   for (TopTools_IndexedMapOfShape* map : {&in.faces, &in.edges, &in.vertices}) map->Clear(Standard_False);
   mapSubShapes(shape, in);
+  return false;
 }
 
 // The vertices' points, the shared points' first ones (vertex k of the map is point k − 1).
@@ -496,6 +546,8 @@ CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads) {
   // ends the import as a loop in order would). Each item reads the shape and what the steps
   // before wrote, and writes its own slot: the import is the same whatever the threads.
   std::vector<FaceWalk> walks;
+  std::vector<EdgeEnds> ends;  // per edge, where the walks gave the maps
+  bool fromWalks = false;
   SharedPoints points;
   std::vector<FaceOutcome> outcomes;
   const std::vector<ParallelPhase> phases = {
@@ -506,13 +558,18 @@ CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads) {
        },
        4, [&](size_t f) { walks[f] = walkFace(in.faces(int(f) + 1)); },
        [&] {
-         mapShape(file.shape, walkable, walks, in);
+         fromWalks = mapShape(file.shape, walkable, walks, in, ends);
          points = vertexPoints(in);
          in.edgeSamples.resize(size_t(in.edges.Extent()));
        }},
       // Each edge reads its own edge; then their interior points numbered in edge order.
       {[&] { return in.edgeSamples.size(); }, 4,
-       [&](size_t e) { in.edgeSamples[e] = discretiseEdge(in.edges(int(e) + 1), delta, in.vertices); },
+       [&](size_t e) {
+         const TopoDS_Shape& edge = in.edges(int(e) + 1);
+         in.edgeSamples[e] = fromWalks && ends[e].known
+                                 ? discretiseEdge(edge, delta, ends[e].firstId, ends[e].lastId)
+                                 : discretiseEdge(edge, delta, in.vertices);
+       },
        [&] {
          for (EdgeSamples& samples : in.edgeSamples) {
            shareInteriorSamples(samples, points);
@@ -525,7 +582,10 @@ CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads) {
       // Each face reads the shape and the edges' samples, writes its own outcome (OCCT's calls
       // here only read: docs/cad.md, "Threads"); then added in face order.
       {[&] { return outcomes.size(); }, 4,
-       [&](size_t f) { outcomes[f] = faceOutcome(file, in, int(f) + 1); },
+       [&](size_t f) {
+         outcomes[f] = faceOutcome(file, in, int(f) + 1,
+                                   fromWalks ? walks[f].edgeIndices.data() : nullptr);
+       },
        [&] { addOutcomes(outcomes, in); }},
   };
   runPhases(phases, threads);
