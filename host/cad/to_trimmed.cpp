@@ -245,7 +245,7 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
 
 // Reads the shape and `in` (its maps, edge samples and shared points) only: faces convert on
 // several threads at once.
-// `walked`: the face's wires' edge indices in their order (FaceWalk::edgeIndices), or null.
+// `walked`: the face's wires' edge indices in their order (from mapWalkedFaces), or null.
 TrimmedFace convertFace(const TopoDS_Face& sourceFace, uint32_t faceIndex, const std::string& label,
                         const std::string& path, const CadImport& in, const int* walked,
                         FaceOutcome& outcome) {
@@ -387,9 +387,9 @@ struct FaceWalk {
   std::vector<TopoDS_Shape> shapes;  // edge, its vertices, next edge, ...
   std::vector<uint8_t> vertexCounts;  // per edge
   bool plain = true;
-  // Per edge, its index in CadImport::edges (mapWalkedFaces): the face's conversion then needs
-  // no look-up of its wires' edges.
-  std::vector<int> edgeIndices;
+  // Where the face's edges' indices in CadImport::edges start in the flat list of every face's
+  // (mapWalkedFaces): the face's conversion then needs no look-up of its wires' edges.
+  size_t firstUse = 0;
 };
 
 // An edge's first and last vertex's shared points as TopExp::Vertices finds them on the edge
@@ -444,28 +444,31 @@ FaceWalk walkFace(const TopoDS_Shape& face) {
 }
 
 // The faces' edges and vertices into the maps, face by face in face order: as mapSubShapes adds
-// them (an edge's vertices only where the edge is met first); each use's edge index into its
-// walk, each edge's ends into `ends` (edge order). False where a face was not plain.
-bool mapWalkedFaces(std::vector<FaceWalk>& walks, CadImport& in, std::vector<EdgeEnds>& ends) {
-  size_t uses = 0;
+// them (an edge's vertices only where the edge is met first); each use's edge index into
+// `uses` (face by face, one list: not a heap block a face), each edge's ends into `ends` (edge
+// order). False where a face was not plain.
+bool mapWalkedFaces(std::vector<FaceWalk>& walks, CadImport& in, std::vector<int>& uses,
+                    std::vector<EdgeEnds>& ends) {
+  size_t useCount = 0;
   for (const FaceWalk& walk : walks) {
     if (!walk.plain) return false;
-    uses += walk.vertexCounts.size();
+    useCount += walk.vertexCounts.size();
   }
   // Sized once for what comes (an edge is used by two faces, a closed shell has fewer vertices
   // than edges): grown by doubling, each growth hashed every shape again. The maps' order is
   // their indices', whatever the buckets.
-  in.edges.ReSize(int(uses / 2));
-  in.vertices.ReSize(int(uses / 2));
-  ends.reserve(uses / 2);
+  in.edges.ReSize(int(useCount / 2));
+  in.vertices.ReSize(int(useCount / 2));
+  uses.reserve(useCount);
+  ends.reserve(useCount / 2);
   int vertexIndices[UINT8_MAX];
   for (FaceWalk& walk : walks) {
     size_t next = 0;
-    walk.edgeIndices.reserve(walk.vertexCounts.size());
+    walk.firstUse = uses.size();
     for (const uint8_t count : walk.vertexCounts) {
       const int extent = in.edges.Extent();
       const int index = in.edges.Add(walk.shapes[next]);
-      walk.edgeIndices.push_back(index);
+      uses.push_back(index);
       if (index > extent) {  // met first: its vertices added, as mapSubShapes adds them
         for (size_t v = 0; v < count; ++v) vertexIndices[v] = in.vertices.Add(walk.shapes[next + 1 + v]);
         ends.push_back(edgeEnds(&walk.shapes[next], vertexIndices, count));
@@ -478,12 +481,12 @@ bool mapWalkedFaces(std::vector<FaceWalk>& walks, CadImport& in, std::vector<Edg
 
 // Maps the shape's faces, edges and vertices as mapSubShapes does, from the faces' walks where
 // the shape is faces under compounds, solids and shells (`walked`: mapFaces said so, and the
-// faces were walked). True where the walks gave the maps (then `ends` holds every edge's, and
-// each walk its edges' indices); false where mapSubShapes did.
+// faces were walked). True where the walks gave the maps (then `uses` holds the faces' edge
+// indices and `ends` every edge's); false where mapSubShapes did.
 bool mapShape(const TopoDS_Shape& shape, bool walked, std::vector<FaceWalk>& walks, CadImport& in,
-              std::vector<EdgeEnds>& ends) {
-  if (walked && mapWalkedFaces(walks, in, ends)) return true;
-  for (FaceWalk& walk : walks) walk.edgeIndices.clear();
+              std::vector<int>& uses, std::vector<EdgeEnds>& ends) {
+  if (walked && mapWalkedFaces(walks, in, uses, ends)) return true;
+  uses.clear();
   ends.clear();
   for (TopTools_IndexedMapOfShape* map : {&in.faces, &in.edges, &in.vertices}) map->Clear(Standard_False);
   mapSubShapes(shape, in);
@@ -546,7 +549,8 @@ CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads) {
   // ends the import as a loop in order would). Each item reads the shape and what the steps
   // before wrote, and writes its own slot: the import is the same whatever the threads.
   std::vector<FaceWalk> walks;
-  std::vector<EdgeEnds> ends;  // per edge, where the walks gave the maps
+  std::vector<int> uses;       // the faces' edges' indices, where the walks gave the maps
+  std::vector<EdgeEnds> ends;  // per edge, likewise
   bool fromWalks = false;
   SharedPoints points;
   std::vector<FaceOutcome> outcomes;
@@ -558,7 +562,7 @@ CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads) {
        },
        4, [&](size_t f) { walks[f] = walkFace(in.faces(int(f) + 1)); },
        [&] {
-         fromWalks = mapShape(file.shape, walkable, walks, in, ends);
+         fromWalks = mapShape(file.shape, walkable, walks, in, uses, ends);
          points = vertexPoints(in);
          in.edgeSamples.resize(size_t(in.edges.Extent()));
        }},
@@ -584,7 +588,7 @@ CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads) {
       {[&] { return outcomes.size(); }, 4,
        [&](size_t f) {
          outcomes[f] = faceOutcome(file, in, int(f) + 1,
-                                   fromWalks ? walks[f].edgeIndices.data() : nullptr);
+                                   fromWalks ? uses.data() + walks[f].firstUse : nullptr);
        },
        [&] { addOutcomes(outcomes, in); }},
   };
