@@ -33,6 +33,7 @@
 #include <type_traits>
 
 #include "bspline/bspline.h"
+#include "cad/detail/kind_of.h"
 #include "cad/detail/number_text.h"
 #include "cad/iso_line_d1.h"
 #include "common/hash_map.h"
@@ -278,9 +279,9 @@ Handle(Geom_BSplineSurface) revolvedLineNurbs(const Handle(Geom_Surface)& basis,
       return Handle(Geom_BSplineSurface)();
     return periodic;
   };
-  if (const auto* cylinder = dynamic_cast<const Geom_CylindricalSurface*>(basis.get()))
+  if (const auto* cylinder = cad_detail::kindOf<Geom_CylindricalSurface>(basis.get()))
     return convert(cylinder->Cylinder());
-  if (const auto* cone = dynamic_cast<const Geom_ConicalSurface*>(basis.get()))
+  if (const auto* cone = cad_detail::kindOf<Geom_ConicalSurface>(basis.get()))
     return convert(cone->Cone());
   return Handle(Geom_BSplineSurface)();
 }
@@ -380,8 +381,10 @@ std::vector<glm::dvec2> CadSurface::mapUvs(const std::vector<gp_Pnt2d>& uvs) con
 Handle(Geom_Surface) faceBasisSurface(const TopoDS_Face& face) {
   Handle(Geom_Surface) basis = BRep_Tool::Surface(face);
   if (basis.IsNull()) throw CadFaceError("the face has no surface");
-  while (auto trimmed = Handle(Geom_RectangularTrimmedSurface)::DownCast(basis))
-    basis = trimmed->BasisSurface();
+  while (const auto* trimmed = cad_detail::kindOf<Geom_RectangularTrimmedSurface>(basis.get())) {
+    const Handle(Geom_Surface) inner = trimmed->BasisSurface();  // held while `basis` lets go
+    basis = inner;
+  }
   return basis;
 }
 
@@ -426,7 +429,7 @@ CadSurface convertFaceSurface(const Handle(Geom_Surface)& basis, double u0, doub
   // are the face's (clamped above, as Geom_RectangularTrimmedSurface and GeomConvert clamp
   // them); the trimmed surface it is handed first copies the B-spline once more.
   if (direct && !basis->IsUPeriodic() && !basis->IsVPeriodic())
-    if (const auto* bspline = dynamic_cast<const Geom_BSplineSurface*>(basis.get())) {
+    if (const auto* bspline = cad_detail::kindOf<Geom_BSplineSurface>(basis.get())) {
       result.nurbs = Handle(Geom_BSplineSurface)::DownCast(bspline->Copy());
       result.nurbs->Segment(u0, u1, v0, v1);
     }

@@ -23,6 +23,7 @@
 #include <mutex>
 
 #include "cad/face_surface.h"
+#include "cad/detail/kind_of.h"
 #include "cad/detail/number_text.h"
 #include "cad/detail/plane_parameters.h"
 #include "common/phased_parallel.h"
@@ -180,7 +181,7 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
                  const std::string& path, const CadImport& in, const int* walked,
                  FaceOutcome& outcome) {
   RawLoop loop;
-  const Geom_Plane* plane = dynamic_cast<const Geom_Plane*>(basis.get());
+  const Geom_Plane* plane = cad_detail::kindOf<Geom_Plane>(basis.get());
   const cad_detail::PlaneParameters planeParameters(plane ? plane->Pln() : gp_Pln());
   TopLoc_Location faceLocation;  // the face's surface as stored, for storedPcurve
   const Handle(Geom_Surface)& faceSurface = BRep_Tool::Surface(face, faceLocation);
