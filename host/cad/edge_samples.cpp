@@ -80,8 +80,8 @@ uint32_t vertexId(const TopoDS_Vertex& v, const TopTools_IndexedMapOfShape& vert
 
 EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta,
                            const TopTools_IndexedMapOfShape& vertices) {
-  TopoDS_Vertex v0, v1;
-  TopExp::Vertices(TopoDS::Edge(shape.Oriented(TopAbs_FORWARD)), v0, v1);  // v0 at `first`, v1 at `last`
+  TopoDS_Vertex v0, v1;  // FORWARD: v0 at `first`, v1 at `last`
+  TopExp::Vertices(TopoDS::Edge(shape.Oriented(TopAbs_FORWARD)), v0, v1);
   return discretiseEdge(shape, delta, vertexId(v0, vertices), vertexId(v1, vertices));
 }
 

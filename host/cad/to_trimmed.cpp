@@ -413,8 +413,10 @@ EdgeEnds edgeEnds(const TopoDS_Shape* shapes, const int* indices, size_t count) 
   for (size_t v = 0; v < count; ++v) {
     TopAbs_Orientation own = shapes[1 + v].Orientation();
     if (edge == TopAbs_REVERSED) own = TopAbs::Reverse(own);  // INTERNAL, EXTERNAL kept
-    if (own == TopAbs_FORWARD) ends.firstId = uint32_t(indices[v] - 1), first = true;
-    else if (own == TopAbs_REVERSED) ends.lastId = uint32_t(indices[v] - 1), last = true;
+    if (own == TopAbs_FORWARD)
+      ends.firstId = uint32_t(indices[v] - 1), first = true;
+    else if (own == TopAbs_REVERSED)
+      ends.lastId = uint32_t(indices[v] - 1), last = true;
   }
   ends.known = first && last;
   return ends;
@@ -471,7 +473,8 @@ bool mapWalkedFaces(std::vector<FaceWalk>& walks, CadImport& in, std::vector<int
       const int index = in.edges.Add(walk.shapes[next]);
       uses.push_back(index);
       if (index > extent) {  // met first: its vertices added, as mapSubShapes adds them
-        for (size_t v = 0; v < count; ++v) vertexIndices[v] = in.vertices.Add(walk.shapes[next + 1 + v]);
+        for (size_t v = 0; v < count; ++v)
+          vertexIndices[v] = in.vertices.Add(walk.shapes[next + 1 + v]);
         ends.push_back(edgeEnds(&walk.shapes[next], vertexIndices, count));
       }
       next += 1 + size_t(count);

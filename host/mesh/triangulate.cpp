@@ -20,7 +20,7 @@ using namespace triangulate_detail;
 
 namespace {
 constexpr size_t kKeptBorderKeys = size_t(1) << 15;  // 2¹⁷ slots at most: 3 MiB
-constexpr size_t kRunsForSecondThread = 24;  // the numbering's (below)
+constexpr size_t kRunsForSecondThread = 24;          // the numbering's (below)
 
 // Sets up what a leaf's vertices are (seam_vertices.cpp, line_points.cpp,
 // near_point_merge.cpp) and walks the leaves into `runs`, `runLength` leaves a run. The lines,
