@@ -50,10 +50,9 @@ TEST_CASE("rule T mirror: each degree pair's variant decides as the generic mirr
     int n, m;
     bool rational;
   };
-  const Pair pairs[] = {{1, 1, false}, {1, 2, false}, {1, 3, false}, {2, 1, false},
-                        {2, 2, false}, {2, 3, false}, {3, 1, false}, {3, 2, false},
-                        {3, 3, false}, {2, 1, true},  {1, 2, true},  {2, 2, true},
-                        {3, 3, true}};
+  const Pair pairs[] = {{1, 1, false}, {1, 2, false}, {1, 3, false}, {2, 1, false}, {2, 2, false},
+                        {2, 3, false}, {3, 1, false}, {3, 2, false}, {3, 3, false}, {2, 1, true},
+                        {1, 2, true},  {2, 2, true},  {3, 3, true}};
   uint32_t seed = 1700;
   size_t compared = 0;
   for (const Pair& pair : pairs) {

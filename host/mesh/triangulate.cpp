@@ -75,7 +75,8 @@ void walkLeafRuns(const std::vector<QuadLeaf>& leaves, const PatchTopology& topo
 ParamMesh triangulateLeaves(const std::vector<QuadLeaf>& leaves,
                             const std::vector<BezierPatch>& patches,
                             const TriangulationScope& scope) {
-  if (std::optional<ParamMesh> one = triangulateOneLeaf(leaves, patches, scope)) return std::move(*one);
+  if (std::optional<ParamMesh> one = triangulateOneLeaf(leaves, patches, scope))
+    return std::move(*one);
   const PatchTopology ownTopology = scope.topology ? PatchTopology{} : findSharedEdges(patches);
   const PatchTopology& topology = scope.topology ? *scope.topology : ownTopology;
   ParamMesh mesh;
