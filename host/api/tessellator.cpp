@@ -29,13 +29,13 @@ Tessellation countedGrids(const std::vector<BezierPatch>& patches, double tolera
     validateTessellationPatch(patches[i], "patch " + std::to_string(i));
   // Counted and meshed in the local frame, as tessellate() works (model_frame.h).
   const ModelFrame frame = modelFrame(patches);
-  const std::vector<BezierPatch> local = toLocalFrame(patches, frame);
+  std::vector<BezierPatch> local = toLocalFrame(patches, frame);
   DivisionOptions counting;
   counting.tolerance = tolerance / frame.scale;
   counting.maxPerDirection = maxPerDirection;
   QuadtreeOptions grid;
   grid.rule = SplitRule::UniformGrid;
-  const PatchSet set = toPatchSet(local);
+  PatchSet set = toPatchSet(local);
   QuadtreeResult tree;
   size_t cells = 0;
   largestBound = 0;
@@ -71,7 +71,7 @@ Tessellation countedGrids(const std::vector<BezierPatch>& patches, double tolera
     }
     tree.depth = std::max(tree.depth, one.depth);
   }
-  return meshFromTree(local, set, std::move(tree), *backend.evaluator, frame);
+  return meshFromTree(std::move(local), std::move(set), std::move(tree), *backend.evaluator, frame);
 }
 
 // Runs `work`, turning the library's std::invalid_argument (a patch or option it cannot take)

@@ -158,14 +158,15 @@ Tessellation tessellateScreenTolerance(const std::vector<BezierPatch>& patches,
   const PatchSet screen = screenSpacePatchSet(patches, view.camera);
   // The tree is in pixels; the mesh is evaluated and welded in the model's local frame.
   const ModelFrame frame = modelFrame(patches);
-  const std::vector<BezierPatch> local = toLocalFrame(patches, frame);
-  const PatchSet world = toPatchSet(local);
+  std::vector<BezierPatch> local = toLocalFrame(patches, frame);
+  PatchSet world = toPatchSet(local);
   backend.evaluator->prepareVertices(world);
   const std::unique_ptr<NodeClassifier> classifier =
       makeScreenSpaceClassifier(*backend.classifier, patches, view.camera, view.eyePlaneDepth);
   QuadtreeResult tree = buildQuadtree(screen, options, *classifier);
   const double treeMs = treeStep.elapsedMs();
-  Tessellation result = meshFromTree(local, world, std::move(tree), *backend.evaluator, frame);
+  Tessellation result =
+      meshFromTree(std::move(local), std::move(world), std::move(tree), *backend.evaluator, frame);
   result.stats.treeMs = treeMs;
   result.stats.totalMs = total.elapsedMs();
   return result;

@@ -7,7 +7,6 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
-#include <functional>
 #include <unordered_map>
 
 #include "common/stopwatch.h"
@@ -51,12 +50,8 @@ Backend makeMirrorBackend() {
 
 namespace {
 
-// tessellate() frees a patch set larger than this during the triangulation (below).
+// meshFromTree frees a patch set it owns that is larger than this during the triangulation.
 constexpr size_t kRemadePatchSetBytes = size_t(64) << 20;
-
-// meshFromTree with any evaluation of the vertices' (patch, u, v) queries.
-using VertexEvaluation =
-    std::function<std::vector<gpu::VertexSample>(const std::vector<gpu::EvalQuery>&)>;
 
 ParamMesh triangulateOnAllCores(const std::vector<QuadLeaf>& leaves,
                                 const std::vector<BezierPatch>& patches) {
@@ -69,15 +64,16 @@ ParamMesh triangulateOnAllCores(const std::vector<QuadLeaf>& leaves,
 // from the start). The queries go as soon as they are evaluated: a huge mesh's are ~64 MiB
 // (bench/HISTORY.md, "The largest scene's peak memory").
 Tessellation meshFromTriangulation(size_t patchCount, QuadtreeResult tree, ParamMesh param,
-                                   const VertexEvaluation& evaluate, const ModelFrame& frame,
-                                   double triangulateMs, const Stopwatch& total) {
+                                   PatchEvaluator& evaluator, const PatchSet& gpuPatches,
+                                   const ModelFrame& frame, double triangulateMs,
+                                   const Stopwatch& total) {
   const Stopwatch step;
   std::vector<gpu::VertexSample> samples;
   {
     std::vector<gpu::EvalQuery> queries(param.vertices.size());
     for (size_t i = 0; i < queries.size(); ++i)
       queries[i] = {param.vertices[i].patchIndex, param.vertices[i].u, param.vertices[i].v, 0};
-    samples = evaluate(queries);
+    samples = evaluator.evaluateVertices(gpuPatches, queries);
   }
   const double evaluateMs = step.elapsedMs();
 
@@ -88,14 +84,6 @@ Tessellation meshFromTriangulation(size_t patchCount, QuadtreeResult tree, Param
   result.stats.evaluateMs = evaluateMs;
   result.stats.totalMs = total.elapsedMs();
   return result;
-}
-
-Tessellation meshFromQueries(const std::vector<BezierPatch>& patches, QuadtreeResult tree,
-                             const VertexEvaluation& evaluate, const ModelFrame& frame) {
-  const Stopwatch total;
-  ParamMesh param = triangulateOnAllCores(tree.leaves, patches);
-  return meshFromTriangulation(patches.size(), std::move(tree), std::move(param), evaluate, frame,
-                               total.elapsedMs(), total);
 }
 
 }  // namespace
@@ -188,25 +176,8 @@ Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeO
   QuadtreeResult tree = buildQuadtree(gpuPatches, localOptions, *backend.classifier);
   tree.boundScale = frame.scale;
   const double treeMs = treeStep.elapsedMs();
-  // meshFromTree, with each copy of the patches alive only while read (bench/HISTORY.md, "The
-  // largest scene's peak memory"): the triangulation reads `local` only, the evaluation
-  // `gpuPatches` only. A set over kRemadePatchSetBytes (0.25 GiB at 10⁶ bicubic patches) is
-  // freed for the triangulation, whose tables are the run's peak, and made again from `local`
-  // (the same bytes); a smaller one is kept, remaking it would only cost time. `local` goes
-  // once triangulated (0.44 GiB there).
-  const Stopwatch meshStep;
-  const bool remade = gpuPatches.bufferBytes(0, gpuPatches.size()) > kRemadePatchSetBytes;
-  if (remade) gpuPatches = PatchSet();
-  ParamMesh param = triangulateOnAllCores(tree.leaves, local);
-  const double triangulateMs = meshStep.elapsedMs();
-  if (remade) gpuPatches = toPatchSet(local);
-  std::vector<BezierPatch>().swap(local);
-  Tessellation result = meshFromTriangulation(
-      patches.size(), std::move(tree), std::move(param),
-      [&](const std::vector<gpu::EvalQuery>& q) {
-        return backend.evaluator->evaluateVertices(gpuPatches, q);
-      },
-      frame, triangulateMs, meshStep);
+  Tessellation result = meshFromTree(std::move(local), std::move(gpuPatches), std::move(tree),
+                                     *backend.evaluator, frame);
   result.stats.treeMs = treeMs;
   result.stats.totalMs = total.elapsedMs();
   return result;
@@ -214,12 +185,30 @@ Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeO
 
 Tessellation meshFromTree(const std::vector<BezierPatch>& patches, const PatchSet& gpuPatches,
                           QuadtreeResult tree, PatchEvaluator& evaluator, const ModelFrame& frame) {
-  return meshFromQueries(
-      patches, std::move(tree),
-      [&](const std::vector<gpu::EvalQuery>& q) {
-        return evaluator.evaluateVertices(gpuPatches, q);
-      },
-      frame);
+  const Stopwatch total;
+  ParamMesh param = triangulateOnAllCores(tree.leaves, patches);
+  return meshFromTriangulation(patches.size(), std::move(tree), std::move(param), evaluator,
+                               gpuPatches, frame, total.elapsedMs(), total);
+}
+
+Tessellation meshFromTree(std::vector<BezierPatch>&& patches, PatchSet&& gpuPatches,
+                          QuadtreeResult tree, PatchEvaluator& evaluator, const ModelFrame& frame) {
+  // Each copy of the patches alive only while read (bench/HISTORY.md, "The largest scene's peak
+  // memory"): the triangulation reads `patches` only, the evaluation `gpuPatches` only. A set
+  // over kRemadePatchSetBytes (0.25 GiB at 10⁶ bicubic patches) is freed for the
+  // triangulation, whose tables are the run's peak, and made again from `patches` (the same
+  // bytes); a smaller one is kept, remaking it would only cost time. `patches` go once
+  // triangulated (0.44 GiB there).
+  const Stopwatch total;
+  const size_t patchCount = patches.size();
+  const bool remade = gpuPatches.bufferBytes(0, gpuPatches.size()) > kRemadePatchSetBytes;
+  if (remade) gpuPatches = PatchSet();
+  ParamMesh param = triangulateOnAllCores(tree.leaves, patches);
+  const double triangulateMs = total.elapsedMs();
+  if (remade) gpuPatches = toPatchSet(patches);
+  std::vector<BezierPatch>().swap(patches);
+  return meshFromTriangulation(patchCount, std::move(tree), std::move(param), evaluator, gpuPatches,
+                               frame, triangulateMs, total);
 }
 
 void toModelCoordinates(Tessellation& t, const ModelFrame& frame) {

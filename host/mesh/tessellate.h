@@ -69,6 +69,13 @@ Tessellation meshFromTree(const std::vector<BezierPatch>& patches, const PatchSe
                           QuadtreeResult tree, PatchEvaluator& evaluator,
                           const ModelFrame& frame = {});
 
+// The same for a caller done with its patches, `gpuPatches` = toPatchSet(patches): each copy is
+// freed once no step reads it, and a huge patch set is made again for the evaluation rather
+// than held through the triangulation (the mesh is the same bytes; docs/hardening.md).
+Tessellation meshFromTree(std::vector<BezierPatch>&& patches, PatchSet&& gpuPatches,
+                          QuadtreeResult tree, PatchEvaluator& evaluator,
+                          const ModelFrame& frame = {});
+
 // meshFromTree's last step, for callers that triangulate and evaluate themselves (the trimmed
 // mesher evaluates many trees' vertices in one backend call): `samples` are the evaluations of
 // param.vertices in order; welds equal positions and drops degenerate and back-to-back
