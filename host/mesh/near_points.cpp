@@ -31,10 +31,20 @@ size_t sortAndFold(LinePoint* points, size_t count) {
     std::sort(points, points + count,
               [](const LinePoint& a, const LinePoint& b) { return a.t < b.t; });
   size_t kept = 0;
+  // Where the last point went: a later run (the leaves on the line's other side) goes back
+  // to the start of an earlier one and then climbs it, each point near the last one's place,
+  // where searching back from the end crossed the rest of the earlier run every time.
+  size_t last = 0;
   for (size_t k = 0; k < count; ++k) {
     const LinePoint point = points[k];
     size_t j = kept;
-    while (j > 0 && point.t < points[j - 1].t) --j;
+    if (j > 0 && point.t < points[j - 1].t) {
+      // The first place whose point is past t (the points so far are distinct, ascending).
+      j = std::min(last, kept);
+      while (j < kept && points[j].t <= point.t) ++j;
+      while (j > 0 && point.t < points[j - 1].t) --j;
+    }
+    last = j;
     if (j > 0 && points[j - 1].t == point.t) {
       points[j - 1].spacing = std::min(points[j - 1].spacing, point.spacing);
       continue;
@@ -42,6 +52,7 @@ size_t sortAndFold(LinePoint* points, size_t count) {
     for (size_t m = kept; m > j; --m) points[m] = points[m - 1];
     points[j] = point;
     ++kept;
+    last = j + 1;
   }
   return kept;
 }
