@@ -234,20 +234,28 @@ class LeafWalker {
     }
     const LineIndex& lines = alongU ? lines_.alongU : lines_.alongV;
     const PointRange<const LinePoint> points = lines.points(line);
-    const float lo = std::min(t0, t1), hi = std::max(t0, t1);  // the edge, before moving
-    if (moved) t0 = movedTo(*moved, t0), t1 = movedTo(*moved, t1);
+    // The edge, before moving: a leaf's bottom and right edges run up their lines, its top and
+    // left ones down (r.x < r.z, r.y < r.w), so its ends' order is known without comparing.
+    bool rising = edge == kBottom || edge == kRight;
+    const float lo = rising ? t0 : t1, hi = rising ? t1 : t0;
+    float from = lo, to = hi;  // the ends after moving, ascending
+    if (moved) {
+      t0 = movedTo(*moved, t0), t1 = movedTo(*moved, t1);
+      rising = t0 <= t1;
+      from = std::min(t0, t1), to = std::max(t0, t1);
+    }
     // The points strictly between the (moved) ends, in ring order. A listed point is a vertex
     // of its own: no merge to look up.
-    const LinePoint* first = work.lineHints.upperBound(edge, points, std::min(t0, t1));
+    const LinePoint* first = work.lineHints.upperBound(edge, points, from);
     const LinePoint* last = first;
-    for (const float end = std::max(t0, t1); last != points.end() && last->t < end;) ++last;
+    while (last != points.end() && last->t < to) ++last;
     work.lineHints.remember(edge, points, first, last);
     const auto place = [&](float t) {
       const glm::vec2 uv = alongU ? glm::vec2(t, fixed) : glm::vec2(fixed, t);
       const VertexKey key = inner ? innerKey(patch, uv.x, uv.y) : seams_.baseKey(patch, uv.x, uv.y);
       append(ring, query(work, key, patch, uv, t > lo && t < hi ? kEdge : kElsewhere));
     };
-    if (t0 <= t1)
+    if (rising)
       for (const LinePoint* p = first; p != last; ++p) place(p->t);
     else
       for (const LinePoint* p = last; p != first;) place((--p)->t);
