@@ -177,6 +177,11 @@ void checkVertexShaderParity(vk::Context& context, PatchEvaluator& vulkan, const
       }
     }
     const size_t sampleMismatches = differingVertices(gpu, gpuSamples);
+    // The samples read in place (the mesh path's useVertexSamples) are evaluateVertices' bytes.
+    std::vector<gpu::VertexSample> inPlace;
+    vulkan.useVertexSamples(set, std::vector<gpu::EvalQuery>(queries),
+                            [&](const gpu::VertexSample* s) { inPlace.assign(s, s + gpu.size()); });
+    REQUIRE(std::memcmp(inPlace.data(), gpu.data(), gpu.size() * sizeof gpu[0]) == 0);
     WARN(name << (shuffled ? ", shuffled," : "") << " on " << context.info().name << ": "
               << queries.size() << " vertices, " << mirrorMismatches
               << " differ from the mirror in any bit (max |Δp| " << maxPositionDiff

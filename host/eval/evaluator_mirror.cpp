@@ -46,6 +46,14 @@ std::vector<gpu::VertexSample> PatchEvaluator::evaluateVertices(
   return vertexSamples(evaluate(patches, queries));
 }
 
+void PatchEvaluator::useVertexSamples(const PatchSet& patches,
+                                      std::vector<gpu::EvalQuery>&& queries,
+                                      const std::function<void(const gpu::VertexSample*)>& use) {
+  const std::vector<gpu::VertexSample> samples = evaluateVertices(patches, queries);
+  std::vector<gpu::EvalQuery>().swap(queries);
+  use(samples.data());
+}
+
 namespace {
 
 // The samples are independent: a large batch is evaluated on all cores, in chunks taken in

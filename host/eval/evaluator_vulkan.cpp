@@ -62,16 +62,40 @@ class VulkanEvaluator final : public PatchEvaluator {
     if (!patches.isBicubic()) return PatchEvaluator::evaluateVertices(patches, queries);
     checkQueries(patches.bicubic().size(), queries);
     if (queries.empty()) return {};
-    uploadBicubic(patches.bicubic(), queries.size() * sizeof(gpu::VertexSample));
+    dispatchVertices(patches.bicubic(), queries);
+    return readBack<gpu::VertexSample>(queries.size());
+  }
+
+  void useVertexSamples(const PatchSet& patches, std::vector<gpu::EvalQuery>&& queries,
+                        const std::function<void(const gpu::VertexSample*)>& use) override {
+    if (!patches.isBicubic() || queries.empty())
+      return PatchEvaluator::useVertexSamples(patches, std::move(queries), use);
+    checkQueries(patches.bicubic().size(), queries);
+    dispatchVertices(patches.bicubic(), queries);
+    std::vector<gpu::EvalQuery>().swap(queries);
+    releaseHuge({&patches_, &queries_, &runs_});
+    // Read in place (the buffer is mapped and coherent, as download() reads it); a huge one
+    // goes after, also when `use` throws.
+    const struct ReleaseAfterUse {
+      VulkanEvaluator& evaluator;
+      ~ReleaseAfterUse() { evaluator.releaseHuge({&evaluator.samples_}); }
+    } release{*this};
+    use(samples_.as<const gpu::VertexSample>());
+  }
+
+ private:
+  // eval_vertices.comp run on `queries`, its results left in samples_.
+  void dispatchVertices(const std::vector<gpu::BicubicPatch>& patches,
+                        const std::vector<gpu::EvalQuery>& queries) {
+    uploadBicubic(patches, queries.size() * sizeof(gpu::VertexSample));
     const std::vector<uint32_t> runStarts = vertexRuns(queries);
     vk::ensureCapacity(context_, runs_, runStarts.size() * sizeof(uint32_t), vk::BufferUse::Upload);
     runs_.upload(runStarts);
     const gpu::VertexEvalPush push{uint32_t(runStarts.size() - 1), kDegenerateEpsFp32, 0, 0};
-    return run<gpu::VertexSample>(vertices_.get(), {&patches_, &queries_, &samples_, &runs_},
-                                  queries, &push, push.runCount);
+    dispatch(vertices_.get(), {&patches_, &queries_, &samples_, &runs_}, queries, &push,
+             push.runCount);
   }
 
- private:
   // The patches uploaded, and room for the queries and `resultBytes` of results.
   void uploadBicubic(const std::vector<gpu::BicubicPatch>& patches, size_t resultBytes) {
     vk::ensureCapacity(context_, patches_, patches.size() * sizeof(gpu::BicubicPatch),
@@ -113,6 +137,14 @@ class VulkanEvaluator final : public PatchEvaluator {
                           std::initializer_list<const vk::Buffer*> buffers,
                           const std::vector<gpu::EvalQuery>& queries, const void* push,
                           uint32_t invocations) {
+    dispatch(pipeline, buffers, queries, push, invocations);
+    return readBack<Sample>(queries.size());
+  }
+
+  // Uploads the queries and dispatches `invocations`; the results are in samples_ after.
+  void dispatch(vk::ComputePipeline& pipeline, std::initializer_list<const vk::Buffer*> buffers,
+                const std::vector<gpu::EvalQuery>& queries, const void* push,
+                uint32_t invocations) {
     vk::ensureCapacity(context_, queries_, queries.size() * sizeof(gpu::EvalQuery),
                        vk::BufferUse::Upload);
     queries_.upload(queries);
@@ -120,8 +152,12 @@ class VulkanEvaluator final : public PatchEvaluator {
       pipeline.dispatch(cmd, buffers, push, invocations);
       vk::computeToHostBarrier(context_, cmd);
     });
+  }
+
+  template <typename Sample>
+  std::vector<Sample> readBack(size_t count) {
     std::vector<Sample> out;
-    samples_.download(out, queries.size());
+    samples_.download(out, count);
     releaseHugeBuffers();
     return out;
   }
@@ -131,8 +167,9 @@ class VulkanEvaluator final : public PatchEvaluator {
   // the mesh its results become: a 10⁶-patch sheet's patches, queries and samples are
   // ~0.45 GiB, host memory on lavapipe (bench/HISTORY.md, "The largest scene's peak memory").
   static constexpr VkDeviceSize kKeptBufferBytes = VkDeviceSize(64) << 20;
-  void releaseHugeBuffers() {
-    for (vk::Buffer* buffer : {&points_, &patches_, &queries_, &samples_, &runs_})
+  void releaseHugeBuffers() { releaseHuge({&points_, &patches_, &queries_, &samples_, &runs_}); }
+  static void releaseHuge(std::initializer_list<vk::Buffer*> buffers) {
+    for (vk::Buffer* buffer : buffers)
       if (buffer->size() > kKeptBufferBytes) *buffer = vk::Buffer();
   }
 

@@ -68,17 +68,16 @@ Tessellation meshFromTriangulation(size_t patchCount, QuadtreeResult tree, Param
                                    const ModelFrame& frame, double triangulateMs,
                                    const Stopwatch& total) {
   const Stopwatch step;
-  std::vector<gpu::VertexSample> samples;
-  {
-    std::vector<gpu::EvalQuery> queries(param.vertices.size());
-    for (size_t i = 0; i < queries.size(); ++i)
-      queries[i] = {param.vertices[i].patchIndex, param.vertices[i].u, param.vertices[i].v, 0};
-    samples = evaluator.evaluateVertices(gpuPatches, queries);
-  }
-  const double evaluateMs = step.elapsedMs();
-
-  Tessellation result =
-      assembleTessellation(patchCount, std::move(tree), std::move(param), samples, 0);
+  std::vector<gpu::EvalQuery> queries(param.vertices.size());
+  for (size_t i = 0; i < queries.size(); ++i)
+    queries[i] = {param.vertices[i].patchIndex, param.vertices[i].u, param.vertices[i].v, 0};
+  double evaluateMs = 0;
+  Tessellation result;
+  // The mesh is assembled from the samples where the evaluator holds them (no copy of them).
+  evaluator.useVertexSamples(gpuPatches, std::move(queries), [&](const gpu::VertexSample* samples) {
+    evaluateMs = step.elapsedMs();
+    result = assembleTessellation(patchCount, std::move(tree), std::move(param), samples, 0);
+  });
   toModelCoordinates(result, frame);
   result.stats.triangulateMs = triangulateMs;
   result.stats.evaluateMs = evaluateMs;
