@@ -100,7 +100,6 @@ Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, ParamM
 Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, ParamMesh param,
                                   const gpu::VertexSample* samples, unsigned threads) {
   const size_t count = param.vertices.size();
-  requireFiniteSamples(param, samples, count);
   Tessellation result;
   result.tree = std::move(tree);
   TriangleMesh& mesh = result.mesh;
@@ -108,12 +107,19 @@ Tessellation assembleTessellation(size_t patchCount, QuadtreeResult tree, ParamM
   mesh.normals.resize(count);
   mesh.uvs.resize(count);
   mesh.patchIds.resize(count);
+  // The samples are checked finite in the same pass as they are copied (one read of them);
+  // requireFiniteSamples names the first that is not.
+  bool finite = true;
   for (size_t i = 0; i < count; ++i) {
-    mesh.positions[i] = glm::vec3(samples[i].position);
-    mesh.normals[i] = glm::vec3(samples[i].normal);
+    const glm::vec3 position(samples[i].position), normal(samples[i].normal);
+    finite &= std::isfinite(position.x) & std::isfinite(position.y) & std::isfinite(position.z) &
+              std::isfinite(normal.x) & std::isfinite(normal.y) & std::isfinite(normal.z);
+    mesh.positions[i] = position;
+    mesh.normals[i] = normal;
     mesh.uvs[i] = glm::vec2(param.vertices[i].u, param.vertices[i].v);
     mesh.patchIds[i] = param.vertices[i].patchIndex;
   }
+  if (!finite) requireFiniteSamples(param, samples, count);
   // Welding in the triangulation already dropped triangles with two corners at one vertex.
   // Distinct vertices can still evaluate to the very same point (a fold, or points a hair
   // apart): weld those too, so a triangle with two corners there goes and its neighbours keep
