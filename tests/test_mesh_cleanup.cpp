@@ -124,9 +124,9 @@ TEST_CASE("mesh cleanup: welding keeps each position's first vertex, on any thre
   // a position to the first vertex there.
   std::mt19937 random(20261129);
   std::uniform_int_distribution<int> pick(0, 299), sign(0, 1);
-  // 8,000 and then 5,000 take the flat table (its room kept from the larger), 20,000 (past 2¹³)
-  // the sharded map (position_weld.cpp).
-  const size_t count = GENERATE(size_t(8000), size_t(5000), size_t(20000));
+  // 20,000 and then 5,000 take the flat table (its room kept from the larger), 140,000 (past
+  // 2¹⁷) the sharded map (position_weld.cpp).
+  const size_t count = GENERATE(size_t(20000), size_t(5000), size_t(140000));
   std::vector<glm::vec3> positions(count);
   for (glm::vec3& p : positions) {
     const int k = pick(random);

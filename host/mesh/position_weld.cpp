@@ -1,13 +1,14 @@
 // weldIdenticalPositions (mesh_cleanup.h): per vertex, the first vertex with its position bit
-// for bit (−0 and +0 one). A small mesh (the tea set at δ 0.01: ~5,200 vertices) takes one
+// for bit (−0 and +0 one). Up to 2¹⁷ vertices (the tea set at δ 10⁻³: ~36,000) one
 // open-addressed table of vertex indices on the calling thread: a probe compares the position
 // in place, where the sharded hash map of firstOccurrences spent about twice the instructions
-// (its table's clearing, 12-byte keys, robin-hood bookkeeping). The table's room (at most
-// 128 KiB) is kept by the thread from call to call. Larger meshes keep that map: its tables
-// are kept from call to call too. A flat table for them (at 10⁻³ 0.14 ms on one thread
-// against the map's 0.74) left the warm loop in malloc's trimming mode, ~1,200–1,700 page
-// faults a call, freed every call or kept (bench/HISTORY.md); they are sharded on all the
-// threads asked for.
+// (its table's clearing, 12-byte keys, robin-hood bookkeeping) and at 10⁻³ five times the time
+// on one thread (0.74 against 0.14 ms). The table's room (at most 2 MiB) is kept by the thread
+// from call to call. Session 44 had dropped the table above 2¹³ vertices: with it the warm
+// loop at 10⁻³ went into malloc's heap trimming, ~1,200–1,700 page faults a call; since the
+// mesh is assembled from the evaluator's samples in place (no 1.1 MiB sample vector at the
+// heap's top) it does not (bench/HISTORY.md, session 46). Larger meshes keep the map, sharded
+// on all the threads asked for; its tables are kept from call to call too.
 #include <array>
 #include <cstring>
 
@@ -35,8 +36,8 @@ PositionBits bitsOf(const glm::vec3& p) {
   return key;
 }
 
-// Up to this many vertices the flat table, at most 2¹⁵ slots (128 KiB), is used.
-constexpr size_t kFlatTableVertices = size_t(1) << 13;
+// Up to this many vertices the flat table, at most 2¹⁹ slots (2 MiB), is used.
+constexpr size_t kFlatTableVertices = size_t(1) << 17;
 
 std::vector<uint32_t> firstEqualInFlatTable(const std::vector<glm::vec3>& positions) {
   const size_t count = positions.size();
@@ -47,8 +48,8 @@ std::vector<uint32_t> firstEqualInFlatTable(const std::vector<glm::vec3>& positi
   while ((size_t(1) << bits) < 4 * count) ++bits;
   const size_t mask = (size_t(1) << bits) - 1;
   constexpr uint32_t kEmpty = UINT32_MAX;
-  // Its room only, filled anew every call: a new 128 KiB block every call can be mapped afresh
-  // (malloc's mmap threshold) and fault its pages in.
+  // Its room only, filled anew every call: a new block of up to 2 MiB every call can be
+  // mapped afresh (malloc's mmap threshold) or trimmed away, and fault its pages in again.
   thread_local std::vector<uint32_t> table;
   table.assign(mask + 1, kEmpty);
   for (size_t i = 0; i < count; ++i) {
