@@ -40,19 +40,26 @@ std::vector<uint32_t> sharedCornerSets(const std::vector<uint32_t>& indices) {
   int bits = 6;
   while ((size_t(1) << bits) < 16 * count) ++bits;
   const size_t words = (size_t(1) << bits) / 64;
-  std::vector<uint64_t> seen(2 * words, 0);  // [0, words): once; [words, 2 words): again
+  // The bit table and the first pass's slots, held for the second pass, in room the thread
+  // keeps from call to call up to kKeptTriangles (1 MiB: no block of that size allocated and
+  // freed every call for malloc to trim); a larger mesh's slots are hashed again.
+  constexpr size_t kKeptTriangles = size_t(1) << 17;
+  thread_local std::vector<uint64_t> keptSeen;
+  thread_local std::vector<uint32_t> keptSlots;
+  std::vector<uint64_t> ownSeen;
+  std::vector<uint64_t>& seen = count <= kKeptTriangles ? keptSeen : ownSeen;
+  seen.assign(2 * words, 0);  // [0, words): once; [words, 2 words): again
   uint64_t* const once = seen.data();
   uint64_t* const again = seen.data() + words;
   const auto slotOf = [&](size_t t) {
     return uint32_t(cornerSetHash(&indices[3 * t]) >> (64 - bits));
   };
-  // The first pass's slots, held for the second up to 2¹⁵ triangles (128 KiB); a larger mesh's
-  // are hashed again rather than held in an array freed every call (malloc's trimming).
-  std::vector<uint32_t> slots(count <= (size_t(1) << 15) ? count : 0);
+  uint32_t* const slots = count <= kKeptTriangles ? (keptSlots.resize(count), keptSlots.data())
+                                                  : nullptr;
   bool anyAgain = false;
   for (size_t t = 0; t < count; ++t) {
     const uint32_t slot = slotOf(t);
-    if (!slots.empty()) slots[t] = slot;
+    if (slots) slots[t] = slot;
     const uint64_t bit = uint64_t(1) << (slot % 64);
     if (once[slot / 64] & bit) again[slot / 64] |= bit, anyAgain = true;
     once[slot / 64] |= bit;
@@ -60,7 +67,7 @@ std::vector<uint32_t> sharedCornerSets(const std::vector<uint32_t>& indices) {
   std::vector<uint32_t> candidates;
   if (!anyAgain) return candidates;
   for (size_t t = 0; t < count; ++t) {
-    const uint32_t slot = slots.empty() ? slotOf(t) : slots[t];
+    const uint32_t slot = slots ? slots[t] : slotOf(t);
     if (again[slot / 64] & (uint64_t(1) << (slot % 64))) candidates.push_back(uint32_t(t));
   }
   return candidates;
