@@ -54,8 +54,11 @@ std::vector<uint32_t> sharedCornerSets(const std::vector<uint32_t>& indices) {
   const auto slotOf = [&](size_t t) {
     return uint32_t(cornerSetHash(&indices[3 * t]) >> (64 - bits));
   };
-  uint32_t* const slots = count <= kKeptTriangles ? (keptSlots.resize(count), keptSlots.data())
-                                                  : nullptr;
+  uint32_t* slots = nullptr;
+  if (count <= kKeptTriangles) {
+    keptSlots.resize(count);
+    slots = keptSlots.data();
+  }
   bool anyAgain = false;
   for (size_t t = 0; t < count; ++t) {
     const uint32_t slot = slotOf(t);
