@@ -43,7 +43,8 @@ class PatchEvaluator {
   // before a mesh was assembled (a huge mesh's are ~64 MiB).
   virtual void useVertexSamples(const PatchSet& patches, std::vector<gpu::EvalQuery>&& queries,
                                 const std::function<void(const gpu::VertexSample*)>& use);
-  // Announces that evaluate() (prepare) or evaluateVertices() (prepareVertices) will be called
+  // Announces that evaluate() (prepare) or evaluateVertices() / useVertexSamples()
+  // (prepareVertices) will be called
   // for patches like these, so a backend may start its one-time setup (Vulkan: building the
   // pipeline on a worker thread) while the caller builds the quad-tree. Optional: both
   // evaluations work without it.

@@ -44,21 +44,19 @@ std::vector<uint32_t> sharedCornerSets(const std::vector<uint32_t>& indices) {
   // keeps from call to call up to kKeptTriangles (1 MiB: no block of that size allocated and
   // freed every call for malloc to trim); a larger mesh's slots are hashed again.
   constexpr size_t kKeptTriangles = size_t(1) << 17;
+  const bool kept = count <= kKeptTriangles;
   thread_local std::vector<uint64_t> keptSeen;
   thread_local std::vector<uint32_t> keptSlots;
   std::vector<uint64_t> ownSeen;
-  std::vector<uint64_t>& seen = count <= kKeptTriangles ? keptSeen : ownSeen;
+  std::vector<uint64_t>& seen = kept ? keptSeen : ownSeen;
   seen.assign(2 * words, 0);  // [0, words): once; [words, 2 words): again
   uint64_t* const once = seen.data();
   uint64_t* const again = seen.data() + words;
   const auto slotOf = [&](size_t t) {
     return uint32_t(cornerSetHash(&indices[3 * t]) >> (64 - bits));
   };
-  uint32_t* slots = nullptr;
-  if (count <= kKeptTriangles) {
-    keptSlots.resize(count);
-    slots = keptSlots.data();
-  }
+  if (kept) keptSlots.resize(count);
+  uint32_t* const slots = kept ? keptSlots.data() : nullptr;
   bool anyAgain = false;
   for (size_t t = 0; t < count; ++t) {
     const uint32_t slot = slotOf(t);

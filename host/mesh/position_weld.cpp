@@ -4,11 +4,10 @@
 // in place, where the sharded hash map of firstOccurrences spent about twice the instructions
 // (its table's clearing, 12-byte keys, robin-hood bookkeeping) and at 10⁻³ five times the time
 // on one thread (0.74 against 0.14 ms). The table's room (at most 2 MiB) is kept by the thread
-// from call to call. Session 44 had dropped the table above 2¹³ vertices: with it the warm
-// loop at 10⁻³ went into malloc's heap trimming, ~1,200–1,700 page faults a call; since the
-// mesh is assembled from the evaluator's samples in place (no 1.1 MiB sample vector at the
-// heap's top) it does not (bench/HISTORY.md, session 46). Larger meshes keep the map, sharded
-// on all the threads asked for; its tables are kept from call to call too.
+// from call to call. Whether a warm loop faults its pages in again after malloc trims the heap
+// depends on every block of the call, not on this table alone (bench/HISTORY.md, sessions 44
+// and 46). Larger meshes keep the map, sharded on all the threads asked for; its tables are
+// kept from call to call too.
 #include <array>
 #include <cstring>
 

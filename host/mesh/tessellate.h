@@ -62,8 +62,8 @@ Tessellation tessellate(const std::vector<BezierPatch>& patches, const QuadtreeO
                         Backend& backend);
 
 // The second half of tessellate(): a finished tree → watertight mesh, vertices evaluated by
-// `evaluator` (evaluateVertices; timings in stats.triangulateMs and stats.evaluateMs). `patches` and
-// `gpuPatches` are in `frame` (toLocalFrame); the mesh comes back in model coordinates
+// `evaluator` (useVertexSamples; timings in stats.triangulateMs and stats.evaluateMs). `patches`
+// and `gpuPatches` are in `frame` (toLocalFrame); the mesh comes back in model coordinates
 // (toModelCoordinates).
 Tessellation meshFromTree(const std::vector<BezierPatch>& patches, const PatchSet& gpuPatches,
                           QuadtreeResult tree, PatchEvaluator& evaluator,
