@@ -1,6 +1,9 @@
 #include "api/convert.h"
 
 #include <string>
+#include <utility>
+
+#include <glm/gtc/type_ptr.hpp>
 
 namespace tessera::api {
 
@@ -45,17 +48,29 @@ std::vector<Patch> toPatches(const std::vector<BezierPatch>& patches) {
   return result;
 }
 
-Mesh toMesh(const TriangleMesh& mesh) {
+namespace {
+
+// The public mesh's flat float arrays from glm vectors of N floats, which glm lays out packed
+// (the static_asserts), so the copy is one block; the source is freed at once, so a call's
+// peak holds one copy of each array at a time.
+template <class Vector>
+std::vector<float> flattened(std::vector<Vector>& source) {
+  static_assert(sizeof(Vector) == Vector::length() * sizeof(float), "glm packs its vectors");
+  const float* first = source.empty() ? nullptr : glm::value_ptr(source[0]);
+  std::vector<float> flat(first, first + Vector::length() * source.size());
+  std::vector<Vector>().swap(source);
+  return flat;
+}
+
+}  // namespace
+
+Mesh toMesh(TriangleMesh&& mesh) {
   Mesh out;
-  out.positions.reserve(3 * mesh.positions.size());
-  for (const glm::vec3& p : mesh.positions)
-    out.positions.insert(out.positions.end(), {p.x, p.y, p.z});
-  out.normals.reserve(3 * mesh.normals.size());
-  for (const glm::vec3& n : mesh.normals) out.normals.insert(out.normals.end(), {n.x, n.y, n.z});
-  out.uvs.reserve(2 * mesh.uvs.size());
-  for (const glm::vec2& uv : mesh.uvs) out.uvs.insert(out.uvs.end(), {uv.x, uv.y});
-  out.patchIds = mesh.patchIds;
-  out.indices = mesh.indices;
+  out.positions = flattened(mesh.positions);
+  out.normals = flattened(mesh.normals);
+  out.uvs = flattened(mesh.uvs);
+  out.patchIds = std::move(mesh.patchIds);
+  out.indices = std::move(mesh.indices);
   return out;
 }
 

@@ -15,7 +15,8 @@ namespace tessera::api {
 std::vector<BezierPatch> toBezierPatches(const std::vector<Patch>& patches);
 std::vector<Patch> toPatches(const std::vector<BezierPatch>& patches);
 
-Mesh toMesh(const TriangleMesh& mesh);
+// Takes the arrays of `mesh` (moved or copied and freed): the caller's mesh is left empty.
+Mesh toMesh(TriangleMesh&& mesh);
 
 QuadtreeOptions toQuadtreeOptions(const RuleOptions& options);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "api/convert.h"
 #include "api/tessellator_access.h"
@@ -184,9 +185,9 @@ Mesh Tessellator::tessellate(const std::vector<Patch>& patches, const RuleOption
   const std::vector<BezierPatch> internal = api::toBezierPatches(patches);
   const QuadtreeOptions quadtree = api::toQuadtreeOptions(options);
   return translatingErrors([&] {
-    const Tessellation t = impl_->withFallback(
+    Tessellation t = impl_->withFallback(
         [&](Backend& backend) { return tessera::tessellate(internal, quadtree, backend); });
-    Mesh mesh = api::toMesh(t.mesh);
+    Mesh mesh = api::toMesh(std::move(t.mesh));
     if (quadtree.rule == SplitRule::Tolerance) mesh.proof = treeProof(t, quadtree.tolerance);
     return mesh;
   });
@@ -268,10 +269,10 @@ Mesh Tessellator::tessellateToPixelTolerance(const std::vector<Patch>& patches, 
   quadtree.nodeBudget = options.maxNodes;
   const std::vector<BezierPatch> internal = api::toBezierPatches(patches);
   return translatingErrors([&] {
-    const Tessellation t = impl_->withFallback([&](Backend& backend) {
+    Tessellation t = impl_->withFallback([&](Backend& backend) {
       return tessellateScreenTolerance(internal, quadtree, screen, backend);
     });
-    Mesh mesh = api::toMesh(t.mesh);
+    Mesh mesh = api::toMesh(std::move(t.mesh));
     mesh.proof = screenProof(t, pixels);
     return mesh;
   });

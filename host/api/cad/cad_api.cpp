@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "api/convert.h"
 #include "api/tessellator_access.h"
@@ -35,7 +36,7 @@ CadMesh tessellateCadFile(Tessellator& tessellator, const std::string& path,
                       trim, options.threads);
   });
   CadMesh out;
-  out.mesh = api::toMesh(run.mesh.mesh);
+  out.mesh = api::toMesh(std::move(run.mesh.mesh));
   for (uint32_t& face : out.mesh.patchIds) face = run.faceIndexOfPosition.at(face);
   out.triangleFaces = run.mesh.triangleFace;
   out.faces = run.faces;
