@@ -136,18 +136,22 @@ void tessellateGroup(const TrimmedModel& model, const FaceGroup& group, const Mo
       const ParamVertex& v = params[k].vertices[i];
       queries[firstQuery[k] + i] = {v.patchIndex + group.firstPatch[k], v.u, v.v, 0};
     }
-  std::vector<gpu::VertexSample> samples;
-  if (!queries.empty()) samples = backend.evaluator->evaluateVertices(patchSet, queries);
-  out.evaluateMs += step.elapsedMs();
-
-  step.restart();
-  parallelForLargestFirst(leafCounts, threads, [&](size_t k) {
-    // The face's samples read in place, not copied out per face.
-    Tessellation& face = out.faces[group.faces[k]];
-    face = assembleTessellation(group.facePatches[k].size(), std::move(faceTrees[k]),
-                                std::move(params[k]), samples.data() + firstQuery[k]);
-    toModelCoordinates(face, frame);
-  });
+  // The faces are assembled from the samples where the evaluator holds them (Vulkan: its
+  // mapped buffer), so no copy of them is made.
+  const auto assembleFaces = [&](const gpu::VertexSample* samples) {
+    out.evaluateMs += step.elapsedMs();
+    step.restart();
+    parallelForLargestFirst(leafCounts, threads, [&](size_t k) {
+      Tessellation& face = out.faces[group.faces[k]];
+      face = assembleTessellation(group.facePatches[k].size(), std::move(faceTrees[k]),
+                                  std::move(params[k]), samples + firstQuery[k]);
+      toModelCoordinates(face, frame);
+    });
+  };
+  if (queries.empty())
+    assembleFaces(nullptr);  // every leaf trimmed away: no vertex to evaluate
+  else
+    backend.evaluator->useVertexSamples(patchSet, std::move(queries), assembleFaces);
   out.assembleMs += step.elapsedMs();
 }
 
