@@ -11,6 +11,11 @@ namespace {  // each mirror translation unit gets its own copy of the shared fun
 #include "shaders/lib/bicubic_eval.h"
 // toleranceDecisionOf's terms have C = 0 (the revolution bound): skip their zero norms.
 #define TOLERANCE_DECISION_CENTRELESS_SHORTCUT
+// The bicubic shaders' configuration (lib/tolerance_bicubic_shader.glsl): rows of order 4 and
+// loops of constant trip counts with tests instead of breaks, which GCC unrolls and folds as
+// spirv-opt does there. The same arithmetic in the same order: the same bits.
+#define TOLERANCE_ROW_ORDER 4
+#define TOLERANCE_UNROLL _Pragma("GCC unroll 4")
 #include "shaders/lib/tolerance_bound.h"
 #undef TOLERANCE_DECISION_CENTRELESS_SHORTCUT
 #include "shaders/lib/quadtree_classify.h"
