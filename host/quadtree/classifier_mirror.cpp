@@ -31,6 +31,8 @@ void classifyRange(const Patches& patches, const std::vector<gpu::QuadNode>& nod
 }
 
 class MirrorClassifier final : public NodeClassifier {
+  static constexpr size_t kChunkNodes = 64;
+
  public:
   explicit MirrorClassifier(unsigned threads) : threads_(std::max(1u, threads)) {}
 
@@ -56,9 +58,10 @@ class MirrorClassifier final : public NodeClassifier {
     decisions.resize(nodes.size());
     gpu::ClassifyPush params = classifyParams(options, uint32_t(nodes.size()));
     uint32_t rule = ruleConstant(options.rule);
-    // At least 256 nodes a thread: fewer are not worth a thread start.
+    // At least 256 nodes a thread: fewer are not worth a thread start. Chunks taken in turn:
+    // a node that splits costs several that do not, and they cluster.
     const auto workers = unsigned(std::clamp<size_t>((nodes.size() + 255) / 256, 1, threads_));
-    parallelFor(nodes.size(), workers, [&](size_t begin, size_t end) {
+    parallelForChunks(nodes.size(), kChunkNodes, workers, [&](size_t begin, size_t end) {
       classifyRange(patches, nodes, rule, options.samples, params, decisions, begin, end);
     });
     stats.classifyMs += stopwatch.elapsedMs();
