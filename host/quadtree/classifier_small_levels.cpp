@@ -12,12 +12,13 @@
 namespace tessera {
 namespace {
 
-// Rule T: the mirror takes ~1 µs a node, so below kHostLevelNodes it beats the device's fixed
-// cost. Rules C and D search each node for the κ maximum, ~3 and ~25 µs a node on the host, so
-// lavapipe's fixed 0.03-0.09 ms pays for itself from ~10-30 and ~2-4 nodes. Rule B's nodes
-// cost the host ~0.5 µs and would gain as T's do, but it is left as the paper's experiment
-// has it, every level on the device (bench_quadtree and the CLI's Vulkan summary count those
-// submissions). Tea set, warm, per level: bench/HISTORY.md, "Small levels on the host".
+// Rule T: the mirror takes ~0.6 µs a leaf, ~2 µs a node that splits, so below kHostLevelNodes
+// it beats the device's fixed cost. Rules C and D search each node for the κ maximum, ~3 and
+// ~25 µs a node on the host, so lavapipe's fixed 0.03-0.09 ms pays for itself from ~10-30 and
+// ~2-4 nodes. Rule B's nodes cost the host ~0.5 µs and would gain as T's do, but it is left as
+// the paper's experiment has it, every level on the device (bench_quadtree and the CLI's Vulkan
+// summary count those submissions). Tea set, warm, per level: bench/HISTORY.md, "Small levels
+// on the host".
 bool hostDecides(SplitRule rule) { return rule == SplitRule::Tolerance; }
 
 class SmallLevelsOnHost final : public NodeClassifier {
