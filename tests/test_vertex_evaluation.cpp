@@ -209,6 +209,26 @@ TEST_CASE("eval_vertices shader equals its fp32 mirror and eval.comp's positions
   test::requireValidationClean();
 }
 
+TEST_CASE("useVertexSamples without queries calls no evaluation and hands over no samples",
+          "[eval]") {
+  // A trimmed group whose every leaf is trimmed away has no vertex (face_tessellation.cpp).
+  for (const PatchCase& c : patchCases()) {
+    CountingEvaluator counting;
+    int uses = 0;
+    const gpu::VertexSample unset{};
+    const gpu::VertexSample* handed = &unset;
+    counting.useVertexSamples(c.patches, {}, [&](const gpu::VertexSample* samples) {
+      ++uses;
+      handed = samples;
+    });
+    INFO(c.name);
+    CHECK(uses == 1);
+    CHECK(handed == nullptr);
+    CHECK(counting.vertexCalls == 0);
+    CHECK(counting.sampleCalls == 0);
+  }
+}
+
 TEST_CASE("tessellate evaluates its vertices with evaluateVertices, not evaluate", "[eval]") {
   const std::vector<BezierPatch> teapot = readBpt(TESSERA_SOURCE_DIR "/data/teapot.bpt");
   Backend backend = makeMirrorBackend();

@@ -40,7 +40,8 @@ class PatchEvaluator {
   // the backend holds them: Vulkan's mapped readback buffer, so a mesh copies what it keeps
   // straight out of it instead of through a vector allocated, filled and freed per call
   // (1.1 MiB at the tea set's 10⁻³). The queries are freed before `use` runs, as they were
-  // before a mesh was assembled (a huge mesh's are ~64 MiB).
+  // before a mesh was assembled (a huge mesh's are ~64 MiB). No queries: `use(nullptr)`, and
+  // the backend is not called.
   virtual void useVertexSamples(const PatchSet& patches, std::vector<gpu::EvalQuery>&& queries,
                                 const std::function<void(const gpu::VertexSample*)>& use);
   // Announces that evaluate() (prepare) or evaluateVertices() / useVertexSamples()

@@ -49,6 +49,7 @@ std::vector<gpu::VertexSample> PatchEvaluator::evaluateVertices(
 void PatchEvaluator::useVertexSamples(const PatchSet& patches,
                                       std::vector<gpu::EvalQuery>&& queries,
                                       const std::function<void(const gpu::VertexSample*)>& use) {
+  if (queries.empty()) return use(nullptr);  // nothing to evaluate: no backend call
   const std::vector<gpu::VertexSample> samples = evaluateVertices(patches, queries);
   std::vector<gpu::EvalQuery>().swap(queries);
   use(samples.data());

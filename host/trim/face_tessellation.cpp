@@ -148,10 +148,7 @@ void tessellateGroup(const TrimmedModel& model, const FaceGroup& group, const Mo
       toModelCoordinates(face, frame);
     });
   };
-  if (queries.empty())
-    assembleFaces(nullptr);  // every leaf trimmed away: no vertex to evaluate
-  else
-    backend.evaluator->useVertexSamples(patchSet, std::move(queries), assembleFaces);
+  backend.evaluator->useVertexSamples(patchSet, std::move(queries), assembleFaces);
   out.assembleMs += step.elapsedMs();
 }
 
