@@ -452,7 +452,7 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
   std::vector<std::string> unmatched;
   double matchedWorst = 0;  // the largest distance / δ over the models that were matched
   const bool matching = matchOcct && !tesseraOnly && tesseraScale == 1.0;
-  size_t failedFaces = 0, faces = 0;
+  size_t failedFaces = 0, emptyFaces = 0, faces = 0;
   for (size_t f = 0; f < models.files.size(); ++f) {
     const CadFile& file = models.files[f];
     const std::string name = fs::path(file.path).filename().string();
@@ -489,8 +489,9 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
       const TesseraRun run = runTessera(file, tesseraScale * delta, backends[b], true);
       stages[b].add(run.convertMs, run.convertCpuMs, run.timings);
       if (b == 0) {
-        faces += run.import.model.faces.size() + run.import.failures.size();
+        faces += size_t(run.import.faces.Extent());
         failedFaces += run.import.failures.size();
+        emptyFaces += run.import.emptyFaces.size();
       }
       if (b == 0) lastTessera = tesseraTriangles(run.mesh, run.import);
       const Deviation d =
@@ -529,13 +530,13 @@ void runTolerance(bench::Report& report, const Models& models, double relative,
                    tessera[0].perModel.back()["triangles"].get<size_t>());
   }
 
-  char title[320];
+  char title[384];
   std::snprintf(title, sizeof title,
-                "FreeCAD IDF library, %zu models (%zu faces, %zu failed to convert), δ = %g of "
-                "each model's diagonal; times are sums over the models of each one's min "
-                "(median) of %d runs; distance = largest measured distance to the face's surface "
-                "/ δ",
-                models.files.size(), faces, failedFaces, relative, bench::kMinRuns);
+                "FreeCAD IDF library, %zu models (%zu faces, %zu of zero area, %zu failed to "
+                "convert), δ = %g of each model's diagonal; times are sums over the models of "
+                "each one's min (median) of %d runs; distance = largest measured distance to the "
+                "face's surface / δ",
+                models.files.size(), faces, emptyFaces, failedFaces, relative, bench::kMinRuns);
   char tableName[64];
   std::snprintf(tableName, sizeof tableName, "IDF %g", relative);
   bench::Table& table = report.table(tableName, "triangles", title);

@@ -26,7 +26,7 @@ struct PyCadMesh {
   py::array_t<uint32_t> triangle_faces;
   size_t faces = 0, faces_meshed = 0;
   double tolerance = 0, max_deviation = 0, max_parametric_deviation = 0;
-  std::vector<std::string> skipped_faces, warnings;
+  std::vector<std::string> skipped_faces, empty_faces, warnings;
 };
 
 PyCadMesh tessellateCad(tessera::Tessellator& tessellator, const py::object& path,
@@ -51,6 +51,7 @@ PyCadMesh tessellateCad(tessera::Tessellator& tessellator, const py::object& pat
   out.max_deviation = cad.maxDeviation;
   out.max_parametric_deviation = cad.maxParametricDeviation;
   out.skipped_faces = cad.skippedFaces;
+  out.empty_faces = cad.emptyFaces;
   out.warnings = cad.warnings;
   return out;
 }
@@ -71,6 +72,7 @@ PYBIND11_MODULE(_cad, m) {
       .def_readonly("max_deviation", &PyCadMesh::max_deviation, "measured distance to the faces")
       .def_readonly("max_parametric_deviation", &PyCadMesh::max_parametric_deviation)
       .def_readonly("skipped_faces", &PyCadMesh::skipped_faces)
+      .def_readonly("empty_faces", &PyCadMesh::empty_faces, "faces of zero area: no triangles")
       .def_readonly("warnings", &PyCadMesh::warnings)
       .def("__repr__", [](const PyCadMesh& c) {
         return "<tessera.CadMesh " + std::to_string(c.mesh.indices.shape(0)) + " triangles, " +

@@ -64,6 +64,7 @@ std::string importBytes(const CadImport& in) {
     b.add(e.degenerated), b.add(e.maxChordDeviation), b.add(e.tolerance);
   }
   for (const CadFaceFailure& f : in.failures) b.add(f.faceIndex), b.add(f.message);
+  for (const CadFaceFailure& f : in.emptyFaces) b.add(f.faceIndex), b.add(f.message);
   for (const CadEdgeWarning& w : in.warnings) b.add(w.faceIndex), b.add(w.edgeIndex), b.add(w.gap), b.add(w.message);
   b.add(in.maxChordDeviation), b.add(in.loopsReversed);
   return b.text;
@@ -78,7 +79,7 @@ std::string meshBytes(const TrimmedMesh& mesh) {
 
 }  // namespace
 
-// SOD_323: two faces fail (zero-area slivers), so failures keep their order among the
+// SOD_323: two faces are empty (zero-area slivers), so they keep their order among the
 // converted faces; CAP_50SGV_8_10: B-spline faces and edge warnings; RLF_7030: faces wrapping a
 // whole period; the assembly: one part at two places, faces that share their surfaces.
 TEST_CASE("cad: the import and its mesh are the same bit for bit on any number of threads", "[cad]") {
@@ -100,6 +101,7 @@ TEST_CASE("cad: the import and its mesh are the same bit for bit on any number o
       const CadImport parallel = toTrimmedModel(file, delta, threads);
       CHECK(parallel.model.faces.size() == serial.model.faces.size());
       CHECK(parallel.failures.size() == serial.failures.size());
+      CHECK(parallel.emptyFaces.size() == serial.emptyFaces.size());
       CHECK(parallel.warnings.size() == serial.warnings.size());
       CHECK(importBytes(parallel) == expected);
     }
@@ -111,10 +113,11 @@ TEST_CASE("cad: the import and its mesh are the same bit for bit on any number o
     const TrimmedMesh all = meshTrimmedModel(toTrimmedModel(file, delta, 0).model, options, backend);
     REQUIRE(one.mesh.triangleCount() > 0);
     CHECK(meshBytes(all) == meshBytes(one));
-    std::printf("cad threads: %s: %zu faces, %zu failed, %zu warnings, %zu triangles, the same "
-                "import and mesh on 1, 4 and all threads\n",
-                name, serial.model.faces.size(), serial.failures.size(), serial.warnings.size(),
-                one.mesh.triangleCount());
+    std::printf(
+        "cad threads: %s: %zu faces, %zu failed, %zu empty, %zu warnings, %zu triangles, "
+        "the same import and mesh on 1, 4 and all threads\n",
+        name, serial.model.faces.size(), serial.failures.size(), serial.emptyFaces.size(),
+        serial.warnings.size(), one.mesh.triangleCount());
   }
 }
 

@@ -68,7 +68,8 @@ void meshModel(const CadFile& file, const std::string& name, Backend& backend, M
   INFO(name);
   const double delta = defaultCadTolerance(file.shape);
   const CadImport import = toTrimmedModel(file, delta);
-  CHECK(import.failures.size() <= 2);  // SOD_323's two zero-area sliver faces (docs/cad.md)
+  CHECK(import.failures.empty());
+  CHECK(import.emptyFaces.size() <= 2);  // SOD_323's two zero-area sliver faces (docs/cad.md)
   TrimmedMeshOptions options;
   options.tolerance = delta;
   const TrimmedMesh mesh = meshTrimmedModel(import.model, options, backend);

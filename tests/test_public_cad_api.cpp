@@ -4,6 +4,10 @@
 #include <catch2/catch.hpp>
 
 #ifdef TESSERA_HAVE_CAD
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <TopoDS_Compound.hxx>
 #include <tessera/cad.h>
 
 #include <algorithm>
@@ -11,12 +15,14 @@
 #include <set>
 
 #include "api/tessellator_access.h"
+#include "cad_test_shapes.h"
 #include "cad/mesh_cad_file.h"
 #include "common/worker_pool.h"
 #include "gpu_test_context.h"
 #include "mesh/tessellate.h"
 #include "mesh_checks.h"
 #include "trim/trim_classifier.h"
+#include "scratch_dir.h"
 #include "vk/context.h"
 
 namespace {
@@ -115,6 +121,59 @@ TEST_CASE("public CAD API: errors are typed and name the file", "[cad][api]") {
   }
   REQUIRE_THROWS_AS(tessera::tessellateCadFile(tessellator, TESSERA_SOURCE_DIR "/data/teapot.bpt"),
                     tessera::InputError);  // not a CAD extension
+}
+
+// A face that cannot convert (degree 8) beside a box: an InputError naming the file and the face
+// by default; with skipBadFaces the box alone, the face named in skippedFaces.
+TEST_CASE("public CAD API: a face that fails is an error, or skipped and named", "[cad][api]") {
+  tessera::test::ScratchDir dir("cad_api");
+  const std::string path = (dir.path / "degree8_and_box.brep").string();
+  TopoDS_Compound both;
+  BRep_Builder builder;
+  builder.MakeCompound(both);
+  builder.Add(both, tessera::test::degreeEightFace());
+  builder.Add(both, BRepPrimAPI_MakeBox(1.0, 1.0, 1.0).Shape());
+  REQUIRE(BRepTools::Write(both, path.c_str()));
+  tessera::Tessellator tessellator({tessera::Device::Cpu});
+  try {
+    tessera::tessellateCadFile(tessellator, path);
+    FAIL("a model with a face that does not convert was meshed");
+  } catch (const tessera::InputError& e) {
+    INFO(e.what());
+    REQUIRE(e.file() == path);
+    REQUIRE(std::string(e.what()).find("1 of 7 faces could not be converted") != std::string::npos);
+    REQUIRE(std::string(e.what()).find("face 0: ") != std::string::npos);
+    REQUIRE(std::string(e.what()).find("CadOptions::skipBadFaces") != std::string::npos);
+  }
+  tessera::CadOptions skip;
+  skip.skipBadFaces = true;
+  const tessera::CadMesh box = tessera::tessellateCadFile(tessellator, path, skip);
+  REQUIRE(box.faces == 7);
+  REQUIRE(box.facesMeshed == 6);
+  REQUIRE(box.skippedFaces.size() == 1);
+  REQUIRE(box.skippedFaces[0].find(path + ": face 0: ") == 0);
+  REQUIRE(box.emptyFaces.empty());
+  REQUIRE(box.mesh.triangleCount() == 12);  // planes: two triangles a face
+  REQUIRE(std::set<uint32_t>(box.triangleFaces.begin(), box.triangleFaces.end()) ==
+          std::set<uint32_t>{1, 2, 3, 4, 5, 6});
+}
+
+// SOD_323 holds two zero-area slivers (wires back and forth along one line, 2.8e-7 wide): they
+// mesh as nothing, with no error and no flag, each named in emptyFaces.
+TEST_CASE("public CAD API: zero-area faces are empty, named, and no error", "[cad][api]") {
+  const std::string path = "/usr/share/freecad/Mod/Idf/Idflibs/SOD_323.stp";
+  tessera::Tessellator tessellator({tessera::Device::Cpu});
+  const tessera::CadMesh cad = tessera::tessellateCadFile(tessellator, path);
+  REQUIRE(cad.faces == 75);
+  REQUIRE(cad.skippedFaces.empty());
+  REQUIRE(cad.emptyFaces.size() == 2);
+  REQUIRE(cad.emptyFaces[0].find(path + ": face 15 (#1859 ADVANCED_FACE): zero-area face") == 0);
+  REQUIRE(cad.emptyFaces[1].find(path + ": face 26 (#2900 ADVANCED_FACE): zero-area face") == 0);
+  REQUIRE(cad.facesMeshed == 73);
+  const std::set<uint32_t> faces(cad.triangleFaces.begin(), cad.triangleFaces.end());
+  REQUIRE(faces.count(15) == 0);
+  REQUIRE(faces.count(26) == 0);
+  REQUIRE(cad.maxDeviation <= cad.tolerance);
 }
 
 TEST_CASE("public CAD API: Vulkan gives the CPU's mesh", "[cad][api][gpu]") {

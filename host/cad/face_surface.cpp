@@ -409,8 +409,9 @@ CadSurface convertFaceSurface(const Handle(Geom_Surface)& basis, double u0, doub
   if (basis->IsVPeriodic()) v1 = std::min(v1, v0 + basis->VPeriod());
   // A sliver whose wires run back and forth along one curve has no area to mesh.
   if (!(u1 - u0 > 1e-12 * std::max(1.0, std::abs(u0))) || !(v1 - v0 > 1e-12 * std::max(1.0, std::abs(v0))))
-    throw CadFaceError("zero-area face: its uv bounds are [" + cad_detail::numberText(u0) + ", " +
-                       cad_detail::numberText(u1) + "] × [" + cad_detail::numberText(v0) + ", " + cad_detail::numberText(v1) + "]");
+    throw CadZeroAreaFace("zero-area face: its uv bounds are [" + cad_detail::numberText(u0) +
+                          ", " + cad_detail::numberText(u1) + "] × [" + cad_detail::numberText(v0) +
+                          ", " + cad_detail::numberText(v1) + "]");
 
   const bool direct = route == ConversionRoute::Direct;
   if (direct && basis->IsKind(STANDARD_TYPE(Geom_Plane))) return planeSurface(result, u0, u1, v0, v1);

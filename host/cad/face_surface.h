@@ -32,6 +32,14 @@ class CadFaceError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A face whose loops span no width in u or in v: a sliver whose wires run back and forth along
+// one curve. It has no area, so its mesh is empty: toTrimmedModel lists it in
+// CadImport::emptyFaces, not in failures, and its edges stay with the faces beside it.
+class CadZeroAreaFace : public CadFaceError {
+ public:
+  using CadFaceError::CadFaceError;
+};
+
 // Not trim/face_surface.h's FaceSurface (the mesher's evaluator of a TrimmedFace): one name for
 // two classes in one namespace broke the one-definition rule (ASan saw one's destructor run on
 // the other).
@@ -63,9 +71,9 @@ Handle(Geom_Surface) faceBasisSurface(const TopoDS_Face& face);
 
 // `basis` (faceBasisSurface) over the face's uv bounds [u0, u1] × [v0, v1]: the extent of its
 // loops (clamped to a non-periodic surface's own bounds, at most one period in a periodic
-// direction). Throws CadFaceError (a zero-area face, a degree above 7, a surface GeomConvert
-// cannot convert exactly, a reparametrisation that does not check out) or lets
-// Standard_Failure through.
+// direction). Throws CadZeroAreaFace (a zero-area face), CadFaceError (a degree above 7, a
+// surface GeomConvert cannot convert exactly, a reparametrisation that does not check out) or
+// lets Standard_Failure through.
 // `route`: Direct builds planes, cylinders and cones without GeomConvert and cuts a NURBS whose
 // knots need no insertion into its blocks; GeomConvert takes GeomConvert and the knot insertion
 // for every surface, the reference the tests compare Direct with (the same bits).

@@ -34,6 +34,7 @@ CadMeshRun meshCadFile(const std::string& path, const ToleranceSpec& tolerance, 
   result.sharedPoints = import.model.sharedPoints.size();
   result.maxChordDeviation = import.maxChordDeviation;
   for (const CadFaceFailure& f : import.failures) result.failures.push_back(f.message);
+  for (const CadFaceFailure& f : import.emptyFaces) result.emptyFaces.push_back(f.message);
   for (const CadEdgeWarning& w : import.warnings) result.warnings.push_back(w.message);
   if (!import.failures.empty() && !skipBadFaces) {
     std::string reason = std::to_string(import.failures.size()) + " of " +

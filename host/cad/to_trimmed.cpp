@@ -55,7 +55,8 @@ struct FaceOutcome {
   std::array<double, 4> bounds{};
   std::vector<CadEdgeWarning> warnings;
   size_t loopsReversed = 0;
-  CadFaceFailure failure;  // when not converted
+  bool empty = false;      // of zero area: nothing to mesh (CadZeroAreaFace)
+  CadFaceFailure failure;  // when not converted: why
 };
 
 // A wire's edge with its index in CadImport::edges (0-based) and its first and last shared
@@ -317,12 +318,16 @@ FaceOutcome faceOutcome(const CadFile& file, const CadImport& in, int k, const i
   if (!entity.empty()) label += " (", label += entity, label += ')';
   FaceOutcome outcome;
   std::string reason;
+  bool empty = false;
   try {
     outcome.face = convertFace(face, index, label, file.path, in, walked, outcome);
     outcome.face.faceIndex = index;
     outcome.face.label = std::move(label);
     outcome.converted = true;
     return outcome;
+  } catch (const CadZeroAreaFace& e) {
+    reason = e.what();
+    empty = true;
   } catch (const CadFaceError& e) {
     reason = e.what();
   } catch (const Standard_Failure& e) {
@@ -330,7 +335,8 @@ FaceOutcome faceOutcome(const CadFile& file, const CadImport& in, int k, const i
   } catch (const std::exception& e) {
     reason = e.what();
   }
-  outcome = FaceOutcome();  // a failed face's warnings go with its failure
+  outcome = FaceOutcome();  // a failed (or empty) face's warnings go with it
+  outcome.empty = empty;
   outcome.failure = {index, label, reason, file.path + ": " + label + ": " + reason};
   return outcome;
 }
@@ -517,7 +523,7 @@ void addOutcomes(std::vector<FaceOutcome>& outcomes, CadImport& in) {
   in.uvBounds.reserve(outcomes.size());
   for (FaceOutcome& outcome : outcomes) {
     if (!outcome.converted) {
-      in.failures.push_back(std::move(outcome.failure));
+      (outcome.empty ? in.emptyFaces : in.failures).push_back(std::move(outcome.failure));
       continue;
     }
     in.model.faces.push_back(std::move(outcome.face));

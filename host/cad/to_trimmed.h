@@ -47,6 +47,10 @@ struct MovableShapeMap : TopTools_IndexedMapOfShape {
 struct CadImport {
   TrimmedModel model;                  // the faces that converted
   std::vector<CadFaceFailure> failures;  // the faces that did not, never dropped silently
+  // Faces of zero area (CadZeroAreaFace: a sliver whose wires run back and forth along one
+  // curve): nothing to mesh, so neither converted nor failed; named here, never dropped
+  // silently. Their edges are discretised as every edge and used by the faces beside them.
+  std::vector<CadFaceFailure> emptyFaces;
   std::vector<CadEdgeWarning> warnings;  // edges off their faces' surfaces beyond tolerance
   // The B-rep's maps (index k ↔ OCCT's index k + 1): faces in TrimmedFace::faceIndex order.
   MovableShapeMap faces, edges, vertices;
@@ -65,9 +69,9 @@ struct CadImport {
 double defaultCadTolerance(const TopoDS_Shape& shape);
 
 // Converts every face; a face that fails is listed in failures (with the file's path and the
-// face's index and entity) and the rest go on. Throws ArgumentError unless delta > 0.
-// Edges, then faces, are converted on `threads` threads (0: all cores, as
-// TrimmedMeshOptions::threads); the import is the same, bit for bit, whatever the count.
+// face's index and entity), a face of zero area in emptyFaces, and the rest go on. Throws
+// ArgumentError unless delta > 0. Edges, then faces, are converted on `threads` threads (0: all
+// cores, as TrimmedMeshOptions::threads); the import is the same, bit for bit, whatever the count.
 CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads = 0);
 
 }  // namespace tessera

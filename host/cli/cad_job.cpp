@@ -72,6 +72,7 @@ nlohmann::json cadStatsToJson(const CadResult& r) {
           {"faces", r.faces},
           {"facesMeshed", r.mesh.faces.size()},
           {"failedFaces", r.failures},
+          {"emptyFaces", r.emptyFaces},
           {"edgeWarnings", r.warnings},
           {"faceWarnings", r.faceWarnings},
           {"edges", r.edges},
@@ -87,8 +88,10 @@ nlohmann::json cadStatsToJson(const CadResult& r) {
 
 void printCadSummary(FILE* to, const std::string& input, const CadResult& r,
                      const std::string& toleranceText, const ChosenBackend& chosen) {
-  std::fprintf(to, "%s: %zu faces (%zu meshed), %zu edges, tolerance %.4g (%s), backend %s%s%s\n",
-               input.c_str(), r.faces, r.mesh.faces.size(), r.edges, r.delta,
+  std::string empty;
+  if (!r.emptyFaces.empty()) empty = ", " + std::to_string(r.emptyFaces.size()) + " of zero area";
+  std::fprintf(to, "%s: %zu faces (%zu meshed%s), %zu edges, tolerance %.4g (%s), backend %s%s%s\n",
+               input.c_str(), r.faces, r.mesh.faces.size(), empty.c_str(), r.edges, r.delta,
                toleranceText.c_str(), chosen.backend.name.c_str(), chosen.context ? " on " : "",
                chosen.deviceName().c_str());
   std::fprintf(to,
@@ -100,6 +103,8 @@ void printCadSummary(FILE* to, const std::string& input, const CadResult& r,
                largest(r, &TrimmedFaceStats::maxParametricDeviation), r.maxChordDeviation,
                largest(r, &TrimmedFaceStats::maxTrimPointOffset));
   for (const std::string& f : r.failures) std::fprintf(to, "skipped: %s\n", f.c_str());
+  for (const std::string& f : r.emptyFaces)
+    std::fprintf(to, "empty: %s (no triangles)\n", f.c_str());
   for (const std::string& w : r.warnings) std::fprintf(to, "warning: %s\n", w.c_str());
   for (const std::string& w : r.faceWarnings) std::fprintf(to, "warning: %s\n", w.c_str());
   std::fprintf(to, "time: read %.1f ms, faces and edges %.1f ms, mesh %.1f ms\n", r.readMs,
@@ -196,10 +201,15 @@ int describeCadModel(const std::string& path) {
   const CadFile file = readCadFile(path);
   const double delta = defaultCadTolerance(file.shape);
   const CadImport in = toTrimmedModel(file, delta);
-  std::printf("%s: %d faces (%zu converted, %zu failed), %d edges, %d vertices, %zu shared points at δ %g\n",
-              path.c_str(), in.faces.Extent(), in.model.faces.size(), in.failures.size(),
-              in.edges.Extent(), in.vertices.Extent(), in.model.sharedPoints.size(), delta);
+  std::printf(
+      "%s: %d faces (%zu converted, %zu of zero area, %zu failed), %d edges, %d vertices, "
+      "%zu shared points at δ %g\n",
+      path.c_str(), in.faces.Extent(), in.model.faces.size(), in.emptyFaces.size(),
+      in.failures.size(), in.edges.Extent(), in.vertices.Extent(), in.model.sharedPoints.size(),
+      delta);
   for (const auto& failure : in.failures) std::printf("failed: %s\n", failure.message.c_str());
+  for (const auto& face : in.emptyFaces)
+    std::printf("empty: %s (no triangles)\n", face.message.c_str());
   for (const auto& warning : in.warnings) std::printf("warning: %s\n", warning.message.c_str());
   return kExitOk;
 }

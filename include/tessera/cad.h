@@ -33,13 +33,18 @@ struct CadMesh {
   std::vector<uint32_t> triangleFaces;  // per triangle: its face's index in the model (faces
                                         // in Open CASCADE's TopExp order, from 0)
   size_t faces = 0;                     // faces in the model
-  size_t facesMeshed = 0;               // those that converted and were meshed
+  size_t facesMeshed = 0;               // those that converted and were meshed (not the
+                                        // skipped faces nor the empty ones)
   double tolerance = 0;                 // δ used, model units
   // Measured over every triangle: the largest distance to its face's surface and the largest
   // parametric deviation (against the surface at the same mix of uv). Within δ plus the
   // file's own edge gaps (warnings), docs/trimmed_faces.md.
   double maxDeviation = 0, maxParametricDeviation = 0;
   std::vector<std::string> skippedFaces;  // with skipBadFaces: "<file>: face 3 (#345 ...): why"
+  // Faces of zero area (a sliver whose wires run back and forth along one curve, as some
+  // exporters write): nothing to mesh, so no triangles and no error; named here, one message
+  // each ("<file>: face 15 (#1859 ADVANCED_FACE): zero-area face: its uv bounds are ...").
+  std::vector<std::string> emptyFaces;
   std::vector<std::string> warnings;      // edges off their faces beyond the file's tolerance,
                                           // faces whose refinement ended over δ
 };

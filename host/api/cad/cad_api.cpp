@@ -47,6 +47,7 @@ CadMesh tessellateCadFile(Tessellator& tessellator, const std::string& path,
     out.maxParametricDeviation = std::max(out.maxParametricDeviation, f.maxParametricDeviation);
   }
   out.skippedFaces = run.failures;
+  out.emptyFaces = run.emptyFaces;
   out.warnings = run.warnings;
   out.warnings.insert(out.warnings.end(), run.faceWarnings.begin(), run.faceWarnings.end());
   return out;
