@@ -72,6 +72,15 @@ if(TESSERA_HAVE_CAD)
   tessera_limit_case("a STEP file over --max-input-size is refused before Open CASCADE reads it" 4
     "bspline_200.step: the input is larger than the input-size limit of 100 bytes"
     info ${BIG_DIR}/bspline_200.step --max-input-size 100)
+  # A tolerance under 10⁻⁹ of the model's diagonal is refused at once (exit 2, naming the
+  # smallest it takes); at that smallest, a small budget stops the edges' samples (exit 4).
+  tessera_limit_case("a CAD tolerance under 1e-9 of the model's diagonal is refused" 2
+    "SOT23.stp: the tolerance 1e-14 is below the smallest a CAD model takes, 1e-9 of its diagonal \\([0-9.e-]+ for [0-9.]+\\)"
+    tessellate /usr/share/freecad/Mod/Idf/Idflibs/SOT23.stp --tolerance 1e-14 --backend cpu)
+  tessera_limit_case("the edges of a CAD model at its smallest tolerance stop at the budget" 4
+    "the discretisation of the B-rep edges at δ = [0-9.e-]+ needs about .*${budget_text}"
+    tessellate /usr/share/freecad/Mod/Idf/Idflibs/CAP_50SGV_8_10.stp --tolerance 0.0000001%
+    --backend cpu --memory-budget 64M)
 endif()
 
 # Bad sizes are a bad command line (exit 1), like any other bad option value.

@@ -113,6 +113,12 @@ TEST_CASE("public CAD API: errors are typed and name the file", "[cad][api]") {
   bad.tolerance = 0;
   bad.relativeTolerance = 2;
   REQUIRE_THROWS_AS(tessera::tessellateCadFile(tessellator, kSot23, bad), tessera::ArgumentError);
+  bad.relativeTolerance = 1e-10;  // under the smallest a CAD model takes (10⁻⁹ of its diagonal)
+  REQUIRE_THROWS_WITH(tessera::tessellateCadFile(tessellator, kSot23, bad),
+                      Catch::Contains("below the smallest a CAD model takes"));
+  bad.relativeTolerance = 0.001;
+  bad.tolerance = 1e-14;
+  REQUIRE_THROWS_AS(tessera::tessellateCadFile(tessellator, kSot23, bad), tessera::ArgumentError);
   try {
     tessera::tessellateCadFile(tessellator, "no_such_model.step");
     FAIL("a missing file was read");

@@ -7,14 +7,24 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Vertex.hxx>
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstring>
+
+#include "cad/detail/number_text.h"
+#include "common/memory_budget.h"
 
 namespace tessera {
 namespace {
 
 constexpr int kChecksPerSegment = 15;
 constexpr int kMaxDepth = 24;
+// A bisection counts its samples into the budget in steps of this many (an atomic add each).
+constexpr size_t kBudgetStride = 4096;
+// Below this many ulps of the chord's ends' largest coordinate a measured deviation is the
+// points' rounding (OCCT's evaluation, the distance's arithmetic), not the curve: no split can
+// bring it under δ.
+constexpr double kRoundingUlps = 1024.0;
 
 glm::dvec3 toGlm(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 
@@ -51,25 +61,32 @@ double measuredDeviation(const BRepAdaptor_Curve& curve, double a, double b, glm
   return worst;
 }
 
-// Halves [a, b] while the curve lies farther than delta from its chord; each kept segment's end
-// and its point are appended. Every point is evaluated once, at its own parameter: the ends come
-// from the parent, the middle from the parent's middle check where the parameters agree.
+double roundingFloor(glm::dvec3 pa, glm::dvec3 pb) {
+  const glm::dvec3 reach = glm::max(glm::abs(pa), glm::abs(pb));
+  return kRoundingUlps * DBL_EPSILON * std::max({reach.x, reach.y, reach.z});
+}
+
+// Halves [a, b] while the curve lies farther than delta from its chord (and farther than the
+// points' rounding); each kept segment's end and its point are appended. Every point is
+// evaluated once, at its own parameter: the ends come from the parent, the middle from the
+// parent's middle check where the parameters agree.
 void refine(const BRepAdaptor_Curve& curve, double a, double b, glm::dvec3 pa, glm::dvec3 pb,
             double delta, int depth, std::vector<double>& params, std::vector<glm::dvec3>& points,
-            double& worst) {
+            double& worst, EdgeSampleBudget& budget) {
   double middleT = 0.0;
   glm::dvec3 middle(0.0);
   const double deviation = measuredDeviation(curve, a, b, pa, pb, middleT, middle);
-  if (deviation > delta && depth < kMaxDepth) {
+  if (deviation > delta && depth < kMaxDepth && deviation > roundingFloor(pa, pb)) {
     const double m = 0.5 * (a + b);
     const glm::dvec3 pm = sameBits(m, middleT) ? middle : pointAt(curve, m);
-    refine(curve, a, m, pa, pm, delta, depth + 1, params, points, worst);
-    refine(curve, m, b, pm, pb, delta, depth + 1, params, points, worst);
+    refine(curve, a, m, pa, pm, delta, depth + 1, params, points, worst, budget);
+    refine(curve, m, b, pm, pb, delta, depth + 1, params, points, worst, budget);
     return;
   }
   worst = std::max(worst, deviation);
   params.push_back(b);
   points.push_back(pb);
+  if (params.size() % kBudgetStride == 0) budget.add(kBudgetStride);
 }
 
 uint32_t vertexId(const TopoDS_Vertex& v, const TopTools_IndexedMapOfShape& vertices) {
@@ -78,14 +95,26 @@ uint32_t vertexId(const TopoDS_Vertex& v, const TopTools_IndexedMapOfShape& vert
 
 }  // namespace
 
-EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta,
-                           const TopTools_IndexedMapOfShape& vertices) {
-  TopoDS_Vertex v0, v1;  // FORWARD: v0 at `first`, v1 at `last`
-  TopExp::Vertices(TopoDS::Edge(shape.Oriented(TopAbs_FORWARD)), v0, v1);
-  return discretiseEdge(shape, delta, vertexId(v0, vertices), vertexId(v1, vertices));
+void EdgeSampleBudget::add(double samples) {
+  // Saturating: a circle's count at δ → 0 is infinite.
+  const uint64_t count = samples < 1e18 ? uint64_t(samples) : uint64_t(1e18);
+  const uint64_t total = samples_.fetch_add(count, std::memory_order_relaxed) + count;
+  requireWithinMemoryBudget(
+      saturatingMultiply(total, kBytesPerSample),
+      "the discretisation of the B-rep edges at δ = " + cad_detail::numberText(delta_));
 }
 
-EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta, uint32_t id0, uint32_t id1) {
+EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta,
+                           const TopTools_IndexedMapOfShape& vertices, EdgeSampleBudget* budget) {
+  TopoDS_Vertex v0, v1;  // FORWARD: v0 at `first`, v1 at `last`
+  TopExp::Vertices(TopoDS::Edge(shape.Oriented(TopAbs_FORWARD)), v0, v1);
+  return discretiseEdge(shape, delta, vertexId(v0, vertices), vertexId(v1, vertices), budget);
+}
+
+EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta, uint32_t id0, uint32_t id1,
+                           EdgeSampleBudget* sharedBudget) {
+  EdgeSampleBudget ownBudget(delta);  // this edge alone, where the caller shares none
+  EdgeSampleBudget& budget = sharedBudget ? *sharedBudget : ownBudget;
   const TopoDS_Edge edge = TopoDS::Edge(shape.Oriented(TopAbs_FORWARD));
   EdgeSamples samples;
   double first, last;
@@ -111,11 +140,14 @@ EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta, uint32_t id0
       // within δ (at least 4, as below), not a power of two of them.
       const double radius = curve.Circle().Radius();
       const double widest = radius > delta ? 2.0 * std::acos(1.0 - delta / radius) : last - first;
-      int count = std::max(4, int(std::ceil((last - first) / widest)));
+      const double needed = std::max(4.0, std::ceil((last - first) / widest));  // inf at widest 0
+      budget.add(needed + 1.0);         // before the samples are made; throws past the budget
+      int64_t count = int64_t(needed);  // the budget holds it far below 2⁶³
       while (circleSagitta(radius, first, first + (last - first) / count) > delta) ++count;  // rounding
       samples.params.reserve(size_t(count) + 1);
       samples.params.push_back(first);
-      for (int k = 1; k <= count; ++k) samples.params.push_back(first + (last - first) * k / count);
+      for (int64_t k = 1; k <= count; ++k)
+        samples.params.push_back(first + (last - first) * k / count);
       samples.maxChordDeviation = circleSagitta(radius, first, first + (last - first) / count);
     }
     // The ends at the range's own ends (the last parameter can be an ulp from `last`).
@@ -134,11 +166,13 @@ EdgeSamples discretiseEdge(const TopoDS_Shape& shape, double delta, uint32_t id0
     for (int k = 0; k < 4; ++k) {
       const double a = first + (last - first) * k / 4.0, b = first + (last - first) * (k + 1) / 4.0;
       const glm::dvec3 next = pointAt(curve, b);
-      refine(curve, a, b, previous, next, delta, 0, params, points, samples.maxChordDeviation);
+      refine(curve, a, b, previous, next, delta, 0, params, points, samples.maxChordDeviation,
+             budget);
       previous = next;
     }
     // The end at the range's own end (the last parameter can be an ulp from `last`).
     if (!sameBits(params.back(), last)) points.back() = pointAt(curve, last);
+    budget.add(double(params.size() % kBudgetStride));
     samples.params.assign(params.begin(), params.end());
     samples.curvePoints.assign(points.begin(), points.end());
   }

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "cad/cad_file.h"
+#include "cad/detail/number_text.h"
 #include "cad/to_trimmed.h"
 #include "common/stopwatch.h"
 #include "tessera/errors.h"
@@ -22,6 +23,13 @@ CadMeshRun meshCadFile(const std::string& path, const ToleranceSpec& tolerance, 
   // defaultCadTolerance is 0.1% of the diagonal: the diagonal itself, for relative tolerances.
   result.diagonal = defaultCadTolerance(file.shape) / 1e-3;
   result.delta = tolerance.relative ? tolerance.value * result.diagonal : tolerance.value;
+  // (A hair of slack: "0.0000001%" parses to a hair under 10⁻⁹.)
+  if (result.delta < (1 - 1e-9) * kSmallestRelativeCadTolerance * result.diagonal)
+    throw std::invalid_argument(
+        path + ": the tolerance " + cad_detail::numberText(result.delta) +
+        " is below the smallest a CAD model takes, 1e-9 of its diagonal (" +
+        cad_detail::numberText(kSmallestRelativeCadTolerance * result.diagonal) + " for " +
+        cad_detail::numberText(result.diagonal) + ")");
   TrimmedMeshOptions options;
   options.tolerance = result.delta;
   options.threads = threads;

@@ -28,8 +28,16 @@ struct CadMeshRun {
   double readMs = 0, importMs = 0, meshMs = 0;
 };
 
+// The smallest δ a CAD model takes, as a share of its diagonal. Below it the edges' measured
+// chords come within about 10⁴ ulps of their points' rounding, and a run only ends at the memory
+// or node budget after many seconds to minutes (CAP_50SGV_8_10.stp, diagonal 16.7, on 2 cores:
+// 10⁻⁹ of it exit 4 after 6 s, 10⁻¹⁰ after 33 s, 10⁻¹¹ still running after 100 s; at 10⁻¹⁴
+// in model units it once filled 2 GiB in 8 s and went on).
+inline constexpr double kSmallestRelativeCadTolerance = 1e-9;
+
 // Reads and meshes `path` at `tolerance` (model units, or a share of the model's diagonal; not
-// pixels: std::invalid_argument) on `backend`, its trees' trim pass on `trim` (null: the CPU
+// pixels, nor under kSmallestRelativeCadTolerance of the diagonal: std::invalid_argument naming
+// the file and the smallest δ it takes) on `backend`, its trees' trim pass on `trim` (null: the CPU
 // mirror). A face that does not convert is an InputError naming the file and every failed
 // face, unless skipBadFaces (then they are listed in CadMeshRun::failures and the others
 // meshed); `skipHint` names how the caller asks for that ("--skip-bad-faces"). `threads`: the

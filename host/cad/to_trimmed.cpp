@@ -563,6 +563,7 @@ CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads) {
   std::vector<EdgeEnds> ends;  // per edge, likewise
   bool fromWalks = false;
   SharedPoints points;
+  EdgeSampleBudget edgeBudget(delta);  // all edges' samples against the memory budget
   std::vector<FaceOutcome> outcomes;
   const std::vector<ParallelPhase> phases = {
       // The faces' part of the shape's walk; then the maps, in the walk's order.
@@ -580,9 +581,10 @@ CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads) {
       {[&] { return in.edgeSamples.size(); }, 4,
        [&](size_t e) {
          const TopoDS_Shape& edge = in.edges(int(e) + 1);
-         in.edgeSamples[e] = fromWalks && ends[e].known
-                                 ? discretiseEdge(edge, delta, ends[e].firstId, ends[e].lastId)
-                                 : discretiseEdge(edge, delta, in.vertices);
+         in.edgeSamples[e] =
+             fromWalks && ends[e].known
+                 ? discretiseEdge(edge, delta, ends[e].firstId, ends[e].lastId, &edgeBudget)
+                 : discretiseEdge(edge, delta, in.vertices, &edgeBudget);
        },
        [&] {
          for (EdgeSamples& samples : in.edgeSamples) {

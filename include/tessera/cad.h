@@ -17,6 +17,9 @@ struct CadOptions {
   double tolerance = 0;              // δ in model units (> 0); 0: relativeTolerance below
   double relativeTolerance = 0.001;  // δ as this share of the model's bounding-box diagonal
                                      // when tolerance is 0 (0.1%, the CLI's default); (0, 1]
+  // Either way δ must be at least 10⁻⁹ of the model's diagonal (ArgumentError naming the
+  // smallest δ the model takes): below it the edges' chords are measured within their own
+  // rounding, and the run could only end at the memory or node budget after minutes.
   // Mesh the faces that convert when some do not (each named in CadMesh::skippedFaces); off,
   // such a model is an InputError naming the file and every failed face.
   bool skipBadFaces = false;
