@@ -1,4 +1,7 @@
 // Readers: STEPControl_Reader, IGESControl_Reader (both XSControl_Reader) and BRepTools::Read.
+// OCC_CATCH_SIGNALS below turns a crash inside Open CASCADE into its exception (as OCCT itself
+// is built): defined before its headers.
+#define OCC_CONVERT_SIGNALS
 #include "cad/cad_file.h"
 
 #include <BRepTools.hxx>
@@ -10,6 +13,7 @@
 #include <Message_Messenger.hxx>
 #include <STEPControl_Reader.hxx>
 #include <StepData_StepModel.hxx>
+#include <Standard_ErrorHandler.hxx>
 #include <Standard_Failure.hxx>
 #include <TransferBRep.hxx>
 #include <Transfer_TransientProcess.hxx>
@@ -21,6 +25,7 @@
 #include <fstream>
 #include <system_error>
 
+#include "cad/exchange_checks.h"
 #include "common/input_size.h"
 #include "tessera/errors.h"
 
@@ -97,14 +102,18 @@ class OcctMessagesSetAside {
 };
 
 // Both exchange readers: read, transfer every root, keep all roots as one shape (a compound
-// of located instances for an assembly).
+// of located instances for an assembly). An entity that does not load or does not transfer is
+// an error naming it (exchange_checks.h), never a crash or a face gone without a word.
 void readExchange(XSControl_Reader& reader, CadFile& file, const char* format) {
   const OcctMessagesSetAside quiet;
   IFSelect_ReturnStatus status = reader.ReadFile(file.path.c_str());
   if (status != IFSelect_RetDone)
     throw InputError(InputErrorKind::Syntax, file.path, 0,
                      std::string("the ") + format + " reader could not read it: " + statusName(status));
-  if (reader.TransferRoots() == 0)
+  requireModelLoaded(reader, file.path, format);
+  const int transferred = reader.TransferRoots();
+  requireTransferComplete(reader, file.path, format);
+  if (transferred == 0)
     throw InputError(InputErrorKind::Topology, file.path, 0,
                      std::string("the ") + format + " file holds no shape that transfers");
   file.shape = reader.OneShape();
@@ -125,7 +134,9 @@ CadFile readCadFile(const std::string& path) {
     throw InputError(InputErrorKind::Io, path, 0, "not a regular file (CAD files are read by path)");
   requireInputWithinLimit(std::filesystem::file_size(path, ec), path);
   const std::string ext = lowerExtension(path);
+  const OcctSignalsAsExceptions signals;  // for every reader: OCCT's crashes as its exceptions
   try {
+    OCC_CATCH_SIGNALS;  // a crash outside OCCT's own handlers: its exception, caught below
     if (ext == "step" || ext == "stp") {
       STEPControl_Reader reader;
       readExchange(reader, file, "STEP");

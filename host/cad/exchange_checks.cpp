@@ -1,0 +1,110 @@
+#include "cad/exchange_checks.h"
+
+#include <Interface_Check.hxx>
+#include <Interface_CheckIterator.hxx>
+#include <Interface_InterfaceModel.hxx>
+#include <OSD.hxx>
+#include <StepData_StepModel.hxx>
+#include <TCollection_HAsciiString.hxx>
+#include <XSControl_TransferReader.hxx>
+#include <XSControl_WorkSession.hxx>
+#include <algorithm>
+#include <csignal>
+#include <iterator>
+#include <mutex>
+#include <sstream>
+#include <vector>
+
+#include "tessera/errors.h"
+
+namespace tessera {
+namespace {
+
+// "entity #1089 ADVANCED_FACE" in STEP (its own label), "entity 2 (128 0 BSplineSurface)" in
+// IGES (its directory entry's number, type, form and name).
+std::string entityName(const Handle(Interface_InterfaceModel) & model, int number) {
+  if (model.IsNull() || number <= 0 || number > model->NbEntities()) return "the file";
+  const Handle(Standard_Transient)& entity = model->Value(number);
+  std::string type;
+  std::istringstream words(model->TypeName(entity, Standard_False));
+  for (std::string word; words >> word;) type += (type.empty() ? "" : " ") + word;
+  const auto step = Handle(StepData_StepModel)::DownCast(model);
+  if (!step.IsNull()) return "entity #" + std::to_string(step->IdentLabel(entity)) + " " + type;
+  return "entity " + std::to_string(number) + " (" + type + ")";
+}
+
+// Throws when `checks` hold a fail: "<format> file: entity #1089 ADVANCED_FACE <verb>: <its
+// messages>; ... (and N more entities)".
+void requireNoFail(const Interface_CheckIterator& checks,
+                   const Handle(Interface_InterfaceModel) & model, const std::string& path,
+                   const char* format, const char* verb) {
+  std::vector<std::string> entities, wholeFile;
+  for (checks.Start(); checks.More(); checks.Next()) {
+    const Handle(Interface_Check)& check = checks.Value();
+    if (check.IsNull() || !check->HasFailed()) continue;
+    std::string text = entityName(model, checks.Number()) + " " + verb;
+    std::vector<std::string> messages;  // OCCT can say one thing twice
+    for (int k = 1; k <= check->NbFails(); ++k)
+      if (std::find(messages.begin(), messages.end(), check->CFail(k)) == messages.end())
+        messages.push_back(check->CFail(k));
+    for (size_t k = 0; k < messages.size(); ++k) text += (k ? ", " : ": ") + messages[k];
+    (checks.Number() > 0 ? entities : wholeFile).push_back(std::move(text));
+  }
+  // A fail of the whole file (number 0: "Unresolved Reference ...") repeats what its
+  // entities' fails say; it is told only where no entity has one.
+  const std::vector<std::string>& told = entities.empty() ? wholeFile : entities;
+  if (told.empty()) return;
+  std::string reason;
+  for (size_t k = 0; k < told.size() && k < 3; ++k) reason += (k ? "; " : "") + told[k];
+  if (told.size() > 3) reason += " (and " + std::to_string(told.size() - 3) + " more entities)";
+  throw InputError(InputErrorKind::Syntax, path, 0,
+                   std::string("the ") + format + " file is damaged: " + reason);
+}
+
+std::mutex signalsLock;
+int signalsGuards = 0;
+// The crashes OCCT turns into exceptions while a guard lives; every other signal OSD::SetSignal
+// takes (SIGINT and the rest: the CLI's cleanup of half-written outputs) is given back at once.
+constexpr int kCrashSignals[] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL};
+constexpr int kOtherSignals[] = {SIGHUP,  SIGINT,  SIGQUIT, SIGTERM, SIGABRT, SIGTRAP, SIGSYS,
+                                 SIGPIPE, SIGALRM, SIGUSR1, SIGUSR2, SIGXCPU, SIGXFSZ};
+struct sigaction savedCrashActions[std::size(kCrashSignals)];
+
+}  // namespace
+
+void requireModelLoaded(XSControl_Reader& reader, const std::string& path, const char* format) {
+  const Handle(XSControl_WorkSession)& session = reader.WS();
+  if (session.IsNull()) return;
+  requireNoFail(session->ModelCheckList(), session->Model(), path, format, "does not load");
+}
+
+void requireTransferComplete(XSControl_Reader& reader, const std::string& path,
+                             const char* format) {
+  const Handle(XSControl_WorkSession)& session = reader.WS();
+  if (session.IsNull() || session->TransferReader().IsNull()) return;
+  requireNoFail(session->TransferReader()->LastCheckList(), session->Model(), path, format,
+                "did not transfer");
+}
+
+OcctSignalsAsExceptions::OcctSignalsAsExceptions() {
+  const std::lock_guard<std::mutex> lock(signalsLock);
+  if (signalsGuards++ > 0) return;
+  struct sigaction others[std::size(kOtherSignals)];
+  for (size_t k = 0; k < std::size(kCrashSignals); ++k)
+    sigaction(kCrashSignals[k], nullptr, &savedCrashActions[k]);
+  for (size_t k = 0; k < std::size(kOtherSignals); ++k)
+    sigaction(kOtherSignals[k], nullptr, &others[k]);
+  // Floating-point traps off: OCCT's arithmetic may divide by zero on purpose.
+  OSD::SetSignal(OSD_SignalMode_Set, Standard_False);
+  for (size_t k = 0; k < std::size(kOtherSignals); ++k)
+    sigaction(kOtherSignals[k], &others[k], nullptr);
+}
+
+OcctSignalsAsExceptions::~OcctSignalsAsExceptions() {
+  const std::lock_guard<std::mutex> lock(signalsLock);
+  if (--signalsGuards > 0) return;
+  for (size_t k = 0; k < std::size(kCrashSignals); ++k)
+    sigaction(kCrashSignals[k], &savedCrashActions[k], nullptr);
+}
+
+}  // namespace tessera

@@ -1,0 +1,36 @@
+// What Open CASCADE's STEP and IGES readers say went wrong, as Tessera's errors (docs/cad.md,
+// "What fails, and how it is told"). Two kinds of damage used to pass unseen:
+// - an entity that does not load (a reference to an entity that is not there, or of the wrong
+//   type): OCCT's transfer then dereferenced a null handle and the process died (SIGSEGV), or
+//   dropped a face or an edge without a word;
+// - an entity whose transfer raised (OCCT catches it and goes on): its faces are missing.
+// Both are now an InputError naming the file and the entities, before any mesh is made.
+#pragma once
+#include <XSControl_Reader.hxx>
+#include <string>
+
+namespace tessera {
+
+// Throws InputError naming `path` and up to three entities with their messages (and how many
+// more) when the loaded model has an entity that failed to load.
+void requireModelLoaded(XSControl_Reader& reader, const std::string& path, const char* format);
+
+// Throws InputError likewise when an entity's transfer failed (its shapes are then missing).
+void requireTransferComplete(XSControl_Reader& reader, const std::string& path, const char* format);
+
+// While one lives, a crash (SIGSEGV, SIGBUS, SIGFPE, SIGILL) inside Open CASCADE's code becomes
+// its exception (OSD_SIGSEGV, ...), which its own transfer catches per entity ("Entity was not
+// translated") and readCadFile's OCC_CATCH_SIGNALS catches elsewhere: OCCT's handlers for those
+// four (OSD::SetSignal) are installed on the first construction and the process's own put back
+// when the last one goes, so an embedding program keeps its handlers outside the read; the
+// other signals SetSignal takes (SIGINT, SIGTERM, ...) are given back at once. Process-wide, as
+// signal handlers are: guards on several threads share one installation.
+class OcctSignalsAsExceptions {
+ public:
+  OcctSignalsAsExceptions();
+  ~OcctSignalsAsExceptions();
+  OcctSignalsAsExceptions(const OcctSignalsAsExceptions&) = delete;
+  OcctSignalsAsExceptions& operator=(const OcctSignalsAsExceptions&) = delete;
+};
+
+}  // namespace tessera
