@@ -74,8 +74,19 @@ struct sigaction savedCrashActions[std::size(kCrashSignals)];
 
 void requireModelLoaded(XSControl_Reader& reader, const std::string& path, const char* format) {
   const Handle(XSControl_WorkSession)& session = reader.WS();
-  if (session.IsNull()) return;
-  requireNoFail(session->ModelCheckList(), session->Model(), path, format, "does not load");
+  if (session.IsNull() || session->Model().IsNull()) return;
+  // The checks the reader recorded as it loaded (syntactic ones), as ModelCheckList() gives
+  // them but without its semantic pass over the model: 0.2 ms against 36 ms on
+  // TSM_104_01_L_DV_A.stp, whose read (418 ms) it made 9% slower.
+  const Handle(Interface_InterfaceModel)& model = session->Model();
+  Interface_CheckIterator loaded;
+  if (model->GlobalCheck(Standard_True)->HasFailed())
+    loaded.Add(model->GlobalCheck(Standard_True), 0);
+  for (int k = 1; k <= model->NbEntities(); ++k) {
+    const Handle(Interface_Check)& check = model->Check(k, Standard_True);
+    if (!check.IsNull() && check->HasFailed()) loaded.Add(check, k);
+  }
+  requireNoFail(loaded, model, path, format, "does not load");
 }
 
 void requireTransferComplete(XSControl_Reader& reader, const std::string& path,
