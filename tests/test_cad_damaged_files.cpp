@@ -13,6 +13,8 @@
 #include <string>
 
 #include "cad/cad_file.h"
+#include "cad/mesh_cad_file.h"
+#include "mesh/tessellate.h"
 #include "scratch_dir.h"
 #include "tessera/errors.h"
 
@@ -114,6 +116,28 @@ TEST_CASE("cad: an IGES surface that does not load is refused naming it, not dro
   requireRefused(damagedCopy(dir, "SOT23.igs", "128,1,1,1,1,0,0,1,0,0,-4.163336342E-17",
                              "128,1,1,9,1,0,0,1,0,0,-4.163336342E-17"),
                  "the IGES file is damaged: entity 2 (128 0 BSplineSurface) does not load: ");
+}
+
+TEST_CASE("cad: a model whose bounding box is not finite is refused naming the file", "[cad]") {
+  const test::ScratchDir dir("cad_damaged");
+  // One control point of a B-spline surface at 10³⁰⁰: the box's diagonal overflows, and the
+  // relative δ taken from it was infinite (an ArgumentError deep in the import: exit 70).
+  const std::string path =
+      damagedCopy(dir, "CAP_50SGV_8_10.stp", "#1769 = CARTESIAN_POINT('',(-3.041885108155,",
+                  "#1769 = CARTESIAN_POINT('',(1.E+300,");
+  Backend backend = makeMirrorBackend();
+  for (const bool relative : {true, false}) {
+    ToleranceSpec tolerance;
+    if (!relative) tolerance.value = 0.01, tolerance.relative = false;
+    try {
+      meshCadFile(path, tolerance, false, "", backend, nullptr);
+      FAIL("meshed");
+    } catch (const InputError& e) {
+      INFO(e.what());
+      CHECK(e.file() == path);
+      CHECK(std::string(e.what()).find("its bounding box is not finite") != std::string::npos);
+    }
+  }
 }
 
 namespace {

@@ -1,5 +1,6 @@
 #include "cad/mesh_cad_file.h"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "cad/cad_file.h"
@@ -22,6 +23,12 @@ CadMeshRun meshCadFile(const std::string& path, const ToleranceSpec& tolerance, 
   result.readMs = clock.elapsedMs();
   // defaultCadTolerance is 0.1% of the diagonal: the diagonal itself, for relative tolerances.
   result.diagonal = defaultCadTolerance(file.shape) / 1e-3;
+  // A point at 10³⁰⁰ (a damaged coordinate) makes the box's diagonal infinite: no δ can be
+  // taken from it, and none would mean anything for the rest of the model.
+  if (!std::isfinite(result.diagonal))
+    throw InputError(InputErrorKind::Range, path, 0,
+                     "its bounding box is not finite (a coordinate near 1e308 or beyond): the "
+                     "model has no size to mesh it at");
   result.delta = tolerance.relative ? tolerance.value * result.diagonal : tolerance.value;
   // (A hair of slack: "0.0000001%" parses to a hair under 10⁻⁹.)
   if (result.delta < (1 - 1e-9) * kSmallestRelativeCadTolerance * result.diagonal)
