@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -116,6 +117,45 @@ TEST_CASE("cad: an IGES surface that does not load is refused naming it, not dro
   requireRefused(damagedCopy(dir, "SOT23.igs", "128,1,1,1,1,0,0,1,0,0,-4.163336342E-17",
                              "128,1,1,9,1,0,0,1,0,0,-4.163336342E-17"),
                  "the IGES file is damaged: entity 2 (128 0 BSplineSurface) does not load: ");
+}
+
+// The STEP parser's syntax errors name their line: the InputError carries it (file:line:).
+TEST_CASE("cad: a STEP syntax error is refused naming its line", "[cad]") {
+  const test::ScratchDir dir("cad_damaged");
+  const std::string whole = test::readWholeFile(kIdf + "SOT23.stp");
+  // Cut in the middle of a line: the parser meets the end of the file there.
+  const std::string cut = whole.substr(0, whole.size() / 2);
+  const int cutLine = int(std::count(cut.begin(), cut.end(), '\n')) + 1;
+  const std::string truncated = (dir.path / "truncated.stp").string();
+  std::ofstream(truncated, std::ios::binary) << cut;
+  // Junk after an entity on line 1349: the parser goes on, the file's check names the line.
+  const std::string junk =
+      damagedCopy(dir, "SOT23.stp", "#1089 = ADVANCED_FACE('',(#1090),#1104,.T.);",
+                  "#1089 = ADVANCED_FACE('',(#1090),#1104,.T.) junk (;");
+  const struct {
+    std::string path, text;
+    int line;
+  } cases[] = {
+      {truncated, "the STEP reader could not read it: incorrect syntax: unexpected end of file",
+       cutLine},
+      {junk,
+       "the STEP file is damaged: the file does not load: Undefined Parsing: Line 1350: "
+       "Incorrect syntax",
+       1349}};
+  for (const auto& c : cases) {
+    try {
+      readCadFile(c.path);
+      FAIL("read " << c.path);
+    } catch (const InputError& e) {
+      INFO(e.what());
+      CHECK(e.file() == c.path);
+      CHECK(std::string(e.what()).find(c.text) != std::string::npos);
+      // OCCT counts the line after the one it stopped on where it met the next token there.
+      CHECK(e.line() >= c.line);
+      CHECK(e.line() <= c.line + 1);
+      CHECK(std::string(e.what()).rfind(c.path + ":" + std::to_string(e.line()) + ": ", 0) == 0);
+    }
+  }
 }
 
 TEST_CASE("cad: a model whose bounding box is not finite is refused naming the file", "[cad]") {

@@ -11,6 +11,7 @@
 #include <Interface_InterfaceModel.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
+#include <Message_Printer.hxx>
 #include <STEPControl_Reader.hxx>
 #include <StepData_StepModel.hxx>
 #include <Standard_ErrorHandler.hxx>
@@ -19,11 +20,16 @@
 #include <Transfer_TransientProcess.hxx>
 #include <XSControl_TransferReader.hxx>
 #include <XSControl_WorkSession.hxx>
+#include <TCollection_AsciiString.hxx>
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <system_error>
+#include <utility>
+#include <vector>
 
 #include "cad/exchange_checks.h"
 #include "common/input_size.h"
@@ -77,18 +83,43 @@ void recordFaceEntities(XSControl_Reader& reader, CadFile& file) {
   }
 }
 
+// The first few messages of Fail gravity sent while it is a messenger's printer: the STEP
+// parser's syntax errors ("**** ERR StepFile : Undefined Parsing: Line 6415: Incorrect syntax:
+// unexpected end of file, expecting '('    ****").
+class FailMessages : public Message_Printer {
+ public:
+  FailMessages() { SetTraceLevel(Message_Fail); }
+  std::string first() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return fails_.empty() ? std::string() : fails_.front();
+  }
+
+ protected:
+  void send(const TCollection_AsciiString& text, const Message_Gravity gravity) const override {
+    if (gravity < Message_Fail) return;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (fails_.size() < 8) fails_.emplace_back(text.ToCString());
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  mutable std::vector<std::string> fails_;
+};
+
 // Open CASCADE's readers report on its default messenger, whose printer writes to standard
 // output (the IGES reader's "Total number of loaded entities"): that put text before the
 // report of `--json` and before a mesh on standard output. Its printers are set aside while a
-// file is read and transferred; what matters reaches the caller as the status and errors
-// below. (The messenger is global: another thread's Open CASCADE messages during a read are
-// not printed either.)
+// file is read and transferred, and its fails collected for the error of a file that does not
+// read; what else matters reaches the caller as the status and the checks below. (The
+// messenger is global: another thread's Open CASCADE messages during a read are not printed
+// either.)
 class OcctMessagesSetAside {
  public:
-  OcctMessagesSetAside() : messenger_(Message::DefaultMessenger()) {
+  OcctMessagesSetAside() : messenger_(Message::DefaultMessenger()), fails_(new FailMessages) {
     if (messenger_.IsNull()) return;
     kept_ = messenger_->Printers();
     messenger_->ChangePrinters().Clear();
+    messenger_->AddPrinter(fails_);
   }
   ~OcctMessagesSetAside() {
     if (!messenger_.IsNull()) messenger_->ChangePrinters() = kept_;
@@ -96,8 +127,11 @@ class OcctMessagesSetAside {
   OcctMessagesSetAside(const OcctMessagesSetAside&) = delete;
   OcctMessagesSetAside& operator=(const OcctMessagesSetAside&) = delete;
 
+  std::string firstFail() const { return fails_->first(); }
+
  private:
   Handle(Message_Messenger) messenger_;
+  Handle(FailMessages) fails_;
   Message_SequenceOfPrinters kept_;
 };
 
@@ -107,9 +141,13 @@ class OcctMessagesSetAside {
 void readExchange(XSControl_Reader& reader, CadFile& file, const char* format) {
   const OcctMessagesSetAside quiet;
   IFSelect_ReturnStatus status = reader.ReadFile(file.path.c_str());
-  if (status != IFSelect_RetDone)
-    throw InputError(InputErrorKind::Syntax, file.path, 0,
-                     std::string("the ") + format + " reader could not read it: " + statusName(status));
+  if (status != IFSelect_RetDone) {
+    // The parser's own words where it gave them (a STEP syntax error names its line).
+    const auto [line, reason] = occtLineAndReason(quiet.firstFail());
+    throw InputError(InputErrorKind::Syntax, file.path, line,
+                     std::string("the ") + format + " reader could not read it: " +
+                         (reason.empty() ? "" : reason + "; ") + statusName(status));
+  }
   requireModelLoaded(reader, file.path, format);
   const int transferred = reader.TransferRoots();
   requireTransferComplete(reader, file.path, format);

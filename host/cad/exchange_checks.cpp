@@ -9,9 +9,12 @@
 #include <XSControl_TransferReader.hxx>
 #include <XSControl_WorkSession.hxx>
 #include <algorithm>
+#include <cctype>
 #include <csignal>
+#include <cstdlib>
 #include <iterator>
 #include <mutex>
+#include <regex>
 #include <sstream>
 #include <vector>
 
@@ -54,10 +57,12 @@ void requireNoFail(const Interface_CheckIterator& checks,
   // entities' fails say; it is told only where no entity has one.
   const std::vector<std::string>& told = entities.empty() ? wholeFile : entities;
   if (told.empty()) return;
+  // A syntax error the parser went past names its line there ("Line 1350: ...").
+  const int line = entities.empty() ? occtLineAndReason(told[0]).first : 0;
   std::string reason;
   for (size_t k = 0; k < told.size() && k < 3; ++k) reason += (k ? "; " : "") + told[k];
   if (told.size() > 3) reason += " (and " + std::to_string(told.size() - 3) + " more entities)";
-  throw InputError(InputErrorKind::Syntax, path, 0,
+  throw InputError(InputErrorKind::Syntax, path, line,
                    std::string("the ") + format + " file is damaged: " + reason);
 }
 
@@ -71,6 +76,22 @@ constexpr int kOtherSignals[] = {SIGHUP,  SIGINT,  SIGQUIT, SIGTERM, SIGABRT, SI
 struct sigaction savedCrashActions[std::size(kCrashSignals)];
 
 }  // namespace
+
+std::pair<int, std::string> occtLineAndReason(std::string text) {
+  int line = 0;
+  static const std::regex linePrefix("Line ([0-9]+): *");
+  std::smatch found;
+  if (std::regex_search(text, found, linePrefix)) {
+    line = std::atoi(found[1].str().c_str());
+    text = found.suffix().str();
+  }
+  const auto kept = [](char c) { return c != '*' && !std::isspace(static_cast<unsigned char>(c)); };
+  const auto first = std::find_if(text.begin(), text.end(), kept);
+  const auto last = std::find_if(text.rbegin(), text.rend(), kept).base();
+  text = first < last ? std::string(first, last) : std::string();
+  if (!text.empty()) text[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(text[0])));
+  return {line, text};
+}
 
 void requireModelLoaded(XSControl_Reader& reader, const std::string& path, const char* format) {
   const Handle(XSControl_WorkSession)& session = reader.WS();

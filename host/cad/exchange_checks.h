@@ -8,8 +8,14 @@
 #pragma once
 #include <XSControl_Reader.hxx>
 #include <string>
+#include <utility>
 
 namespace tessera {
+
+// An Open CASCADE message as a line and a reason: "**** ERR StepFile : Undefined Parsing: Line
+// 6415: Incorrect syntax: unexpected end of file ****" → {6415, "incorrect syntax: unexpected
+// end of file"}; without "Line N:", line 0 and the message without its stars and blanks.
+std::pair<int, std::string> occtLineAndReason(std::string text);
 
 // Throws InputError naming `path` and up to three entities with their messages (and how many
 // more) when the loaded model has an entity that failed to load.
