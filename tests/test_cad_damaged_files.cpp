@@ -1,7 +1,8 @@
-// Damaged STEP and IGES files (host/cad/exchange_checks.h, docs/cad.md): one reference changed in
-// a model of FreeCAD's IDF library. Each used to crash Open CASCADE's transfer (SIGSEGV) or lose
-// a face without a word; each is now an InputError naming the file and the entity. And the
-// read leaves the process's signal handlers as they were.
+// Damaged STEP and IGES files (host/cad/exchange_checks.h, occt_signals.h, docs/cad.md): one
+// reference or number changed in a model of FreeCAD's IDF library. Each used to crash Open
+// CASCADE's transfer (SIGSEGV), lose a face without a word, end as an internal error or say only
+// "RetFail"; each is now an InputError naming the file and the entity or the line. And the read
+// leaves the process's signal handlers as they were.
 #include <catch2/catch.hpp>
 
 #include <sys/wait.h>

@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "cad/exchange_checks.h"
+#include "cad/occt_signals.h"
 #include "common/input_size.h"
 #include "tessera/errors.h"
 

@@ -3,17 +3,13 @@
 #include <Interface_Check.hxx>
 #include <Interface_CheckIterator.hxx>
 #include <Interface_InterfaceModel.hxx>
-#include <OSD.hxx>
 #include <StepData_StepModel.hxx>
 #include <TCollection_HAsciiString.hxx>
 #include <XSControl_TransferReader.hxx>
 #include <XSControl_WorkSession.hxx>
 #include <algorithm>
 #include <cctype>
-#include <csignal>
 #include <cstdlib>
-#include <iterator>
-#include <mutex>
 #include <regex>
 #include <sstream>
 #include <vector>
@@ -66,15 +62,6 @@ void requireNoFail(const Interface_CheckIterator& checks,
                    std::string("the ") + format + " file is damaged: " + reason);
 }
 
-std::mutex signalsLock;
-int signalsGuards = 0;
-// The crashes OCCT turns into exceptions while a guard lives; every other signal OSD::SetSignal
-// takes (SIGINT and the rest: the CLI's cleanup of half-written outputs) is given back at once.
-constexpr int kCrashSignals[] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL};
-constexpr int kOtherSignals[] = {SIGHUP,  SIGINT,  SIGQUIT, SIGTERM, SIGABRT, SIGTRAP, SIGSYS,
-                                 SIGPIPE, SIGALRM, SIGUSR1, SIGUSR2, SIGXCPU, SIGXFSZ};
-struct sigaction savedCrashActions[std::size(kCrashSignals)];
-
 }  // namespace
 
 std::pair<int, std::string> occtLineAndReason(std::string text) {
@@ -116,27 +103,6 @@ void requireTransferComplete(XSControl_Reader& reader, const std::string& path,
   if (session.IsNull() || session->TransferReader().IsNull()) return;
   requireNoFail(session->TransferReader()->LastCheckList(), session->Model(), path, format,
                 "did not transfer");
-}
-
-OcctSignalsAsExceptions::OcctSignalsAsExceptions() {
-  const std::lock_guard<std::mutex> lock(signalsLock);
-  if (signalsGuards++ > 0) return;
-  struct sigaction others[std::size(kOtherSignals)];
-  for (size_t k = 0; k < std::size(kCrashSignals); ++k)
-    sigaction(kCrashSignals[k], nullptr, &savedCrashActions[k]);
-  for (size_t k = 0; k < std::size(kOtherSignals); ++k)
-    sigaction(kOtherSignals[k], nullptr, &others[k]);
-  // Floating-point traps off: OCCT's arithmetic may divide by zero on purpose.
-  OSD::SetSignal(OSD_SignalMode_Set, Standard_False);
-  for (size_t k = 0; k < std::size(kOtherSignals); ++k)
-    sigaction(kOtherSignals[k], &others[k], nullptr);
-}
-
-OcctSignalsAsExceptions::~OcctSignalsAsExceptions() {
-  const std::lock_guard<std::mutex> lock(signalsLock);
-  if (--signalsGuards > 0) return;
-  for (size_t k = 0; k < std::size(kCrashSignals); ++k)
-    sigaction(kCrashSignals[k], &savedCrashActions[k], nullptr);
 }
 
 }  // namespace tessera

@@ -24,19 +24,4 @@ void requireModelLoaded(XSControl_Reader& reader, const std::string& path, const
 // Throws InputError likewise when an entity's transfer failed (its shapes are then missing).
 void requireTransferComplete(XSControl_Reader& reader, const std::string& path, const char* format);
 
-// While one lives, a crash (SIGSEGV, SIGBUS, SIGFPE, SIGILL) inside Open CASCADE's code becomes
-// its exception (OSD_SIGSEGV, ...), which its own transfer catches per entity ("Entity was not
-// translated") and readCadFile's OCC_CATCH_SIGNALS catches elsewhere: OCCT's handlers for those
-// four (OSD::SetSignal) are installed on the first construction and the process's own put back
-// when the last one goes, so an embedding program keeps its handlers outside the read; the
-// other signals SetSignal takes (SIGINT, SIGTERM, ...) are given back at once. Process-wide, as
-// signal handlers are: guards on several threads share one installation.
-class OcctSignalsAsExceptions {
- public:
-  OcctSignalsAsExceptions();
-  ~OcctSignalsAsExceptions();
-  OcctSignalsAsExceptions(const OcctSignalsAsExceptions&) = delete;
-  OcctSignalsAsExceptions& operator=(const OcctSignalsAsExceptions&) = delete;
-};
-
 }  // namespace tessera
