@@ -5,6 +5,8 @@
 // leaves the process's signal handlers as they were.
 #include <catch2/catch.hpp>
 
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepTools.hxx>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -26,17 +28,36 @@ namespace {
 
 const std::string kIdf = "/usr/share/freecad/Mod/Idf/Idflibs/";
 
+// `text` with its first occurrence of `from` replaced by `to`, written to `dir`/`name`.
+std::string writeReplaced(const test::ScratchDir& dir, const std::string& name, std::string text,
+                          const std::string& from, const std::string& to) {
+  const size_t at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  text.replace(at, from.size(), to);
+  const std::string path = (dir.path / name).string();
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
+void requireMeshRefused(const std::string& path, const std::string& expected) {
+  Backend backend = makeMirrorBackend();
+  try {
+    meshCadFile(path, ToleranceSpec{}, false, "", backend, nullptr);
+    FAIL("meshed " << path);
+  } catch (const InputError& e) {
+    INFO(e.what());
+    CHECK(e.file() == path);
+    CHECK(std::string(e.what()).find(expected) != std::string::npos);
+  }
+}
+
 // The IDF model `model` with its one occurrence of `from` replaced by `to`, written to `dir`.
 std::string damagedCopy(const test::ScratchDir& dir, const std::string& model,
                         const std::string& from, const std::string& to) {
-  std::string text = test::readWholeFile(kIdf + model);
-  const size_t at = text.find(from);
-  REQUIRE(at != std::string::npos);  // freecad-common (scripts/deps.sh installs it)
-  REQUIRE(text.find(from, at + 1) == std::string::npos);
-  text.replace(at, from.size(), to);
-  const std::string path = (dir.path / ("damaged_" + model)).string();
-  std::ofstream(path, std::ios::binary) << text;
-  return path;
+  const std::string text = test::readWholeFile(kIdf + model);
+  REQUIRE(text.find(from) != std::string::npos);  // freecad-common (scripts/deps.sh installs it)
+  REQUIRE(text.find(from, text.find(from) + 1) == std::string::npos);
+  return writeReplaced(dir, "damaged_" + model, text, from, to);
 }
 
 void requireRefused(const std::string& path, const std::string& expected) {
@@ -179,6 +200,32 @@ TEST_CASE("cad: a model whose bounding box is not finite is refused naming the f
       CHECK(std::string(e.what()).find("its bounding box is not finite") != std::string::npos);
     }
   }
+}
+
+// Open CASCADE's own format, one number changed (found by changing numbers of .brep files at
+// random, 2026-11-29): each used to hang, abort or end as an internal error.
+TEST_CASE("cad: damaged .brep files are refused naming the file", "[cad]") {
+  const test::ScratchDir dir("cad_damaged");
+  const std::string cylinderPath = (dir.path / "cylinder.brep").string();
+  REQUIRE(BRepTools::Write(BRepPrimAPI_MakeCylinder(1.0, 2.0).Shape(), cylinderPath.c_str()));
+  const std::string cylinder = test::readWholeFile(cylinderPath);
+  // An edge's curve representation of an unknown kind: BRepTools::Read read past the end of the
+  // file for ever, its stream failing at every number.
+  requireRefused(
+      writeReplaced(dir, "unknown_kind.brep", cylinder, "\n2  1 1 0 0 ", "\n7  1 1 0 0 "),
+      "BRepTools::Read could not read it: the file ends or breaks where it expected more");
+  // A vertex at 10³⁰⁰: the mesher's distance measure met NaN (exit 70).
+  requireMeshRefused(
+      writeReplaced(dir, "far_vertex.brep", cylinder, "Ve\n1e-07\n1 ", "Ve\n1e-07\n1e+300 "),
+      "vertex 0: a point (1e+300, ");
+  // CAP_50SGV_8_10 as .brep with a circle's range from 3.93 to 10⁻³⁰⁰: BRepBndLib::Add threw
+  // Standard_ConstructionError, which is no std::exception: std::terminate (SIGABRT).
+  const std::string capPath = (dir.path / "cap.brep").string();
+  REQUIRE(BRepTools::Write(readCadFile(kIdf + "CAP_50SGV_8_10.stp").shape, capPath.c_str()));
+  requireMeshRefused(writeReplaced(dir, "reversed_range.brep", test::readWholeFile(capPath),
+                                   "\n1  6 0 3.92699081698724 7.06858347057703\n",
+                                   "\n1  6 0 3.92699081698724 1e-300\n"),
+                     "Open CASCADE failed measuring its bounding box: Standard_ConstructionError");
 }
 
 namespace {

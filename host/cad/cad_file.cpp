@@ -183,8 +183,19 @@ CadFile readCadFile(const std::string& path) {
       IGESControl_Reader reader;
       readExchange(reader, file, "IGES");
     } else if (ext == "brep") {
+      // From a stream that throws where it fails: on a damaged .brep (a count too large) OCCT's
+      // reader went on reading past the end for ever, its stream failed at every number.
+      std::ifstream in(path, std::ios::binary);
+      in.exceptions(std::ios::badbit | std::ios::failbit);
       BRep_Builder builder;
-      if (!BRepTools::Read(file.shape, path.c_str(), builder))
+      try {
+        BRepTools::Read(file.shape, in, builder);
+      } catch (const std::ios_base::failure&) {
+        throw InputError(InputErrorKind::Syntax, path, 0,
+                         "BRepTools::Read could not read it: the file ends or breaks where it "
+                         "expected more");
+      }
+      if (file.shape.IsNull())
         throw InputError(InputErrorKind::Syntax, path, 0, "BRepTools::Read could not read it");
     } else {
       throw InputError(InputErrorKind::Syntax, path, 0,

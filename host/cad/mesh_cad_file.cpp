@@ -5,6 +5,7 @@
 
 #include "cad/cad_file.h"
 #include "cad/detail/number_text.h"
+#include "cad/occt_failure.h"
 #include "cad/to_trimmed.h"
 #include "common/stopwatch.h"
 #include "tessera/errors.h"
@@ -22,7 +23,11 @@ CadMeshRun meshCadFile(const std::string& path, const ToleranceSpec& tolerance, 
   const CadFile file = readCadFile(path);
   result.readMs = clock.elapsedMs();
   // defaultCadTolerance is 0.1% of the diagonal: the diagonal itself, for relative tolerances.
-  result.diagonal = defaultCadTolerance(file.shape) / 1e-3;
+  try {
+    result.diagonal = defaultCadTolerance(file.shape) / 1e-3;
+  } catch (const Standard_Failure& failure) {
+    throwAsInputError(failure, path, "measuring its bounding box");
+  }
   // A point at 10³⁰⁰ (a damaged coordinate) makes the box's diagonal infinite: no δ can be
   // taken from it, and none would mean anything for the rest of the model.
   if (!std::isfinite(result.diagonal))

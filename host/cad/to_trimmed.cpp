@@ -26,7 +26,9 @@
 #include "cad/detail/kind_of.h"
 #include "cad/detail/number_text.h"
 #include "cad/detail/plane_parameters.h"
+#include "cad/occt_failure.h"
 #include "common/phased_parallel.h"
+#include "geometry/general_patch.h"
 #include "tessera/errors.h"
 
 namespace tessera {
@@ -286,6 +288,16 @@ TrimmedFace convertFace(const TopoDS_Face& sourceFace, uint32_t faceIndex, const
     next += loop.uv.size();
     out.loops.push_back(std::move(mapped));
   }
+  // The pieces as the tessellator takes them (a control point beyond 10³⁸ or not finite, a
+  // weight out of range): this face's failure, not NaN in the trees.
+  for (size_t k = 0; k < surface.pieces.size(); ++k) {
+    try {
+      validateTessellationPatch(surface.pieces[k].patch,
+                                "its surface's piece " + std::to_string(k));
+    } catch (const std::invalid_argument& e) {
+      throw CadFaceError(e.what());
+    }
+  }
   out.pieces = std::move(surface.pieces);
   out.revolution = revolutionFormOf(surface.original);
   size_t outer = 0;
@@ -542,10 +554,22 @@ double defaultCadTolerance(const TopoDS_Shape& shape) {
   return 1e-3 * std::sqrt(box.SquareExtent());
 }
 
-CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads) {
-  if (!(delta > 0.0) || !std::isfinite(delta))
-    throw ArgumentError("the CAD edge tolerance must be a positive distance, not " +
-                        std::to_string(delta));
+namespace {
+
+// A mesh position is fp32 (kMaxPatchCoordinate): a shared point that is not finite or beyond
+// 10³⁸ cannot be one. A damaged .brep put a vertex at 10³⁰⁰; the mesher's distance measure then
+// met NaN and the run ended as an internal error (exit 70).
+void requireMeshablePoint(const glm::dvec3& p, const std::string& path, const std::string& what) {
+  for (int k = 0; k < 3; ++k)
+    if (!(std::fabs(p[k]) <= kMaxPatchCoordinate))
+      throw InputError(InputErrorKind::Range, path, 0,
+                       what + ": a point (" + cad_detail::numberText(p.x) + ", " +
+                           cad_detail::numberText(p.y) + ", " + cad_detail::numberText(p.z) +
+                           ") is not finite or exceeds 1e38 (the mesh is fp32)");
+}
+
+// toTrimmedModel's work, its arguments checked.
+CadImport importShape(const CadFile& file, double delta, unsigned threads) {
   CadImport in;
   in.delta = delta;
   // The maps' nodes from one block allocator: a node per shape, freed together with the maps
@@ -575,6 +599,8 @@ CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads) {
        [&] {
          fromWalks = mapShape(file.shape, walkable, walks, in, uses, ends);
          points = vertexPoints(in);
+         for (size_t k = 0; k < points.positions.size(); ++k)
+           requireMeshablePoint(points.positions[k], file.path, "vertex " + std::to_string(k));
          in.edgeSamples.resize(size_t(in.edges.Extent()));
        }},
       // Each edge reads its own edge; then their interior points numbered in edge order.
@@ -587,7 +613,10 @@ CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads) {
                  : discretiseEdge(edge, delta, in.vertices, &edgeBudget);
        },
        [&] {
-         for (EdgeSamples& samples : in.edgeSamples) {
+         for (size_t e = 0; e < in.edgeSamples.size(); ++e) {
+           EdgeSamples& samples = in.edgeSamples[e];
+           for (const glm::dvec3& p : samples.curvePoints)
+             requireMeshablePoint(p, file.path, "edge " + std::to_string(e));
            shareInteriorSamples(samples, points);
            in.maxChordDeviation = std::max(in.maxChordDeviation, samples.maxChordDeviation);
          }
@@ -606,6 +635,21 @@ CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads) {
   };
   runPhases(phases, threads);
   return in;
+}
+
+}  // namespace
+
+CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads) {
+  if (!(delta > 0.0) || !std::isfinite(delta))
+    throw ArgumentError("the CAD edge tolerance must be a positive distance, not " +
+                        std::to_string(delta));
+  // A face's Open CASCADE exception is its failure (faceOutcome); one outside a face (an edge's
+  // curve, the shape's walk) is the file's.
+  try {
+    return importShape(file, delta, threads);
+  } catch (const Standard_Failure& failure) {
+    throwAsInputError(failure, file.path, "converting its faces and edges");
+  }
 }
 
 }  // namespace tessera
