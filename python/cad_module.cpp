@@ -65,7 +65,8 @@ PYBIND11_MODULE(_cad, m) {
 
   py::class_<PyCadMesh>(m, "CadMesh", "A CAD model's mesh and what was measured (docs/api.md)")
       .def_readonly("mesh", &PyCadMesh::mesh, "the Mesh; patch_ids: a face each vertex is on")
-      .def_readonly("triangle_faces", &PyCadMesh::triangle_faces, "uint32 (M,): each triangle's face")
+      .def_readonly("triangle_faces", &PyCadMesh::triangle_faces,
+                    "uint32 (M,): each triangle's face")
       .def_readonly("faces", &PyCadMesh::faces)
       .def_readonly("faces_meshed", &PyCadMesh::faces_meshed)
       .def_readonly("tolerance", &PyCadMesh::tolerance, "δ used, model units")
