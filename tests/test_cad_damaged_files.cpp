@@ -18,6 +18,7 @@
 
 #include "cad/cad_file.h"
 #include "cad/mesh_cad_file.h"
+#include "cad/to_trimmed.h"
 #include "mesh/tessellate.h"
 #include "scratch_dir.h"
 #include "tessera/errors.h"
@@ -134,8 +135,9 @@ TEST_CASE("cad: a STEP entity whose transfer crashed Open CASCADE is refused nam
 
 TEST_CASE("cad: an IGES surface that does not load is refused naming it, not dropped", "[cad]") {
   const test::ScratchDir dir("cad_damaged");
-  // The first B-spline surface's last knot made an integer where a real belongs: OCCT dropped
-  // the face and the import went on with 72 of 73 faces, saying nothing.
+  // One count of the first B-spline surface made 9: its parameters no longer parse (OCCT reads
+  // an integer where a real belongs), OCCT dropped the face, and the import went on with 72 of
+  // 73 faces, saying nothing.
   requireRefused(damagedCopy(dir, "SOT23.igs", "128,1,1,1,1,0,0,1,0,0,-4.163336342E-17",
                              "128,1,1,9,1,0,0,1,0,0,-4.163336342E-17"),
                  "the IGES file is damaged: entity 2 (128 0 BSplineSurface) does not load: ");
@@ -187,6 +189,10 @@ TEST_CASE("cad: a model whose bounding box is not finite is refused naming the f
   const std::string path =
       damagedCopy(dir, "CAP_50SGV_8_10.stp", "#1769 = CARTESIAN_POINT('',(-3.041885108155,",
                   "#1769 = CARTESIAN_POINT('',(1.E+300,");
+  // The diagonal every caller takes δ from (meshCadFile and `tessera info`, which also ended
+  // as an internal error).
+  CHECK_THROWS_WITH(cadModelDiagonal(readCadFile(path)),
+                    Catch::StartsWith(path + ": its bounding box is not finite"));
   Backend backend = makeMirrorBackend();
   for (const bool relative : {true, false}) {
     ToleranceSpec tolerance;

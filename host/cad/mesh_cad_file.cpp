@@ -1,11 +1,9 @@
 #include "cad/mesh_cad_file.h"
 
-#include <cmath>
 #include <stdexcept>
 
 #include "cad/cad_file.h"
 #include "cad/detail/number_text.h"
-#include "cad/occt_failure.h"
 #include "cad/to_trimmed.h"
 #include "common/stopwatch.h"
 #include "tessera/errors.h"
@@ -22,18 +20,7 @@ CadMeshRun meshCadFile(const std::string& path, const ToleranceSpec& tolerance, 
   Stopwatch clock;
   const CadFile file = readCadFile(path);
   result.readMs = clock.elapsedMs();
-  // defaultCadTolerance is 0.1% of the diagonal: the diagonal itself, for relative tolerances.
-  try {
-    result.diagonal = defaultCadTolerance(file.shape) / 1e-3;
-  } catch (const Standard_Failure& failure) {
-    throwAsInputError(failure, path, "measuring its bounding box");
-  }
-  // A point at 10³⁰⁰ (a damaged coordinate) makes the box's diagonal infinite: no δ can be
-  // taken from it, and none would mean anything for the rest of the model.
-  if (!std::isfinite(result.diagonal))
-    throw InputError(InputErrorKind::Range, path, 0,
-                     "its bounding box is not finite (a coordinate near 1e308 or beyond): the "
-                     "model has no size to mesh it at");
+  result.diagonal = cadModelDiagonal(file);
   result.delta = tolerance.relative ? tolerance.value * result.diagonal : tolerance.value;
   // (A hair of slack: "0.0000001%" parses to a hair under 10⁻⁹.)
   if (result.delta < (1 - 1e-9) * kSmallestRelativeCadTolerance * result.diagonal)

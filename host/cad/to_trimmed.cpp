@@ -554,18 +554,31 @@ double defaultCadTolerance(const TopoDS_Shape& shape) {
   return 1e-3 * std::sqrt(box.SquareExtent());
 }
 
+double cadModelDiagonal(const CadFile& file) {
+  double diagonal = 0;
+  try {
+    diagonal = defaultCadTolerance(file.shape) / 1e-3;  // 0.1% of the diagonal
+  } catch (const Standard_Failure& failure) {
+    throwAsInputError(failure, file.path, "measuring its bounding box");
+  }
+  if (!std::isfinite(diagonal))
+    throw InputError(InputErrorKind::Range, file.path, 0,
+                     "its bounding box is not finite (a coordinate near 1e308 or beyond): the "
+                     "model has no size to mesh it at");
+  return diagonal;
+}
+
 namespace {
 
 // A mesh position is fp32 (kMaxPatchCoordinate): a shared point that is not finite or beyond
 // 10³⁸ cannot be one. A damaged .brep put a vertex at 10³⁰⁰; the mesher's distance measure then
 // met NaN and the run ended as an internal error (exit 70).
 void requireMeshablePoint(const glm::dvec3& p, const std::string& path, const std::string& what) {
-  for (int k = 0; k < 3; ++k)
-    if (!(std::fabs(p[k]) <= kMaxPatchCoordinate))
-      throw InputError(InputErrorKind::Range, path, 0,
-                       what + ": a point (" + cad_detail::numberText(p.x) + ", " +
-                           cad_detail::numberText(p.y) + ", " + cad_detail::numberText(p.z) +
-                           ") is not finite or exceeds 1e38 (the mesh is fp32)");
+  if (!isMeshablePoint(p))
+    throw InputError(InputErrorKind::Range, path, 0,
+                     what + ": a point (" + cad_detail::numberText(p.x) + ", " +
+                         cad_detail::numberText(p.y) + ", " + cad_detail::numberText(p.z) +
+                         ") is not finite or exceeds 1e38 (the mesh is fp32)");
 }
 
 // toTrimmedModel's work, its arguments checked.

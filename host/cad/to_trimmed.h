@@ -68,6 +68,12 @@ struct CadImport {
 // δ by default: 0.1% of the shape's bounding-box diagonal (the CLI's rule T default).
 double defaultCadTolerance(const TopoDS_Shape& shape);
 
+// The model's bounding-box diagonal, for every caller that takes a δ from it (meshCadFile, the
+// CLI's `info`). InputError naming the file where Open CASCADE cannot bound the shape (its
+// exception) or the diagonal is not finite (a coordinate at 10³⁰⁰): an infinite δ ended deep in
+// the import as an internal error.
+double cadModelDiagonal(const CadFile& file);
+
 // Converts every face; a face that fails is listed in failures (with the file's path and the
 // face's index and entity), a face of zero area in emptyFaces, and the rest go on. Throws
 // ArgumentError unless delta > 0. Edges, then faces, are converted on `threads` threads (0: all

@@ -10,7 +10,6 @@
 #include <stdexcept>
 
 #include "cad/mesh_cad_file.h"
-#include "cad/occt_failure.h"
 #include "cad/to_trimmed.h"
 #include "cli/cli_support.h"
 #include "cli/commands.h"
@@ -200,12 +199,7 @@ int renderCadModel(const CadRenderCommand& c) {
 
 int describeCadModel(const std::string& path) {
   const CadFile file = readCadFile(path);
-  double delta = 0;
-  try {
-    delta = defaultCadTolerance(file.shape);
-  } catch (const Standard_Failure& failure) {
-    throwAsInputError(failure, path, "measuring its bounding box");
-  }
+  const double delta = kDefaultRelativeTolerance * cadModelDiagonal(file);
   const CadImport in = toTrimmedModel(file, delta);
   std::printf(
       "%s: %d faces (%zu converted, %zu of zero area, %zu failed), %d edges, %d vertices, "

@@ -25,9 +25,8 @@ void validateTessellationPatch(const BezierPatch& p, const std::string& what) {
   // enough there; the mesh's fp32 positions must hold it (kMaxPatchCoordinate). NaN/Inf
   // poison a tree.
   for (const glm::dvec3& c : p.cp)
-    for (int k = 0; k < 3; ++k)
-      if (!std::isfinite(c[k]) || std::fabs(c[k]) > kMaxPatchCoordinate)
-        fail("has a control point that is not finite or exceeds 1e38 (the mesh is fp32)");
+    if (!isMeshablePoint(c))
+      fail("has a control point that is not finite or exceeds 1e38 (the mesh is fp32)");
   if (!isRational(p)) return;
   if (p.weights.size() != count) fail("has " + std::to_string(p.weights.size()) + " weights, not " + std::to_string(count));
   for (double w : p.weights)

@@ -4,6 +4,7 @@
 // weights; toRationalPatch (rational.h) gives the homogeneous form.
 // Bicubic polynomial patches keep the BicubicPatch fast path (evaluator.h).
 #pragma once
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,13 @@ bool isBicubicPolynomial(const BezierPatch& patch);    // the BicubicPatch fast 
 // The largest |coordinate| tessellation takes: the surface lies in its control points' hull
 // (weights ≥ 0), so the mesh's fp32 positions (at most 3.4·10³⁸) hold every vertex.
 constexpr double kMaxPatchCoordinate = 1e38;
+
+// Whether a point can be a mesh position: every coordinate finite and within
+// kMaxPatchCoordinate (NaN fails the comparison).
+inline bool isMeshablePoint(const glm::dvec3& p) {
+  return std::fabs(p.x) <= kMaxPatchCoordinate && std::fabs(p.y) <= kMaxPatchCoordinate &&
+         std::fabs(p.z) <= kMaxPatchCoordinate;
+}
 
 // Throws std::invalid_argument starting with `what` (e.g. "patch 3") for a degree outside
 // 1..7, a control net or weight list of the wrong size, a control point that is not finite or
