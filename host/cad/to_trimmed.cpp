@@ -20,7 +20,9 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <mutex>
+#include <stdexcept>
 
 #include "cad/face_surface.h"
 #include "cad/detail/kind_of.h"
@@ -206,7 +208,8 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
     if (!pcurve && !projected) {
       computed = BRep_Tool::CurveOnSurface(edge, face, pf, pl);
       if (computed.IsNull())
-        throw CadFaceError("edge " + std::to_string(index - 1) + " has no pcurve on the face");
+        throw CadFaceError("edge " + std::to_string(in.edgeNumber(index - 1)) +
+                           " has no pcurve on the face");
       pcurve = computed.get();
     }
     const double f = samples.params.front(), l = samples.params.back();
@@ -214,7 +217,8 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
     const size_t n = samples.params.size();
     if (e == 0) firstId = samples.pointId(reversed ? n - 1 : 0);
     else if (samples.pointId(reversed ? n - 1 : 0) != lastId)
-      throw CadFaceError("the wire is not connected at edge " + std::to_string(index - 1));
+      throw CadFaceError("the wire is not connected at edge " +
+                         std::to_string(in.edgeNumber(index - 1)));
     double gap = 0.0;
     for (size_t k = 0; k < n; ++k) {
       const size_t s = reversed ? n - 1 - k : k;
@@ -236,10 +240,8 @@ RawLoop wireLoop(const TopoDS_Wire& wire, const TopoDS_Face& face,
     }
     const double tolerance = BRep_Tool::Tolerance(edge);
     if (!samples.degenerated && gap > tolerance + 1e-3 * in.delta)
-      outcome.warnings.push_back({faceIndex, static_cast<uint32_t>(index - 1), gap, tolerance,
-                             path + ": " + label + ": edge " + std::to_string(index - 1) +
-                                 ": its 3D curve and pcurve are " + cad_detail::numberText(gap) +
-                                 " apart, beyond its tolerance " + cad_detail::numberText(tolerance)});
+      outcome.warnings.push_back(
+          cadEdgeWarning(path, faceIndex, label, in.edgeNumber(index - 1), gap, tolerance));
     lastId = samples.pointId(reversed ? 0 : n - 1);
   }
   if (edges.empty() || lastId != firstId) throw CadFaceError("a wire is not closed");
@@ -319,15 +321,8 @@ TrimmedFace convertFace(const TopoDS_Face& sourceFace, uint32_t faceIndex, const
 // One face, its failure caught: the message names the file, the face and its entity.
 FaceOutcome faceOutcome(const CadFile& file, const CadImport& in, int k, const int* walked) {
   const TopoDS_Face& face = TopoDS::Face(in.faces(k));
-  const uint32_t index = static_cast<uint32_t>(k - 1);
-  // Built in one string, which the face then takes (the concatenations and the copy were
-  // four allocations a face).
-  const std::string& entity = faceEntityLabel(file, face);
-  std::string label;
-  label.reserve(entity.size() + 24);
-  label += "face ";
-  label += std::to_string(index);
-  if (!entity.empty()) label += " (", label += entity, label += ')';
+  const uint32_t index = in.faceNumber(size_t(k - 1));
+  std::string label = cadFaceLabel(index, faceEntityLabel(file, face));
   FaceOutcome outcome;
   std::string reason;
   bool empty = false;
@@ -547,6 +542,26 @@ void addOutcomes(std::vector<FaceOutcome>& outcomes, CadImport& in) {
 
 }  // namespace
 
+std::string cadFaceLabel(uint32_t faceNumber, const std::string& entity) {
+  // Built in one string, which the face then takes (the concatenations and the copy were
+  // four allocations a face).
+  std::string label;
+  label.reserve(entity.size() + 24);
+  label += "face ";
+  label += std::to_string(faceNumber);
+  if (!entity.empty()) label += " (", label += entity, label += ')';
+  return label;
+}
+
+CadEdgeWarning cadEdgeWarning(const std::string& path, uint32_t faceNumber,
+                              const std::string& faceLabel, uint32_t edgeNumber, double gap,
+                              double tolerance) {
+  return {faceNumber, edgeNumber, gap, tolerance,
+          path + ": " + faceLabel + ": edge " + std::to_string(edgeNumber) +
+              ": its 3D curve and pcurve are " + cad_detail::numberText(gap) +
+              " apart, beyond its tolerance " + cad_detail::numberText(tolerance)};
+}
+
 double defaultCadTolerance(const TopoDS_Shape& shape) {
   Bnd_Box box;
   BRepBndLib::Add(shape, box);
@@ -555,9 +570,15 @@ double defaultCadTolerance(const TopoDS_Shape& shape) {
 }
 
 double cadModelDiagonal(const CadFile& file) {
+  return checkedCadDiagonal(file, [&] {
+    return defaultCadTolerance(file.shape) / 1e-3;  // 0.1% of the diagonal
+  });
+}
+
+double checkedCadDiagonal(const CadFile& file, const std::function<double()>& measure) {
   double diagonal = 0;
   try {
-    diagonal = defaultCadTolerance(file.shape) / 1e-3;  // 0.1% of the diagonal
+    diagonal = measure();
   } catch (const Standard_Failure& failure) {
     throwAsInputError(failure, file.path, "measuring its bounding box");
   }
@@ -581,10 +602,23 @@ void requireMeshablePoint(const glm::dvec3& p, const std::string& path, const st
                          ") is not finite or exceeds 1e38 (the mesh is fp32)");
 }
 
+// A numbering is the caller's (instances.cpp): one number per face and edge of the maps.
+void requireNumberingFits(const CadImport& in) {
+  const CadNumbering& n = in.numbering;
+  if ((n.faces.empty() && n.edges.empty()) ||
+      (n.faces.size() == size_t(in.faces.Extent()) && n.edges.size() == size_t(in.edges.Extent())))
+    return;
+  throw std::logic_error("toTrimmedModel: a numbering of " + std::to_string(n.faces.size()) +
+                         " faces and " + std::to_string(n.edges.size()) + " edges for a shape of " +
+                         std::to_string(in.faces.Extent()) + " and " +
+                         std::to_string(in.edges.Extent()));
+}
+
 // toTrimmedModel's work, its arguments checked.
-CadImport importShape(const CadFile& file, double delta, unsigned threads) {
+CadImport importShape(const CadFile& file, double delta, unsigned threads, CadNumbering numbering) {
   CadImport in;
   in.delta = delta;
+  in.numbering = std::move(numbering);
   // The maps' nodes from one block allocator: a node per shape, freed together with the maps
   // (malloc was a fifth of the walk; the maps take their shapes on one thread, mapShape).
   const Handle(NCollection_BaseAllocator) nodes = new NCollection_IncAllocator;
@@ -611,6 +645,7 @@ CadImport importShape(const CadFile& file, double delta, unsigned threads) {
        4, [&](size_t f) { walks[f] = walkFace(in.faces(int(f) + 1)); },
        [&] {
          fromWalks = mapShape(file.shape, walkable, walks, in, uses, ends);
+         requireNumberingFits(in);
          points = vertexPoints(in);
          for (size_t k = 0; k < points.positions.size(); ++k)
            requireMeshablePoint(points.positions[k], file.path, "vertex " + std::to_string(k));
@@ -629,7 +664,7 @@ CadImport importShape(const CadFile& file, double delta, unsigned threads) {
          for (size_t e = 0; e < in.edgeSamples.size(); ++e) {
            EdgeSamples& samples = in.edgeSamples[e];
            for (const glm::dvec3& p : samples.curvePoints)
-             requireMeshablePoint(p, file.path, "edge " + std::to_string(e));
+             requireMeshablePoint(p, file.path, "edge " + std::to_string(in.edgeNumber(e)));
            shareInteriorSamples(samples, points);
            in.maxChordDeviation = std::max(in.maxChordDeviation, samples.maxChordDeviation);
          }
@@ -652,14 +687,15 @@ CadImport importShape(const CadFile& file, double delta, unsigned threads) {
 
 }  // namespace
 
-CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads) {
+CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads,
+                         CadNumbering numbering) {
   if (!(delta > 0.0) || !std::isfinite(delta))
     throw ArgumentError("the CAD edge tolerance must be a positive distance, not " +
                         std::to_string(delta));
   // A face's Open CASCADE exception is its failure (faceOutcome); one outside a face (an edge's
   // curve, the shape's walk) is the file's.
   try {
-    return importShape(file, delta, threads);
+    return importShape(file, delta, threads, std::move(numbering));
   } catch (const Standard_Failure& failure) {
     throwAsInputError(failure, file.path, "converting its faces and edges");
   }

@@ -5,6 +5,7 @@
 #pragma once
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,15 @@ struct MovableShapeMap : TopTools_IndexedMapOfShape {
   }
 };
 
+// The numbers the model's faces and edges go by in messages, TrimmedFace::faceIndex and
+// CadEdgeWarning, where the shape converted is not the file's whole shape: an assembly's part
+// meshed once for all its instances (instances.h) keeps the numbers its first instance has in
+// the whole model. Empty: the maps' own indices.
+struct CadNumbering {
+  std::vector<uint32_t> faces;  // per face of CadImport::faces
+  std::vector<uint32_t> edges;  // per edge of CadImport::edges
+};
+
 struct CadImport {
   TrimmedModel model;                  // the faces that converted
   std::vector<CadFaceFailure> failures;  // the faces that did not, never dropped silently
@@ -53,7 +63,15 @@ struct CadImport {
   std::vector<CadFaceFailure> emptyFaces;
   std::vector<CadEdgeWarning> warnings;  // edges off their faces' surfaces beyond tolerance
   // The B-rep's maps (index k ↔ OCCT's index k + 1): faces in TrimmedFace::faceIndex order.
+  // TrimmedFace::faceIndex is the map's index k, or numbering.faces[k] where numbered.
   MovableShapeMap faces, edges, vertices;
+  CadNumbering numbering;
+  uint32_t faceNumber(size_t k) const {
+    return numbering.faces.empty() ? uint32_t(k) : numbering.faces[k];
+  }
+  uint32_t edgeNumber(size_t e) const {
+    return numbering.edges.empty() ? uint32_t(e) : numbering.edges[e];
+  }
   std::vector<EdgeSamples> edgeSamples;  // per edge of `edges`
   // Per face of model.faces: the (u0, u1, v0, v1) its surface was converted over, the extent
   // of its loops in the pcurves' (u, v) (convertFaceSurface(faceBasisSurface(face), ...)
@@ -74,10 +92,26 @@ double defaultCadTolerance(const TopoDS_Shape& shape);
 // the import as an internal error.
 double cadModelDiagonal(const CadFile& file);
 
+// The diagonal `measure` gives, with cadModelDiagonal's checks (instances.h measures an
+// assembly's from its parts' boxes).
+double checkedCadDiagonal(const CadFile& file, const std::function<double()>& measure);
+
 // Converts every face; a face that fails is listed in failures (with the file's path and the
 // face's index and entity), a face of zero area in emptyFaces, and the rest go on. Throws
 // ArgumentError unless delta > 0. Edges, then faces, are converted on `threads` threads (0: all
 // cores, as TrimmedMeshOptions::threads); the import is the same, bit for bit, whatever the count.
-CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads = 0);
+// `numbering`: the faces' and edges' numbers where the shape is part of a larger model (one per
+// face and edge of the shape's maps, in TopExp::MapShapes order; empty: their indices).
+CadImport toTrimmedModel(const CadFile& file, double delta, unsigned threads = 0,
+                         CadNumbering numbering = {});
+
+// "face 3 (#345 AdvancedFace)": how a message names a face, by its number and its entity
+// (faceEntityLabel; empty: none).
+std::string cadFaceLabel(uint32_t faceNumber, const std::string& entity);
+
+// The warning of an edge whose 3D curve and pcurve on the face lie `gap` apart.
+CadEdgeWarning cadEdgeWarning(const std::string& path, uint32_t faceNumber,
+                              const std::string& faceLabel, uint32_t edgeNumber, double gap,
+                              double tolerance);
 
 }  // namespace tessera
