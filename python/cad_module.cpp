@@ -24,7 +24,7 @@ namespace {
 struct PyCadMesh {
   PyMesh mesh;
   py::array_t<uint32_t> triangle_faces;
-  size_t faces = 0, faces_meshed = 0;
+  size_t faces = 0, faces_meshed = 0, instance_copies = 0;
   double tolerance = 0, max_deviation = 0, max_parametric_deviation = 0;
   std::vector<std::string> skipped_faces, empty_faces, warnings;
 };
@@ -47,6 +47,7 @@ PyCadMesh tessellateCad(tessera::Tessellator& tessellator, const py::object& pat
       toArray(cad.triangleFaces, {static_cast<py::ssize_t>(cad.triangleFaces.size())});
   out.faces = cad.faces;
   out.faces_meshed = cad.facesMeshed;
+  out.instance_copies = cad.instanceCopies;
   out.tolerance = cad.tolerance;
   out.max_deviation = cad.maxDeviation;
   out.max_parametric_deviation = cad.maxParametricDeviation;
@@ -69,6 +70,8 @@ PYBIND11_MODULE(_cad, m) {
                     "uint32 (M,): each triangle's face")
       .def_readonly("faces", &PyCadMesh::faces)
       .def_readonly("faces_meshed", &PyCadMesh::faces_meshed)
+      .def_readonly("instance_copies", &PyCadMesh::instance_copies,
+                    "an assembly's placements meshed as moved copies of their part")
       .def_readonly("tolerance", &PyCadMesh::tolerance, "δ used, model units")
       .def_readonly("max_deviation", &PyCadMesh::max_deviation, "measured distance to the faces")
       .def_readonly("max_parametric_deviation", &PyCadMesh::max_parametric_deviation)

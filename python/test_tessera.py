@@ -94,6 +94,7 @@ if cad == "cad":
     assert isinstance(part, tessera.CadMesh) and repr(part).startswith("<tessera.CadMesh ")
     assert isinstance(part.mesh, tessera.Mesh)
     assert part.faces == part.faces_meshed > 0 and not part.skipped_faces and not part.empty_faces
+    assert part.instance_copies == 0  # one part, placed once
     # Zero-area sliver faces mesh as nothing and are named, no error (docs/cad.md).
     sod = t.tessellate_cad("/usr/share/freecad/Mod/Idf/Idflibs/SOD_323.stp")
     assert (sod.faces, sod.faces_meshed, len(sod.empty_faces)) == (75, 73, 2) and not sod.skipped_faces

@@ -12,6 +12,9 @@
 
 namespace tessera {
 
+struct CadFile;  // cad/cad_file.h (Open CASCADE's shape): declared only, as this header is
+                 // OCCT-free
+
 struct CadMeshRun {
   TrimmedMesh mesh;  // triangleFace: TrimmedFace::faceIndex, the face's index in the model
   // mesh.mesh.patchIds are positions in the list of faces that converted: their faceIndex.
@@ -25,6 +28,9 @@ struct CadMeshRun {
   std::vector<std::string> warnings;  // edges off their faces' surfaces beyond tolerance
   std::vector<std::string> faceWarnings;  // faces whose gap refinement ran out of rounds over δ
   double maxChordDeviation = 0;       // measured over every edge's discretisation
+  // An assembly's parts placed more than once are converted and meshed once; their other
+  // instances are that mesh moved (cad/instances.h). sharedPoints counts such a part's once.
+  size_t instancedParts = 0, instanceCopies = 0;
   double readMs = 0, importMs = 0, meshMs = 0;
 };
 
@@ -45,5 +51,12 @@ inline constexpr double kSmallestRelativeCadTolerance = 1e-9;
 CadMeshRun meshCadFile(const std::string& path, const ToleranceSpec& tolerance, bool skipBadFaces,
                        const std::string& skipHint, Backend& backend, TrimClassifier* trim,
                        unsigned threads = 0);
+
+// meshCadFile's work after the read, on a file already read (cad_file.h), with the mesher's
+// options (their tolerance is set from `tolerance`): what a caller that reads once and meshes
+// many times calls (bench_assembly).
+CadMeshRun meshCadModel(const CadFile& file, const ToleranceSpec& tolerance, bool skipBadFaces,
+                        const std::string& skipHint, Backend& backend, TrimClassifier* trim,
+                        TrimmedMeshOptions options = {});
 
 }  // namespace tessera

@@ -9,6 +9,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "cad/instances.h"
 #include "cad/mesh_cad_file.h"
 #include "cad/to_trimmed.h"
 #include "cli/cli_support.h"
@@ -77,6 +78,9 @@ nlohmann::json cadStatsToJson(const CadResult& r) {
           {"faceWarnings", r.faceWarnings},
           {"edges", r.edges},
           {"sharedPoints", r.sharedPoints},
+          // an assembly's parts placed more than once, meshed once and moved (docs/cad.md)
+          {"instancedParts", r.instancedParts},
+          {"instanceCopies", r.instanceCopies},
           {"maxEdgeChordDeviation", r.maxChordDeviation},
           {"triangles", r.mesh.mesh.triangleCount()},
           {"vertices", r.mesh.mesh.vertexCount()},
@@ -102,6 +106,11 @@ void printCadSummary(FILE* to, const std::string& input, const CadResult& r,
                largest(r, &TrimmedFaceStats::maxGeometricDeviation),
                largest(r, &TrimmedFaceStats::maxParametricDeviation), r.maxChordDeviation,
                largest(r, &TrimmedFaceStats::maxTrimPointOffset));
+  if (r.instanceCopies != 0)
+    std::fprintf(to,
+                 "assembly: %zu part%s placed more than once, meshed once and moved to %zu "
+                 "more places\n",
+                 r.instancedParts, r.instancedParts == 1 ? "" : "s", r.instanceCopies);
   for (const std::string& f : r.failures) std::fprintf(to, "skipped: %s\n", f.c_str());
   for (const std::string& f : r.emptyFaces)
     std::fprintf(to, "empty: %s (no triangles)\n", f.c_str());
@@ -199,7 +208,9 @@ int renderCadModel(const CadRenderCommand& c) {
 
 int describeCadModel(const std::string& path) {
   const CadFile file = readCadFile(path);
-  const double delta = kDefaultRelativeTolerance * cadModelDiagonal(file);
+  // δ as `tessera tessellate` takes it (an assembly's diagonal from its parts' placed boxes).
+  const InstancePlan plan = planInstances(file.shape);
+  const double delta = kDefaultRelativeTolerance * plannedModelDiagonal(plan, file);
   const CadImport in = toTrimmedModel(file, delta);
   std::printf(
       "%s: %d faces (%zu converted, %zu of zero area, %zu failed), %d edges, %d vertices, "
@@ -207,6 +218,11 @@ int describeCadModel(const std::string& path) {
       path.c_str(), in.faces.Extent(), in.model.faces.size(), in.emptyFaces.size(),
       in.failures.size(), in.edges.Extent(), in.vertices.Extent(), in.model.sharedPoints.size(),
       delta);
+  if (!plan.copies.empty())
+    std::printf(
+        "assembly: %zu part%s placed more than once; tessellate meshes each once and "
+        "moves it to %zu more places\n",
+        plan.parts.size(), plan.parts.size() == 1 ? "" : "s", plan.copies.size());
   for (const auto& failure : in.failures) std::printf("failed: %s\n", failure.message.c_str());
   for (const auto& face : in.emptyFaces)
     std::printf("empty: %s (no triangles)\n", face.message.c_str());

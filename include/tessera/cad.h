@@ -50,6 +50,9 @@ struct CadMesh {
   std::vector<std::string> emptyFaces;
   std::vector<std::string> warnings;      // edges off their faces beyond the file's tolerance,
                                           // faces whose refinement ended over δ
+  // An assembly's part placed more than once is meshed once and its mesh moved to its other
+  // places (docs/cad.md, "Assemblies"): how many placements were such moved copies.
+  size_t instanceCopies = 0;
 };
 
 // Reads and meshes `path` on the tessellator's device (the trees and their trim pass; the

@@ -1,0 +1,348 @@
+#include "cad/instances.h"
+
+#include <BRepBndLib.hxx>
+#include <BRep_Builder.hxx>
+#include <Bnd_Box.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Iterator.hxx>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace tessera {
+namespace {
+
+// The compound's members that are not compounds, located and oriented as the shape places
+// them (TopoDS_Iterator composes both), in the depth-first order TopExp::MapShapes walks.
+void collectLeaves(const TopoDS_Shape& shape, std::vector<TopoDS_Shape>& leaves) {
+  if (shape.ShapeType() != TopAbs_COMPOUND) {
+    leaves.push_back(shape);
+    return;
+  }
+  for (TopoDS_Iterator it(shape); it.More(); it.Next()) collectLeaves(it.Value(), leaves);
+}
+
+// A motion that keeps distances and sides: no scale, no mirror (a mirrored copy's triangles
+// would face inwards; a scaled one would be off its surface by the scale times δ).
+bool isRigid(const gp_Trsf& motion) {
+  return std::abs(motion.ScaleFactor() - 1.0) <= 1e-12 &&
+         motion.HVectorialPart().Determinant() > 0.0;
+}
+
+// Leaf TShapes that share an edge or vertex with another leaf TShape: a copy of either could
+// not weld to the other, so neither is copied.
+std::unordered_set<const TopoDS_TShape*> entangledParts(const std::vector<TopoDS_Shape>& leaves) {
+  std::unordered_map<const TopoDS_TShape*, const TopoDS_TShape*> ownerOf;
+  std::unordered_set<const TopoDS_TShape*> seen, entangled;
+  for (const TopoDS_Shape& leaf : leaves) {
+    const TopoDS_TShape* part = leaf.TShape().get();
+    if (!seen.insert(part).second) continue;
+    for (TopAbs_ShapeEnum kind : {TopAbs_EDGE, TopAbs_VERTEX})
+      for (TopExp_Explorer e(leaf, kind); e.More(); e.Next()) {
+        const auto [at, added] = ownerOf.emplace(e.Current().TShape().get(), part);
+        if (!added && at->second != part) entangled.insert({part, at->second});
+      }
+  }
+  return entangled;
+}
+
+std::vector<uint32_t> numbersIn(const TopoDS_Shape& shape, TopAbs_ShapeEnum kind,
+                                const TopTools_IndexedMapOfShape& model) {
+  TopTools_IndexedMapOfShape own;
+  TopExp::MapShapes(shape, kind, own);
+  std::vector<uint32_t> numbers(size_t(own.Extent()));
+  for (int k = 1; k <= own.Extent(); ++k) {
+    const int index = model.FindIndex(own(k));
+    if (index == 0) throw std::logic_error("planInstances: a part's shape is not in the model");
+    numbers[size_t(k - 1)] = uint32_t(index - 1);
+  }
+  return numbers;
+}
+
+}  // namespace
+
+InstancePlan planInstances(const TopoDS_Shape& shape) {
+  InstancePlan plan;
+  std::vector<TopoDS_Shape> leaves;
+  collectLeaves(shape, leaves);
+  // Per leaf: -1 meshed in place, -2 left out (a part again at the same place, which the
+  // model's maps hold once), else the index of the part's first leaf it copies.
+  std::vector<long> role(leaves.size(), -1);
+  std::unordered_map<const TopoDS_TShape*, size_t> firstLeaf;
+  bool anyCopy = false;
+  for (size_t i = 0; i < leaves.size(); ++i) {
+    const auto [at, added] = firstLeaf.emplace(leaves[i].TShape().get(), i);
+    if (added) continue;
+    const TopoDS_Shape& first = leaves[at->second];
+    if (leaves[i].Location().IsEqual(first.Location())) {
+      role[i] = -2;
+      continue;
+    }
+    gp_Trsf motion = leaves[i].Location().Transformation();
+    motion.Multiply(first.Location().Transformation().Inverted());
+    if (leaves[i].Orientation() == first.Orientation() && isRigid(motion)) {
+      role[i] = long(at->second);
+      anyCopy = true;
+    }
+  }
+  if (!anyCopy) return plan;
+  const std::unordered_set<const TopoDS_TShape*> entangled = entangledParts(leaves);
+  for (size_t i = 0; i < leaves.size(); ++i)
+    if (role[i] >= 0 && entangled.count(leaves[i].TShape().get())) role[i] = -1;
+  if (std::none_of(role.begin(), role.end(), [](long r) { return r >= 0; })) return plan;
+
+  BRep_Builder builder;
+  TopoDS_Compound parts;
+  builder.MakeCompound(parts);
+  for (size_t i = 0; i < leaves.size(); ++i)
+    if (role[i] == -1) builder.Add(parts, leaves[i]);
+  plan.meshShape = parts;
+
+  TopTools_IndexedMapOfShape modelFaces, modelEdges;
+  TopExp::MapShapes(shape, TopAbs_FACE, modelFaces);
+  TopExp::MapShapes(shape, TopAbs_EDGE, modelEdges);
+  plan.modelFaces = size_t(modelFaces.Extent());
+  plan.modelEdges = size_t(modelEdges.Extent());
+  plan.numbering.faces = numbersIn(plan.meshShape, TopAbs_FACE, modelFaces);
+  plan.numbering.edges = numbersIn(plan.meshShape, TopAbs_EDGE, modelEdges);
+
+  std::unordered_map<size_t, size_t> partOfLeaf;  // a part's first leaf → its index in parts
+  for (size_t i = 0; i < leaves.size(); ++i) {
+    if (role[i] < 0) continue;
+    const size_t first = size_t(role[i]);
+    auto [at, added] = partOfLeaf.emplace(first, plan.parts.size());
+    if (added)
+      plan.parts.push_back({leaves[first], numbersIn(leaves[first], TopAbs_FACE, modelFaces),
+                            numbersIn(leaves[first], TopAbs_EDGE, modelEdges)});
+    InstanceCopy copy;
+    copy.part = at->second;
+    copy.motion = leaves[i].Location().Transformation();
+    copy.motion.Multiply(leaves[first].Location().Transformation().Inverted());
+    copy.faces = numbersIn(leaves[i], TopAbs_FACE, modelFaces);
+    copy.edges = numbersIn(leaves[i], TopAbs_EDGE, modelEdges);
+    const InstancedPart& part = plan.parts[copy.part];
+    if (copy.faces.size() != part.faces.size() || copy.edges.size() != part.edges.size())
+      throw std::logic_error("planInstances: an instance maps otherwise than its part");
+    plan.copies.push_back(std::move(copy));
+  }
+  return plan;
+}
+
+double plannedModelDiagonal(const InstancePlan& plan, const CadFile& file) {
+  if (plan.copies.empty()) return cadModelDiagonal(file);
+  return checkedCadDiagonal(file, [&] {
+    Bnd_Box box;
+    BRepBndLib::Add(plan.meshShape, box);
+    std::vector<Bnd_Box> parts(plan.parts.size());
+    for (size_t p = 0; p < parts.size(); ++p) BRepBndLib::Add(plan.parts[p].firstLeaf, parts[p]);
+    for (const InstanceCopy& copy : plan.copies) box.Add(parts[copy.part].Transformed(copy.motion));
+    return box.IsVoid() ? 1.0 : std::sqrt(box.SquareExtent());  // as defaultCadTolerance
+  });
+}
+
+namespace {
+
+// Where a face number lies in the parts: (part, slot), for the faces of parts that have copies.
+struct PartSlot {
+  size_t part = 0, slot = 0;
+};
+
+std::unordered_map<uint32_t, PartSlot> faceSlots(const InstancePlan& plan) {
+  std::unordered_map<uint32_t, PartSlot> slots;
+  for (size_t p = 0; p < plan.parts.size(); ++p)
+    for (size_t s = 0; s < plan.parts[p].faces.size(); ++s) slots[plan.parts[p].faces[s]] = {p, s};
+  return slots;
+}
+
+// The entity label of the converted shape's face numbered `number`.
+const std::string& entityOf(const CadFile& file, const CadImport& import, uint32_t number) {
+  for (int k = 1; k <= import.faces.Extent(); ++k)
+    if (import.faceNumber(size_t(k - 1)) == number)
+      return faceEntityLabel(file, TopoDS::Face(import.faces(k)));
+  throw std::logic_error("instances: face " + std::to_string(number) + " is not in the import");
+}
+
+glm::dvec3 moved(const gp_Trsf& motion, const glm::dvec3& p) {
+  double x = p.x, y = p.y, z = p.z;
+  motion.Transforms(x, y, z);
+  return {x, y, z};
+}
+
+glm::dvec3 turned(const gp_Trsf& motion, const glm::dvec3& v) {
+  gp_XYZ xyz(v.x, v.y, v.z);
+  xyz.Multiply(motion.HVectorialPart());  // rigid: the rotation alone
+  return {xyz.X(), xyz.Y(), xyz.Z()};
+}
+
+// One part's share of the mesh: its faces' positions, its triangles and its vertices.
+struct PartMesh {
+  std::vector<std::pair<uint32_t, size_t>> positions;  // (position, slot)
+  std::vector<uint32_t> triangles;
+  std::vector<uint32_t> vertices;  // in first use order
+  std::vector<uint32_t> corners;   // per triangle corner: index into `vertices`
+};
+
+std::vector<PartMesh> partMeshes(const InstancePlan& plan, const TrimmedMesh& mesh,
+                                 const std::vector<uint32_t>& faceNumberOfPosition) {
+  const std::unordered_map<uint32_t, PartSlot> slots = faceSlots(plan);
+  std::vector<PartMesh> parts(plan.parts.size());
+  constexpr size_t kNone = std::numeric_limits<size_t>::max();
+  std::vector<size_t> partOfPosition(faceNumberOfPosition.size(), kNone);
+  for (size_t p = 0; p < faceNumberOfPosition.size(); ++p) {
+    const auto found = slots.find(faceNumberOfPosition[p]);
+    if (found == slots.end()) continue;
+    partOfPosition[p] = found->second.part;
+    parts[found->second.part].positions.push_back({uint32_t(p), found->second.slot});
+  }
+  constexpr uint32_t kUnseen = std::numeric_limits<uint32_t>::max();
+  std::vector<uint32_t> local(mesh.mesh.vertexCount(), kUnseen);  // parts' vertices are their own
+  for (size_t t = 0; t < mesh.triangleFace.size(); ++t) {
+    const size_t part = partOfPosition[mesh.triangleFace[t]];
+    if (part == kNone) continue;
+    PartMesh& pm = parts[part];
+    pm.triangles.push_back(uint32_t(t));
+    for (int c = 0; c < 3; ++c) {
+      const uint32_t v = mesh.mesh.indices[3 * t + size_t(c)];
+      if (local[v] == kUnseen) {
+        local[v] = uint32_t(pm.vertices.size());
+        pm.vertices.push_back(v);
+      }
+      pm.corners.push_back(local[v]);
+    }
+  }
+  return parts;
+}
+
+// Room for every copy at once: the vectors grow by the copies' count times the part's size.
+void reserveForCopies(const InstancePlan& plan, const std::vector<PartMesh>& parts,
+                      TrimmedMesh& out) {
+  size_t vertices = 0, triangles = 0, faces = 0;
+  for (const InstanceCopy& copy : plan.copies) {
+    vertices += parts[copy.part].vertices.size();
+    triangles += parts[copy.part].triangles.size();
+    faces += parts[copy.part].positions.size();
+  }
+  TriangleMesh& m = out.mesh;
+  const auto grow = [](auto& vector, size_t more) {
+    if (!vector.empty()) vector.reserve(vector.size() + more);
+  };
+  for (auto* v : {&m.positions, &m.normals}) grow(*v, vertices);
+  grow(m.uvs, vertices);
+  grow(m.patchIds, vertices);
+  for (auto* v : {&m.positionsDouble, &m.normalsDouble}) grow(*v, vertices);
+  grow(m.indices, 3 * triangles);
+  grow(m.trianglePatchIds, triangles);
+  grow(out.triangleFace, triangles);
+  grow(out.cornerUv, 3 * triangles);
+  grow(out.faces, faces);
+}
+
+void appendCopy(const PartMesh& part, const InstanceCopy& copy, TrimmedMesh& out,
+                std::vector<uint32_t>& faceNumberOfPosition, std::vector<uint32_t>& newPosition) {
+  TriangleMesh& m = out.mesh;
+  for (const auto& [position, slot] : part.positions) {
+    newPosition[position] = uint32_t(faceNumberOfPosition.size());
+    faceNumberOfPosition.push_back(copy.faces[slot]);
+    TrimmedFaceStats stats = out.faces[position];  // a copy: push_back may move the vector
+    stats.faceIndex = copy.faces[slot];
+    out.faces.push_back(stats);
+  }
+  const uint32_t base = uint32_t(m.positions.size());
+  const bool hasDouble = !m.positionsDouble.empty();
+  for (uint32_t v : part.vertices) {
+    const glm::dvec3 p =
+        moved(copy.motion, hasDouble ? m.positionsDouble[v] : glm::dvec3(m.positions[v]));
+    m.positions.push_back(glm::vec3(p));
+    if (hasDouble) m.positionsDouble.push_back(p);
+    if (!m.normals.empty())
+      m.normals.push_back(glm::vec3(turned(copy.motion, glm::dvec3(m.normals[v]))));
+    if (!m.normalsDouble.empty())
+      m.normalsDouble.push_back(turned(copy.motion, m.normalsDouble[v]));
+    if (!m.uvs.empty()) {
+      const glm::vec2 uv = m.uvs[v];  // (not a reference into the vector it grows)
+      m.uvs.push_back(uv);
+    }
+    if (!m.patchIds.empty()) m.patchIds.push_back(newPosition[m.patchIds[v]]);
+  }
+  for (size_t k = 0; k < part.triangles.size(); ++k) {
+    const uint32_t t = part.triangles[k];
+    for (int c = 0; c < 3; ++c) m.indices.push_back(base + part.corners[3 * k + size_t(c)]);
+    out.triangleFace.push_back(newPosition[out.triangleFace[t]]);
+    for (int c = 0; c < 3; ++c) {
+      const glm::dvec2 uv = out.cornerUv[3 * t + size_t(c)];
+      out.cornerUv.push_back(uv);
+    }
+    if (!m.trianglePatchIds.empty())
+      m.trianglePatchIds.push_back(newPosition[m.trianglePatchIds[t]]);
+  }
+}
+
+}  // namespace
+
+std::vector<CadFaceFailure> copiedFaceFailures(const InstancePlan& plan, const CadFile& file,
+                                               const CadImport& import,
+                                               const std::vector<CadFaceFailure>& failures) {
+  std::vector<CadFaceFailure> copied;
+  if (plan.copies.empty() || failures.empty()) return copied;
+  const std::unordered_map<uint32_t, PartSlot> slots = faceSlots(plan);
+  for (const CadFaceFailure& failure : failures) {
+    const auto found = slots.find(failure.faceIndex);
+    if (found == slots.end()) continue;
+    const std::string& entity = entityOf(file, import, failure.faceIndex);
+    for (const InstanceCopy& copy : plan.copies) {
+      if (copy.part != found->second.part) continue;
+      CadFaceFailure again = failure;
+      again.faceIndex = copy.faces[found->second.slot];
+      again.label = cadFaceLabel(again.faceIndex, entity);
+      again.message = file.path + ": " + again.label + ": " + again.reason;
+      copied.push_back(std::move(again));
+    }
+  }
+  return copied;
+}
+
+std::vector<CadEdgeWarning> copiedEdgeWarnings(const InstancePlan& plan, const CadFile& file,
+                                               const CadImport& import) {
+  std::vector<CadEdgeWarning> copied;
+  if (plan.copies.empty() || import.warnings.empty()) return copied;
+  const std::unordered_map<uint32_t, PartSlot> slots = faceSlots(plan);
+  for (const CadEdgeWarning& warning : import.warnings) {
+    const auto found = slots.find(warning.faceIndex);
+    if (found == slots.end()) continue;
+    const InstancedPart& part = plan.parts[found->second.part];
+    const size_t edgeSlot = size_t(
+        std::find(part.edges.begin(), part.edges.end(), warning.edgeIndex) - part.edges.begin());
+    if (edgeSlot == part.edges.size())
+      throw std::logic_error("instances: a warned edge is not its face's part's");
+    const std::string& entity = entityOf(file, import, warning.faceIndex);
+    for (const InstanceCopy& copy : plan.copies) {
+      if (copy.part != found->second.part) continue;
+      const uint32_t face = copy.faces[found->second.slot];
+      copied.push_back(cadEdgeWarning(file.path, face, cadFaceLabel(face, entity),
+                                      copy.edges[edgeSlot], warning.gap, warning.tolerance));
+    }
+  }
+  return copied;
+}
+
+void addInstanceCopies(const InstancePlan& plan, TrimmedMesh& mesh,
+                       std::vector<uint32_t>& faceNumberOfPosition) {
+  if (plan.copies.empty()) return;
+  const std::vector<PartMesh> parts = partMeshes(plan, mesh, faceNumberOfPosition);
+  // Per position of the converted shape's faces: the copy's own (a part's faces), else itself.
+  std::vector<uint32_t> newPosition(faceNumberOfPosition.size());
+  std::iota(newPosition.begin(), newPosition.end(), 0u);
+  reserveForCopies(plan, parts, mesh);
+  for (const InstanceCopy& copy : plan.copies)
+    appendCopy(parts[copy.part], copy, mesh, faceNumberOfPosition, newPosition);
+}
+
+}  // namespace tessera

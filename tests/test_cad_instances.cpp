@@ -1,0 +1,214 @@
+// An assembly's repeated parts (host/cad/instances.h, docs/cad.md "Assemblies"): a part placed
+// several times is converted and meshed once and its mesh moved to every other place. Each
+// instance must still be closed, within δ of its own faces, and named by its own face numbers;
+// a scaled instance, and a part that shares an edge with another, are meshed in place.
+#include <catch2/catch.hpp>
+
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Iterator.hxx>
+#include <gp_Ax1.hxx>
+#include <gp_Trsf.hxx>
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "cad/cad_file.h"
+#include "cad/mesh_cad_file.h"
+#include "cad_test_shapes.h"
+#include "mesh/tessellate.h"
+#include "mesh_checks.h"
+#include "scratch_dir.h"
+#include "tessera/cad.h"
+#include "tessera/errors.h"
+
+using namespace tessera;
+
+namespace {
+
+TopLoc_Location translation(double x, double y, double z) {
+  gp_Trsf t;
+  t.SetTranslation(gp_Vec(x, y, z));
+  return TopLoc_Location(t);
+}
+
+TopoDS_Compound compoundOf(const std::vector<TopoDS_Shape>& shapes) {
+  BRep_Builder builder;
+  TopoDS_Compound compound;
+  builder.MakeCompound(compound);
+  for (const TopoDS_Shape& shape : shapes) builder.Add(compound, shape);
+  return compound;
+}
+
+std::string written(const test::ScratchDir& dir, const std::string& name,
+                    const TopoDS_Shape& shape) {
+  const std::string path = (dir.path / name).string();
+  REQUIRE(BRepTools::Write(shape, path.c_str()));
+  return path;
+}
+
+ToleranceSpec absolute(double delta) {
+  ToleranceSpec spec;
+  spec.value = delta;
+  spec.relative = false;
+  spec.text = std::to_string(delta);
+  return spec;
+}
+
+// The model's face numbers of `leaf`'s faces (TopExp::MapShapes order, as the import numbers).
+std::vector<uint32_t> faceNumbers(const TopoDS_Shape& model, const TopoDS_Shape& leaf) {
+  TopTools_IndexedMapOfShape all, own;
+  TopExp::MapShapes(model, TopAbs_FACE, all);
+  TopExp::MapShapes(leaf, TopAbs_FACE, own);
+  std::vector<uint32_t> numbers;
+  for (int k = 1; k <= own.Extent(); ++k) numbers.push_back(uint32_t(all.FindIndex(own(k)) - 1));
+  return numbers;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "cad instances: a part placed three times is meshed once, each instance closed and "
+    "within δ of its own faces",
+    "[cad][instances]") {
+  test::ScratchDir dir("cad_instances");
+  const TopoDS_Shape part = BRepPrimAPI_MakeCylinder(1.0, 2.0).Shape();
+  gp_Trsf turn;
+  turn.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(1, 1, 1)), 0.7);
+  gp_Trsf turnedAndMoved = translation(0, 6, 1).Transformation();
+  turnedAndMoved.Multiply(turn);
+  gp_Trsf scaled;
+  scaled.SetScale(gp_Pnt(10, 0, 0), 1.5);
+  const std::vector<TopoDS_Shape> leaves = {
+      part,
+      BRepPrimAPI_MakeBox(gp_Pnt(-4, -4, 0), 1.0, 1.0, 1.0).Shape(),
+      part.Moved(translation(5, 0, 0)),
+      part.Moved(TopLoc_Location(turnedAndMoved)),
+      part.Moved(TopLoc_Location(scaled), /*theRaiseExc=*/false),  // not rigid: in place
+  };
+  const std::string path = written(dir, "assembly.brep", compoundOf(leaves));
+  const CadFile file = readCadFile(path);  // the shape as the run reads it (TShapes shared)
+
+  constexpr double delta = 0.01;
+  Backend backend = makeMirrorBackend();
+  const CadMeshRun run = meshCadFile(path, absolute(delta), false, "", backend, nullptr);
+  REQUIRE(run.failures.empty());
+  CHECK(run.faces == 4 * 3 + 6);
+  CHECK(run.instancedParts == 1);
+  CHECK(run.instanceCopies == 2);
+  Tessellator tessellator({Device::Cpu});  // the public API says so too
+  CHECK(tessellateCadFile(tessellator, path).instanceCopies == 2);
+  REQUIRE(run.mesh.faces.size() == run.faces);
+  REQUIRE(run.mesh.triangleFace.size() == run.mesh.mesh.triangleCount());
+
+  // Closed, every instance: a copy welds to nothing but itself.
+  const test::EdgeCensus census = test::censusOf(run.mesh.mesh, 0.0);
+  CHECK(census.boundaryEdges == 0);
+  CHECK(census.overusedEdges == 0);
+  CHECK(census.inconsistentEdges == 0);
+  CHECK(census.degenerateTriangles == 0);
+
+  // Each face's triangles within δ of that face's own surface, at its own place: the copies'
+  // motions and numbers measured against Open CASCADE, not against the stats they copied.
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(file.shape, TopAbs_FACE, faces);
+  std::map<uint32_t, size_t> trianglesOf;
+  double worstVertex = 0, worstInside = 0;
+  const TriangleMesh& mesh = run.mesh.mesh;
+  for (size_t t = 0; t < mesh.triangleCount(); ++t) {
+    const uint32_t face = run.mesh.triangleFace[t];
+    REQUIRE(face < uint32_t(faces.Extent()));
+    ++trianglesOf[face];
+    GeomAPI_ProjectPointOnSurf onSurface;
+    onSurface.Init(BRep_Tool::Surface(TopoDS::Face(faces(int(face) + 1))), -1e9, 1e9, -1e9, 1e9);
+    const auto distance = [&](const glm::dvec3& p) {
+      onSurface.Perform(gp_Pnt(p.x, p.y, p.z));
+      REQUIRE(onSurface.NbPoints() > 0);
+      return onSurface.LowerDistance();
+    };
+    glm::dvec3 corner[3];
+    for (int c = 0; c < 3; ++c) {
+      corner[c] = glm::dvec3(mesh.positions[mesh.indices[3 * t + size_t(c)]]);
+      worstVertex = std::max(worstVertex, distance(corner[c]));
+    }
+    for (const glm::dvec3& p :
+         {(corner[0] + corner[1] + corner[2]) / 3.0, (corner[0] + corner[1]) / 2.0,
+          (corner[1] + corner[2]) / 2.0, (corner[2] + corner[0]) / 2.0})
+      worstInside = std::max(worstInside, distance(p));
+  }
+  INFO("vertices off their face by ≤ " << worstVertex << ", triangles by ≤ " << worstInside);
+  CHECK(worstVertex <= 1e-5);  // fp32 positions
+  CHECK(worstInside <= delta + 1e-5);
+  CHECK(trianglesOf.size() == run.faces);  // every face has triangles, under its own number
+
+  // The copies have the first instance's triangles, face by face (leaves as read back).
+  std::vector<TopoDS_Shape> read;
+  for (TopoDS_Iterator it(file.shape); it.More(); it.Next()) read.push_back(it.Value());
+  REQUIRE(read.size() == leaves.size());
+  const std::vector<uint32_t> first = faceNumbers(file.shape, read[0]);
+  for (size_t leaf : {size_t(2), size_t(3)}) {
+    const std::vector<uint32_t> copy = faceNumbers(file.shape, read[leaf]);
+    REQUIRE(copy.size() == first.size());
+    for (size_t f = 0; f < first.size(); ++f) {
+      CHECK(trianglesOf[first[f]] > 0);
+      CHECK(trianglesOf[copy[f]] == trianglesOf[first[f]]);
+    }
+  }
+}
+
+TEST_CASE("cad instances: a part sharing an edge with another part is meshed at each place",
+          "[cad][instances]") {
+  test::ScratchDir dir("cad_instances");
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(1.0, 1.0, 1.0).Shape();
+  TopTools_IndexedDataMapOfShapeListOfShape facesOfEdge;
+  TopExp::MapShapesAndAncestors(box, TopAbs_EDGE, TopAbs_FACE, facesOfEdge);
+  const TopoDS_Shape a = facesOfEdge(1).First(), b = facesOfEdge(1).Last();
+  REQUIRE(!a.IsSame(b));
+  // a and b welded along their edge; a placed again: it could not weld to b there, so it is
+  // not a copy.
+  const std::string path =
+      written(dir, "faces.brep", compoundOf({a, b, a.Moved(translation(3, 0, 0))}));
+  Backend backend = makeMirrorBackend();
+  const CadMeshRun run = meshCadFile(path, absolute(0.01), false, "", backend, nullptr);
+  CHECK(run.faces == 3);
+  CHECK(run.instanceCopies == 0);
+  CHECK(run.mesh.mesh.triangleCount() == 6);  // planes: two triangles a face
+  const test::EdgeCensus census = test::censusOf(run.mesh.mesh, 0.0);
+  CHECK(census.boundaryEdges == 3 * 4 - 2);  // a and b share one side
+}
+
+TEST_CASE("cad instances: a face that fails is named at every instance", "[cad][instances]") {
+  test::ScratchDir dir("cad_instances");
+  const TopoDS_Shape bad = test::degreeEightFace();
+  const std::string path =
+      written(dir, "bad_twice.brep",
+              compoundOf({bad, BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 5), 1.0, 1.0, 1.0).Shape(),
+                          bad.Moved(translation(0, 0, 10))}));
+  Backend backend = makeMirrorBackend();
+  try {
+    meshCadFile(path, ToleranceSpec{}, false, "--skip-bad-faces", backend, nullptr);
+    FAIL("a model with faces that do not convert was meshed");
+  } catch (const InputError& e) {
+    INFO(e.what());
+    CHECK(std::string(e.what()).find("2 of 8 faces could not be converted") != std::string::npos);
+    CHECK(std::string(e.what()).find("face 0: ") != std::string::npos);
+    CHECK(std::string(e.what()).find("face 7: ") != std::string::npos);
+  }
+  const CadMeshRun run = meshCadFile(path, ToleranceSpec{}, true, "", backend, nullptr);
+  CHECK(run.instanceCopies == 1);
+  REQUIRE(run.failures.size() == 2);
+  CHECK(run.failures[0].find(path + ": face 0: ") == 0);
+  CHECK(run.failures[1].find(path + ": face 7: ") == 0);
+  CHECK(run.mesh.faces.size() == 6);
+  CHECK(run.mesh.mesh.triangleCount() == 12);
+}
