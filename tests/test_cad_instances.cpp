@@ -25,7 +25,9 @@
 
 #include "cad/cad_file.h"
 #include "cad/mesh_cad_file.h"
+#include "cad/to_trimmed.h"
 #include "cad_test_shapes.h"
+#include "common/memory_budget.h"
 #include "mesh/tessellate.h"
 #include "mesh_checks.h"
 #include "scratch_dir.h"
@@ -185,6 +187,58 @@ TEST_CASE("cad instances: a part sharing an edge with another part is meshed at 
   CHECK(run.mesh.mesh.triangleCount() == 6);  // planes: two triangles a face
   const test::EdgeCensus census = test::censusOf(run.mesh.mesh, 0.0);
   CHECK(census.boundaryEdges == 3 * 4 - 2);  // a and b share one side
+}
+
+// CAP_50SGV_8_10's two faces whose edge curves leave them (edge warnings): placed three times,
+// with a part of its own between, the copies' warnings are those that converting every
+// placement gives, face and edge numbers included, in the same order.
+TEST_CASE("cad instances: the copies' warnings name the faces and edges every placement has",
+          "[cad][instances]") {
+  test::ScratchDir dir("cad_instances");
+  const CadFile cap = readCadFile("/usr/share/freecad/Mod/Idf/Idflibs/CAP_50SGV_8_10.stp");
+  gp_Trsf turn;
+  turn.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 1.0);
+  const std::string path = written(
+      dir, "caps.brep",
+      compoundOf(
+          {cap.shape, BRepPrimAPI_MakeBox(gp_Pnt(0, 30, 0), 1.0, 1.0, 1.0).Shape(),
+           cap.shape.Moved(translation(30, 0, 0)),
+           cap.shape.Moved(TopLoc_Location(translation(0, -30, 0).Transformation() * turn))}));
+  Backend backend = makeMirrorBackend();
+  const CadMeshRun run = meshCadFile(path, ToleranceSpec{}, false, "", backend, nullptr);
+  REQUIRE(run.instanceCopies == 2);
+  const CadFile file = readCadFile(path);
+  const CadImport every = toTrimmedModel(file, run.delta);  // every placement converted
+  REQUIRE(every.warnings.size() == 6);
+  std::vector<std::string> expected;
+  for (const CadEdgeWarning& w : every.warnings) expected.push_back(w.message);
+  CHECK(run.warnings == expected);
+  CHECK(run.faces == size_t(every.faces.Extent()));
+  CHECK(run.edges == size_t(every.edges.Extent()));
+}
+
+// The copies multiply the mesh: they are counted against the memory budget before they are made.
+TEST_CASE("cad instances: the copies are held to the memory budget", "[cad][instances]") {
+  test::ScratchDir dir("cad_instances");
+  const TopoDS_Shape part = BRepPrimAPI_MakeCylinder(1.0, 2.0).Shape();
+  std::vector<TopoDS_Shape> placed;
+  for (int k = 0; k < 40; ++k) placed.push_back(part.Moved(translation(3.0 * k, 0, 0)));
+  const std::string path = written(dir, "forty.brep", compoundOf(placed));
+  Backend backend = makeMirrorBackend();
+  const CadMeshRun run = meshCadFile(path, absolute(0.001), false, "", backend, nullptr);
+  REQUIRE(run.instanceCopies == 39);
+  const size_t triangles = run.mesh.mesh.triangleCount();
+  const uint64_t saved = memoryBudget();
+  setMemoryBudget(uint64_t(triangles) * 60);  // the part alone fits, its 40 placements do not
+  try {
+    meshCadFile(path, absolute(0.001), false, "", backend, nullptr);
+    setMemoryBudget(saved);
+    FAIL("40 copies were made past the memory budget");
+  } catch (const MemoryLimitError& e) {
+    setMemoryBudget(saved);
+    INFO(e.what());
+    CHECK(std::string(e.what()).find("39 placed copies of its parts") != std::string::npos);
+  }
 }
 
 TEST_CASE("cad instances: a face that fails is named at every instance", "[cad][instances]") {

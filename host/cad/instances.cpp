@@ -6,6 +6,7 @@
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <TopTools_MapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Iterator.hxx>
@@ -13,9 +14,13 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <unordered_map>
 #include <unordered_set>
+#include <utility>
+
+#include "common/memory_budget.h"
 
 namespace tessera {
 namespace {
@@ -37,7 +42,7 @@ bool isRigid(const gp_Trsf& motion) {
          motion.HVectorialPart().Determinant() > 0.0;
 }
 
-// Leaf TShapes that share an edge or vertex with another leaf TShape: a copy of either could
+// Leaf TShapes that share a face, edge or vertex with another leaf TShape: a copy of either could
 // not weld to the other, so neither is copied.
 std::unordered_set<const TopoDS_TShape*> entangledParts(const std::vector<TopoDS_Shape>& leaves) {
   std::unordered_map<const TopoDS_TShape*, const TopoDS_TShape*> ownerOf;
@@ -45,7 +50,7 @@ std::unordered_set<const TopoDS_TShape*> entangledParts(const std::vector<TopoDS
   for (const TopoDS_Shape& leaf : leaves) {
     const TopoDS_TShape* part = leaf.TShape().get();
     if (!seen.insert(part).second) continue;
-    for (TopAbs_ShapeEnum kind : {TopAbs_EDGE, TopAbs_VERTEX})
+    for (TopAbs_ShapeEnum kind : {TopAbs_FACE, TopAbs_EDGE, TopAbs_VERTEX})
       for (TopExp_Explorer e(leaf, kind); e.More(); e.Next()) {
         const auto [at, added] = ownerOf.emplace(e.Current().TShape().get(), part);
         if (!added && at->second != part) entangled.insert({part, at->second});
@@ -54,17 +59,30 @@ std::unordered_set<const TopoDS_TShape*> entangledParts(const std::vector<TopoDS
   return entangled;
 }
 
-std::vector<uint32_t> numbersIn(const TopoDS_Shape& shape, TopAbs_ShapeEnum kind,
-                                const TopTools_IndexedMapOfShape& model) {
-  TopTools_IndexedMapOfShape own;
-  TopExp::MapShapes(shape, kind, own);
-  std::vector<uint32_t> numbers(size_t(own.Extent()));
-  for (int k = 1; k <= own.Extent(); ++k) {
-    const int index = model.FindIndex(own(k));
-    if (index == 0) throw std::logic_error("planInstances: a part's shape is not in the model");
-    numbers[size_t(k - 1)] = uint32_t(index - 1);
+// The number of distinct faces and edges of a leaf (its TopExp::MapShapes extents), by part.
+struct PartCounts {
+  uint32_t faces = 0, edges = 0;
+};
+
+PartCounts countsOf(const TopoDS_Shape& leaf) {
+  TopTools_IndexedMapOfShape faces, edges;
+  TopExp::MapShapes(leaf, TopAbs_FACE, faces);
+  TopExp::MapShapes(leaf, TopAbs_EDGE, edges);
+  return {uint32_t(faces.Extent()), uint32_t(edges.Extent())};
+}
+
+// Adds the faces (or edges) of an entangled leaf that `met` does not hold yet, numbering them
+// from `count` on; appends the new numbers to `numbers` (the converted shape meets them there).
+void numberShared(const TopoDS_Shape& leaf, TopAbs_ShapeEnum kind, TopTools_IndexedMapOfShape& met,
+                  uint32_t& count, std::vector<uint32_t>& numbers) {
+  for (TopExp_Explorer e(leaf, kind); e.More(); e.Next()) {
+    const int before = met.Extent();
+    if (met.Add(e.Current()) > before) numbers.push_back(count++);
   }
-  return numbers;
+}
+
+void appendRange(std::vector<uint32_t>& numbers, uint32_t first, uint32_t count) {
+  for (uint32_t k = 0; k < count; ++k) numbers.push_back(first + k);
 }
 
 }  // namespace
@@ -73,19 +91,20 @@ InstancePlan planInstances(const TopoDS_Shape& shape) {
   InstancePlan plan;
   std::vector<TopoDS_Shape> leaves;
   collectLeaves(shape, leaves);
-  // Per leaf: -1 meshed in place, -2 left out (a part again at the same place, which the
-  // model's maps hold once), else the index of the part's first leaf it copies.
+  // Per leaf: -1 meshed in place, -2 left out (a part again at a place it has already, which
+  // the model's maps hold once), else the index of the part's first leaf it copies.
   std::vector<long> role(leaves.size(), -1);
   std::unordered_map<const TopoDS_TShape*, size_t> firstLeaf;
+  TopTools_MapOfShape placed;  // by TShape and location, as the model's maps key them
   bool anyCopy = false;
   for (size_t i = 0; i < leaves.size(); ++i) {
     const auto [at, added] = firstLeaf.emplace(leaves[i].TShape().get(), i);
-    if (added) continue;
-    const TopoDS_Shape& first = leaves[at->second];
-    if (leaves[i].Location().IsEqual(first.Location())) {
+    if (!placed.Add(leaves[i])) {
       role[i] = -2;
       continue;
     }
+    if (added) continue;
+    const TopoDS_Shape& first = leaves[at->second];
     gp_Trsf motion = leaves[i].Location().Transformation();
     motion.Multiply(first.Location().Transformation().Inverted());
     if (leaves[i].Orientation() == first.Orientation() && isRigid(motion)) {
@@ -106,33 +125,51 @@ InstancePlan planInstances(const TopoDS_Shape& shape) {
     if (role[i] == -1) builder.Add(parts, leaves[i]);
   plan.meshShape = parts;
 
-  TopTools_IndexedMapOfShape modelFaces, modelEdges;
-  TopExp::MapShapes(shape, TopAbs_FACE, modelFaces);
-  TopExp::MapShapes(shape, TopAbs_EDGE, modelEdges);
-  plan.modelFaces = size_t(modelFaces.Extent());
-  plan.modelEdges = size_t(modelEdges.Extent());
-  plan.numbering.faces = numbersIn(plan.meshShape, TopAbs_FACE, modelFaces);
-  plan.numbering.edges = numbersIn(plan.meshShape, TopAbs_EDGE, modelEdges);
-
+  // The whole model's numbers, as TopExp::MapShapes gives them, counted leaf by leaf instead of
+  // mapped (mapping the model and each copy was 4 of 16 ms on 64 copies): a leaf of a part that
+  // shares nothing with another part brings faces and edges not met before (its other places
+  // are other locations), in its own MapShapes order; entangled leaves may share, so their
+  // shapes go through maps.
+  std::unordered_map<const TopoDS_TShape*, PartCounts> counts;
+  TopTools_IndexedMapOfShape sharedFaces, sharedEdges;
   std::unordered_map<size_t, size_t> partOfLeaf;  // a part's first leaf → its index in parts
+  std::vector<bool> copied(leaves.size(), false);  // leaves that a copy moves
+  for (long r : role)
+    if (r >= 0) copied[size_t(r)] = true;
+  uint32_t faces = 0, edges = 0;
   for (size_t i = 0; i < leaves.size(); ++i) {
-    if (role[i] < 0) continue;
-    const size_t first = size_t(role[i]);
-    auto [at, added] = partOfLeaf.emplace(first, plan.parts.size());
-    if (added)
-      plan.parts.push_back({leaves[first], numbersIn(leaves[first], TopAbs_FACE, modelFaces),
-                            numbersIn(leaves[first], TopAbs_EDGE, modelEdges)});
-    InstanceCopy copy;
-    copy.part = at->second;
-    copy.motion = leaves[i].Location().Transformation();
-    copy.motion.Multiply(leaves[first].Location().Transformation().Inverted());
-    copy.faces = numbersIn(leaves[i], TopAbs_FACE, modelFaces);
-    copy.edges = numbersIn(leaves[i], TopAbs_EDGE, modelEdges);
-    const InstancedPart& part = plan.parts[copy.part];
-    if (copy.faces.size() != part.faces.size() || copy.edges.size() != part.edges.size())
-      throw std::logic_error("planInstances: an instance maps otherwise than its part");
-    plan.copies.push_back(std::move(copy));
+    if (role[i] == -2) continue;
+    const TopoDS_TShape* tshape = leaves[i].TShape().get();
+    if (entangled.count(tshape)) {  // never a copy nor copied
+      numberShared(leaves[i], TopAbs_FACE, sharedFaces, faces, plan.numbering.faces);
+      numberShared(leaves[i], TopAbs_EDGE, sharedEdges, edges, plan.numbering.edges);
+      continue;
+    }
+    auto [at, added] = counts.emplace(tshape, PartCounts{});
+    if (added) at->second = countsOf(leaves[i]);
+    const PartCounts c = at->second;
+    if (role[i] == -1) {
+      appendRange(plan.numbering.faces, faces, c.faces);
+      appendRange(plan.numbering.edges, edges, c.edges);
+      if (copied[i]) {
+        partOfLeaf.emplace(i, plan.parts.size());
+        plan.parts.push_back({leaves[i], faces, edges, c.faces, c.edges});
+      }
+    } else {
+      const size_t first = size_t(role[i]);
+      InstanceCopy copy;
+      copy.part = partOfLeaf.at(first);  // its first place came before
+      copy.motion = leaves[i].Location().Transformation();
+      copy.motion.Multiply(leaves[first].Location().Transformation().Inverted());
+      copy.faceBase = faces;
+      copy.edgeBase = edges;
+      plan.copies.push_back(std::move(copy));
+    }
+    faces += c.faces;
+    edges += c.edges;
   }
+  plan.modelFaces = faces;
+  plan.modelEdges = edges;
   return plan;
 }
 
@@ -155,11 +192,24 @@ struct PartSlot {
   size_t part = 0, slot = 0;
 };
 
-std::unordered_map<uint32_t, PartSlot> faceSlots(const InstancePlan& plan) {
-  std::unordered_map<uint32_t, PartSlot> slots;
-  for (size_t p = 0; p < plan.parts.size(); ++p)
-    for (size_t s = 0; s < plan.parts[p].faces.size(); ++s) slots[plan.parts[p].faces[s]] = {p, s};
-  return slots;
+// The parts by their first place's face numbers, for slotOf.
+std::vector<std::pair<uint32_t, size_t>> partsByFaceBase(const InstancePlan& plan) {
+  std::vector<std::pair<uint32_t, size_t>> bases;
+  for (size_t p = 0; p < plan.parts.size(); ++p) bases.push_back({plan.parts[p].faceBase, p});
+  std::sort(bases.begin(), bases.end());
+  return bases;
+}
+
+std::optional<PartSlot> slotOf(const InstancePlan& plan,
+                               const std::vector<std::pair<uint32_t, size_t>>& bases,
+                               uint32_t face) {
+  const auto after = std::upper_bound(bases.begin(), bases.end(),
+                                      std::pair<uint32_t, size_t>(face, plan.parts.size()));
+  if (after == bases.begin()) return std::nullopt;
+  const size_t part = std::prev(after)->second;
+  const uint32_t slot = face - plan.parts[part].faceBase;
+  if (slot >= plan.parts[part].faceCount) return std::nullopt;
+  return PartSlot{part, slot};
 }
 
 // The entity label of the converted shape's face numbered `number`.
@@ -192,15 +242,15 @@ struct PartMesh {
 
 std::vector<PartMesh> partMeshes(const InstancePlan& plan, const TrimmedMesh& mesh,
                                  const std::vector<uint32_t>& faceNumberOfPosition) {
-  const std::unordered_map<uint32_t, PartSlot> slots = faceSlots(plan);
+  const std::vector<std::pair<uint32_t, size_t>> bases = partsByFaceBase(plan);
   std::vector<PartMesh> parts(plan.parts.size());
   constexpr size_t kNone = std::numeric_limits<size_t>::max();
   std::vector<size_t> partOfPosition(faceNumberOfPosition.size(), kNone);
   for (size_t p = 0; p < faceNumberOfPosition.size(); ++p) {
-    const auto found = slots.find(faceNumberOfPosition[p]);
-    if (found == slots.end()) continue;
-    partOfPosition[p] = found->second.part;
-    parts[found->second.part].positions.push_back({uint32_t(p), found->second.slot});
+    const std::optional<PartSlot> found = slotOf(plan, bases, faceNumberOfPosition[p]);
+    if (!found) continue;
+    partOfPosition[p] = found->part;
+    parts[found->part].positions.push_back({uint32_t(p), found->slot});
   }
   constexpr uint32_t kUnseen = std::numeric_limits<uint32_t>::max();
   std::vector<uint32_t> local(mesh.mesh.vertexCount(), kUnseen);  // parts' vertices are their own
@@ -221,15 +271,32 @@ std::vector<PartMesh> partMeshes(const InstancePlan& plan, const TrimmedMesh& me
   return parts;
 }
 
-// Room for every copy at once: the vectors grow by the copies' count times the part's size.
+// The bytes of one vertex and one triangle of `out`, as its arrays hold them.
+std::pair<uint64_t, uint64_t> bytesPerVertexAndTriangle(const TrimmedMesh& out) {
+  const TriangleMesh& m = out.mesh;
+  const auto bytes = [](const auto& vector) { return vector.empty() ? 0 : sizeof(vector[0]); };
+  return {bytes(m.positions) + bytes(m.normals) + bytes(m.uvs) + bytes(m.patchIds) +
+              bytes(m.positionsDouble) + bytes(m.normalsDouble),
+          3 * bytes(m.indices) + bytes(m.trianglePatchIds) + bytes(out.triangleFace) +
+              3 * sizeof(glm::dvec2)};  // cornerUv
+}
+
+// Room for every copy at once: the vectors grow by the copies' count times the part's size,
+// checked against the memory budget first (a board of 10⁵ placed parts multiplies the mesh).
 void reserveForCopies(const InstancePlan& plan, const std::vector<PartMesh>& parts,
                       TrimmedMesh& out) {
-  size_t vertices = 0, triangles = 0, faces = 0;
+  uint64_t vertices = 0, triangles = 0, faces = 0;
   for (const InstanceCopy& copy : plan.copies) {
     vertices += parts[copy.part].vertices.size();
     triangles += parts[copy.part].triangles.size();
     faces += parts[copy.part].positions.size();
   }
+  const auto [perVertex, perTriangle] = bytesPerVertexAndTriangle(out);
+  requireWithinMemoryBudget(
+      saturatingAdd(saturatingMultiply(out.mesh.vertexCount() + vertices, perVertex),
+                    saturatingMultiply(out.mesh.triangleCount() + triangles, perTriangle)),
+      "the mesh with " + std::to_string(plan.copies.size()) + " placed copies of its parts (" +
+          std::to_string(out.mesh.triangleCount() + triangles) + " triangles)");
   TriangleMesh& m = out.mesh;
   const auto grow = [](auto& vector, size_t more) {
     if (!vector.empty()) vector.reserve(vector.size() + more);
@@ -250,9 +317,9 @@ void appendCopy(const PartMesh& part, const InstanceCopy& copy, TrimmedMesh& out
   TriangleMesh& m = out.mesh;
   for (const auto& [position, slot] : part.positions) {
     newPosition[position] = uint32_t(faceNumberOfPosition.size());
-    faceNumberOfPosition.push_back(copy.faces[slot]);
+    faceNumberOfPosition.push_back(copy.faceBase + uint32_t(slot));
     TrimmedFaceStats stats = out.faces[position];  // a copy: push_back may move the vector
-    stats.faceIndex = copy.faces[slot];
+    stats.faceIndex = copy.faceBase + uint32_t(slot);
     out.faces.push_back(stats);
   }
   const uint32_t base = uint32_t(m.positions.size());
@@ -292,15 +359,15 @@ std::vector<CadFaceFailure> copiedFaceFailures(const InstancePlan& plan, const C
                                                const std::vector<CadFaceFailure>& failures) {
   std::vector<CadFaceFailure> copied;
   if (plan.copies.empty() || failures.empty()) return copied;
-  const std::unordered_map<uint32_t, PartSlot> slots = faceSlots(plan);
+  const std::vector<std::pair<uint32_t, size_t>> bases = partsByFaceBase(plan);
   for (const CadFaceFailure& failure : failures) {
-    const auto found = slots.find(failure.faceIndex);
-    if (found == slots.end()) continue;
+    const std::optional<PartSlot> found = slotOf(plan, bases, failure.faceIndex);
+    if (!found) continue;
     const std::string& entity = entityOf(file, import, failure.faceIndex);
     for (const InstanceCopy& copy : plan.copies) {
-      if (copy.part != found->second.part) continue;
+      if (copy.part != found->part) continue;
       CadFaceFailure again = failure;
-      again.faceIndex = copy.faces[found->second.slot];
+      again.faceIndex = copy.faceBase + uint32_t(found->slot);
       again.label = cadFaceLabel(again.faceIndex, entity);
       again.message = file.path + ": " + again.label + ": " + again.reason;
       copied.push_back(std::move(again));
@@ -313,21 +380,20 @@ std::vector<CadEdgeWarning> copiedEdgeWarnings(const InstancePlan& plan, const C
                                                const CadImport& import) {
   std::vector<CadEdgeWarning> copied;
   if (plan.copies.empty() || import.warnings.empty()) return copied;
-  const std::unordered_map<uint32_t, PartSlot> slots = faceSlots(plan);
+  const std::vector<std::pair<uint32_t, size_t>> bases = partsByFaceBase(plan);
   for (const CadEdgeWarning& warning : import.warnings) {
-    const auto found = slots.find(warning.faceIndex);
-    if (found == slots.end()) continue;
-    const InstancedPart& part = plan.parts[found->second.part];
-    const size_t edgeSlot = size_t(
-        std::find(part.edges.begin(), part.edges.end(), warning.edgeIndex) - part.edges.begin());
-    if (edgeSlot == part.edges.size())
+    const std::optional<PartSlot> found = slotOf(plan, bases, warning.faceIndex);
+    if (!found) continue;
+    const InstancedPart& part = plan.parts[found->part];
+    if (warning.edgeIndex < part.edgeBase || warning.edgeIndex - part.edgeBase >= part.edgeCount)
       throw std::logic_error("instances: a warned edge is not its face's part's");
+    const uint32_t edgeSlot = warning.edgeIndex - part.edgeBase;
     const std::string& entity = entityOf(file, import, warning.faceIndex);
     for (const InstanceCopy& copy : plan.copies) {
-      if (copy.part != found->second.part) continue;
-      const uint32_t face = copy.faces[found->second.slot];
+      if (copy.part != found->part) continue;
+      const uint32_t face = copy.faceBase + uint32_t(found->slot);
       copied.push_back(cadEdgeWarning(file.path, face, cadFaceLabel(face, entity),
-                                      copy.edges[edgeSlot], warning.gap, warning.tolerance));
+                                      copy.edgeBase + edgeSlot, warning.gap, warning.tolerance));
     }
   }
   return copied;

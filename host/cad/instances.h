@@ -15,18 +15,20 @@
 
 namespace tessera {
 
-// A part placed more than once: its faces' and edges' numbers in the whole model at its first
-// place, in TopExp::MapShapes order of the part.
+// A part placed more than once. Its faces and edges at any place are numbered consecutively
+// in the whole model (TopExp::MapShapes order): face k of the part (its own MapShapes order)
+// is faceBase + k at its first place, a copy's faceBase + k at the copy's.
 struct InstancedPart {
   TopoDS_Shape firstLeaf;  // the part at its first place, as the model holds it
-  std::vector<uint32_t> faces, edges;
+  uint32_t faceBase = 0, edgeBase = 0;
+  uint32_t faceCount = 0, edgeCount = 0;
 };
 
 // Another instance of a part: the first instance's mesh moved by `motion`.
 struct InstanceCopy {
-  size_t part = 0;                     // index into InstancePlan::parts
-  gp_Trsf motion;                      // rigid: the first instance's place → this one's
-  std::vector<uint32_t> faces, edges;  // this instance's numbers, per face and edge of the part
+  size_t part = 0;  // index into InstancePlan::parts
+  gp_Trsf motion;   // rigid: the first instance's place → this one's
+  uint32_t faceBase = 0, edgeBase = 0;
 };
 
 struct InstancePlan {
