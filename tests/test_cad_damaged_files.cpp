@@ -257,3 +257,19 @@ TEST_CASE("cad: reading a file leaves the process's signal handlers as they were
     CHECK(now.sa_handler == sentinelHandler);
   }
 }
+
+// What Open CASCADE's transfer warns of while it goes on (its shape healing skipping a wire,
+// say) is told, one line per message with the entities that gave it; a clean file tells none.
+TEST_CASE("cad read: the transfer's warnings are told, naming the entities", "[cad][damaged]") {
+  const CadFile sod = readCadFile(kIdf + "SOD_323.igs");
+  REQUIRE(sod.readerWarnings.size() == 1);
+  INFO(sod.readerWarnings[0]);
+  CHECK(sod.readerWarnings[0].find(kIdf + "SOD_323.igs: Open CASCADE's IGES transfer: null area "
+                                          "wire detected, wire skipped (entity 218 (142 0 "
+                                          "CurveOnSurface), entity 235, ") == 0);
+  CHECK(sod.readerWarnings[0].find("; and 3 more entities)") != std::string::npos);
+  CHECK(readCadFile(kIdf + "0603_SMD.stp").readerWarnings.empty());
+  Backend backend = makeMirrorBackend();
+  CHECK(meshCadFile(kIdf + "SOD_323.igs", ToleranceSpec{}, false, "", backend, nullptr)
+            .readerWarnings == sod.readerWarnings);
+}

@@ -152,6 +152,7 @@ void readExchange(XSControl_Reader& reader, CadFile& file, const char* format) {
   requireModelLoaded(reader, file.path, format);
   const int transferred = reader.TransferRoots();
   requireTransferComplete(reader, file.path, format);
+  file.readerWarnings = transferWarnings(reader, file.path, format);
   if (transferred == 0)
     throw InputError(InputErrorKind::Topology, file.path, 0,
                      std::string("the ") + format + " file holds no shape that transfers");

@@ -7,6 +7,7 @@
 #include <TopoDS_Shape.hxx>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 namespace tessera {
 
@@ -17,6 +18,9 @@ struct CadFile {
   // instances of an assembly share it whatever their location. Empty for .brep files and
   // shapes built in code.
   std::unordered_map<const TopoDS_TShape*, std::string> faceEntities;
+  // What the STEP or IGES transfer warned of (exchange_checks.h, transferWarnings): one line
+  // each, naming the file and the entities. Empty for .brep files.
+  std::vector<std::string> readerWarnings;
 };
 
 // Throws InputError (tessera/errors.h) naming the file: an unknown extension, a file that

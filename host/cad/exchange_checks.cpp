@@ -105,4 +105,40 @@ void requireTransferComplete(XSControl_Reader& reader, const std::string& path,
                 "did not transfer");
 }
 
+std::vector<std::string> transferWarnings(XSControl_Reader& reader, const std::string& path,
+                                          const char* format) {
+  const Handle(XSControl_WorkSession)& session = reader.WS();
+  if (session.IsNull() || session->TransferReader().IsNull()) return {};
+  const Interface_CheckIterator checks = session->TransferReader()->LastCheckList();
+  struct Told {
+    std::string message;
+    std::vector<std::string> entities;
+  };
+  std::vector<Told> told;  // in the order first met
+  for (checks.Start(); checks.More(); checks.Next()) {
+    const Handle(Interface_Check)& check = checks.Value();
+    if (check.IsNull() || !check->HasWarnings()) continue;
+    const std::string entity = entityName(session->Model(), checks.Number());
+    for (int k = 1; k <= check->NbWarnings(); ++k) {
+      const std::string message = occtLineAndReason(check->CWarning(k)).second;
+      auto at = std::find_if(told.begin(), told.end(),
+                             [&](const Told& t) { return t.message == message; });
+      if (at == told.end()) at = told.insert(told.end(), {message, {}});
+      if (at->entities.empty() || at->entities.back() != entity) at->entities.push_back(entity);
+    }
+  }
+  std::vector<std::string> lines;
+  for (const Told& t : told) {
+    std::string line = path + ": Open CASCADE's " + format + " transfer: " + t.message + " (";
+    // The first entity with its type, the others by their number ("entity #3471"): a STEP
+    // complex entity's type lists all its parts.
+    for (size_t k = 0; k < t.entities.size() && k < 3; ++k)
+      line += (k ? ", " + t.entities[k].substr(0, t.entities[k].find(' ', 7)) : t.entities[k]);
+    if (t.entities.size() > 3)
+      line += "; and " + std::to_string(t.entities.size() - 3) + " more entities";
+    lines.push_back(line + ")");
+  }
+  return lines;
+}
+
 }  // namespace tessera

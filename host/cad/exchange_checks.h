@@ -9,6 +9,7 @@
 #include <XSControl_Reader.hxx>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace tessera {
 
@@ -23,5 +24,12 @@ void requireModelLoaded(XSControl_Reader& reader, const std::string& path, const
 
 // Throws InputError likewise when an entity's transfer failed (its shapes are then missing).
 void requireTransferComplete(XSControl_Reader& reader, const std::string& path, const char* format);
+
+// What the transfer warned of while it went on, one line per distinct message with the
+// entities that gave it: "<path>: Open CASCADE's STEP transfer: null area wire detected, wire
+// skipped (entity #412 FACE_BOUND; and 2 more entities)". Its shape healing says so where it
+// drops or changes geometry, which a mesh then lacks without a word.
+std::vector<std::string> transferWarnings(XSControl_Reader& reader, const std::string& path,
+                                          const char* format);
 
 }  // namespace tessera

@@ -91,6 +91,7 @@ CadMeshRun meshCadModel(const CadFile& file, const ToleranceSpec& tolerance, boo
   result.edges = plan.meshShape.IsNull() ? size_t(import.edges.Extent()) : plan.modelEdges;
   result.sharedPoints = import.model.sharedPoints.size();
   result.maxChordDeviation = import.maxChordDeviation;
+  result.readerWarnings = file.readerWarnings;
   result.instancedParts = plan.parts.size();
   result.instanceCopies = plan.copies.size();
   const std::vector<CadFaceFailure> failures =

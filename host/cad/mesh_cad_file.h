@@ -25,6 +25,7 @@ struct CadMeshRun {
   size_t edges = 0, sharedPoints = 0;
   std::vector<std::string> failures;  // faces that did not convert, one message each
   std::vector<std::string> emptyFaces;  // faces of zero area, meshed as nothing: one message each
+  std::vector<std::string> readerWarnings;  // what the STEP or IGES transfer warned of
   std::vector<std::string> warnings;  // edges off their faces' surfaces beyond tolerance
   std::vector<std::string> faceWarnings;  // faces whose gap refinement ran out of rounds over δ
   double maxChordDeviation = 0;       // measured over every edge's discretisation

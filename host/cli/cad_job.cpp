@@ -74,6 +74,7 @@ nlohmann::json cadStatsToJson(const CadResult& r) {
           {"facesMeshed", r.mesh.faces.size()},
           {"failedFaces", r.failures},
           {"emptyFaces", r.emptyFaces},
+          {"readerWarnings", r.readerWarnings},
           {"edgeWarnings", r.warnings},
           {"faceWarnings", r.faceWarnings},
           {"edges", r.edges},
@@ -114,6 +115,7 @@ void printCadSummary(FILE* to, const std::string& input, const CadResult& r,
   for (const std::string& f : r.failures) std::fprintf(to, "skipped: %s\n", f.c_str());
   for (const std::string& f : r.emptyFaces)
     std::fprintf(to, "empty: %s (no triangles)\n", f.c_str());
+  for (const std::string& w : r.readerWarnings) std::fprintf(to, "warning: %s\n", w.c_str());
   for (const std::string& w : r.warnings) std::fprintf(to, "warning: %s\n", w.c_str());
   for (const std::string& w : r.faceWarnings) std::fprintf(to, "warning: %s\n", w.c_str());
   std::fprintf(to, "time: read %.1f ms, faces and edges %.1f ms, mesh %.1f ms\n", r.readMs,
@@ -226,6 +228,7 @@ int describeCadModel(const std::string& path) {
   for (const auto& failure : in.failures) std::printf("failed: %s\n", failure.message.c_str());
   for (const auto& face : in.emptyFaces)
     std::printf("empty: %s (no triangles)\n", face.message.c_str());
+  for (const auto& warning : file.readerWarnings) std::printf("warning: %s\n", warning.c_str());
   for (const auto& warning : in.warnings) std::printf("warning: %s\n", warning.message.c_str());
   return kExitOk;
 }

@@ -48,8 +48,10 @@ struct CadMesh {
   // exporters write): nothing to mesh, so no triangles and no error; named here, one message
   // each ("<file>: face 15 (#1859 ADVANCED_FACE): zero-area face: its uv bounds are ...").
   std::vector<std::string> emptyFaces;
-  std::vector<std::string> warnings;      // edges off their faces beyond the file's tolerance,
-                                          // faces whose refinement ended over δ
+  // What Open CASCADE's STEP or IGES transfer warned of (its shape healing dropping a null-area
+  // wire, say), edges off their faces beyond the file's tolerance, faces whose refinement ended
+  // over δ: one message each, naming the file.
+  std::vector<std::string> warnings;
   // An assembly's part placed more than once is meshed once and its mesh moved to its other
   // places (docs/cad.md, "Assemblies"): how many placements were such moved copies.
   size_t instanceCopies = 0;

@@ -49,7 +49,8 @@ CadMesh tessellateCadFile(Tessellator& tessellator, const std::string& path,
   }
   out.skippedFaces = run.failures;
   out.emptyFaces = run.emptyFaces;
-  out.warnings = run.warnings;
+  out.warnings = run.readerWarnings;
+  out.warnings.insert(out.warnings.end(), run.warnings.begin(), run.warnings.end());
   out.warnings.insert(out.warnings.end(), run.faceWarnings.begin(), run.faceWarnings.end());
   return out;
 }
