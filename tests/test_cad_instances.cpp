@@ -19,7 +19,12 @@
 #include <gp_Ax1.hxx>
 #include <gp_Trsf.hxx>
 
+#include <algorithm>
+#include <array>
+#include <cstring>
 #include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -27,6 +32,7 @@
 #include "cad/mesh_cad_file.h"
 #include "cad/to_trimmed.h"
 #include "cad_test_shapes.h"
+#include "io/gltf_writer.h"
 #include "common/memory_budget.h"
 #include "mesh/tessellate.h"
 #include "mesh_checks.h"
@@ -65,6 +71,20 @@ ToleranceSpec absolute(double delta) {
   spec.relative = false;
   spec.text = std::to_string(delta);
   return spec;
+}
+
+// CAP_50SGV_8_10 placed three times (moved; turned and moved) with a box, first or second,
+// written to `dir` as one .brep.
+std::string threeCapsAndABox(const test::ScratchDir& dir, bool boxFirst) {
+  const CadFile cap = readCadFile("/usr/share/freecad/Mod/Idf/Idflibs/CAP_50SGV_8_10.stp");
+  gp_Trsf turn;
+  turn.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 1.0);
+  std::vector<TopoDS_Shape> shapes = {
+      cap.shape, cap.shape.Moved(translation(30, 0, 0)),
+      cap.shape.Moved(TopLoc_Location(translation(0, -30, 0).Transformation() * turn))};
+  shapes.insert(shapes.begin() + (boxFirst ? 0 : 1),
+                BRepPrimAPI_MakeBox(gp_Pnt(0, 30, 0), 1.0, 1.0, 1.0).Shape());
+  return written(dir, "caps.brep", compoundOf(shapes));
 }
 
 // The model's face numbers of `leaf`'s faces (TopExp::MapShapes order, as the import numbers).
@@ -168,6 +188,92 @@ TEST_CASE(
   }
 }
 
+namespace {
+
+// Every triangle a .glb draws, by face and centroid: each node's mesh, its primitives' indices
+// into the shared POSITION accessor, moved by the node's matrix; a primitive's face plus the
+// node's faceOffset.
+std::multimap<uint32_t, glm::dvec3> drawnTriangles(const std::string& glb) {
+  const auto u32 = [&](size_t at) {
+    uint32_t v;
+    std::memcpy(&v, glb.data() + at, 4);  // little-endian, as this machine
+    return v;
+  };
+  const uint32_t jsonLength = u32(12);
+  const nlohmann::json doc = nlohmann::json::parse(glb.substr(20, jsonLength));
+  const size_t bin = 20 + jsonLength + 8;
+  const auto view = [&](int accessor) {
+    const nlohmann::json& a = doc["accessors"][accessor];
+    return std::make_pair(
+        bin + doc["bufferViews"][a["bufferView"].get<int>()]["byteOffset"].get<size_t>(),
+        a["count"].get<size_t>());
+  };
+  std::multimap<uint32_t, glm::dvec3> drawn;
+  for (const nlohmann::json& node : doc["nodes"]) {
+    glm::dmat4 m(1.0);
+    if (node.contains("matrix"))
+      for (int k = 0; k < 16; ++k) m[k / 4][k % 4] = node["matrix"][k].get<double>();
+    const int64_t offset =
+        node.contains("extras") ? node["extras"]["faceOffset"].get<int64_t>() : 0;
+    for (const nlohmann::json& p : doc["meshes"][node["mesh"].get<int>()]["primitives"]) {
+      const auto [positions, vertexCount] = view(p["attributes"]["POSITION"]);
+      const auto [indices, count] = view(p["indices"]);
+      const bool shortIndices = doc["accessors"][p["indices"].get<int>()]["componentType"] == 5123;
+      const auto point = [&](size_t k) {
+        uint32_t v = 0;
+        std::memcpy(&v, glb.data() + indices + k * (shortIndices ? 2 : 4), shortIndices ? 2 : 4);
+        REQUIRE(v < vertexCount);
+        float xyz[3];
+        std::memcpy(xyz, glb.data() + positions + 12 * size_t(v), 12);
+        return glm::dvec3(m * glm::dvec4(xyz[0], xyz[1], xyz[2], 1.0));
+      };
+      for (size_t k = 0; k < count; k += 3)
+        drawn.emplace(uint32_t(p["extras"]["face"].get<int64_t>() + offset),
+                      (point(k) + point(k + 1) + point(k + 2)) / 3.0);
+    }
+  }
+  return drawn;
+}
+
+}  // namespace
+
+// The .glb draws the copies as nodes of their part's mesh: the same triangles, under the
+// same faces, as the mesh with every copy (glTF-validated in test_gltf_writer's sample).
+TEST_CASE("cad instances: the .glb draws each copy as a node, the same triangles",
+          "[cad][instances]") {
+  test::ScratchDir dir("cad_instances");
+  const std::string path = threeCapsAndABox(dir, true);
+  Backend backend = makeMirrorBackend();
+  const CadMeshRun run = meshCadFile(path, ToleranceSpec{}, false, "", backend, nullptr);
+  REQUIRE(run.glbInstances.placements.size() == 2);
+  std::ostringstream instanced, flat;
+  writeGlb(instanced, run.mesh.mesh, &run.mesh.triangleFace, &run.glbInstances);
+  writeGlb(flat, run.mesh.mesh, &run.mesh.triangleFace);
+  CHECK(instanced.str().size() * 2 < flat.str().size());
+  const std::multimap<uint32_t, glm::dvec3> drawn = drawnTriangles(instanced.str());
+  REQUIRE(drawn.size() == run.mesh.mesh.triangleCount());
+  // Per face, each drawn centroid against the nearest of the flat mesh's, fp32 apart.
+  std::multimap<uint32_t, glm::dvec3> expected;
+  const TriangleMesh& m = run.mesh.mesh;
+  for (size_t t = 0; t < m.triangleCount(); ++t)
+    expected.emplace(run.mesh.triangleFace[t], (glm::dvec3(m.positions[m.indices[3 * t]]) +
+                                                glm::dvec3(m.positions[m.indices[3 * t + 1]]) +
+                                                glm::dvec3(m.positions[m.indices[3 * t + 2]])) /
+                                                   3.0);
+  double worst = 0;
+  for (uint32_t face = 0; face < run.faces; ++face) {
+    REQUIRE(drawn.count(face) == expected.count(face));
+    for (auto [at, end] = drawn.equal_range(face); at != end; ++at) {
+      double nearest = 1e300;
+      for (auto [e, eEnd] = expected.equal_range(face); e != eEnd; ++e)
+        nearest = std::min(nearest, glm::length(at->second - e->second));
+      worst = std::max(worst, nearest);
+    }
+  }
+  INFO("largest centroid difference " << worst);
+  CHECK(worst < 1e-4);
+}
+
 TEST_CASE("cad instances: a part sharing an edge with another part is meshed at each place",
           "[cad][instances]") {
   test::ScratchDir dir("cad_instances");
@@ -195,15 +301,7 @@ TEST_CASE("cad instances: a part sharing an edge with another part is meshed at 
 TEST_CASE("cad instances: the copies' warnings name the faces and edges every placement has",
           "[cad][instances]") {
   test::ScratchDir dir("cad_instances");
-  const CadFile cap = readCadFile("/usr/share/freecad/Mod/Idf/Idflibs/CAP_50SGV_8_10.stp");
-  gp_Trsf turn;
-  turn.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 1.0);
-  const std::string path = written(
-      dir, "caps.brep",
-      compoundOf(
-          {cap.shape, BRepPrimAPI_MakeBox(gp_Pnt(0, 30, 0), 1.0, 1.0, 1.0).Shape(),
-           cap.shape.Moved(translation(30, 0, 0)),
-           cap.shape.Moved(TopLoc_Location(translation(0, -30, 0).Transformation() * turn))}));
+  const std::string path = threeCapsAndABox(dir, false);
   Backend backend = makeMirrorBackend();
   const CadMeshRun run = meshCadFile(path, ToleranceSpec{}, false, "", backend, nullptr);
   REQUIRE(run.instanceCopies == 2);

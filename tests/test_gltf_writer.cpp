@@ -361,6 +361,67 @@ TEST_CASE("gltf: B-rep faces become one primitive each, sharing the vertices", "
   CHECK_THROWS_AS(writeGlb(out, mesh, &faces), std::invalid_argument);
 }
 
+// An assembly's part placed again (cad/instances.h): the faces of the part go to a mesh of its
+// own, drawn at its first place and by a node per placement with its matrix and face offset;
+// only the mesh's first vertices and triangles are written (the placements' copies after them
+// are the nodes' to draw).
+GlbInstances gridInstances(const TriangleMesh& grid) {
+  GlbInstances instances;
+  instances.vertices = grid.vertexCount();
+  instances.triangles = grid.triangleCount();
+  instances.parts = {{2, 2}};  // faces 2 and 3
+  GlbInstances::Placement placed;
+  placed.matrix = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 10, 0, 0, 1};  // 10 along x
+  placed.faceOffset = 40;
+  instances.placements = {placed};
+  return instances;
+}
+
+TEST_CASE("gltf: an assembly's part placed twice is one mesh and two nodes", "[gltf]") {
+  TriangleMesh mesh = flatGrid(5);  // 32 triangles
+  std::vector<uint32_t> faces(mesh.triangleCount());
+  for (size_t t = 0; t < faces.size(); ++t) faces[t] = uint32_t(t / 8);  // faces 0..3
+  const GlbInstances instances = gridInstances(mesh);
+  // A copy after the written prefix, as addInstanceCopies appends it: left out of the file.
+  TriangleMesh withCopy = mesh;
+  std::vector<uint32_t> withCopyFaces = faces;
+  for (size_t t = 16; t < 32; ++t) {
+    for (int c = 0; c < 3; ++c) {
+      withCopy.positions.push_back(mesh.positions[mesh.indices[3 * t + c]] + glm::vec3(10, 0, 0));
+      withCopy.normals.push_back(mesh.normals[mesh.indices[3 * t + c]]);
+      withCopy.indices.push_back(uint32_t(withCopy.positions.size() - 1));
+    }
+    withCopyFaces.push_back(faces[t] + 40);
+  }
+  std::ostringstream out, plain;
+  writeGlb(out, withCopy, &withCopyFaces, &instances);
+  writeGlb(plain, mesh, &faces);
+  const Glb glb = parseGlb(out.str());
+  const json& meshes = glb.document.at("meshes");
+  REQUIRE(meshes.size() == 2);
+  CHECK(meshes[0].at("primitives").size() == 2);    // faces 0 and 1, in place
+  REQUIRE(meshes[1].at("primitives").size() == 2);  // the part's faces 2 and 3
+  CHECK(meshes[1].at("primitives")[0].at("extras").at("face") == 2);
+  CHECK(meshes[1].at("primitives")[1].at("extras").at("face") == 3);
+  const json& nodes = glb.document.at("nodes");
+  REQUIRE(nodes.size() == 3);
+  CHECK(nodes[0] == json{{"mesh", 0}});
+  CHECK(nodes[1] == json{{"mesh", 1}});
+  CHECK(nodes[2].at("mesh") == 1);
+  CHECK(nodes[2].at("matrix") == json(instances.placements[0].matrix));
+  CHECK(nodes[2].at("extras").at("faceOffset") == 40);
+  CHECK(glb.document.at("scenes").at(0).at("nodes") == json{0, 1, 2});
+  // The same vertices and indices as the mesh without its copy: the copy is the node's.
+  const Glb flat = parseGlb(plain.str());
+  CHECK(glb.bin == flat.bin);
+  CHECK(accessor(glb, 0).count == mesh.vertexCount());
+
+  GlbInstances past = instances;
+  past.triangles = withCopy.triangleCount() + 1;
+  CHECK_THROWS_AS(writeGlb(out, withCopy, &withCopyFaces, &past), std::invalid_argument);
+  CHECK_THROWS_AS(writeGlb(out, withCopy, nullptr, &instances), std::invalid_argument);
+}
+
 // Hidden: run by CTest as the setup of the validator test, not in the normal suite.
 TEST_CASE("gltf: write the validator's sample files", "[.gltf-samples]") {
   const fs::path dir = fs::path(TESSERA_BINARY_DIR) / "tests" / "gltf_samples";
@@ -370,4 +431,6 @@ TEST_CASE("gltf: write the validator's sample files", "[.gltf-samples]") {
   std::vector<uint32_t> faces(grid.triangleCount());
   for (size_t t = 0; t < faces.size(); ++t) faces[t] = uint32_t(t / 8);
   writeGlbFile((dir / "face_primitives.glb").string(), grid, &faces);
+  const GlbInstances instances = gridInstances(grid);
+  writeGlbFile((dir / "instances.glb").string(), grid, &faces, &instances);
 }

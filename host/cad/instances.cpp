@@ -411,4 +411,23 @@ void addInstanceCopies(const InstancePlan& plan, TrimmedMesh& mesh,
     appendCopy(parts[copy.part], copy, mesh, faceNumberOfPosition, newPosition);
 }
 
+GlbInstances glbInstancesOf(const InstancePlan& plan, uint64_t vertices, uint64_t triangles) {
+  GlbInstances out;
+  if (plan.copies.empty()) return out;
+  out.vertices = vertices;
+  out.triangles = triangles;
+  for (const InstancedPart& part : plan.parts) out.parts.push_back({part.faceBase, part.faceCount});
+  for (const InstanceCopy& copy : plan.copies) {
+    GlbInstances::Placement placed;
+    placed.part = copy.part;
+    for (int column = 0; column < 4; ++column)
+      for (int row = 0; row < 3; ++row)
+        placed.matrix[size_t(4 * column + row)] = float(copy.motion.Value(row + 1, column + 1));
+    placed.matrix[15] = 1.0f;
+    placed.faceOffset = int64_t(copy.faceBase) - int64_t(plan.parts[copy.part].faceBase);
+    out.placements.push_back(placed);
+  }
+  return out;
+}
+
 }  // namespace tessera

@@ -12,6 +12,7 @@
 #include "cad/cad_file.h"
 #include "trim/mesher.h"
 #include "cad/to_trimmed.h"
+#include "io/gltf_writer.h"
 
 namespace tessera {
 
@@ -72,5 +73,9 @@ std::vector<CadEdgeWarning> copiedEdgeWarnings(const InstancePlan& plan, const C
 // a part shares no edge with the rest (planInstances).
 void addInstanceCopies(const InstancePlan& plan, TrimmedMesh& mesh,
                        std::vector<uint32_t>& faceNumberOfPosition);
+
+// The plan as glTF instances of a mesh whose first `vertices` and `triangles` are those before
+// addInstanceCopies: each part's faces, each copy's motion as a matrix and its face offset.
+GlbInstances glbInstancesOf(const InstancePlan& plan, uint64_t vertices, uint64_t triangles);
 
 }  // namespace tessera

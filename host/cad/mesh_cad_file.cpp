@@ -113,7 +113,10 @@ CadMeshRun meshCadModel(const CadFile& file, const ToleranceSpec& tolerance, boo
   result.mesh = meshTrimmedModel(import.model, options, backend, trim);
   for (const TrimmedFace& face : import.model.faces)
     result.faceIndexOfPosition.push_back(face.faceIndex);
+  const uint64_t placedVertices = result.mesh.mesh.vertexCount();
+  const uint64_t placedTriangles = result.mesh.mesh.triangleCount();
   addInstanceCopies(plan, result.mesh, result.faceIndexOfPosition);
+  result.glbInstances = glbInstancesOf(plan, placedVertices, placedTriangles);
   result.meshMs = clock.elapsedMs();
   // The faces' numbers in the model (TrimmedFace::faceIndex, a copy's own), not their place in
   // the list of faces meshed: what the glb's primitives and the stats name.

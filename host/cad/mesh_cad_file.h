@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "io/gltf_writer.h"
 #include "quadtree/tolerance.h"
 #include "trim/mesher.h"
 
@@ -32,6 +33,9 @@ struct CadMeshRun {
   // An assembly's parts placed more than once are converted and meshed once; their other
   // instances are that mesh moved (cad/instances.h). sharedPoints counts such a part's once.
   size_t instancedParts = 0, instanceCopies = 0;
+  // The same as glTF instances (io/gltf_writer.h): the mesh's vertices and triangles before
+  // the copies, the parts' faces and each copy's matrix. No placements: nothing copied.
+  GlbInstances glbInstances;
   double readMs = 0, importMs = 0, meshMs = 0;
 };
 

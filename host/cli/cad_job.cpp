@@ -161,7 +161,9 @@ int tessellateCadModel(const CadCommand& c) {
     chosen.context.reset();
     r = runCadJob(job, chosen);
   }
-  if (!c.output.empty()) stageMesh(files, c.output, r.mesh.mesh, formats.output, &r.mesh.triangleFace);
+  if (!c.output.empty())
+    stageMesh(files, c.output, r.mesh.mesh, formats.output, &r.mesh.triangleFace, {},
+              r.glbInstances.placements.empty() ? nullptr : &r.glbInstances);
   char diagonal[32];
   std::snprintf(diagonal, sizeof diagonal, "%g", r.diagonal);
   const std::string toleranceText =

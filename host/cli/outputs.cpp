@@ -60,7 +60,7 @@ void checkOutputs(const std::vector<NamedFile>& inputs, const std::vector<NamedF
 
 void stageMesh(AtomicFileGroup& group, const std::string& path, const TriangleMesh& mesh,
                const std::string& format, const std::vector<uint32_t>* triangleFace,
-               const MeshWriteOptions& options) {
+               const MeshWriteOptions& options, const GlbInstances* instances) {
   const std::string chosen = meshFormat(path, format);
   group.stage(path, [&](std::ostream& out) {
     if (chosen == "obj")
@@ -68,7 +68,7 @@ void stageMesh(AtomicFileGroup& group, const std::string& path, const TriangleMe
     else if (chosen == "ply")
       writePly(out, mesh, options);
     else
-      writeGlb(out, mesh, triangleFace);
+      writeGlb(out, mesh, triangleFace, instances);
   });
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "io/atomic_file.h"
+#include "io/gltf_writer.h"
 #include "io/mesh_write_options.h"
 #include "mesh/tessellate.h"
 
@@ -31,11 +32,12 @@ struct NamedFile {
 void checkOutputs(const std::vector<NamedFile>& inputs, const std::vector<NamedFile>& outputs);
 
 // Stages `mesh` in `group`, in `format` or that of `path`'s extension (checkMeshFormat).
-// triangleFace (a CAD model's face per triangle) gives a .glb one primitive per face.
+// triangleFace (a CAD model's face per triangle) gives a .glb one primitive per face;
+// `instances` (an assembly's parts placed more than once) gives it a node per placement
+// instead of the copies' triangles. OBJ and PLY take every triangle.
 void stageMesh(AtomicFileGroup& group, const std::string& path, const TriangleMesh& mesh,
-               const std::string& format = "",
-               const std::vector<uint32_t>* triangleFace = nullptr,
-               const MeshWriteOptions& options = {});
+               const std::string& format = "", const std::vector<uint32_t>* triangleFace = nullptr,
+               const MeshWriteOptions& options = {}, const GlbInstances* instances = nullptr);
 
 // The mesh options of every command that writes one: --precision float|double, --metadata.
 struct MeshOutputArgs {

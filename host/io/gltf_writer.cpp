@@ -12,6 +12,7 @@
 #include <limits>
 #include <map>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 #include "io/atomic_file.h"
@@ -153,6 +154,66 @@ uint64_t glbBinLength(const GlbLayout& layout) {
   return views.empty() ? 0 : roundUpTo4(views.back().offset + views.back().length);
 }
 
+namespace {
+
+// The meshes that have primitives (glTF forbids an empty one), a node drawing each where the
+// mesh holds it, and a node per other placement of a part.
+void placeInstances(nlohmann::json& document, std::vector<nlohmann::json> primitives,
+                    const GlbInstances& instances) {
+  nlohmann::json meshes = nlohmann::json::array(), nodes = nlohmann::json::array();
+  std::vector<int> meshIndex(primitives.size(), -1);
+  for (size_t m = 0; m < primitives.size(); ++m) {
+    if (primitives[m].empty()) continue;
+    meshIndex[m] = int(meshes.size());
+    meshes.push_back({{"primitives", std::move(primitives[m])}});
+    nodes.push_back({{"mesh", meshIndex[m]}});
+  }
+  for (const GlbInstances::Placement& placed : instances.placements) {
+    if (meshIndex[1 + placed.part] < 0) continue;  // a part whose faces all failed
+    nodes.push_back({{"mesh", meshIndex[1 + placed.part]},
+                     {"matrix", placed.matrix},
+                     {"extras", {{"faceOffset", placed.faceOffset}}}});
+  }
+  nlohmann::json scene = nlohmann::json::array();
+  for (size_t n = 0; n < nodes.size(); ++n) scene.push_back(n);
+  document["meshes"] = std::move(meshes);
+  document["nodes"] = std::move(nodes);
+  document["scenes"] = {{{"nodes", std::move(scene)}}};
+}
+
+// The first `vertices` and `triangles` of `mesh` (the parts at their first places and the
+// faces meshed in place), with their faces.
+TriangleMesh meshPrefix(const TriangleMesh& mesh, const std::vector<uint32_t>& triangleFace,
+                        const GlbInstances& instances, std::vector<uint32_t>& prefixFaces) {
+  if (instances.vertices > mesh.vertexCount() || instances.triangles > mesh.triangleCount())
+    throw std::invalid_argument("writeGlb: instances past the mesh's end");
+  const auto first = [](const auto& values, uint64_t count) {
+    using Vector = std::decay_t<decltype(values)>;
+    return values.empty() ? Vector() : Vector(values.begin(), values.begin() + ptrdiff_t(count));
+  };
+  TriangleMesh prefix;
+  prefix.positions = first(mesh.positions, instances.vertices);
+  prefix.normals = first(mesh.normals, instances.vertices);
+  prefix.uvs = first(mesh.uvs, instances.vertices);
+  prefix.patchIds = first(mesh.patchIds, instances.vertices);
+  prefix.indices = first(mesh.indices, 3 * instances.triangles);
+  prefix.trianglePatchIds = first(mesh.trianglePatchIds, instances.triangles);
+  prefixFaces = first(triangleFace, instances.triangles);
+  return prefix;
+}
+
+// The mesh a face's primitive goes to: 1 + the part holding it, or 0.
+size_t meshOfFace(const GlbInstances* instances, uint32_t face) {
+  if (!instances) return 0;
+  for (size_t p = 0; p < instances->parts.size(); ++p)
+    if (face >= instances->parts[p].faceFirst &&
+        face - instances->parts[p].faceFirst < instances->parts[p].faceCount)
+      return 1 + p;
+  return 0;
+}
+
+}  // namespace
+
 std::string glbJsonChunk(const GlbLayout& layout) {
   nlohmann::json document = emptyScene();
   const std::vector<GlbView> views = glbViews(layout);
@@ -179,7 +240,9 @@ std::string glbJsonChunk(const GlbLayout& layout) {
     if (layout.uvs) attributes["TEXCOORD_0"] = add(kArrayBuffer, kFloat, "VEC2", layout.vertices);
     if (layout.patchIds)
       attributes["_PATCH_ID"] = add(kArrayBuffer, kFloat, "SCALAR", layout.vertices);
-    nlohmann::json primitives = nlohmann::json::array();
+    // Per mesh (0: the model's, 1 + p: part p's), its primitives.
+    const size_t meshCount = 1 + (layout.instances ? layout.instances->parts.size() : 0);
+    std::vector<nlohmann::json> primitives(meshCount, nlohmann::json::array());
     for (const GlbPrimitive& p : layout.primitives) {
       const int indices = add(kElementArrayBuffer,
                               layout.shortIndices() ? kUnsignedShort : kUnsignedInt, "SCALAR",
@@ -187,15 +250,19 @@ std::string glbJsonChunk(const GlbLayout& layout) {
       nlohmann::json primitive = {
           {"attributes", attributes}, {"indices", indices}, {"mode", kTriangles}};
       if (layout.faces) primitive["extras"] = {{"face", p.face}};
-      primitives.push_back(std::move(primitive));
+      primitives[p.mesh].push_back(std::move(primitive));
     }
     // The buffer ends with the last view; the BIN chunk pads it to 4 bytes.
     document["buffers"] = {{{"byteLength", views.back().offset + views.back().length}}};
     document["bufferViews"] = std::move(bufferViews);
     document["accessors"] = std::move(accessors);
-    document["meshes"] = {{{"primitives", std::move(primitives)}}};
-    document["nodes"] = {{{"mesh", 0}}};
-    document["scenes"] = {{{"nodes", {0}}}};
+    if (!layout.instances) {
+      document["meshes"] = {{{"primitives", std::move(primitives[0])}}};
+      document["nodes"] = {{{"mesh", 0}}};
+      document["scenes"] = {{{"nodes", {0}}}};
+    } else {
+      placeInstances(document, std::move(primitives), *layout.instances);
+    }
   }
   std::string json = document.dump();
   padTo4(json, ' ');
@@ -229,13 +296,24 @@ void writeGlbContainer(std::ostream& out, const std::string& jsonChunk, uint64_t
   }
 }
 
-void writeGlb(std::ostream& out, const TriangleMesh& mesh,
-              const std::vector<uint32_t>* triangleFace) {
-  mesh.validate();
-  if (triangleFace && triangleFace->size() != mesh.triangleCount())
+void writeGlb(std::ostream& out, const TriangleMesh& fullMesh,
+              const std::vector<uint32_t>* triangleFace, const GlbInstances* instances) {
+  fullMesh.validate();
+  if (triangleFace && triangleFace->size() != fullMesh.triangleCount())
     throw std::invalid_argument("writeGlb: " + std::to_string(triangleFace->size()) +
-                                " face indices for " + std::to_string(mesh.triangleCount()) +
+                                " face indices for " + std::to_string(fullMesh.triangleCount()) +
                                 " triangles");
+  if (instances && !triangleFace)
+    throw std::invalid_argument("writeGlb: instances without the triangles' faces");
+  // With instances, the placements' copies are left out: their parts' nodes draw them.
+  std::vector<uint32_t> prefixFaces;
+  const TriangleMesh prefix =
+      instances ? meshPrefix(fullMesh, *triangleFace, *instances, prefixFaces) : TriangleMesh();
+  if (instances) {
+    prefix.validate();  // the copies' vertices are after the prefix's, never under it
+    triangleFace = &prefixFaces;
+  }
+  const TriangleMesh& mesh = instances ? prefix : fullMesh;
   GlbLayout layout;
   std::string bin;
   if (mesh.triangleCount() > 0) {
@@ -245,6 +323,7 @@ void writeGlb(std::ostream& out, const TriangleMesh& mesh,
     layout.patchIds = !mesh.patchIds.empty() &&
                       std::all_of(mesh.patchIds.begin(), mesh.patchIds.end(), glbPatchIdFits);
     layout.faces = triangleFace != nullptr;
+    layout.instances = instances;
     glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-lo);
     for (const glm::vec3& p : mesh.positions) {
       lo = glm::min(lo, p);
@@ -253,7 +332,9 @@ void writeGlb(std::ostream& out, const TriangleMesh& mesh,
     layout.min = lo;
     layout.max = hi;
     const std::map<uint32_t, std::vector<uint32_t>> groups = trianglesByFace(mesh, triangleFace);
-    for (const auto& group : groups) layout.primitives.push_back({group.first, 3 * group.second.size()});
+    for (const auto& group : groups)
+      layout.primitives.push_back(
+          {group.first, 3 * group.second.size(), meshOfFace(instances, group.first)});
 
     bin.reserve(size_t(glbBinLength(layout)));
     appendValues(bin, mesh.positions);
@@ -279,8 +360,9 @@ void writeGlb(std::ostream& out, const TriangleMesh& mesh,
 }
 
 void writeGlbFile(const std::string& path, const TriangleMesh& mesh,
-                  const std::vector<uint32_t>* triangleFace) {
-  writeFileAtomically(path, [&](std::ostream& out) { writeGlb(out, mesh, triangleFace); });
+                  const std::vector<uint32_t>* triangleFace, const GlbInstances* instances) {
+  writeFileAtomically(path,
+                      [&](std::ostream& out) { writeGlb(out, mesh, triangleFace, instances); });
 }
 
 }  // namespace tessera

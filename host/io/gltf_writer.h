@@ -32,6 +32,7 @@
 // (glTF forbids empty accessors). A file over 4 GiB (the GLB length field is 32-bit) throws
 // std::invalid_argument before anything is written.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <ostream>
@@ -42,18 +43,43 @@
 
 namespace tessera {
 
+// A CAD model's parts placed more than once (docs/cad.md, "Assemblies"), written as glTF
+// instances instead of as many copies of their triangles. The mesh given holds every placement;
+// only its first `vertices` and `triangles` are written (every part at its first place and
+// the faces meshed in place: cad/instances.h appends the copies after them). The faces
+// [faceFirst, faceFirst + faceCount) of a part make a glTF mesh of their own, drawn by a node
+// at the first place and by one node per other placement, with its `matrix` (column-major,
+// the rigid motion from the first place) and "extras": {"faceOffset": …}: there a primitive's
+// face is its "face" + faceOffset.
+struct GlbInstances {
+  uint64_t vertices = 0, triangles = 0;
+  struct Part {
+    uint32_t faceFirst = 0, faceCount = 0;
+  };
+  struct Placement {
+    size_t part = 0;
+    std::array<float, 16> matrix{};
+    int64_t faceOffset = 0;
+  };
+  std::vector<Part> parts;
+  std::vector<Placement> placements;
+};
+
 // Validate the mesh (std::invalid_argument if malformed) and write it to `out` as GLB.
 // With triangleFace (one entry per triangle: the B-rep face it belongs to, issue 17), the mesh
 // has one primitive per face, in increasing face order, all sharing the vertex accessors, each
-// with its own indices and "extras": {"face": <index>}; without it, one primitive.
+// with its own indices and "extras": {"face": <index>}; without it, one primitive. With
+// `instances` (needs triangleFace), the parts' faces go to meshes of their own, placed by nodes.
 void writeGlb(std::ostream& out, const TriangleMesh& mesh,
-              const std::vector<uint32_t>* triangleFace = nullptr);
+              const std::vector<uint32_t>* triangleFace = nullptr,
+              const GlbInstances* instances = nullptr);
 
 // Same, into the file at `path` via writeFileAtomically: the whole file or, on any error,
 // nothing (InputError of kind Io for I/O failures). An invalid mesh throws
 // std::invalid_argument and leaves the file as it was.
 void writeGlbFile(const std::string& path, const TriangleMesh& mesh,
-                  const std::vector<uint32_t>* triangleFace = nullptr);
+                  const std::vector<uint32_t>* triangleFace = nullptr,
+                  const GlbInstances* instances = nullptr);
 
 // writeGlb's pieces, for a writer that puts the mesh out in parts (io/mesh_stream_writer.h);
 // writeGlb itself is made of them, so both give the same bytes for the same mesh.
@@ -63,6 +89,7 @@ void writeGlbFile(const std::string& path, const TriangleMesh& mesh,
 struct GlbPrimitive {
   uint32_t face = 0;
   uint64_t indexCount = 0;
+  size_t mesh = 0;  // 0: the model's mesh; 1 + p: instanced part p's
 };
 struct GlbLayout {
   uint64_t vertices = 0;
@@ -70,6 +97,8 @@ struct GlbLayout {
   glm::vec3 min{0}, max{0};  // of the positions
   bool faces = false;        // each primitive's "extras": {"face": …}
   std::vector<GlbPrimitive> primitives;  // none: no triangles, an empty scene and no buffer
+  // Null: one mesh and one node (every primitive's mesh 0).
+  const GlbInstances* instances = nullptr;
   // 16-bit indices (every index below 65535, the primitive-restart value), else 32-bit.
   bool shortIndices() const { return vertices <= 65535; }
 };
