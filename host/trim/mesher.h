@@ -118,8 +118,10 @@ TrimmedMesh meshTrimmedModel(const TrimmedModel& model, const TrimmedMeshOptions
                              Backend& backend, TrimClassifier* trim = nullptr);
 
 // One message per face whose gap refinement ran out of rounds over δ
-// (TrimmedFaceStats::unfinishedGapTriangles), naming the face, the triangles left and the
-// largest measured distance: what a caller reports rather than pass the face off as within δ.
+// (TrimmedFaceStats::unfinishedGapTriangles), naming the face, the triangles left, the largest
+// measured distance (said within δ or over it) and the trim points' own offset from the surface
+// where the file's edges leave it: what a caller reports rather than pass the face off as
+// within δ.
 std::vector<std::string> unfinishedRefinementWarnings(const TrimmedMesh& mesh, double tolerance);
 
 }  // namespace tessera
