@@ -226,6 +226,8 @@ glm::dvec3 moved(const gp_Trsf& motion, const glm::dvec3& p) {
   return {x, y, z};
 }
 
+// A normal turned with its copy. (The trimmed mesher gives no normals today, so no test
+// reaches this; a mesh with normals must not keep the first place's.)
 glm::dvec3 turned(const gp_Trsf& motion, const glm::dvec3& v) {
   gp_XYZ xyz(v.x, v.y, v.z);
   xyz.Multiply(motion.HVectorialPart());  // rigid: the rotation alone
