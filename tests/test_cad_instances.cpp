@@ -15,6 +15,10 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_PrinterOStream.hxx>
+#include <STEPControl_Writer.hxx>
 #include <TopoDS_Iterator.hxx>
 #include <gp_Ax1.hxx>
 #include <gp_Trsf.hxx>
@@ -29,6 +33,7 @@
 #include <vector>
 
 #include "cad/cad_file.h"
+#include "cad/instances.h"
 #include "cad/mesh_cad_file.h"
 #include "cad/to_trimmed.h"
 #include "cad_test_shapes.h"
@@ -363,4 +368,22 @@ TEST_CASE("cad instances: a face that fails is named at every instance", "[cad][
   CHECK(run.failures[1].find(path + ": face 7: ") == 0);
   CHECK(run.mesh.faces.size() == 6);
   CHECK(run.mesh.mesh.triangleCount() == 12);
+}
+
+// Hidden: run by CTest as the setup of the CLI's assembly tests (tests/CMakeLists.txt): four
+// placements of CAP_50SGV_8_10 written as one STEP assembly by Open CASCADE's writer.
+TEST_CASE("cad instances: write the CLI's STEP assembly", "[.cad-assembly-file]") {
+  const CadFile cap = readCadFile("/usr/share/freecad/Mod/Idf/Idflibs/CAP_50SGV_8_10.stp");
+  gp_Trsf turn;
+  turn.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 1.0);
+  std::vector<TopoDS_Shape> placed;
+  for (int k = 0; k < 4; ++k)
+    placed.push_back(cap.shape.Moved(TopLoc_Location(translation(20.0 * k, 0, 0).Transformation() *
+                                                     (k % 2 ? turn : gp_Trsf()))));
+  Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
+  STEPControl_Writer writer;
+  REQUIRE(writer.Transfer(compoundOf(placed), STEPControl_AsIs) == IFSelect_RetDone);
+  const std::string path = std::string(TESSERA_BINARY_DIR) + "/tests/cad_assembly.step";
+  REQUIRE(writer.Write(path.c_str()) == IFSelect_RetDone);
+  CHECK(planInstances(readCadFile(path).shape).copies.size() == 3);
 }
