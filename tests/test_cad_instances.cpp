@@ -221,8 +221,11 @@ std::multimap<uint32_t, glm::dvec3> drawnTriangles(const std::string& glb) {
     const int64_t offset =
         node.contains("extras") ? node["extras"]["faceOffset"].get<int64_t>() : 0;
     for (const nlohmann::json& p : doc["meshes"][node["mesh"].get<int>()]["primitives"]) {
-      const auto [positions, vertexCount] = view(p["attributes"]["POSITION"]);
-      const auto [indices, count] = view(p["indices"]);
+      // (Named values, not structured bindings: C++17 lambdas cannot capture those.)
+      const std::pair<size_t, size_t> positionView = view(p["attributes"]["POSITION"]);
+      const std::pair<size_t, size_t> indexView = view(p["indices"]);
+      const size_t positions = positionView.first, vertexCount = positionView.second;
+      const size_t indices = indexView.first, count = indexView.second;
       const bool shortIndices = doc["accessors"][p["indices"].get<int>()]["componentType"] == 5123;
       const auto point = [&](size_t k) {
         uint32_t v = 0;
