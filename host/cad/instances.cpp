@@ -20,6 +20,7 @@
 #include <unordered_set>
 #include <utility>
 
+#include "cad/occt_failure.h"
 #include "common/memory_budget.h"
 
 namespace tessera {
@@ -171,6 +172,14 @@ InstancePlan planInstances(const TopoDS_Shape& shape) {
   plan.modelFaces = faces;
   plan.modelEdges = edges;
   return plan;
+}
+
+InstancePlan planCadInstances(const CadFile& file) {
+  try {
+    return planInstances(file.shape);
+  } catch (const Standard_Failure& failure) {
+    throwAsInputError(failure, file.path, "finding its repeated parts");
+  }
 }
 
 double plannedModelDiagonal(const InstancePlan& plan, const CadFile& file) {

@@ -48,6 +48,10 @@ struct InstancePlan {
 // (a copy could not weld to it). Any other instance is meshed in place, as before.
 InstancePlan planInstances(const TopoDS_Shape& shape);
 
+// planInstances of the file's shape, an Open CASCADE exception as an InputError naming the file
+// (what meshCadFile and `tessera info` call).
+InstancePlan planCadInstances(const CadFile& file);
+
 // The model's bounding-box diagonal (cadModelDiagonal where nothing is copied): for an
 // assembly, each part's box measured once and placed at every copy (BRepBndLib::Add over every
 // placed face took 35 of the 56 ms of 50 copies of CAP_50SGV_8_10). A placed box bounds the

@@ -1,6 +1,5 @@
 #include "cad/mesh_cad_file.h"
 
-#include <Standard_Failure.hxx>
 #include <algorithm>
 #include <iterator>
 #include <stdexcept>
@@ -8,7 +7,6 @@
 #include "cad/cad_file.h"
 #include "cad/detail/number_text.h"
 #include "cad/instances.h"
-#include "cad/occt_failure.h"
 #include "cad/to_trimmed.h"
 #include "common/stopwatch.h"
 #include "tessera/errors.h"
@@ -16,15 +14,6 @@
 namespace tessera {
 
 namespace {
-
-// The model's instances, OCCT's exception as the file's error.
-InstancePlan planCadInstances(const CadFile& file) {
-  try {
-    return planInstances(file.shape);
-  } catch (const Standard_Failure& failure) {
-    throwAsInputError(failure, file.path, "finding its repeated parts");
-  }
-}
 
 // Messages of the converted faces and of the copies, by face number (the order they had when
 // every instance was converted).

@@ -213,7 +213,7 @@ int renderCadModel(const CadRenderCommand& c) {
 int describeCadModel(const std::string& path) {
   const CadFile file = readCadFile(path);
   // δ as `tessera tessellate` takes it (an assembly's diagonal from its parts' placed boxes).
-  const InstancePlan plan = planInstances(file.shape);
+  const InstancePlan plan = planCadInstances(file);
   const double delta = kDefaultRelativeTolerance * plannedModelDiagonal(plan, file);
   const CadImport in = toTrimmedModel(file, delta);
   std::printf(
