@@ -420,6 +420,9 @@ TEST_CASE("gltf: an assembly's part placed twice is one mesh and two nodes", "[g
   past.triangles = withCopy.triangleCount() + 1;
   CHECK_THROWS_AS(writeGlb(out, withCopy, &withCopyFaces, &past), std::invalid_argument);
   CHECK_THROWS_AS(writeGlb(out, withCopy, nullptr, &instances), std::invalid_argument);
+  GlbInstances noSuchPart = instances;
+  noSuchPart.placements[0].part = 1;
+  CHECK_THROWS_AS(writeGlb(out, withCopy, &withCopyFaces, &noSuchPart), std::invalid_argument);
 }
 
 // Hidden: run by CTest as the setup of the validator test, not in the normal suite.

@@ -305,6 +305,11 @@ void writeGlb(std::ostream& out, const TriangleMesh& fullMesh,
                                 " triangles");
   if (instances && !triangleFace)
     throw std::invalid_argument("writeGlb: instances without the triangles' faces");
+  if (instances)
+    for (const GlbInstances::Placement& placed : instances->placements)
+      if (placed.part >= instances->parts.size())
+        throw std::invalid_argument("writeGlb: a placement of part " + std::to_string(placed.part) +
+                                    " of " + std::to_string(instances->parts.size()));
   // With instances, the placements' copies are left out: their parts' nodes draw them.
   std::vector<uint32_t> prefixFaces;
   const TriangleMesh prefix =
