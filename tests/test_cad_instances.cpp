@@ -24,8 +24,6 @@
 #include <gp_Trsf.hxx>
 
 #include <algorithm>
-#include <array>
-#include <cstring>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -37,6 +35,7 @@
 #include "cad/mesh_cad_file.h"
 #include "cad/to_trimmed.h"
 #include "cad_test_shapes.h"
+#include "glb_reader.h"
 #include "io/gltf_writer.h"
 #include "common/memory_budget.h"
 #include "mesh/tessellate.h"
@@ -198,44 +197,29 @@ namespace {
 // Every triangle a .glb draws, by face and centroid: each node's mesh, its primitives' indices
 // into the shared POSITION accessor, moved by the node's matrix; a primitive's face plus the
 // node's faceOffset.
-std::multimap<uint32_t, glm::dvec3> drawnTriangles(const std::string& glb) {
-  const auto u32 = [&](size_t at) {
-    uint32_t v;
-    std::memcpy(&v, glb.data() + at, 4);  // little-endian, as this machine
-    return v;
-  };
-  const uint32_t jsonLength = u32(12);
-  const nlohmann::json doc = nlohmann::json::parse(glb.substr(20, jsonLength));
-  const size_t bin = 20 + jsonLength + 8;
-  const auto view = [&](int accessor) {
-    const nlohmann::json& a = doc["accessors"][accessor];
-    return std::make_pair(
-        bin + doc["bufferViews"][a["bufferView"].get<int>()]["byteOffset"].get<size_t>(),
-        a["count"].get<size_t>());
-  };
+std::multimap<uint32_t, glm::dvec3> drawnTriangles(const std::string& bytes) {
+  using namespace test::glb;
+  const Glb glb = parseGlb(bytes);
+  const nlohmann::json& doc = glb.document;
   std::multimap<uint32_t, glm::dvec3> drawn;
-  for (const nlohmann::json& node : doc["nodes"]) {
+  for (const nlohmann::json& node : doc.at("nodes")) {
     glm::dmat4 m(1.0);
     if (node.contains("matrix"))
       for (int k = 0; k < 16; ++k) m[k / 4][k % 4] = node["matrix"][k].get<double>();
     const int64_t offset =
         node.contains("extras") ? node["extras"]["faceOffset"].get<int64_t>() : 0;
-    for (const nlohmann::json& p : doc["meshes"][node["mesh"].get<int>()]["primitives"]) {
-      // (Named values, not structured bindings: C++17 lambdas cannot capture those.)
-      const std::pair<size_t, size_t> positionView = view(p["attributes"]["POSITION"]);
-      const std::pair<size_t, size_t> indexView = view(p["indices"]);
-      const size_t positions = positionView.first, vertexCount = positionView.second;
-      const size_t indices = indexView.first, count = indexView.second;
-      const bool shortIndices = doc["accessors"][p["indices"].get<int>()]["componentType"] == 5123;
+    for (const nlohmann::json& p : doc.at("meshes").at(node["mesh"].get<int>()).at("primitives")) {
+      const AccessorData positions = accessor(glb, p["attributes"]["POSITION"]);
+      const AccessorData indices = accessor(glb, p["indices"]);
       const auto point = [&](size_t k) {
-        uint32_t v = 0;
-        std::memcpy(&v, glb.data() + indices + k * (shortIndices ? 2 : 4), shortIndices ? 2 : 4);
-        REQUIRE(v < vertexCount);
-        float xyz[3];
-        std::memcpy(xyz, glb.data() + positions + 12 * size_t(v), 12);
-        return glm::dvec3(m * glm::dvec4(xyz[0], xyz[1], xyz[2], 1.0));
+        const uint32_t v = indices.componentType == 5123 ? u16At(glb.bin, indices.offset + 2 * k)
+                                                         : u32At(glb.bin, indices.offset + 4 * k);
+        REQUIRE(v < positions.count);
+        glm::dvec4 xyz(1.0);
+        for (int c = 0; c < 3; ++c) xyz[c] = f32At(glb.bin, positions.offset + 12 * v + 4 * c);
+        return glm::dvec3(m * xyz);
       };
-      for (size_t k = 0; k < count; k += 3)
+      for (size_t k = 0; k < indices.count; k += 3)
         drawn.emplace(uint32_t(p["extras"]["face"].get<int64_t>() + offset),
                       (point(k) + point(k + 1) + point(k + 2)) / 3.0);
     }
