@@ -167,8 +167,8 @@ int main(int argc, char** argv) {
       last = meshCadModel(file, tolerance, false, "", backend, trim, options);
     });
     c.extra["triangles"] = last.mesh.mesh.triangleCount();
-    c.extra["instancedParts"] = last.instancedParts;
-    c.extra["instanceCopies"] = last.instanceCopies;
+    c.extra["instancedParts"] = last.instancedParts();
+    c.extra["instanceCopies"] = last.instanceCopies();
     table.cases.push_back(c);
   };
   tessera("Tessera CPU, each part meshed once", cpu, nullptr);
@@ -196,7 +196,7 @@ int main(int argc, char** argv) {
                 1e3 * c.timing.medianSeconds,
                 c.timing.minSeconds / table.cases.front().timing.minSeconds);
   std::printf("each part once: %zu parts placed more than once, %zu copies moved\n",
-              once.instancedParts, once.instanceCopies);
+              once.instancedParts(), once.instanceCopies());
   report.finish();
   return 0;
 }

@@ -130,8 +130,8 @@ TEST_CASE(
   const CadMeshRun run = meshCadFile(path, absolute(delta), false, "", backend, nullptr);
   REQUIRE(run.failures.empty());
   CHECK(run.faces == 4 * 3 + 6);
-  CHECK(run.instancedParts == 1);
-  CHECK(run.instanceCopies == 2);
+  CHECK(run.instancedParts() == 1);
+  CHECK(run.instanceCopies() == 2);
   Tessellator tessellator({Device::Cpu});  // the public API says so too
   CHECK(tessellateCadFile(tessellator, path).instanceCopies == 2);
   REQUIRE(run.mesh.faces.size() == run.faces);
@@ -281,7 +281,7 @@ TEST_CASE("cad instances: a part sharing an edge with another part is meshed at 
   Backend backend = makeMirrorBackend();
   const CadMeshRun run = meshCadFile(path, absolute(0.01), false, "", backend, nullptr);
   CHECK(run.faces == 3);
-  CHECK(run.instanceCopies == 0);
+  CHECK(run.instanceCopies() == 0);
   CHECK(run.mesh.mesh.triangleCount() == 6);  // planes: two triangles a face
   const test::EdgeCensus census = test::censusOf(run.mesh.mesh, 0.0);
   CHECK(census.boundaryEdges == 3 * 4 - 2);  // a and b share one side
@@ -296,7 +296,7 @@ TEST_CASE("cad instances: the copies' warnings name the faces and edges every pl
   const std::string path = threeCapsAndABox(dir, false);
   Backend backend = makeMirrorBackend();
   const CadMeshRun run = meshCadFile(path, ToleranceSpec{}, false, "", backend, nullptr);
-  REQUIRE(run.instanceCopies == 2);
+  REQUIRE(run.instanceCopies() == 2);
   const CadFile file = readCadFile(path);
   const CadImport every = toTrimmedModel(file, run.delta);  // every placement converted
   REQUIRE(every.warnings.size() == 6);
@@ -316,7 +316,7 @@ TEST_CASE("cad instances: the copies are held to the memory budget", "[cad][inst
   const std::string path = written(dir, "forty.brep", compoundOf(placed));
   Backend backend = makeMirrorBackend();
   const CadMeshRun run = meshCadFile(path, absolute(0.001), false, "", backend, nullptr);
-  REQUIRE(run.instanceCopies == 39);
+  REQUIRE(run.instanceCopies() == 39);
   const size_t triangles = run.mesh.mesh.triangleCount();
   const uint64_t saved = memoryBudget();
   setMemoryBudget(uint64_t(triangles) * 60);  // the part alone fits, its 40 placements do not
@@ -349,7 +349,7 @@ TEST_CASE("cad instances: a face that fails is named at every instance", "[cad][
     CHECK(std::string(e.what()).find("face 7: ") != std::string::npos);
   }
   const CadMeshRun run = meshCadFile(path, ToleranceSpec{}, true, "", backend, nullptr);
-  CHECK(run.instanceCopies == 1);
+  CHECK(run.instanceCopies() == 1);
   REQUIRE(run.failures.size() == 2);
   CHECK(run.failures[0].find(path + ": face 0: ") == 0);
   CHECK(run.failures[1].find(path + ": face 7: ") == 0);

@@ -81,8 +81,6 @@ CadMeshRun meshCadModel(const CadFile& file, const ToleranceSpec& tolerance, boo
   result.sharedPoints = import.model.sharedPoints.size();
   result.maxChordDeviation = import.maxChordDeviation;
   result.readerWarnings = file.readerWarnings;
-  result.instancedParts = plan.parts.size();
-  result.instanceCopies = plan.copies.size();
   const std::vector<CadFaceFailure> failures =
       inFaceOrder(import.failures, copiedFaceFailures(plan, file, import, import.failures));
   const std::vector<CadFaceFailure> emptyFaces =

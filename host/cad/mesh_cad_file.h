@@ -32,10 +32,11 @@ struct CadMeshRun {
   double maxChordDeviation = 0;       // measured over every edge's discretisation
   // An assembly's parts placed more than once are converted and meshed once; their other
   // instances are that mesh moved (cad/instances.h). sharedPoints counts such a part's once.
-  size_t instancedParts = 0, instanceCopies = 0;
-  // The same as glTF instances (io/gltf_writer.h): the mesh's vertices and triangles before
-  // the copies, the parts' faces and each copy's matrix. No placements: nothing copied.
+  // As glTF instances (io/gltf_writer.h): the mesh's vertices and triangles before the copies,
+  // the parts' faces and each copy's matrix. No placements: nothing copied.
   GlbInstances glbInstances;
+  size_t instancedParts() const { return glbInstances.parts.size(); }
+  size_t instanceCopies() const { return glbInstances.placements.size(); }
   double readMs = 0, importMs = 0, meshMs = 0;
 };
 

@@ -80,8 +80,8 @@ nlohmann::json cadStatsToJson(const CadResult& r) {
           {"edges", r.edges},
           {"sharedPoints", r.sharedPoints},
           // an assembly's parts placed more than once, meshed once and moved (docs/cad.md)
-          {"instancedParts", r.instancedParts},
-          {"instanceCopies", r.instanceCopies},
+          {"instancedParts", r.instancedParts()},
+          {"instanceCopies", r.instanceCopies()},
           {"maxEdgeChordDeviation", r.maxChordDeviation},
           {"triangles", r.mesh.mesh.triangleCount()},
           {"vertices", r.mesh.mesh.vertexCount()},
@@ -107,11 +107,11 @@ void printCadSummary(FILE* to, const std::string& input, const CadResult& r,
                largest(r, &TrimmedFaceStats::maxGeometricDeviation),
                largest(r, &TrimmedFaceStats::maxParametricDeviation), r.maxChordDeviation,
                largest(r, &TrimmedFaceStats::maxTrimPointOffset));
-  if (r.instanceCopies != 0)
+  if (r.instanceCopies() != 0)
     std::fprintf(to,
                  "assembly: %zu part%s placed more than once, meshed once and moved to %zu "
                  "more places\n",
-                 r.instancedParts, r.instancedParts == 1 ? "" : "s", r.instanceCopies);
+                 r.instancedParts(), r.instancedParts() == 1 ? "" : "s", r.instanceCopies());
   for (const std::string& f : r.failures) std::fprintf(to, "skipped: %s\n", f.c_str());
   for (const std::string& f : r.emptyFaces)
     std::fprintf(to, "empty: %s (no triangles)\n", f.c_str());

@@ -42,7 +42,7 @@ CadMesh tessellateCadFile(Tessellator& tessellator, const std::string& path,
   out.faces = run.faces;
   out.facesMeshed = run.mesh.faces.size();
   out.tolerance = run.delta;
-  out.instanceCopies = run.instanceCopies;
+  out.instanceCopies = run.instanceCopies();
   for (const TrimmedFaceStats& f : run.mesh.faces) {
     out.maxDeviation = std::max(out.maxDeviation, f.maxGeometricDeviation);
     out.maxParametricDeviation = std::max(out.maxParametricDeviation, f.maxParametricDeviation);
