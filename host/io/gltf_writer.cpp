@@ -9,10 +9,12 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <stdexcept>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "io/atomic_file.h"
@@ -202,15 +204,29 @@ TriangleMesh meshPrefix(const TriangleMesh& mesh, const std::vector<uint32_t>& t
   return prefix;
 }
 
-// The mesh a face's primitive goes to: 1 + the part holding it, or 0.
-size_t meshOfFace(const GlbInstances* instances, uint32_t face) {
-  if (!instances) return 0;
-  for (size_t p = 0; p < instances->parts.size(); ++p)
-    if (face >= instances->parts[p].faceFirst &&
-        face - instances->parts[p].faceFirst < instances->parts[p].faceCount)
-      return 1 + p;
-  return 0;
-}
+// The mesh a face's primitive goes to: 1 + the part holding it, or 0. The parts by their first
+// face, searched (a board's thousands of parts times its faces, one by one, was quadratic).
+class MeshOfFace {
+ public:
+  explicit MeshOfFace(const GlbInstances* instances) : instances_(instances) {
+    if (!instances) return;
+    for (size_t p = 0; p < instances->parts.size(); ++p)
+      byFirstFace_.push_back({instances->parts[p].faceFirst, p});
+    std::sort(byFirstFace_.begin(), byFirstFace_.end());
+  }
+  size_t operator()(uint32_t face) const {
+    const auto after = std::upper_bound(byFirstFace_.begin(), byFirstFace_.end(),
+                                        std::make_pair(face, std::numeric_limits<size_t>::max()));
+    if (after == byFirstFace_.begin()) return 0;
+    const size_t part = std::prev(after)->second;
+    const GlbInstances::Part& p = instances_->parts[part];
+    return face - p.faceFirst < p.faceCount ? 1 + part : 0;
+  }
+
+ private:
+  const GlbInstances* instances_;
+  std::vector<std::pair<uint32_t, size_t>> byFirstFace_;
+};
 
 }  // namespace
 
@@ -336,10 +352,10 @@ void writeGlb(std::ostream& out, const TriangleMesh& fullMesh,
     }
     layout.min = lo;
     layout.max = hi;
+    const MeshOfFace meshOfFace(instances);
     const std::map<uint32_t, std::vector<uint32_t>> groups = trianglesByFace(mesh, triangleFace);
     for (const auto& group : groups)
-      layout.primitives.push_back(
-          {group.first, 3 * group.second.size(), meshOfFace(instances, group.first)});
+      layout.primitives.push_back({group.first, 3 * group.second.size(), meshOfFace(group.first)});
 
     bin.reserve(size_t(glbBinLength(layout)));
     appendValues(bin, mesh.positions);
