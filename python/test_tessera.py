@@ -1,5 +1,5 @@
 """The Python module against the C++ path:
-  python3 test_tessera.py <teapot.bpt> <tessera CLI> cad|no-cad
+  python3 test_tessera.py <teapot.bpt> <tessera CLI> cad|no-cad [<assembly.step>]
 
 Run by CTest with PYTHONPATH=<build>/python. Exits non-zero on the first failed check."""
 import re
@@ -12,6 +12,7 @@ import numpy as np
 import tessera
 
 teapot, cli, cad = sys.argv[1], sys.argv[2], sys.argv[3]
+assembly = sys.argv[4] if len(sys.argv) > 4 else None  # one part at four places (CTest's)
 
 
 def occt_libraries(maps):
@@ -94,7 +95,7 @@ if cad == "cad":
     assert isinstance(part, tessera.CadMesh) and repr(part).startswith("<tessera.CadMesh ")
     assert isinstance(part.mesh, tessera.Mesh)
     assert part.faces == part.faces_meshed > 0 and not part.skipped_faces and not part.empty_faces
-    assert part.instance_copies == 0  # one part, placed once
+    assert part.parts == [] and part.placements == []  # one part, placed once
     # Zero-area sliver faces mesh as nothing and are named, no error (docs/cad.md).
     sod = t.tessellate_cad("/usr/share/freecad/Mod/Idf/Idflibs/SOD_323.stp")
     assert (sod.faces, sod.faces_meshed, len(sod.empty_faces)) == (75, 73, 2) and not sod.skipped_faces
@@ -119,6 +120,34 @@ if cad == "cad":
     finer = t.tessellate_cad(model, tolerance=part.tolerance / 4)
     assert finer.tolerance == part.tolerance / 4
     assert finer.mesh.indices.shape[0] > part.mesh.indices.shape[0]
+    # An assembly, its repeated part drawn instanced: the mesh holds it once, and moved by
+    # each placement's matrix it is the expanded mesh's copy (docs/api.md, "Assemblies").
+    if assembly:
+        every = t.tessellate_cad(assembly)
+        once = t.tessellate_cad(assembly, expand_instances=False)
+        assert len(once.parts) == 1 and len(once.placements) == 3 == len(every.placements)
+        assert isinstance(once.parts[0], tessera.CadPart)
+        assert isinstance(once.placements[0], tessera.CadPlacement)
+        assert (once.faces, once.faces_meshed) == (every.faces, every.faces_meshed)
+        assert once.max_deviation == every.max_deviation
+        p = once.parts[0]
+        m, n = once.mesh.indices.shape[0], once.mesh.positions.shape[0]
+        assert np.array_equal(every.mesh.indices[:m], once.mesh.indices)
+        assert every.mesh.indices.shape[0] == m + 3 * p.triangle_count
+        triangles = once.mesh.indices[p.first_triangle:p.first_triangle + p.triangle_count]
+        assert triangles.min() >= p.first_vertex and triangles.max() < p.first_vertex + p.vertex_count
+        for k, placed in enumerate(once.placements):
+            assert placed.matrix.shape == (4, 4) and np.array_equal(placed.matrix[3], [0, 0, 0, 1])
+            turn = placed.matrix[:3, :3]
+            assert np.allclose(turn.T @ turn, np.eye(3), atol=1e-12) and np.linalg.det(turn) > 0
+            corners = once.mesh.positions[triangles].astype(np.float64)
+            moved = corners @ turn.T + placed.matrix[:3, 3]
+            copy = every.mesh.indices[m + k * p.triangle_count:m + (k + 1) * p.triangle_count]
+            assert np.abs(moved - every.mesh.positions[copy]).max() < 1e-4
+            faces = once.triangle_faces[p.first_triangle:p.first_triangle + p.triangle_count]
+            copy_faces = every.triangle_faces[m + k * p.triangle_count:m + (k + 1) * p.triangle_count]
+            assert np.array_equal(copy_faces, faces - p.first_face + placed.first_face)
+        assert n + 3 * p.vertex_count == every.mesh.positions.shape[0]
     try:
         t.tessellate_cad("no_such_model.step")
         raise AssertionError("a missing CAD file was read")

@@ -24,6 +24,7 @@
 #include <gp_Trsf.hxx>
 
 #include <algorithm>
+#include <glm/gtc/matrix_access.hpp>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -133,7 +134,7 @@ TEST_CASE(
   CHECK(run.instancedParts() == 1);
   CHECK(run.instanceCopies() == 2);
   Tessellator tessellator({Device::Cpu});  // the public API says so too
-  CHECK(tessellateCadFile(tessellator, path).instanceCopies == 2);
+  CHECK(tessellateCadFile(tessellator, path).placements.size() == 2);
   REQUIRE(run.mesh.faces.size() == run.faces);
   REQUIRE(run.mesh.triangleFace.size() == run.mesh.mesh.triangleCount());
 
@@ -266,6 +267,111 @@ TEST_CASE("cad instances: the .glb draws each copy as a node, the same triangles
   CHECK(worst < 1e-4);
 }
 
+namespace {
+
+glm::dvec3 vertexOf(const Mesh& mesh, uint32_t v) {
+  return {mesh.positions[3 * size_t(v)], mesh.positions[3 * size_t(v) + 1],
+          mesh.positions[3 * size_t(v) + 2]};
+}
+
+}  // namespace
+
+// CadOptions::expandInstances = false (include/tessera/cad.h): the mesh holds each part once,
+// the placements say where else to draw it. Drawn that way, it is the expanded mesh: the same
+// prefix, bit for bit, and each copy's triangles moved by its matrix under its face numbers.
+TEST_CASE("cad instances: the API's instance view draws the expanded mesh",
+          "[cad][instances][api]") {
+  test::ScratchDir dir("cad_instances");
+  const std::string path = threeCapsAndABox(dir, true);
+  Tessellator tessellator({Device::Cpu});
+  CadOptions options;
+  const CadMesh expanded = tessellateCadFile(tessellator, path, options);
+  options.expandInstances = false;
+  const CadMesh listed = tessellateCadFile(tessellator, path, options);
+
+  // The model's counts and measures, whichever view.
+  CHECK(listed.faces == expanded.faces);
+  CHECK(listed.facesMeshed == expanded.facesMeshed);
+  CHECK(listed.tolerance == expanded.tolerance);
+  CHECK(listed.maxDeviation == expanded.maxDeviation);
+  CHECK(listed.maxParametricDeviation == expanded.maxParametricDeviation);
+  CHECK(listed.warnings == expanded.warnings);
+  REQUIRE(listed.parts.size() == 1);
+  REQUIRE(listed.placements.size() == 2);
+  REQUIRE(expanded.placements.size() == 2);
+
+  // The listed mesh is the expanded one's beginning.
+  const size_t vertices = listed.mesh.vertexCount(), triangles = listed.mesh.triangleCount();
+  REQUIRE(0 < triangles);
+  REQUIRE(expanded.mesh.triangleCount() > triangles);
+  CHECK(std::equal(listed.mesh.positions.begin(), listed.mesh.positions.end(),
+                   expanded.mesh.positions.begin()));
+  CHECK(std::equal(listed.mesh.indices.begin(), listed.mesh.indices.end(),
+                   expanded.mesh.indices.begin()));
+  CHECK(std::equal(listed.triangleFaces.begin(), listed.triangleFaces.end(),
+                   expanded.triangleFaces.begin()));
+
+  // The part's ranges hold its faces' triangles and their vertices, and nothing else's.
+  const CadPart& part = listed.parts[0];
+  CHECK(3 * part.faceCount + 6 == listed.faces);  // three caps and a box
+  const auto inPart = [&](uint32_t face) { return face - part.firstFace < part.faceCount; };
+  for (uint32_t t = 0; t < triangles; ++t) {
+    const bool mine = t - part.firstTriangle < part.triangleCount;
+    REQUIRE(inPart(listed.triangleFaces[t]) == mine);
+    for (int c = 0; c < 3; ++c)
+      REQUIRE((listed.mesh.indices[3 * t + size_t(c)] - part.firstVertex < part.vertexCount) ==
+              mine);
+  }
+
+  // Each placement: a rigid matrix; the part's triangles moved by it are the expanded mesh's
+  // copy, in order after the prefix, its faces renumbered from the placement's first face.
+  size_t next = triangles;
+  for (const CadPlacement& placed : listed.placements) {
+    REQUIRE(placed.part == 0);
+    glm::dmat4 m;
+    for (int k = 0; k < 16; ++k) m[k / 4][k % 4] = placed.matrix[size_t(k)];
+    const glm::dmat3 turn(m);
+    CHECK(glm::determinant(turn) > 0);
+    const glm::dmat3 identity = glm::transpose(turn) * turn;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) CHECK(std::abs(identity[i][j] - (i == j)) < 1e-12);
+    CHECK(glm::row(m, 3) == glm::dvec4(0, 0, 0, 1));
+    double worst = 0;
+    for (uint32_t k = 0; k < part.triangleCount; ++k, ++next) {
+      const uint32_t t = part.firstTriangle + k;
+      REQUIRE(expanded.triangleFaces[next] ==
+              listed.triangleFaces[t] - part.firstFace + placed.firstFace);
+      for (int c = 0; c < 3; ++c) {
+        const glm::dvec3 moved = glm::dvec3(
+            m * glm::dvec4(vertexOf(listed.mesh, listed.mesh.indices[3 * t + size_t(c)]), 1));
+        worst = std::max(
+            worst, glm::length(moved - vertexOf(expanded.mesh,
+                                                expanded.mesh.indices[3 * next + size_t(c)])));
+      }
+    }
+    INFO("largest distance, moved part to expanded copy: " << worst);
+    CHECK(worst < 1e-5);  // fp32 positions, ~30 from the origin
+  }
+  CHECK(next == expanded.mesh.triangleCount());
+  CHECK(expanded.mesh.vertexCount() ==
+        vertices + listed.placements.size() * size_t(part.vertexCount));
+
+  // The .glb of either is the same file (the CLI writes the expanded run's).
+  Backend backend = makeMirrorBackend();
+  const CadMeshRun all = meshCadFile(path, ToleranceSpec{}, false, "", backend, nullptr);
+  const CadMeshRun once =
+      meshCadFile(path, ToleranceSpec{}, false, "", backend, nullptr, 0, CopyPlacement::Listed);
+  CHECK(once.mesh.faces.size() == all.mesh.faces.size());
+  // The whole model's counts, which the CLI prints from a listed run (its .glb's).
+  CHECK(once.modelTriangles() == all.mesh.mesh.triangleCount());
+  CHECK(once.modelVertices() == all.mesh.mesh.vertexCount());
+  CHECK(all.modelTriangles() == all.mesh.mesh.triangleCount());
+  std::ostringstream fromAll, fromOnce;
+  writeGlb(fromAll, all.mesh.mesh, &all.mesh.triangleFace, &all.glbInstances);
+  writeGlb(fromOnce, once.mesh.mesh, &once.mesh.triangleFace, &once.glbInstances);
+  CHECK(fromAll.str() == fromOnce.str());
+}
+
 TEST_CASE("cad instances: a part sharing an edge with another part is meshed at each place",
           "[cad][instances]") {
   test::ScratchDir dir("cad_instances");
@@ -329,6 +435,14 @@ TEST_CASE("cad instances: the copies are held to the memory budget", "[cad][inst
     INFO(e.what());
     CHECK(std::string(e.what()).find("39 placed copies of its parts") != std::string::npos);
   }
+  // Listed, the copies make no triangles: the part alone, within the same budget.
+  setMemoryBudget(uint64_t(triangles) * 60);
+  CadMeshRun listed;
+  CHECK_NOTHROW(listed = meshCadFile(path, absolute(0.001), false, "", backend, nullptr, 0,
+                                     CopyPlacement::Listed));
+  setMemoryBudget(saved);
+  CHECK(listed.mesh.mesh.triangleCount() * 40 == triangles);
+  CHECK(listed.mesh.faces.size() == run.mesh.faces.size());
 }
 
 TEST_CASE("cad instances: a face that fails is named at every instance", "[cad][instances]") {

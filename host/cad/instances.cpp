@@ -323,9 +323,11 @@ void reserveForCopies(const InstancePlan& plan, const std::vector<PartMesh>& par
   grow(out.faces, faces);
 }
 
-void appendCopy(const PartMesh& part, const InstanceCopy& copy, TrimmedMesh& out,
-                std::vector<uint32_t>& faceNumberOfPosition, std::vector<uint32_t>& newPosition) {
-  TriangleMesh& m = out.mesh;
+// The copy's faces: their stats under its numbers, at new positions (newPosition: the part's
+// positions → the copy's).
+void appendCopyFaces(const PartMesh& part, const InstanceCopy& copy, TrimmedMesh& out,
+                     std::vector<uint32_t>& faceNumberOfPosition,
+                     std::vector<uint32_t>& newPosition) {
   for (const auto& [position, slot] : part.positions) {
     newPosition[position] = uint32_t(faceNumberOfPosition.size());
     faceNumberOfPosition.push_back(copy.faceBase + uint32_t(slot));
@@ -333,6 +335,12 @@ void appendCopy(const PartMesh& part, const InstanceCopy& copy, TrimmedMesh& out
     stats.faceIndex = copy.faceBase + uint32_t(slot);
     out.faces.push_back(stats);
   }
+}
+
+// The copy's vertices and triangles, after appendCopyFaces has given its faces positions.
+void appendCopyGeometry(const PartMesh& part, const InstanceCopy& copy, TrimmedMesh& out,
+                        const std::vector<uint32_t>& newPosition) {
+  TriangleMesh& m = out.mesh;
   const uint32_t base = uint32_t(m.positions.size());
   const bool hasDouble = !m.positionsDouble.empty();
   for (uint32_t v : part.vertices) {
@@ -410,16 +418,23 @@ std::vector<CadEdgeWarning> copiedEdgeWarnings(const InstancePlan& plan, const C
   return copied;
 }
 
-void addInstanceCopies(const InstancePlan& plan, TrimmedMesh& mesh,
-                       std::vector<uint32_t>& faceNumberOfPosition) {
-  if (plan.copies.empty()) return;
+CopiesSize addInstanceCopies(const InstancePlan& plan, TrimmedMesh& mesh,
+                             std::vector<uint32_t>& faceNumberOfPosition, CopyPlacement placement) {
+  CopiesSize size;
+  if (plan.copies.empty()) return size;
   const std::vector<PartMesh> parts = partMeshes(plan, mesh, faceNumberOfPosition);
   // Per position of the converted shape's faces: the copy's own (a part's faces), else itself.
   std::vector<uint32_t> newPosition(faceNumberOfPosition.size());
   std::iota(newPosition.begin(), newPosition.end(), 0u);
-  reserveForCopies(plan, parts, mesh);
-  for (const InstanceCopy& copy : plan.copies)
-    appendCopy(parts[copy.part], copy, mesh, faceNumberOfPosition, newPosition);
+  if (placement == CopyPlacement::InMesh) reserveForCopies(plan, parts, mesh);
+  for (const InstanceCopy& copy : plan.copies) {
+    appendCopyFaces(parts[copy.part], copy, mesh, faceNumberOfPosition, newPosition);
+    if (placement == CopyPlacement::InMesh)
+      appendCopyGeometry(parts[copy.part], copy, mesh, newPosition);
+    size.vertices += parts[copy.part].vertices.size();
+    size.triangles += parts[copy.part].triangles.size();
+  }
+  return size;
 }
 
 GlbInstances glbInstancesOf(const InstancePlan& plan, uint64_t vertices, uint64_t triangles) {
@@ -433,8 +448,8 @@ GlbInstances glbInstancesOf(const InstancePlan& plan, uint64_t vertices, uint64_
     placed.part = copy.part;
     for (int column = 0; column < 4; ++column)
       for (int row = 0; row < 3; ++row)
-        placed.matrix[size_t(4 * column + row)] = float(copy.motion.Value(row + 1, column + 1));
-    placed.matrix[15] = 1.0f;
+        placed.matrix[size_t(4 * column + row)] = copy.motion.Value(row + 1, column + 1);
+    placed.matrix[15] = 1.0;
     placed.faceOffset = int64_t(copy.faceBase) - int64_t(plan.parts[copy.part].faceBase);
     out.placements.push_back(placed);
   }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cad/cad_file.h"
+#include "cad/mesh_cad_file.h"
 #include "trim/mesher.h"
 #include "cad/to_trimmed.h"
 #include "io/gltf_writer.h"
@@ -71,12 +72,17 @@ std::vector<CadEdgeWarning> copiedEdgeWarnings(const InstancePlan& plan, const C
                                                const CadImport& import);
 
 // Appends every copy to `mesh`, the mesh of plan.meshShape (triangleFace and patchIds:
-// positions in the converted faces, faceNumberOfPosition their numbers): the part's vertices
-// moved (normals turned), its triangles, its faces' stats under the copy's numbers; each copy's
-// faces take new positions, appended to faceNumberOfPosition. Copies do not weld to anything:
-// a part shares no edge with the rest (planInstances).
-void addInstanceCopies(const InstancePlan& plan, TrimmedMesh& mesh,
-                       std::vector<uint32_t>& faceNumberOfPosition);
+// positions in the converted faces, faceNumberOfPosition their numbers): its faces' stats
+// under the copy's numbers, at new positions appended to faceNumberOfPosition, and InMesh the
+// part's vertices moved (normals turned) and its triangles. Copies do not weld to anything: a
+// part shares no edge with the rest (planInstances).
+// Returns the copies' vertices and triangles, whether put in the mesh or not.
+struct CopiesSize {
+  uint64_t vertices = 0, triangles = 0;
+};
+CopiesSize addInstanceCopies(const InstancePlan& plan, TrimmedMesh& mesh,
+                             std::vector<uint32_t>& faceNumberOfPosition,
+                             CopyPlacement placement = CopyPlacement::InMesh);
 
 // The plan as glTF instances of a mesh whose first `vertices` and `triangles` are those before
 // addInstanceCopies: each part's faces, each copy's motion as a matrix and its face offset.

@@ -37,21 +37,22 @@ void requireModelTolerance(const ToleranceSpec& tolerance) {
 
 CadMeshRun meshCadFile(const std::string& path, const ToleranceSpec& tolerance, bool skipBadFaces,
                        const std::string& skipHint, Backend& backend, TrimClassifier* trim,
-                       unsigned threads) {
+                       unsigned threads, CopyPlacement copies) {
   requireModelTolerance(tolerance);
   const Stopwatch clock;
   const CadFile file = readCadFile(path);
   const double readMs = clock.elapsedMs();
   TrimmedMeshOptions options;
   options.threads = threads;
-  CadMeshRun result = meshCadModel(file, tolerance, skipBadFaces, skipHint, backend, trim, options);
+  CadMeshRun result =
+      meshCadModel(file, tolerance, skipBadFaces, skipHint, backend, trim, options, copies);
   result.readMs = readMs;
   return result;
 }
 
 CadMeshRun meshCadModel(const CadFile& file, const ToleranceSpec& tolerance, bool skipBadFaces,
                         const std::string& skipHint, Backend& backend, TrimClassifier* trim,
-                        TrimmedMeshOptions options) {
+                        TrimmedMeshOptions options, CopyPlacement copies) {
   requireModelTolerance(tolerance);
   const std::string& path = file.path;
   CadMeshRun result;
@@ -102,7 +103,12 @@ CadMeshRun meshCadModel(const CadFile& file, const ToleranceSpec& tolerance, boo
     result.faceIndexOfPosition.push_back(face.faceIndex);
   const uint64_t placedVertices = result.mesh.mesh.vertexCount();
   const uint64_t placedTriangles = result.mesh.mesh.triangleCount();
-  addInstanceCopies(plan, result.mesh, result.faceIndexOfPosition);
+  const CopiesSize copied =
+      addInstanceCopies(plan, result.mesh, result.faceIndexOfPosition, copies);
+  if (copies == CopyPlacement::Listed) {
+    result.listedVertices = copied.vertices;
+    result.listedTriangles = copied.triangles;
+  }
   result.glbInstances = glbInstancesOf(plan, placedVertices, placedTriangles);
   result.meshMs = clock.elapsedMs();
   // The faces' numbers in the model (TrimmedFace::faceIndex, a copy's own), not their place in

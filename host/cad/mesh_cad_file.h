@@ -16,6 +16,13 @@ namespace tessera {
 struct CadFile;  // cad/cad_file.h (Open CASCADE's shape): declared only, as this header is
                  // OCCT-free
 
+// An assembly's part placed more than once is meshed once (cad/instances.h); its other
+// placements, the copies, are that mesh moved. InMesh: their triangles follow the rest in
+// CadMeshRun::mesh. Listed: the mesh holds each part once; the copies are only in
+// glbInstances, for a caller that draws them instanced (the .glb's nodes, CadMesh::placements),
+// and in the faces' stats. Either way the copies' faces are in mesh.faces.
+enum class CopyPlacement { InMesh, Listed };
+
 struct CadMeshRun {
   TrimmedMesh mesh;  // triangleFace: TrimmedFace::faceIndex, the face's index in the model
   // mesh.mesh.patchIds are positions in the list of faces that converted: their faceIndex.
@@ -37,6 +44,11 @@ struct CadMeshRun {
   GlbInstances glbInstances;
   size_t instancedParts() const { return glbInstances.parts.size(); }
   size_t instanceCopies() const { return glbInstances.placements.size(); }
+  // The copies' vertices and triangles that CopyPlacement::Listed left out of the mesh (0
+  // InMesh), and the whole model's counts either way (what the CLI reports).
+  uint64_t listedVertices = 0, listedTriangles = 0;
+  uint64_t modelVertices() const { return mesh.mesh.vertexCount() + listedVertices; }
+  uint64_t modelTriangles() const { return mesh.mesh.triangleCount() + listedTriangles; }
   double readMs = 0, importMs = 0, meshMs = 0;
 };
 
@@ -56,13 +68,14 @@ inline constexpr double kSmallestRelativeCadTolerance = 1e-9;
 // CPU threads of the import and the cuts (0: all cores); the mesh is the same whatever it is.
 CadMeshRun meshCadFile(const std::string& path, const ToleranceSpec& tolerance, bool skipBadFaces,
                        const std::string& skipHint, Backend& backend, TrimClassifier* trim,
-                       unsigned threads = 0);
+                       unsigned threads = 0, CopyPlacement copies = CopyPlacement::InMesh);
 
 // meshCadFile's work after the read, on a file already read (cad_file.h), with the mesher's
 // options (their tolerance is set from `tolerance`): what a caller that reads once and meshes
 // many times calls (bench_assembly).
 CadMeshRun meshCadModel(const CadFile& file, const ToleranceSpec& tolerance, bool skipBadFaces,
                         const std::string& skipHint, Backend& backend, TrimClassifier* trim,
-                        TrimmedMeshOptions options = {});
+                        TrimmedMeshOptions options = {},
+                        CopyPlacement copies = CopyPlacement::InMesh);
 
 }  // namespace tessera

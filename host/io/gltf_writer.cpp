@@ -158,6 +158,13 @@ uint64_t glbBinLength(const GlbLayout& layout) {
 
 namespace {
 
+// A placement's matrix as the file holds it: floats, as glTF's other numbers.
+std::array<float, 16> asFloats(const std::array<double, 16>& matrix) {
+  std::array<float, 16> out{};
+  for (size_t k = 0; k < 16; ++k) out[k] = float(matrix[k]);
+  return out;
+}
+
 // The meshes that have primitives (glTF forbids an empty one), a node drawing each where the
 // mesh holds it, and a node per other placement of a part.
 void placeInstances(nlohmann::json& document, std::vector<nlohmann::json> primitives,
@@ -173,7 +180,7 @@ void placeInstances(nlohmann::json& document, std::vector<nlohmann::json> primit
   for (const GlbInstances::Placement& placed : instances.placements) {
     if (meshIndex[1 + placed.part] < 0) continue;  // a part whose faces all failed
     nodes.push_back({{"mesh", meshIndex[1 + placed.part]},
-                     {"matrix", placed.matrix},
+                     {"matrix", asFloats(placed.matrix)},
                      {"extras", {{"faceOffset", placed.faceOffset}}}});
   }
   nlohmann::json scene = nlohmann::json::array();

@@ -44,10 +44,10 @@
 namespace tessera {
 
 // A CAD model's parts placed more than once (docs/cad.md, "Assemblies"), written as glTF
-// instances instead of as many copies of their triangles. The mesh given holds every placement;
-// only its first `vertices` and `triangles` are written (every part at its first place and
-// the faces meshed in place: cad/instances.h appends the copies after them). The faces
-// [faceFirst, faceFirst + faceCount) of a part make a glTF mesh of their own, drawn by a node
+// instances instead of as many copies of their triangles. The mesh given may hold every
+// placement or only those; its first `vertices` and `triangles` are written (every part at its
+// first place and the faces meshed in place: cad/instances.h appends the copies after them). The
+// faces [faceFirst, faceFirst + faceCount) of a part make a glTF mesh of their own, drawn by a node
 // at the first place and by one node per other placement, with its `matrix` (column-major,
 // the rigid motion from the first place) and "extras": {"faceOffset": …}: there a primitive's
 // face is its "face" + faceOffset.
@@ -58,7 +58,7 @@ struct GlbInstances {
   };
   struct Placement {
     size_t part = 0;
-    std::array<float, 16> matrix{};
+    std::array<double, 16> matrix{};  // column-major, as glTF's (written as floats)
     int64_t faceOffset = 0;
   };
   std::vector<Part> parts;

@@ -4,6 +4,7 @@
 // (find_package(tessera COMPONENTS cad), or pkg-config tessera-cad): it brings Open CASCADE's
 // libraries; this header names none of its types.
 #pragma once
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -27,6 +28,30 @@ struct CadOptions {
   // The tessellator's TessellatorOptions::threads caps it too (the smaller non-zero holds).
   // The mesh is the same, bit for bit, whatever the count.
   unsigned threads = 0;
+  // An assembly's part placed more than once is meshed once and moved to its other places
+  // (docs/cad.md, "Assemblies"). True: CadMesh::mesh holds every placement's triangles, the
+  // copies after the rest. False: the mesh holds each part once, at its first place, and
+  // CadMesh::placements says where else to draw it, for instanced drawing: the mesh and its
+  // memory stay one part's size however often the part is placed.
+  bool expandInstances = true;
+};
+
+// A part of an assembly placed more than once, as CadMesh::mesh holds it at its first place:
+// ranges of its own (a part shares no vertex with the rest of the model).
+struct CadPart {
+  uint32_t firstVertex = 0, vertexCount = 0;      // in mesh.positions
+  uint32_t firstTriangle = 0, triangleCount = 0;  // in mesh.indices / 3 and triangleFaces
+  uint32_t firstFace = 0, faceCount = 0;          // its faces' numbers at its first place
+};
+
+// Another place of a part: the part's first place moved by `matrix`.
+struct CadPlacement {
+  uint32_t part = 0;  // index into CadMesh::parts
+  // Column-major 4 × 4 (element [4 * column + row], as glTF and GLM), a rigid motion: no
+  // scale, no mirror, so the moved triangles keep their winding and stay within δ.
+  std::array<double, 16> matrix{};
+  // The copy's faces are numbered firstFace + k where the part's are part.firstFace + k.
+  uint32_t firstFace = 0;
 };
 
 struct CadMesh {
@@ -52,9 +77,12 @@ struct CadMesh {
   // wire, say), edges off their faces beyond the file's tolerance, faces whose refinement ended
   // over δ: one message each, naming the file.
   std::vector<std::string> warnings;
-  // An assembly's part placed more than once is meshed once and its mesh moved to its other
-  // places (docs/cad.md, "Assemblies"): how many placements were such moved copies.
-  size_t instanceCopies = 0;
+  // An assembly's parts placed more than once, and their other placements (the moved copies;
+  // none for a model without repeated parts). With CadOptions::expandInstances the copies are
+  // in `mesh` too; without, only here. The counts and the stats above are the whole model's
+  // either way (faces, facesMeshed, the deviations, the messages).
+  std::vector<CadPart> parts;
+  std::vector<CadPlacement> placements;
 };
 
 // Reads and meshes `path` on the tessellator's device (the trees and their trim pass; the

@@ -10,8 +10,37 @@
 #include "api/convert.h"
 #include "api/tessellator_access.h"
 #include "cad/mesh_cad_file.h"
+#include "cad/part_ranges.h"
 
 namespace tessera {
+
+namespace {
+
+// The parts and placements of CadMesh from the run's (before its mesh is moved out).
+void placeParts(const CadMeshRun& run, CadMesh& out) {
+  const GlbInstances& instances = run.glbInstances;
+  const std::vector<PartRange> ranges =
+      partRangesOf(run.mesh.mesh, run.mesh.triangleFace, instances);
+  for (size_t p = 0; p < instances.parts.size(); ++p) {
+    CadPart part;
+    part.firstVertex = ranges[p].firstVertex;
+    part.vertexCount = ranges[p].vertexCount;
+    part.firstTriangle = ranges[p].firstTriangle;
+    part.triangleCount = ranges[p].triangleCount;
+    part.firstFace = instances.parts[p].faceFirst;
+    part.faceCount = instances.parts[p].faceCount;
+    out.parts.push_back(part);
+  }
+  for (const GlbInstances::Placement& placed : instances.placements) {
+    CadPlacement placement;
+    placement.part = uint32_t(placed.part);
+    placement.matrix = placed.matrix;
+    placement.firstFace = uint32_t(int64_t(out.parts[placed.part].firstFace) + placed.faceOffset);
+    out.placements.push_back(placement);
+  }
+}
+
+}  // namespace
 
 CadMesh tessellateCadFile(Tessellator& tessellator, const std::string& path,
                           const CadOptions& options) {
@@ -33,16 +62,17 @@ CadMesh tessellateCadFile(Tessellator& tessellator, const std::string& path,
   TessellatorAccess::run(tessellator, [&](Backend& backend, vk::Context* context) {
     TrimClassifier* trim = context ? TessellatorAccess::trimClassifier(tessellator) : nullptr;
     run = meshCadFile(path, tolerance, options.skipBadFaces, "CadOptions::skipBadFaces", backend,
-                      trim, options.threads);
+                      trim, options.threads,
+                      options.expandInstances ? CopyPlacement::InMesh : CopyPlacement::Listed);
   });
   CadMesh out;
+  placeParts(run, out);
   out.mesh = api::toMesh(std::move(run.mesh.mesh));
   for (uint32_t& face : out.mesh.patchIds) face = run.faceIndexOfPosition.at(face);
   out.triangleFaces = run.mesh.triangleFace;
   out.faces = run.faces;
   out.facesMeshed = run.mesh.faces.size();
   out.tolerance = run.delta;
-  out.instanceCopies = run.instanceCopies();
   for (const TrimmedFaceStats& f : run.mesh.faces) {
     out.maxDeviation = std::max(out.maxDeviation, f.maxGeometricDeviation);
     out.maxParametricDeviation = std::max(out.maxParametricDeviation, f.maxParametricDeviation);
