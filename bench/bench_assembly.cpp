@@ -4,7 +4,9 @@
 // `tessera tessellate` would. Then, at δ = 10⁻³ of one part's diagonal: Open CASCADE's
 // BRepMesh (serial and parallel; it meshes a part's faces once for all placements), Tessera as
 // the CLI runs it (each part converted and meshed once, the other instances moved:
-// cad/instances.h), and Tessera converting and meshing every instance (how it ran before).
+// cad/instances.h; its copies in the mesh, and only listed as an engine draws them instanced
+// and the CLI's .glb writes them), and Tessera converting and meshing every instance (how it
+// ran before).
 // Usage: bench_assembly [copies=64] [--model file] [--cpu] [--json file]
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepTools.hxx>
@@ -159,21 +161,28 @@ int main(int argc, char** argv) {
     report.setDevice(*context);
   }
   CadMeshRun last;
-  const auto tessera = [&](const std::string& name, Backend& backend, TrimClassifier* trim) {
+  const auto tessera = [&](const std::string& name, Backend& backend, TrimClassifier* trim,
+                           CopyPlacement placement) {
     bench::Case c;
     c.path = name;
     c.workSize = double(copies);
     c.timing = bench::timeRepeated(bench::kMinRuns, [&] {
-      last = meshCadModel(file, tolerance, false, "", backend, trim, options);
+      last = meshCadModel(file, tolerance, false, "", backend, trim, options, placement);
     });
-    c.extra["triangles"] = last.mesh.mesh.triangleCount();
+    c.extra["triangles"] = last.modelTriangles();  // every placement's, listed or not
+    c.extra["trianglesInMesh"] = last.mesh.mesh.triangleCount();
     c.extra["instancedParts"] = last.instancedParts();
     c.extra["instanceCopies"] = last.instanceCopies();
     table.cases.push_back(c);
   };
-  tessera("Tessera CPU, each part meshed once", cpu, nullptr);
+  tessera("Tessera CPU, each part meshed once", cpu, nullptr, CopyPlacement::InMesh);
   const CadMeshRun once = last;
-  if (context) tessera("Tessera Vulkan, each part meshed once", vulkan, vulkanTrim.get());
+  if (context)
+    tessera("Tessera Vulkan, each part meshed once", vulkan, vulkanTrim.get(),
+            CopyPlacement::InMesh);
+  // The copies listed, not made (an engine's instanced drawing, the CLI's .glb).
+  tessera("Tessera CPU, each part meshed once, copies listed", cpu, nullptr,
+          CopyPlacement::Listed);
 
   // Before instances: every instance converted and meshed (toTrimmedModel on the whole shape).
   bench::Case every;
@@ -186,6 +195,7 @@ int main(int argc, char** argv) {
     everyMesh = meshTrimmedModel(import.model, options, cpu, nullptr);
   });
   every.extra["triangles"] = everyMesh.mesh.triangleCount();
+  every.extra["trianglesInMesh"] = everyMesh.mesh.triangleCount();
   table.cases.push_back(every);
   report.print(table);
   fs::remove_all(folder);

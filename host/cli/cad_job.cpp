@@ -29,6 +29,9 @@ struct CadJob {
   std::string input;
   ToleranceSpec tolerance;    // model units or a share of the model's diagonal; not pixels
   bool skipBadFaces = false;  // write the faces that converted when some did not
+  // An assembly's copies in the mesh (OBJ, PLY, a picture) or only listed (a .glb draws them
+  // as nodes, a run with no mesh output needs none): cad/mesh_cad_file.h.
+  CopyPlacement copies = CopyPlacement::InMesh;
 };
 
 // What a CAD run gives: the mesh, δ, counts, failures and warnings (cad/mesh_cad_file.h).
@@ -41,8 +44,8 @@ CadResult runCadJob(const CadJob& job, ChosenBackend& chosen) {
   // The quad-trees' trim pass on the same device as the trees (null: the CPU mirror).
   const std::unique_ptr<TrimClassifier> trim =
       chosen.context ? makeVulkanTrimClassifier(*chosen.context) : nullptr;
-  return meshCadFile(job.input, job.tolerance, job.skipBadFaces, "--skip-bad-faces",
-                     chosen.backend, trim.get());
+  return meshCadFile(job.input, job.tolerance, job.skipBadFaces, "--skip-bad-faces", chosen.backend,
+                     trim.get(), 0, job.copies);
 }
 
 double largest(const CadResult& r, double TrimmedFaceStats::*field) {
@@ -83,8 +86,8 @@ nlohmann::json cadStatsToJson(const CadResult& r) {
           {"instancedParts", r.instancedParts()},
           {"instanceCopies", r.instanceCopies()},
           {"maxEdgeChordDeviation", r.maxChordDeviation},
-          {"triangles", r.mesh.mesh.triangleCount()},
-          {"vertices", r.mesh.mesh.vertexCount()},
+          {"triangles", r.modelTriangles()},
+          {"vertices", r.modelVertices()},
           {"maxDeviation", {{"parametric", parametric}, {"geometric", geometric}}},
           {"maxTrimPointOffset", largest(r, &TrimmedFaceStats::maxTrimPointOffset)},
           {"timeMs", {{"read", r.readMs}, {"import", r.importMs}, {"mesh", r.meshMs}}},
@@ -103,7 +106,7 @@ void printCadSummary(FILE* to, const std::string& input, const CadResult& r,
                "triangles %zu, vertices %zu; measured deviation %.3g geometric, %.3g parametric; "
                "edge chords within %.3g (measured); trim points off their faces by up to %.3g "
                "(the promise: deviation <= tolerance + that)\n",
-               r.mesh.mesh.triangleCount(), r.mesh.mesh.vertexCount(),
+               size_t(r.modelTriangles()), size_t(r.modelVertices()),
                largest(r, &TrimmedFaceStats::maxGeometricDeviation),
                largest(r, &TrimmedFaceStats::maxParametricDeviation), r.maxChordDeviation,
                largest(r, &TrimmedFaceStats::maxTrimPointOffset));
@@ -149,7 +152,10 @@ int tessellateCadModel(const CadCommand& c) {
   AtomicFileGroup files;
 
   ChosenBackend chosen = chooseBackend(c.backend, c.device);
-  const CadJob job{c.input, spec, c.skipBadFaces};
+  // The .glb draws the copies from the plan: only OBJ and PLY need them in the mesh.
+  const bool flatOutput = !c.output.empty() && meshFormat(c.output, formats.output) != "glb";
+  const CadJob job{c.input, spec, c.skipBadFaces,
+                   flatOutput ? CopyPlacement::InMesh : CopyPlacement::Listed};
   CadResult r;
   try {
     r = runCadJob(job, chosen);
