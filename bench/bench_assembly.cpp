@@ -8,6 +8,7 @@
 // and the CLI's .glb writes them), and Tessera converting and meshing every instance (how it
 // ran before).
 // Usage: bench_assembly [copies=64] [--model file] [--cpu] [--json file]
+//        bench_assembly copies --write-step file   (only writes the assembly, for the CLI)
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
@@ -75,8 +76,9 @@ size_t occtTriangleCount(const TopoDS_Shape& shape) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bench::Report report("bench_assembly", "[copies=64] [--model file] [--cpu]", argc, argv);
-  std::string model = kDefaultModel;
+  bench::Report report("bench_assembly", "[copies=64] [--model file] [--cpu] [--write-step file]",
+                       argc, argv);
+  std::string model = kDefaultModel, writeStep;
   bool cpuOnly = false;
   long copies = 64;
   int positional = 0;
@@ -86,6 +88,8 @@ int main(int argc, char** argv) {
       model = argv[++i];
     else if (arg == "--cpu")
       cpuOnly = true;
+    else if (arg == "--write-step" && i + 1 < argc)
+      writeStep = argv[++i];
     else if (positional++ == 0)
       copies = bench::integerArg(report, arg, "copies", 2, 100000);
     else
@@ -102,7 +106,7 @@ int main(int argc, char** argv) {
   const fs::path folder =
       fs::temp_directory_path() / ("bench_assembly_" + std::to_string(getpid()));
   fs::create_directories(folder);
-  const std::string path = (folder / "assembly.step").string();
+  const std::string path = writeStep.empty() ? (folder / "assembly.step").string() : writeStep;
   {
     // Open CASCADE's writer reports its steps on standard output: not in the bench's.
     Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
@@ -112,6 +116,11 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "bench_assembly: Open CASCADE could not write %s\n", path.c_str());
       return 1;
     }
+  }
+  if (!writeStep.empty()) {
+    fs::remove_all(folder);
+    std::printf("wrote %s: %ld placements of %s\n", path.c_str(), copies, model.c_str());
+    return 0;
   }
   const CadFile file = readCadFile(path);
 
