@@ -36,16 +36,28 @@ export PKG_CONFIG_PATH=$(dirname "$pc")
 c++ -std=c++17 -O2 examples/consumer/main.cpp -o "$work/consumer-pc" \
   $(pkg-config --cflags --libs tessera)
 
-# The public header next to Vulkan's and glm's, as an engine includes them: prototypes and
-# glm's colour swizzles must be there.
+# The public headers next to Vulkan's and glm's, as an engine includes them: prototypes and
+# glm's colour swizzles must be there. Linked with the loader too and run: the engine's own
+# Vulkan call reaches the loader, not a name of the archive's volk (tests/engine/).
 cat > "$work/beside.cpp" <<'CPP'
 #include <tessera/tessera.h>
+#include <tessera/vulkan.h>
 #include <vulkan/vulkan.h>
 #include <glm/glm.hpp>
+#include <cstdio>
 PFN_vkEnumerateInstanceVersion enumerate = &vkEnumerateInstanceVersion;
 float red(const glm::vec4& colour) { return colour.r; }
+int main() {
+  uint32_t version = 0;
+  if (enumerate(&version) != VK_SUCCESS) return 1;
+  auto lend = &tessera::tessellatorOnDevice;  // the interop API links from the archive
+  std::printf("check-install: an engine's own vkEnumerateInstanceVersion: %u.%u\n",
+              VK_VERSION_MAJOR(version), VK_VERSION_MINOR(version));
+  return lend != nullptr && red(glm::vec4(1.0f)) == 1.0f ? 0 : 1;
+}
 CPP
-c++ -std=c++17 -fsyntax-only $(pkg-config --cflags tessera) "$work/beside.cpp"
+c++ -std=c++17 -O1 "$work/beside.cpp" -o "$work/beside" $(pkg-config --cflags --libs tessera) -lvulkan
+"$work/beside"
 
 # As a subproject: the caller's build type stands (here none), and the tests, with spirv-val,
 # are not configured.

@@ -1,5 +1,6 @@
 #include "api/convert.h"
 
+#include <cmath>
 #include <string>
 #include <utility>
 
@@ -94,6 +95,29 @@ QuadtreeOptions toQuadtreeOptions(const RuleOptions& options) {
   q.nodeBudget = options.maxNodes;
   q.tolerance = options.tolerance;
   return q;
+}
+
+Camera toCamera(const View& view) {
+  Camera camera;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      camera.viewProjection[c][r] = view.viewProjection[size_t(4 * c + r)];
+  camera.width = view.width;
+  camera.height = view.height;
+  return camera;
+}
+
+double nearPlaneW(const glm::dmat4& m, double fallback) {
+  // Rows z and w of the matrix (column-major: m[column][row]); z = a·w + b for every point
+  // exactly when z's xyz part is a times w's.
+  const glm::dvec3 z(m[0][2], m[1][2], m[2][2]), w(m[0][3], m[1][3], m[2][3]);
+  const double ww = glm::dot(w, w);
+  if (!(ww > 0)) return fallback;
+  const double a = glm::dot(z, w) / ww;
+  if (!(glm::length(z - a * w) <= 1e-9 * glm::length(z)) || a == 0) return fallback;
+  const double b = m[3][2] - a * m[3][3];
+  const double near = -b / a;
+  return std::isfinite(near) && near > 0 ? near : fallback;
 }
 
 }  // namespace tessera::api

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "api/convert.h"
+#include "api/public_errors.h"
 #include "api/tessellator_access.h"
 #include "common/thread_cap.h"
 #include "division/count.h"
@@ -75,20 +76,7 @@ Tessellation countedGrids(const std::vector<BezierPatch>& patches, double tolera
   return meshFromTree(std::move(local), std::move(set), std::move(tree), *backend.evaluator, frame);
 }
 
-// Runs `work`, turning the library's std::invalid_argument (a patch or option it cannot take)
-// and Vulkan failures into the public exception types.
-template <class Work>
-auto translatingErrors(Work&& work) -> decltype(work()) {
-  try {
-    return work();
-  } catch (const std::invalid_argument& e) {
-    throw ArgumentError(e.what());
-  } catch (const vk::VulkanUnavailable& e) {
-    throw DeviceError(std::string("no usable Vulkan device: ") + e.what());
-  } catch (const vk::VulkanError& e) {
-    throw DeviceError(std::string("the Vulkan device failed: ") + e.what());
-  }
-}
+using api::translatingErrors;
 
 // What rule T's tree proves (Mesh::proof): its largest leaf bound in model units; a leaf
 // fanned off its one diagonal holds only its any-triangle bound, so it proves nothing.
@@ -111,6 +99,17 @@ struct Tessellator::Impl {
   std::unique_ptr<vk::Context> context;  // null on the CPU
   Backend backend;
   std::unique_ptr<TrimClassifier> trim;  // on Vulkan, made at the first CAD call
+
+  // On an engine's device (tessera/vulkan.h): no device of its own, no CPU start.
+  Impl(const TessellatorOptions& o, const vk::ExternalDevice& device) : options(o) {
+    if (options.device == Device::Cpu || !options.deviceName.empty())
+      throw std::invalid_argument(
+          "tessellatorOnDevice: the device is the one lent; TessellatorOptions::device must be "
+          "Auto or Vulkan and deviceName empty");
+    const ScopedThreadCap cap(options.threads);
+    context = std::make_unique<vk::Context>(device);
+    backend = makeVulkanBackend(*context);
+  }
 
   explicit Impl(const TessellatorOptions& o) : options(o) {
     const ScopedThreadCap cap(options.threads);  // the device's setup too
@@ -153,6 +152,7 @@ struct Tessellator::Impl {
 
 Tessellator::Tessellator(const TessellatorOptions& options)
     : impl_(translatingErrors([&] { return std::make_unique<Impl>(options); })) {}
+Tessellator::Tessellator(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 Tessellator::~Tessellator() = default;
 Tessellator::Tessellator(Tessellator&&) noexcept = default;
 Tessellator& Tessellator::operator=(Tessellator&&) noexcept = default;
@@ -161,6 +161,12 @@ bool Tessellator::usesVulkan() const { return impl_->context != nullptr; }
 
 std::string Tessellator::deviceName() const {
   return impl_->context ? impl_->context->info().name : "cpu";
+}
+
+Tessellator TessellatorAccess::onDevice(const vk::ExternalDevice& device,
+                                        const TessellatorOptions& options) {
+  return Tessellator(
+      translatingErrors([&] { return std::make_unique<Tessellator::Impl>(options, device); }));
 }
 
 void TessellatorAccess::run(Tessellator& tessellator,
@@ -259,11 +265,7 @@ Mesh Tessellator::tessellateToPixelTolerance(const std::vector<Patch>& patches, 
   if (options.method != ToleranceMethod::Adaptive)
     throw ArgumentError("a pixel tolerance takes ToleranceMethod::Adaptive only");
   ScreenView screen;
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r)
-      screen.camera.viewProjection[c][r] = view.viewProjection[size_t(4 * c + r)];
-  screen.camera.width = view.width;
-  screen.camera.height = view.height;
+  screen.camera = api::toCamera(view);
   QuadtreeOptions quadtree = toleranceOptions(pixels);
   quadtree.maxDepth = options.maxDepth;
   quadtree.nodeBudget = options.maxNodes;

@@ -10,10 +10,13 @@
 namespace tessera {
 namespace vk {
 class Context;
+struct ExternalDevice;
 }
 class TrimClassifier;
 
 struct TessellatorAccess {
+  // A Tessellator on an engine's device (tessera/vulkan.h); the public errors as the others.
+  static Tessellator onDevice(const vk::ExternalDevice& device, const TessellatorOptions& options);
   // Runs work(backend, context) (context null on the CPU). Under Device::Auto a Vulkan failure
   // moves the tessellator to the CPU and runs work again; std::invalid_argument becomes
   // ArgumentError and Vulkan failures DeviceError, as in Tessellator::tessellate.

@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "common/stopwatch.h"
 #include "realtime/detail/stitch_pattern_runner_vulkan.h"
@@ -84,6 +85,15 @@ void RealtimeRecorder::record(VkCommandBuffer cmd, const RealtimeTargets& target
   requireRange(targets.vertices, vertices, "vertex");
   requireRange(targets.indices, indices, "index");
   requireRange(targets.drawCommand, kDrawCommandBytes, "draw command");
+  // The pattern binds the vertex and index ranges as storage buffers.
+  const VkDeviceSize alignment = context.minStorageBufferOffsetAlignment();
+  for (const auto& [range, what] :
+       {std::pair(&targets.vertices, "vertex"), std::pair(&targets.indices, "index")})
+    if (range->offset % alignment != 0)
+      throw std::invalid_argument(std::string("RealtimeRecorder::record: the ") + what +
+                                  " range's offset " + std::to_string(range->offset) +
+                                  " is not a multiple of minStorageBufferOffsetAlignment (" +
+                                  std::to_string(alignment) + ")");
   if (targets.drawCommand.offset % 4 != 0)
     throw std::invalid_argument("RealtimeRecorder::record: the draw command's offset " +
                                 std::to_string(targets.drawCommand.offset) +

@@ -195,8 +195,9 @@ class Tessellator {
                                   const View& view, const ToleranceOptions& options = {});
 
  private:
-  friend struct TessellatorAccess;  // the library's own entry points (tessera/cad.h)
+  friend struct TessellatorAccess;  // the library's own entry points (tessera/cad.h, vulkan.h)
   struct Impl;
+  explicit Tessellator(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };
 
