@@ -85,6 +85,9 @@ struct RealtimeFrameInfo {
   size_t eyePlane = 0;  // patches and sides whose net reaches the eye plane (counted by view)
 };
 
+// Owns the path's pipelines and scene buffers on the lent device (made once; destroying the
+// scene leaves the device alive and does not wait for it: the engine waits for its frames
+// first). Not for use by two threads at once.
 class RealtimeScene {
  public:
   static constexpr VkDeviceSize kVertexBytes = 32;
