@@ -443,6 +443,35 @@ TEST_CASE("cad instances: the copies are held to the memory budget", "[cad][inst
   setMemoryBudget(saved);
   CHECK(listed.mesh.mesh.triangleCount() * 40 == triangles);
   CHECK(listed.mesh.faces.size() == run.mesh.faces.size());
+  // Listed, the copies' face stats are still held to it (a board's 10⁵ parts): the copying
+  // step alone, on the part's mesh, under a budget its 40 placements' stats exceed.
+  const CadFile file = readCadFile(path);
+  const InstancePlan plan = planInstances(file.shape);
+  REQUIRE(plan.copies.size() == 39);
+  const CadImport import = toTrimmedModel(CadFile{file.path, plan.meshShape, file.faceEntities},
+                                          0.001, 0, plan.numbering);
+  TrimmedMeshOptions options;
+  options.tolerance = 0.001;
+  TrimmedMesh partMesh = meshTrimmedModel(import.model, options, backend, nullptr);
+  std::vector<uint32_t> numbers;
+  for (const TrimmedFace& face : import.model.faces) numbers.push_back(face.faceIndex);
+  REQUIRE(partMesh.faces.size() == 3);
+  const uint64_t statsOfAll = 120 * (sizeof(TrimmedFaceStats) + sizeof(uint32_t));
+  setMemoryBudget(statsOfAll - 1);
+  try {
+    addInstanceCopies(plan, partMesh, numbers, CopyPlacement::Listed);
+    setMemoryBudget(saved);
+    FAIL("the faces' stats of 39 copies were made past the memory budget");
+  } catch (const MemoryLimitError& e) {
+    setMemoryBudget(saved);
+    INFO(e.what());
+    CHECK(std::string(e.what()).find("the faces' stats of 39 placed copies") != std::string::npos);
+  }
+  setMemoryBudget(statsOfAll);
+  CHECK_NOTHROW(addInstanceCopies(plan, partMesh, numbers, CopyPlacement::Listed));
+  setMemoryBudget(saved);
+  CHECK(partMesh.faces.size() == 120);
+  CHECK(numbers.size() == 120);
 }
 
 TEST_CASE("cad instances: a face that fails is named at every instance", "[cad][instances]") {

@@ -294,18 +294,32 @@ std::pair<uint64_t, uint64_t> bytesPerVertexAndTriangle(const TrimmedMesh& out) 
 
 // Room for every copy at once: the vectors grow by the copies' count times the part's size,
 // checked against the memory budget first (a board of 10⁵ placed parts multiplies the mesh).
+// Listed, only the faces' stats grow (a board's 10⁵ parts of 50 faces: ~0.6 GB of them).
 void reserveForCopies(const InstancePlan& plan, const std::vector<PartMesh>& parts,
-                      TrimmedMesh& out) {
+                      TrimmedMesh& out, CopyPlacement placement) {
   uint64_t vertices = 0, triangles = 0, faces = 0;
   for (const InstanceCopy& copy : plan.copies) {
     vertices += parts[copy.part].vertices.size();
     triangles += parts[copy.part].triangles.size();
     faces += parts[copy.part].positions.size();
   }
+  // A face's stats and its number (faceNumberOfPosition).
+  const uint64_t faceBytes =
+      saturatingMultiply(out.faces.size() + faces, sizeof(TrimmedFaceStats) + sizeof(uint32_t));
+  if (placement == CopyPlacement::Listed) {
+    requireWithinMemoryBudget(faceBytes, "the faces' stats of " +
+                                             std::to_string(plan.copies.size()) +
+                                             " placed copies of its parts (" +
+                                             std::to_string(out.faces.size() + faces) + " faces)");
+    out.faces.reserve(out.faces.size() + faces);
+    return;
+  }
   const auto [perVertex, perTriangle] = bytesPerVertexAndTriangle(out);
   requireWithinMemoryBudget(
-      saturatingAdd(saturatingMultiply(out.mesh.vertexCount() + vertices, perVertex),
-                    saturatingMultiply(out.mesh.triangleCount() + triangles, perTriangle)),
+      saturatingAdd(
+          saturatingAdd(saturatingMultiply(out.mesh.vertexCount() + vertices, perVertex),
+                        saturatingMultiply(out.mesh.triangleCount() + triangles, perTriangle)),
+          faceBytes),
       "the mesh with " + std::to_string(plan.copies.size()) + " placed copies of its parts (" +
           std::to_string(out.mesh.triangleCount() + triangles) + " triangles)");
   TriangleMesh& m = out.mesh;
@@ -426,7 +440,7 @@ CopiesSize addInstanceCopies(const InstancePlan& plan, TrimmedMesh& mesh,
   // Per position of the converted shape's faces: the copy's own (a part's faces), else itself.
   std::vector<uint32_t> newPosition(faceNumberOfPosition.size());
   std::iota(newPosition.begin(), newPosition.end(), 0u);
-  if (placement == CopyPlacement::InMesh) reserveForCopies(plan, parts, mesh);
+  reserveForCopies(plan, parts, mesh, placement);
   for (const InstanceCopy& copy : plan.copies) {
     appendCopyFaces(parts[copy.part], copy, mesh, faceNumberOfPosition, newPosition);
     if (placement == CopyPlacement::InMesh)
