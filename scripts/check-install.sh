@@ -3,13 +3,22 @@
 # against the installed copy twice (CMake find_package(tessera) and pkg-config), runs both on
 # data/teapot.bpt and checks that they print the same triangle count. Also checks that the
 # exported interface carries none of Tessera's build defines and that a consumer can include
-# <tessera/tessera.h> beside <vulkan/vulkan.h> and glm with their normal definitions, and
+# <tessera/tessera.h> beside <vulkan/vulkan.h> and glm with their normal definitions, that
+# examples/engine (an engine lending its own Vulkan device) builds and runs against it, and
 # that add_subdirectory leaves the caller's build type alone and configures no tests. The
 # commands: bin/tessera, and with the cad component bin/tessera-cad, which the installed
 # tessera (no Open CASCADE linked) hands a STEP model to. The Python package where it is built:
 # tessera/_core (no Open CASCADE) and with the cad component tessera/_cad.
+#   --cpu-only   build the engine example but do not run it (it needs a Vulkan device)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+run_engine=1
+for arg in "$@"; do
+  case "$arg" in
+    --cpu-only) run_engine=0 ;;
+    *) echo "check-install: unknown option '$arg' (--cpu-only)" >&2; exit 2 ;;
+  esac
+done
 build_dir=${BUILD_DIR:-build}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -58,6 +67,19 @@ int main() {
 CPP
 c++ -std=c++17 -O1 "$work/beside.cpp" -o "$work/beside" $(pkg-config --cflags --libs tessera) -lvulkan
 "$work/beside"
+# The engine example against the installed copy: its own instance and device, lent to Tessera
+# (tessera/vulkan.h), a real-time frame recorded into its own buffer (docs/api.md).
+cmake -S examples/engine -B "$work/engine-build" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
+cmake --build "$work/engine-build" >/dev/null
+if [[ $run_engine == 1 ]]; then
+  engine_out=$("$work/engine-build/engine" data/teapot.bpt) || {
+    echo "check-install: the engine example failed" >&2
+    exit 1
+  }
+  echo "check-install: ${engine_out%%$'\n'*}"
+else
+  echo "check-install: --cpu-only: the engine example built, not run (it needs a Vulkan device)"
+fi
 
 # As a subproject: the caller's build type stands (here none), and the tests, with spirv-val,
 # are not configured.
