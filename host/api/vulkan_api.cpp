@@ -30,10 +30,10 @@ std::vector<BezierPatch> bicubicPatches(const std::vector<Patch>& patches) {
   std::vector<BezierPatch> internal = api::toBezierPatches(patches);
   for (size_t k = 0; k < internal.size(); ++k) {
     if (internal[k].degreeU != 3 || internal[k].degreeV != 3)
-      throw ArgumentError(
-          "RealtimeScene: patch " + std::to_string(k) + " is of degree " +
-          std::to_string(internal[k].degreeU) + "x" + std::to_string(internal[k].degreeV) +
-          "; the real-time path takes bicubic patches only");
+      throw ArgumentError("RealtimeScene: patch " + std::to_string(k) + " is of degree " +
+                          std::to_string(internal[k].degreeU) + "x" +
+                          std::to_string(internal[k].degreeV) +
+                          "; the real-time path takes bicubic patches only");
     std::vector<double>& weights = internal[k].weights;
     if (std::all_of(weights.begin(), weights.end(), [](double w) { return w == 1.0; }))
       weights.clear();  // weights all 1: the polynomial patch
