@@ -9,6 +9,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -221,6 +222,37 @@ inline void toHostBarrier(const Engine& engine, VkCommandBuffer cmd) {
   barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
   engine.vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_HOST_BIT,
                               0, 1, &barrier, 0, nullptr, 0, nullptr);
+}
+
+// A command buffer of the engine's own pool: record with `work` (then a barrier to the host),
+// submit with a fence of its own, wait.
+inline void submitOnce(const Engine& engine, const std::function<void(VkCommandBuffer)>& work) {
+  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  poolInfo.queueFamilyIndex = engine.family;
+  VkCommandPool pool = VK_NULL_HANDLE;
+  check(engine.vkCreateCommandPool(engine.device, &poolInfo, nullptr, &pool), "pool");
+  VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  allocInfo.commandPool = pool;
+  allocInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  allocInfo.commandBufferCount = 1;
+  VkCommandBuffer cmd = VK_NULL_HANDLE;
+  check(engine.vkAllocateCommandBuffers(engine.device, &allocInfo, &cmd), "command buffer");
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  check(engine.vkBeginCommandBuffer(cmd, &begin), "begin");
+  work(cmd);
+  toHostBarrier(engine, cmd);
+  check(engine.vkEndCommandBuffer(cmd), "end");
+  VkFence fence = VK_NULL_HANDLE;
+  VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  check(engine.vkCreateFence(engine.device, &fenceInfo, nullptr, &fence), "fence");
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &cmd;
+  check(engine.vkQueueSubmit(engine.queue, 1, &submit, fence), "submit");
+  check(engine.vkWaitForFences(engine.device, 1, &fence, VK_TRUE, UINT64_MAX), "wait");
+  engine.vkDestroyFence(engine.device, fence, nullptr);
+  engine.vkDestroyCommandPool(engine.device, pool, nullptr);
 }
 
 }  // namespace tessera::test

@@ -8,7 +8,6 @@
 
 #include <catch2/catch.hpp>
 
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -53,36 +52,6 @@ std::vector<Patch> threeTeapots() {
       scene.push_back(patch);
     }
   return scene;
-}
-
-// The engine's one command buffer, fence and pool: record with `work`, submit, wait.
-void submitOnce(const Engine& engine, const std::function<void(VkCommandBuffer)>& work) {
-  VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-  poolInfo.queueFamilyIndex = engine.family;
-  VkCommandPool pool = VK_NULL_HANDLE;
-  check(engine.vkCreateCommandPool(engine.device, &poolInfo, nullptr, &pool), "pool");
-  VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  allocInfo.commandPool = pool;
-  allocInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  allocInfo.commandBufferCount = 1;
-  VkCommandBuffer cmd = VK_NULL_HANDLE;
-  check(engine.vkAllocateCommandBuffers(engine.device, &allocInfo, &cmd), "command buffer");
-  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  check(engine.vkBeginCommandBuffer(cmd, &begin), "begin");
-  work(cmd);
-  test::toHostBarrier(engine, cmd);
-  check(engine.vkEndCommandBuffer(cmd), "end");
-  VkFence fence = VK_NULL_HANDLE;
-  VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  check(engine.vkCreateFence(engine.device, &fenceInfo, nullptr, &fence), "fence");
-  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-  submit.commandBufferCount = 1;
-  submit.pCommandBuffers = &cmd;
-  check(engine.vkQueueSubmit(engine.queue, 1, &submit, fence), "submit");
-  check(engine.vkWaitForFences(engine.device, 1, &fence, VK_TRUE, UINT64_MAX), "wait");
-  engine.vkDestroyFence(engine.device, fence, nullptr);
-  engine.vkDestroyCommandPool(engine.device, pool, nullptr);
 }
 
 }  // namespace
@@ -164,7 +133,7 @@ TEST_CASE(
       CHECK_THROWS_WITH(realtime.record(VK_NULL_HANDLE, wrong),
                         Catch::Contains("minStorageBufferOffsetAlignment"));
     }
-    submitOnce(engine, [&](VkCommandBuffer cmd) { realtime.record(cmd, targetsOf(buffer)); });
+    test::submitOnce(engine, [&](VkCommandBuffer cmd) { realtime.record(cmd, targetsOf(buffer)); });
     const auto* draw = buffer.at<VkDrawIndexedIndirectCommand>(buffer.targets.drawCommand);
     CHECK(draw->indexCount == 3 * expected.triangles);
     CHECK(draw->instanceCount == 1);

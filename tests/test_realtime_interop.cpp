@@ -160,32 +160,10 @@ TEST_CASE("Real-time frames recorded into an engine's command buffer and buffers
   // The device still works: fill a buffer and read it back.
   {
     EngineBuffer buffer(engine, 64, 64);
-    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    poolInfo.queueFamilyIndex = engine.family;
-    VkCommandPool pool = VK_NULL_HANDLE;
-    check(engine.vkCreateCommandPool(engine.device, &poolInfo, nullptr, &pool), "pool");
-    VkCommandBuffer cmd = VK_NULL_HANDLE;
-    VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    allocInfo.commandPool = pool;
-    allocInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    allocInfo.commandBufferCount = 1;
-    check(engine.vkAllocateCommandBuffers(engine.device, &allocInfo, &cmd), "command buffer");
-    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    check(engine.vkBeginCommandBuffer(cmd, &begin), "begin");
-    engine.vkCmdFillBuffer(cmd, buffer.buffer, buffer.targets.indices.offset, 64, 0x7e55e7a);
-    test::toHostBarrier(engine, cmd);
-    check(engine.vkEndCommandBuffer(cmd), "end");
-    VkFence fence = VK_NULL_HANDLE;
-    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    check(engine.vkCreateFence(engine.device, &fenceInfo, nullptr, &fence), "fence");
-    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-    submit.commandBufferCount = 1;
-    submit.pCommandBuffers = &cmd;
-    check(engine.vkQueueSubmit(engine.queue, 1, &submit, fence), "submit after the context");
-    check(engine.vkWaitForFences(engine.device, 1, &fence, VK_TRUE, UINT64_MAX), "wait");
+    test::submitOnce(engine, [&](VkCommandBuffer cmd) {
+      engine.vkCmdFillBuffer(cmd, buffer.buffer, buffer.targets.indices.offset, 64, 0x7e55e7a);
+    });
     CHECK(buffer.at<uint32_t>(buffer.targets.indices)[15] == 0x7e55e7au);
-    engine.vkDestroyFence(engine.device, fence, nullptr);
-    engine.vkDestroyCommandPool(engine.device, pool, nullptr);
   }
 
   // A device made without push descriptors is refused, naming the extension.
