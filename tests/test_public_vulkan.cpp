@@ -144,6 +144,15 @@ TEST_CASE(
     INFO(difference.vertices << " vertices and " << difference.indices
                              << " indices differ from the path on Tessera's device");
     CHECK(difference.vertices + difference.indices == 0);
+
+    // A view of nothing (looking away): no triangles, and the draw command says so.
+    const RealtimeFrameInfo away = realtime.prepare(
+        lookAtView({7, -16, 7}, {7, -40, 7}, {0, 0, 1}, 45.8366, 640, 360, 0.05, 200));
+    CHECK(away.triangles == 0);
+    CHECK(away.visiblePatches == 0);
+    CHECK(away.culledPatches == scene.size());
+    test::submitOnce(engine, [&](VkCommandBuffer cmd) { realtime.record(cmd, targetsOf(buffer)); });
+    CHECK(draw->indexCount == 0);
   }
 
   // Patches the path cannot take, and a device without push descriptors.
