@@ -23,11 +23,15 @@ Slot slots[kMaxPendingTempFiles];
 // design, so say so at compile time.
 static_assert(std::atomic<int>::is_always_lock_free);
 
-extern "C" void unlinkPendingAndReraise(int signal) {
+// C linkage, as a signal handler; static, so that no name of Tessera's reaches a program that
+// links libtessera.a (extern "C" would otherwise make it global even in this namespace).
+extern "C" {
+static void unlinkPendingAndReraise(int signal) {
   for (Slot& slot : slots)
     if (slot.state.load(std::memory_order_acquire) == kPending) ::unlink(slot.path);
   ::signal(signal, SIG_DFL);
   ::raise(signal);
+}
 }
 
 }  // namespace
