@@ -2,7 +2,8 @@
 # strong global symbol it defines must be Tessera's (namespace tessera, or a tessera_ prefix as
 # volk's renamed globals have). A Vulkan command's name (volk's globals before they were renamed)
 # made an engine's own Vulkan calls crash; any other plain name could clash with the program's.
-#   cmake -DNM=<nm> -DARCHIVE=<libtessera.a> -P check_symbols.cmake
+#   cmake -DNM=<nm> -DARCHIVE=<libtessera.a> [-DMIN_SYMBOLS=100] -P check_symbols.cmake
+# (MIN_SYMBOLS: fewer strong symbols than that means nm's listing was not understood).
 execute_process(COMMAND ${NM} --defined-only --extern-only --demangle ${ARCHIVE}
   OUTPUT_VARIABLE listing RESULT_VARIABLE status ERROR_QUIET)
 if(NOT status EQUAL 0)
@@ -22,7 +23,10 @@ foreach(line IN LISTS lines)
     endif()
   endif()
 endforeach()
-if(strong LESS 100)
+if(NOT DEFINED MIN_SYMBOLS)
+  set(MIN_SYMBOLS 100)
+endif()
+if(strong LESS MIN_SYMBOLS)
   message(FATAL_ERROR "${ARCHIVE}: only ${strong} strong global symbols listed; nm's format?")
 endif()
 if(foreign)
