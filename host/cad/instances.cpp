@@ -282,6 +282,49 @@ std::vector<PartMesh> partMeshes(const InstancePlan& plan, const TrimmedMesh& me
   return parts;
 }
 
+// Each part's faces and where the mesh holds it once, before any copy: the mesher emits faces
+// in order and a part's faces are consecutive, so its triangles are one run; its vertices are
+// made while its faces are and no other face's triangle uses one (a part welds to nothing), so
+// they are one range too (holding the unused ones of collapsed triangles). std::logic_error if
+// a change to the mesher breaks either.
+std::vector<GlbInstances::Part> placedParts(const InstancePlan& plan,
+                                            const std::vector<PartMesh>& parts,
+                                            const TriangleMesh& mesh) {
+  std::vector<GlbInstances::Part> out(parts.size());
+  constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
+  std::vector<uint32_t> partOfVertex(mesh.vertexCount(), kNone);
+  for (size_t p = 0; p < parts.size(); ++p) {
+    GlbInstances::Part& part = out[p];
+    part.faceFirst = plan.parts[p].faceBase;
+    part.faceCount = plan.parts[p].faceCount;
+    const PartMesh& pm = parts[p];
+    if (pm.triangles.empty()) continue;  // its faces all failed
+    part.firstTriangle = pm.triangles.front();
+    part.triangleCount = uint32_t(pm.triangles.size());
+    const auto [low, high] = std::minmax_element(pm.vertices.begin(), pm.vertices.end());
+    part.firstVertex = *low;
+    part.vertexCount = *high - *low + 1;
+    if (pm.triangles.back() - part.firstTriangle + 1 != part.triangleCount)
+      throw std::logic_error("instances: part " + std::to_string(p) +
+                             "'s triangles are not one run of the mesh");
+    for (uint32_t v = *low; v <= *high; ++v) {
+      if (partOfVertex[v] != kNone)
+        throw std::logic_error("instances: two parts' vertex ranges overlap");
+      partOfVertex[v] = uint32_t(p);
+    }
+  }
+  // A triangle uses one part's vertices, and then it is in that part's run, or none.
+  for (uint32_t t = 0; t < mesh.triangleCount(); ++t) {
+    const uint32_t p = partOfVertex[mesh.indices[3 * size_t(t)]];
+    const bool ownVertices = partOfVertex[mesh.indices[3 * size_t(t) + 1]] == p &&
+                             partOfVertex[mesh.indices[3 * size_t(t) + 2]] == p;
+    if (!ownVertices || (p != kNone && t - out[p].firstTriangle >= out[p].triangleCount))
+      throw std::logic_error("instances: triangle " + std::to_string(t) +
+                             " uses a part's vertices from outside the part");
+  }
+  return out;
+}
+
 // The bytes of one vertex and one triangle of `out`, as its arrays hold them.
 std::pair<uint64_t, uint64_t> bytesPerVertexAndTriangle(const TrimmedMesh& out) {
   const TriangleMesh& m = out.mesh;
@@ -437,6 +480,7 @@ CopiesSize addInstanceCopies(const InstancePlan& plan, TrimmedMesh& mesh,
   CopiesSize size;
   if (plan.copies.empty()) return size;
   const std::vector<PartMesh> parts = partMeshes(plan, mesh, faceNumberOfPosition);
+  size.parts = placedParts(plan, parts, mesh.mesh);  // before the copies grow the mesh
   // Per position of the converted shape's faces: the copy's own (a part's faces), else itself.
   std::vector<uint32_t> newPosition(faceNumberOfPosition.size());
   std::iota(newPosition.begin(), newPosition.end(), 0u);
@@ -451,12 +495,15 @@ CopiesSize addInstanceCopies(const InstancePlan& plan, TrimmedMesh& mesh,
   return size;
 }
 
-GlbInstances glbInstancesOf(const InstancePlan& plan, uint64_t vertices, uint64_t triangles) {
+GlbInstances glbInstancesOf(const InstancePlan& plan, uint64_t vertices, uint64_t triangles,
+                            std::vector<GlbInstances::Part> parts) {
   GlbInstances out;
   if (plan.copies.empty()) return out;
+  if (parts.size() != plan.parts.size())
+    throw std::logic_error("instances: the parts are not the plan's");
   out.vertices = vertices;
   out.triangles = triangles;
-  for (const InstancedPart& part : plan.parts) out.parts.push_back({part.faceBase, part.faceCount});
+  out.parts = std::move(parts);
   for (const InstanceCopy& copy : plan.copies) {
     GlbInstances::Placement placed;
     placed.part = copy.part;

@@ -76,16 +76,20 @@ std::vector<CadEdgeWarning> copiedEdgeWarnings(const InstancePlan& plan, const C
 // under the copy's numbers, at new positions appended to faceNumberOfPosition, and InMesh the
 // part's vertices moved (normals turned) and its triangles. Copies do not weld to anything: a
 // part shares no edge with the rest (planInstances).
-// Returns the copies' vertices and triangles, whether put in the mesh or not.
+// Returns the copies' vertices and triangles, whether put in the mesh or not, and each part's
+// vertex and triangle ranges in the mesh before the copies.
 struct CopiesSize {
   uint64_t vertices = 0, triangles = 0;
+  std::vector<GlbInstances::Part> parts;  // plan.parts' faces and ranges
 };
 CopiesSize addInstanceCopies(const InstancePlan& plan, TrimmedMesh& mesh,
                              std::vector<uint32_t>& faceNumberOfPosition,
                              CopyPlacement placement = CopyPlacement::InMesh);
 
 // The plan as glTF instances of a mesh whose first `vertices` and `triangles` are those before
-// addInstanceCopies: each part's faces, each copy's motion as a matrix and its face offset.
-GlbInstances glbInstancesOf(const InstancePlan& plan, uint64_t vertices, uint64_t triangles);
+// addInstanceCopies: each part (`parts`, as addInstanceCopies gave them), each copy's motion as
+// a matrix and its face offset.
+GlbInstances glbInstancesOf(const InstancePlan& plan, uint64_t vertices, uint64_t triangles,
+                            std::vector<GlbInstances::Part> parts);
 
 }  // namespace tessera

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <iterator>
 #include <stdexcept>
+#include <utility>
 
 #include "cad/cad_file.h"
 #include "cad/detail/number_text.h"
@@ -103,13 +104,13 @@ CadMeshRun meshCadModel(const CadFile& file, const ToleranceSpec& tolerance, boo
     result.faceIndexOfPosition.push_back(face.faceIndex);
   const uint64_t placedVertices = result.mesh.mesh.vertexCount();
   const uint64_t placedTriangles = result.mesh.mesh.triangleCount();
-  const CopiesSize copied =
-      addInstanceCopies(plan, result.mesh, result.faceIndexOfPosition, copies);
+  CopiesSize copied = addInstanceCopies(plan, result.mesh, result.faceIndexOfPosition, copies);
   if (copies == CopyPlacement::Listed) {
     result.listedVertices = copied.vertices;
     result.listedTriangles = copied.triangles;
   }
-  result.glbInstances = glbInstancesOf(plan, placedVertices, placedTriangles);
+  result.glbInstances =
+      glbInstancesOf(plan, placedVertices, placedTriangles, std::move(copied.parts));
   result.meshMs = clock.elapsedMs();
   // The faces' numbers in the model (TrimmedFace::faceIndex, a copy's own), not their place in
   // the list of faces meshed: what the glb's primitives and the stats name.

@@ -55,6 +55,9 @@ struct GlbInstances {
   uint64_t vertices = 0, triangles = 0;
   struct Part {
     uint32_t faceFirst = 0, faceCount = 0;
+    // Its vertices and triangles among the first `vertices` and `triangles`: one range each (a
+    // part welds to nothing else; cad/instances.cpp checks it), what an engine draws again.
+    uint32_t firstVertex = 0, vertexCount = 0, firstTriangle = 0, triangleCount = 0;
   };
   struct Placement {
     size_t part = 0;

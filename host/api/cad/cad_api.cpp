@@ -10,25 +10,22 @@
 #include "api/convert.h"
 #include "api/tessellator_access.h"
 #include "cad/mesh_cad_file.h"
-#include "cad/part_ranges.h"
 
 namespace tessera {
 
 namespace {
 
-// The parts and placements of CadMesh from the run's (before its mesh is moved out).
+// The parts and placements of CadMesh from the run's.
 void placeParts(const CadMeshRun& run, CadMesh& out) {
   const GlbInstances& instances = run.glbInstances;
-  const std::vector<PartRange> ranges =
-      partRangesOf(run.mesh.mesh, run.mesh.triangleFace, instances);
-  for (size_t p = 0; p < instances.parts.size(); ++p) {
+  for (const GlbInstances::Part& p : instances.parts) {
     CadPart part;
-    part.firstVertex = ranges[p].firstVertex;
-    part.vertexCount = ranges[p].vertexCount;
-    part.firstTriangle = ranges[p].firstTriangle;
-    part.triangleCount = ranges[p].triangleCount;
-    part.firstFace = instances.parts[p].faceFirst;
-    part.faceCount = instances.parts[p].faceCount;
+    part.firstVertex = p.firstVertex;
+    part.vertexCount = p.vertexCount;
+    part.firstTriangle = p.firstTriangle;
+    part.triangleCount = p.triangleCount;
+    part.firstFace = p.faceFirst;
+    part.faceCount = p.faceCount;
     out.parts.push_back(part);
   }
   for (const GlbInstances::Placement& placed : instances.placements) {
