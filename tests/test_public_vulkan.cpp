@@ -8,6 +8,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -74,8 +76,12 @@ TEST_CASE("public Vulkan API: a Tessellator on an engine's device gives the CPU'
     CHECK(onEngine.deviceName() == engine.deviceName);
     const Mesh mesh = onEngine.tessellateToTolerance(teapot, 0.01);
     const Mesh cpu = Tessellator({Device::Cpu}).tessellateToTolerance(teapot, 0.01);
+    float largest = 0;  // the largest position difference where the counts agree
+    if (mesh.positions.size() == cpu.positions.size())
+      for (size_t k = 0; k < mesh.positions.size(); ++k)
+        largest = std::max(largest, std::abs(mesh.positions[k] - cpu.positions[k]));
     INFO("on " << engine.deviceName << ": " << mesh.triangleCount() << " triangles, CPU "
-               << cpu.triangleCount());
+               << cpu.triangleCount() << "; largest position difference " << largest);
     if (test::exactMirrorArithmetic()) {
       CHECK(mesh.indices == cpu.indices);
       CHECK(mesh.positions == cpu.positions);
@@ -142,7 +148,8 @@ TEST_CASE(
                               buffer.at<uint32_t>(buffer.targets.indices), expected.vertices,
                               expected.indices, expected.vertexCount, 3 * expected.triangles);
     INFO(difference.vertices << " vertices and " << difference.indices
-                             << " indices differ from the path on Tessera's device");
+                             << " indices differ from the path on Tessera's device (largest "
+                             << "position difference " << difference.largest << ")");
     CHECK(difference.vertices + difference.indices == 0);
 
     // A view of nothing (looking away): no triangles, and the draw command says so.
